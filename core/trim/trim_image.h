@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// The per-pixel answer of a trim render: which surface point a pixel shows and why.
+/// Both the GPU backends (read back from their id attachment) and the CPU reference fill
+/// this, so tests compare them field by field.
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace trimlab {
+
+/// Result of one pixel. An empty pixel (no trim fragment in the kept span) has
+/// primitiveId == -1 and facing == 0.
+struct TrimPixel {
+    /// View depth of the shown point (the ray parameter t of PixelRay); +inf when empty.
+    float viewDepth = std::numeric_limits<float>::infinity();
+    std::int32_t primitiveId = -1; ///< triangle index within its object
+    std::int32_t objectId = -1;    ///< index into Scene::objects
+    std::int8_t facing = 0;        ///< +1 front-facing, −1 back-facing, 0 empty
+    /// Winding index at the start of the kept span (near plane or clip plane).
+    std::int32_t windingAtStart = 0;
+
+    [[nodiscard]] bool covered() const { return primitiveId >= 0; }
+};
+
+/// A width×height image of TrimPixel, row 0 at the top.
+struct TrimImage {
+    int width = 0;
+    int height = 0;
+    std::vector<TrimPixel> pixels;
+
+    TrimImage() = default;
+    TrimImage(int w, int h) : width(w), height(h), pixels(std::size_t(w) * std::size_t(h)) {}
+    [[nodiscard]] TrimPixel& at(int x, int y) { return pixels[std::size_t(y) * width + x]; }
+    [[nodiscard]] const TrimPixel& at(int x, int y) const { return pixels[std::size_t(y) * width + x]; }
+};
+
+} // namespace trimlab
