@@ -1,0 +1,51 @@
+#include "gl/offscreen_gl_context.h"
+
+#include "gl/gl_error.h"
+
+#include <QGuiApplication>
+
+namespace trimlab::render {
+
+QSurfaceFormat OffscreenGlContext::requestedFormat()
+{
+    QSurfaceFormat format;
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    format.setVersion(4, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setStencilBufferSize(8);
+    return format;
+}
+
+OffscreenGlContext::OffscreenGlContext()
+{
+    if (!qGuiApp)
+        throw GlUnavailableError("An OpenGL context needs a QGuiApplication (programming error in the caller).");
+    m_context = std::make_unique<QOpenGLContext>();
+    m_context->setFormat(requestedFormat());
+    if (!m_context->create())
+        throw GlUnavailableError(
+            "Could not create an OpenGL 4.3 core context. Headless machines need an X server: run the command "
+            "under 'xvfb-run -a' (packages xvfb, xauth, libgl1-mesa-dri).");
+    m_surface = std::make_unique<QOffscreenSurface>();
+    m_surface->setFormat(m_context->format());
+    m_surface->create();
+    if (!m_surface->isValid() || !m_context->makeCurrent(m_surface.get()))
+        throw GlUnavailableError("Could not make the offscreen OpenGL context current (is an X display available?).");
+    m_capabilities = queryCapabilities(*m_context);
+    if (const auto missing = missingRequirements(m_capabilities))
+        throw GlUnavailableError(missing->toStdString());
+}
+
+OffscreenGlContext::~OffscreenGlContext()
+{
+    if (m_context)
+        m_context->doneCurrent();
+}
+
+void OffscreenGlContext::makeCurrent()
+{
+    m_context->makeCurrent(m_surface.get());
+}
+
+} // namespace trimlab::render

@@ -1,0 +1,145 @@
+#include "gl/shader_library.h"
+
+#include "gl/gl_error.h"
+#include "gl/shader_source.h"
+
+#include <QRegularExpression>
+
+namespace trimlab::render {
+
+const std::vector<ProgramDescription>& programCatalog()
+{
+    // K_MAX is the compile-time capacity of a pixel's local fragment array in the
+    // resolve pass; the renderer compiles one variant per k the user picks.
+    static const std::vector<ProgramDescription> catalog = {
+        {"kplus_clear", {"kplus_clear.comp"}, {{}}},
+        {"kplus_store", {"scene.vert", "kplus_store.frag"}, {{}}},
+        {"trim_resolve", {"fullscreen.vert", "trim_resolve.frag"}, {{"K_MAX 1"}, {"K_MAX 16"}, {"K_MAX 64"}}},
+    };
+    return catalog;
+}
+
+namespace {
+
+GLenum stageOf(const QString& file)
+{
+    if (file.endsWith(QLatin1String(".vert")))
+        return GL_VERTEX_SHADER;
+    if (file.endsWith(QLatin1String(".frag")))
+        return GL_FRAGMENT_SHADER;
+    if (file.endsWith(QLatin1String(".comp")))
+        return GL_COMPUTE_SHADER;
+    throw ShaderBuildError("Cannot tell the shader stage of '" + file.toStdString() + "' from its extension.");
+}
+
+// Line numbers a driver's info log refers to: Mesa "0:12(5): error", NVIDIA "0(12) : error".
+QList<int> reportedLines(const QString& log)
+{
+    static const QRegularExpression pattern(QStringLiteral(R"(^\s*\d+[:(](\d+)[):(])"),
+                                            QRegularExpression::MultilineOption);
+    QList<int> lines;
+    auto it = pattern.globalMatch(log);
+    while (it.hasNext()) {
+        const int line = it.next().captured(1).toInt();
+        if (!lines.contains(line))
+            lines << line;
+    }
+    return lines;
+}
+
+QString compileReport(const AssembledShader& shader, const QString& log, const QStringList& defines)
+{
+    QString report = QStringLiteral("Shader '%1' (defines: %2) failed to compile:\n%3\n")
+                         .arg(shader.file, defines.isEmpty() ? QStringLiteral("none") : defines.join(", "), log.trimmed());
+    for (int line : reportedLines(log))
+        report += QStringLiteral("\n") + shader.excerpt(line);
+    return report;
+}
+
+QString infoLog(GlFunctions& gl, GLuint object, bool isProgram)
+{
+    GLint length = 0;
+    isProgram ? gl.glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length)
+              : gl.glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    QByteArray log(std::max(length, 1), '\0');
+    isProgram ? gl.glGetProgramInfoLog(object, length, nullptr, log.data())
+              : gl.glGetShaderInfoLog(object, length, nullptr, log.data());
+    return QString::fromUtf8(log.constData());
+}
+
+} // namespace
+
+ShaderLibrary::ShaderLibrary(GlFunctions& gl) : m_gl(gl) {}
+
+ShaderLibrary::~ShaderLibrary()
+{
+    for (GLuint program : std::as_const(m_programs))
+        m_gl.glDeleteProgram(program);
+}
+
+GLuint ShaderLibrary::program(const QString& name, const QStringList& defines)
+{
+    const QString key = name + QLatin1Char('|') + defines.join(QLatin1Char(';'));
+    if (auto it = m_programs.constFind(key); it != m_programs.constEnd())
+        return *it;
+    for (const ProgramDescription& description : programCatalog()) {
+        if (description.name == name) {
+            const GLuint id = build(description, defines);
+            m_programs.insert(key, id);
+            return id;
+        }
+    }
+    throw ShaderBuildError("No shader program named '" + name.toStdString() + "' in the catalog.");
+}
+
+GLuint ShaderLibrary::compileStage(const QString& file, const QStringList& defines)
+{
+    const AssembledShader shader = assembleShader(file, defines);
+    const GLuint id = m_gl.glCreateShader(stageOf(file));
+    const char* text = shader.text.constData();
+    const GLint length = GLint(shader.text.size());
+    m_gl.glShaderSource(id, 1, &text, &length);
+    m_gl.glCompileShader(id);
+    GLint ok = GL_FALSE;
+    m_gl.glGetShaderiv(id, GL_COMPILE_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        const QString log = infoLog(m_gl, id, false);
+        m_gl.glDeleteShader(id);
+        throw ShaderBuildError(compileReport(shader, log, defines).toStdString());
+    }
+    return id;
+}
+
+GLuint ShaderLibrary::build(const ProgramDescription& description, const QStringList& defines)
+{
+    const GLuint program = m_gl.glCreateProgram();
+    std::vector<GLuint> stages;
+    try {
+        for (const QString& file : description.files) {
+            stages.push_back(compileStage(file, defines));
+            m_gl.glAttachShader(program, stages.back());
+        }
+    } catch (...) {
+        for (GLuint s : stages)
+            m_gl.glDeleteShader(s);
+        m_gl.glDeleteProgram(program);
+        throw;
+    }
+    m_gl.glLinkProgram(program);
+    for (GLuint s : stages) {
+        m_gl.glDetachShader(program, s);
+        m_gl.glDeleteShader(s);
+    }
+    GLint linked = GL_FALSE;
+    m_gl.glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    if (linked != GL_TRUE) {
+        const QString log = infoLog(m_gl, program, true);
+        m_gl.glDeleteProgram(program);
+        throw ShaderBuildError(QStringLiteral("Shader program '%1' (%2) failed to link:\n%3")
+                                   .arg(description.name, description.files.join(", "), log.trimmed())
+                                   .toStdString());
+    }
+    return program;
+}
+
+} // namespace trimlab::render

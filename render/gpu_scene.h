@@ -1,0 +1,70 @@
+#pragma once
+/// \file
+/// A Scene uploaded to the GPU: one vertex/normal/index buffer for all objects, drawn
+/// object by object, and the same buffers exposed as shader storage so that resolve
+/// passes can shade a stored fragment from its (object id, primitive id) alone.
+
+#include "gl/gl_functions.h"
+#include "gl/gl_objects.h"
+
+#include "scene/scene.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace trimlab::render {
+
+/// Shader storage binding points of the scene data (shaders/common/scene_data.glsl).
+enum SceneStorageBinding : GLuint {
+    kPositionsBinding = 1,
+    kNormalsBinding = 2,
+    kIndicesBinding = 3,
+    kObjectsBinding = 4,
+};
+
+class GpuScene {
+public:
+    explicit GpuScene(GlFunctions& gl);
+
+    /// Replaces the uploaded scene. Throws GpuMemoryError when the buffers do not fit and
+    /// std::invalid_argument when the scene exceeds the fragment format (32 objects,
+    /// 2^24 triangles per object).
+    void upload(const Scene& scene);
+
+    /// Updates the per-object view-space transforms for `view` (call once per frame).
+    void setView(const glm::dmat4& view);
+
+    /// Draws every object with `program`, which must declare `uniform mat4 u_modelView`,
+    /// `uniform mat4 u_projection` and `uniform uint u_objectId` (missing ones are skipped).
+    void draw(GLuint program, const glm::dmat4& projection);
+
+    /// Binds positions, normals, indices and the object table as shader storage.
+    void bindStorage();
+
+    [[nodiscard]] std::size_t objectCount() const { return m_objects.size(); }
+    [[nodiscard]] std::size_t triangleCount() const { return m_triangleCount; }
+    [[nodiscard]] std::size_t memoryBytes() const { return m_memoryBytes; }
+
+private:
+    struct ObjectRange {
+        glm::dmat4 model{1.0};
+        GLint baseVertex = 0;
+        GLsizei indexCount = 0;
+        std::size_t indexOffsetBytes = 0;
+    };
+
+    GlFunctions& m_gl;
+    GlVertexArray m_vao;
+    GlBuffer m_positions;
+    GlBuffer m_normals;
+    GlBuffer m_indices;
+    GlBuffer m_objectTable;
+    std::vector<ObjectRange> m_objects;
+    std::vector<glm::dmat4> m_modelView;
+    std::size_t m_triangleCount = 0;
+    std::size_t m_memoryBytes = 0;
+};
+
+} // namespace trimlab::render

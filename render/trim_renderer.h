@@ -1,0 +1,90 @@
+#pragma once
+/// \file
+/// Renders a Scene trimmed by a static rule, with an optional clipping plane, through the
+/// k⁺-buffer: clear → store (one geometry pass) → resolve (one full-screen pass) into a
+/// RenderTarget. Owns every GL object it uses; the caller owns the context and must keep
+/// it current across calls and at destruction.
+
+#include "frame_counters.h"
+#include "gl/gl_capabilities.h"
+#include "mfr/kplus_buffer.h"
+
+#include "scene/scene.h"
+#include "trim/trim_image.h"
+#include "trim/trim_settings.h"
+#include "view/camera.h"
+
+#include <QImage>
+
+#include <memory>
+
+class QOpenGLContext;
+
+namespace trimlab::render {
+
+class GpuScene;
+class RenderTarget;
+class ShaderLibrary;
+
+/// What the last frame cost and what it found.
+struct FrameStats {
+    FrameCounts counts;
+    double gpuMilliseconds = 0.0; ///< GL_TIME_ELAPSED of clear + store + resolve
+    double bufferMegabytes = 0.0; ///< k⁺-buffer + render target + scene buffers
+    int width = 0;
+    int height = 0;
+    int k = 0;
+};
+
+class TrimRenderer {
+public:
+    /// `context` must be current. Throws GlUnavailableError if it lacks OpenGL 4.3
+    /// features, ShaderBuildError if a shader does not build.
+    explicit TrimRenderer(QOpenGLContext& context);
+    ~TrimRenderer();
+    TrimRenderer(const TrimRenderer&) = delete;
+    TrimRenderer& operator=(const TrimRenderer&) = delete;
+
+    /// Uploads `scene` (replacing the previous one). Throws GpuMemoryError or
+    /// std::invalid_argument (scene beyond the fragment format's limits).
+    void setScene(const Scene& scene);
+    /// Capacity of the k⁺-buffer per pixel, 1..KPlusBuffer::kMaxK. Default 16.
+    void setK(int k);
+    [[nodiscard]] int k() const { return m_k; }
+
+    /// Renders one frame at width×height into the internal render target.
+    /// `settings.trimEnabled` must be false for scenes that are not closed oriented
+    /// surfaces (the caller knows from the validation report). Throws GpuMemoryError.
+    void render(const Camera& camera, const TrimSettings& settings, int width, int height);
+
+    /// Copies the last frame's colors into `framebuffer` (e.g. a QOpenGLWidget's).
+    void blitTo(GLuint framebuffer);
+    /// The last frame's color image (top row first).
+    [[nodiscard]] QImage readColor();
+    /// The last frame's per-pixel answers, for comparison with the CPU reference.
+    [[nodiscard]] TrimImage readTrimImage();
+
+    /// Per-pixel fragment counts of the last frame's store pass (depth complexity up to k).
+    [[nodiscard]] KPlusOccupancy readOccupancy();
+
+    [[nodiscard]] const FrameStats& lastStats() const { return m_stats; }
+    [[nodiscard]] const GlCapabilities& capabilities() const { return m_capabilities; }
+
+private:
+    void storePass(const Camera& camera, const TrimSettings& settings, const glm::dmat4& projection);
+    void resolvePass(const Camera& camera, const TrimSettings& settings, const glm::dmat4& projection);
+
+    GlCapabilities m_capabilities; // first: m_gl's initialisation checks it
+    GlFunctions& m_gl;
+    std::unique_ptr<ShaderLibrary> m_shaders;
+    std::unique_ptr<GpuScene> m_scene;
+    std::unique_ptr<KPlusBuffer> m_kplus;
+    std::unique_ptr<RenderTarget> m_target;
+    std::unique_ptr<FrameCounters> m_counters;
+    GlVertexArray m_emptyVao;
+    GlQuery m_timer;
+    int m_k = 16;
+    FrameStats m_stats;
+};
+
+} // namespace trimlab::render

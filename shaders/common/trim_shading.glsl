@@ -1,0 +1,14 @@
+// How a shown trim point is colored. The C++ twin is core/trim/trim_shading.h; keep the
+// constants identical (render tests compare GPU colors with the CPU reference).
+
+const vec3 FRONT_FACING_COLOR = vec3(0.96, 0.78, 0.26);
+const vec3 BACK_FACING_COLOR = vec3(0.28, 0.50, 0.96);
+const vec3 BACKGROUND_COLOR = vec3(0.16, 0.17, 0.20);
+const vec3 UNRESOLVED_COLOR = vec3(1.0, 0.0, 1.0); // overflowed pixel whose trim lies beyond k
+const float AMBIENT = 0.25;
+
+vec3 shadeTrimPoint(bool frontFacing, vec3 normal, vec3 toViewer)
+{
+    vec3 base = frontFacing ? FRONT_FACING_COLOR : BACK_FACING_COLOR;
+    return base * (AMBIENT + (1.0 - AMBIENT) * abs(dot(normal, toViewer)));
+}
