@@ -1,0 +1,157 @@
+#include "trim/reference_renderer.h"
+
+#include "scene/world_geometry.h"
+#include "trim/trim_shading.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+namespace trimlab {
+
+namespace {
+
+constexpr int kRowsPerBlock = 4;
+
+std::uint8_t toByte(float channel)
+{
+    return static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(channel, 0.0f, 1.0f)));
+}
+
+} // namespace
+
+/// Per-thread state: inputs, output images, scratch buffers and partial stats.
+struct ReferenceRenderer::RowContext {
+    const Camera& camera;
+    int width;
+    int height;
+    const TrimSettings& settings;
+    ReferenceResult& result;
+    std::vector<RayHit> hits;
+    std::vector<double> scratch;
+    ReferenceStats stats;
+};
+
+ReferenceRenderer::ReferenceRenderer(const Scene& scene) : m_bvh(scene)
+{
+    m_objects.reserve(scene.objects.size());
+    for (const SceneObject& object : scene.objects)
+        m_objects.push_back({worldPositions(object), worldNormals(object), object.mesh.triangles});
+}
+
+PixelTrace ReferenceRenderer::tracePixel(const Camera& camera, int width, int height, int x, int y,
+                                         const TrimSettings& settings) const
+{
+    PixelTrace trace;
+    trace.ray = pixelRay(camera, width, height, x, y);
+    m_bvh.intersectAll(trace.ray, camera.zNear, camera.zFar, trace.hits);
+    std::sort(trace.hits.begin(), trace.hits.end(), walkOrder);
+    trace.span = keptSpan(settings.clip, trace.ray, camera.zNear, camera.zFar);
+    trace.walk = walkTrimRay(trace.hits, trace.span, settings);
+    trace.pixel = trimPixelFromWalk(trace.hits, trace.walk);
+    return trace;
+}
+
+glm::vec3 ReferenceRenderer::shadeHit(const RayHit& hit, const PixelRay& ray) const
+{
+    const ObjectGeometry& object = m_objects[std::size_t(hit.objectId)];
+    const glm::uvec3 t = object.triangles[std::size_t(hit.primitiveId)];
+    const double w = 1.0 - hit.u - hit.v;
+    glm::dvec3 normal = w * object.normals[t[0]] + hit.u * object.normals[t[1]] + hit.v * object.normals[t[2]];
+    if (!(glm::length(normal) > 0.0)) { // cancelling or missing vertex normals
+        const glm::dvec3& a = object.positions[t[0]];
+        normal = glm::cross(object.positions[t[1]] - a, object.positions[t[2]] - a);
+    }
+    const double length = glm::length(normal);
+    normal = length > 0.0 ? normal / length : -glm::normalize(ray.direction);
+    return shadeTrimPoint(hit.facing, normal, -glm::normalize(ray.direction));
+}
+
+void ReferenceRenderer::renderRow(RowContext& context, int y) const
+{
+    const Camera& camera = context.camera;
+    for (int x = 0; x < context.width; ++x) {
+        const PixelRay ray = pixelRay(camera, context.width, context.height, x, y);
+        context.hits.clear();
+        m_bvh.intersectAll(ray, camera.zNear, camera.zFar, context.hits);
+        std::sort(context.hits.begin(), context.hits.end(), walkOrder);
+        const KeptSpan span = keptSpan(context.settings.clip, ray, camera.zNear, camera.zFar);
+        const TrimWalk walk = walkTrimRay(context.hits, span, context.settings);
+        const TrimPixel pixel = trimPixelFromWalk(context.hits, walk);
+        context.result.trim.at(x, y) = pixel;
+
+        ReferenceDiagnostics& diagnostics = context.result.diagnostics;
+        const std::size_t index = diagnostics.index(x, y);
+        const auto hitCount = std::int32_t(context.hits.size());
+        diagnostics.hitCount[index] = hitCount;
+        diagnostics.depthMargin[index] = float(pixelDepthMargin(context.hits, span, walk, context.scratch));
+        context.stats.totalHits += std::uint64_t(hitCount);
+        context.stats.maxHitsPerPixel = std::max(context.stats.maxHitsPerPixel, hitCount);
+
+        glm::vec3 color = kBackgroundColor;
+        if (pixel.covered()) {
+            const RayHit& hit = context.hits[std::size_t(walk.shownIndex)];
+            const ObjectGeometry& object = m_objects[std::size_t(hit.objectId)];
+            const glm::uvec3 t = object.triangles[std::size_t(hit.primitiveId)];
+            diagnostics.edgeDistancePx[index] = float(edgeDistancePixels(
+                camera, context.width, context.height, x, y,
+                {object.positions[t[0]], object.positions[t[1]], object.positions[t[2]]}));
+            color = shadeHit(hit, ray);
+            ++context.stats.coveredPixels;
+        }
+        std::uint8_t* rgba = context.result.color.at(x, y);
+        rgba[0] = toByte(color.r);
+        rgba[1] = toByte(color.g);
+        rgba[2] = toByte(color.b);
+        rgba[3] = 255;
+    }
+}
+
+ReferenceResult ReferenceRenderer::render(const Camera& camera, int width, int height, const TrimSettings& settings,
+                                          unsigned threads) const
+{
+    const auto start = std::chrono::steady_clock::now();
+    ReferenceResult result;
+    if (width < 1 || height < 1)
+        return result;
+    result.trim = TrimImage(width, height);
+    result.color = RgbaImage(width, height);
+    result.diagnostics = ReferenceDiagnostics(width, height);
+
+    const int blockCount = (height + kRowsPerBlock - 1) / kRowsPerBlock;
+    if (threads == 0)
+        threads = std::max(1u, std::thread::hardware_concurrency());
+    threads = std::min(threads, unsigned(blockCount));
+    std::atomic<int> nextBlock{0};
+    std::vector<ReferenceStats> partial(threads);
+    auto work = [&](unsigned worker) {
+        RowContext context{camera, width, height, settings, result, {}, {}, {}};
+        for (int block = nextBlock++; block < blockCount; block = nextBlock++) {
+            const int rowEnd = std::min(height, (block + 1) * kRowsPerBlock);
+            for (int y = block * kRowsPerBlock; y < rowEnd; ++y)
+                renderRow(context, y);
+        }
+        partial[worker] = context.stats;
+    };
+    std::vector<std::thread> pool;
+    for (unsigned worker = 1; worker < threads; ++worker)
+        pool.emplace_back(work, worker);
+    work(0);
+    for (std::thread& thread : pool)
+        thread.join();
+
+    for (const ReferenceStats& s : partial) {
+        result.stats.totalHits += s.totalHits;
+        result.stats.maxHitsPerPixel = std::max(result.stats.maxHitsPerPixel, s.maxHitsPerPixel);
+        result.stats.coveredPixels += s.coveredPixels;
+    }
+    result.stats.threads = threads;
+    result.stats.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+} // namespace trimlab

@@ -1,0 +1,87 @@
+#pragma once
+/// \file
+/// The exact CPU reference renderer (the oracle every GPU backend is tested against):
+/// one ray per pixel centre through the shared Camera, every hit collected by a double
+/// precision watertight BVH, sorted with walkOrder and decided by walkTrimRay — the same
+/// rule, clip and winding semantics as the GPU, without fragment limits or float depth.
+
+#include "image/rgba_image.h"
+#include "scene/scene.h"
+#include "trim/clip_plane.h"
+#include "trim/ray_hit.h"
+#include "trim/reference_diagnostics.h"
+#include "trim/triangle_bvh.h"
+#include "trim/trim_image.h"
+#include "trim/trim_settings.h"
+#include "trim/trim_walk.h"
+#include "view/camera.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace trimlab {
+
+/// Counts over one render.
+struct ReferenceStats {
+    std::uint64_t totalHits = 0;    ///< hits with zNear <= t <= zFar, summed over pixels
+    std::int32_t maxHitsPerPixel = 0;
+    std::uint64_t coveredPixels = 0; ///< pixels that show a surface point
+    double wallMs = 0.0;             ///< wall-clock time of render()
+    unsigned threads = 0;            ///< worker threads actually used
+};
+
+struct ReferenceResult {
+    TrimImage trim;
+    /// Background kBackgroundColor where empty, else shadeTrimPoint with the smooth world
+    /// normal at the hit and toViewer = −normalize(ray direction); channels are
+    /// round(255·clamp(c, 0, 1)), alpha 255.
+    RgbaImage color;
+    ReferenceDiagnostics diagnostics;
+    ReferenceStats stats;
+};
+
+/// Everything the reference knows about one pixel (for tests and debugging).
+struct PixelTrace {
+    PixelRay ray;
+    std::vector<RayHit> hits; ///< zNear <= t <= zFar, sorted with walkOrder
+    KeptSpan span;
+    TrimWalk walk;
+    TrimPixel pixel;
+};
+
+class ReferenceRenderer {
+public:
+    /// Copies what it needs (world geometry, normals, the BVH); `scene` may die afterwards.
+    explicit ReferenceRenderer(const Scene& scene);
+
+    /// Renders width×height pixels. `threads` = 0 uses std::thread::hardware_concurrency().
+    /// Preconditions (programmer errors, not checked): 0 < zNear < zFar and a valid
+    /// camera (eye != target, up not parallel to the view direction). Width or height
+    /// < 1 gives an empty (0×0) result.
+    [[nodiscard]] ReferenceResult render(const Camera& camera, int width, int height, const TrimSettings& settings,
+                                         unsigned threads = 0) const;
+
+    /// The full decision for one pixel, as render() makes it.
+    [[nodiscard]] PixelTrace tracePixel(const Camera& camera, int width, int height, int x, int y,
+                                        const TrimSettings& settings) const;
+
+    [[nodiscard]] const TriangleBvh& bvh() const { return m_bvh; }
+
+private:
+    struct ObjectGeometry {
+        std::vector<glm::dvec3> positions; ///< world space
+        std::vector<glm::dvec3> normals;   ///< world space, not normalised
+        std::vector<glm::uvec3> triangles;
+    };
+    struct RowContext;
+
+    void renderRow(RowContext& context, int y) const;
+    [[nodiscard]] glm::vec3 shadeHit(const RayHit& hit, const PixelRay& ray) const;
+
+    TriangleBvh m_bvh;
+    std::vector<ObjectGeometry> m_objects;
+};
+
+} // namespace trimlab
