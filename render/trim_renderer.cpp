@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <QElapsedTimer>
 #include <QOpenGLContext>
 
 #include <cmath>
@@ -77,6 +78,8 @@ void TrimRenderer::setK(int k)
 
 void TrimRenderer::render(const Camera& camera, const TrimSettings& settings, int width, int height)
 {
+    QElapsedTimer wall;
+    wall.start();
     m_target->resize(width, height);
     m_kplus->allocate(width, height, m_k);
     const glm::dmat4 projection = projectionMatrix(camera, double(width) / double(height));
@@ -93,7 +96,11 @@ void TrimRenderer::render(const Camera& camera, const TrimSettings& settings, in
     GLuint64 elapsedNs = 0;
     m_gl.glGetQueryObjectui64v(m_timer.id(), GL_QUERY_RESULT, &elapsedNs);
     m_stats.counts = m_counters->read();
-    m_stats.gpuMilliseconds = double(elapsedNs) * 1e-6;
+    m_stats.wallMilliseconds = double(wall.nsecsElapsed()) * 1e-6;
+    // The GPU work happened inside the wall-clock interval, so a longer GPU time is a
+    // driver error, not a measurement.
+    const double gpuMs = double(elapsedNs) * 1e-6;
+    m_stats.gpuMilliseconds = gpuMs <= m_stats.wallMilliseconds * 1.01 + 0.5 ? gpuMs : -1.0;
     m_stats.bufferMegabytes =
         double(m_kplus->memoryBytes() + m_target->memoryBytes() + m_scene->memoryBytes()) / (1024.0 * 1024.0);
     m_stats.width = width;

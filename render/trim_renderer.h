@@ -29,7 +29,11 @@ class ShaderLibrary;
 /// What the last frame cost and what it found.
 struct FrameStats {
     FrameCounts counts;
-    double gpuMilliseconds = 0.0; ///< GL_TIME_ELAPSED of clear + store + resolve
+    /// GL_TIME_ELAPSED of clear + store + resolve; negative when the driver's answer was
+    /// implausible (llvmpipe returns garbage for the first timer query of a context).
+    double gpuMilliseconds = 0.0;
+    /// Wall-clock time of render() including the wait for the GPU's results.
+    double wallMilliseconds = 0.0;
     double bufferMegabytes = 0.0; ///< k⁺-buffer + render target + scene buffers
     int width = 0;
     int height = 0;

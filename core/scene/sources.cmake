@@ -4,4 +4,5 @@ target_sources(trimlab_core PRIVATE
   scene/shape_generators.cpp
   scene/demo_shapes.cpp
   scene/demo_scenes.cpp
+  scene/scene_source.cpp
 )

@@ -1,0 +1,80 @@
+#include "io/pfm_image.h"
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace trimlab {
+
+namespace {
+
+std::runtime_error pfmError(const std::filesystem::path& path, const std::string& why)
+{
+    return std::runtime_error(path.string() + ": " + why);
+}
+
+std::uint32_t byteSwap(std::uint32_t v)
+{
+    return (v >> 24) | ((v >> 8) & 0xFF00u) | ((v << 8) & 0xFF0000u) | (v << 24);
+}
+
+float decodeFloat(const char* bytes, bool littleEndian)
+{
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, bytes, 4);
+    if (littleEndian != (std::endian::native == std::endian::little))
+        bits = byteSwap(bits);
+    return std::bit_cast<float>(bits);
+}
+
+} // namespace
+
+void writePfm(const std::filesystem::path& path, const FloatImage& image)
+{
+    std::ofstream out(path, std::ios::binary);
+    if (!out)
+        throw pfmError(path, "cannot open for writing");
+    out << "Pf\n" << image.width << ' ' << image.height << "\n-1.0\n";
+    for (int y = image.height - 1; y >= 0; --y) {
+        for (int x = 0; x < image.width; ++x) {
+            std::uint32_t bits = std::bit_cast<std::uint32_t>(image.values[std::size_t(y) * image.width + x]);
+            if constexpr (std::endian::native != std::endian::little)
+                bits = byteSwap(bits);
+            out.write(reinterpret_cast<const char*>(&bits), 4);
+        }
+    }
+    if (!out)
+        throw pfmError(path, "write failed (disk full?)");
+}
+
+FloatImage readPfm(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw pfmError(path, "cannot open for reading");
+    std::string magic;
+    FloatImage image;
+    double scale = 0.0;
+    in >> magic >> image.width >> image.height >> scale;
+    if (magic != "Pf")
+        throw pfmError(path, "not a grayscale PFM (magic '" + magic + "', expected 'Pf')");
+    if (!in || image.width <= 0 || image.height <= 0 || image.width > 65536 || image.height > 65536 || scale == 0.0)
+        throw pfmError(path, "bad PFM header");
+    in.get(); // the single whitespace byte before the data
+    const std::size_t count = std::size_t(image.width) * std::size_t(image.height);
+    std::string data(count * 4, '\0');
+    if (!in.read(data.data(), std::streamsize(data.size())))
+        throw pfmError(path, "truncated: expected " + std::to_string(count) + " floats");
+    image.values.resize(count);
+    for (int row = 0; row < image.height; ++row)
+        for (int x = 0; x < image.width; ++x)
+            image.values[std::size_t(image.height - 1 - row) * image.width + x] =
+                decodeFloat(&data[(std::size_t(row) * image.width + x) * 4], scale < 0.0);
+    return image;
+}
+
+} // namespace trimlab

@@ -1,0 +1,3 @@
+target_sources(trimlab_core PRIVATE
+  io/pfm_image.cpp
+)

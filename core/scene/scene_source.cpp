@@ -1,0 +1,72 @@
+#include "scene/scene_source.h"
+
+#include "mesh/mesh_io.h"
+#include "scene/demo_scenes.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace trimlab {
+
+namespace {
+
+Scene demoScene(std::string_view name)
+{
+    if (std::optional<Scene> scene = makeDemoScene(name))
+        return std::move(*scene);
+    std::string known;
+    for (const std::string& n : demoSceneNames())
+        known += (known.empty() ? "" : ", ") + std::string(kDemoPrefix) + n;
+    throw std::invalid_argument("Unknown demo scene '" + std::string(name) + "'. Known demos: " + known + ".");
+}
+
+Scene fileScene(const std::string& path)
+{
+    Scene scene;
+    scene.objects.push_back({std::filesystem::path(path).filename().string(), loadMesh(path), glm::dmat4(1.0)});
+    return scene;
+}
+
+} // namespace
+
+bool isDemoSource(std::string_view source)
+{
+    return source.substr(0, kDemoPrefix.size()) == kDemoPrefix;
+}
+
+bool LoadedScene::trimmable() const
+{
+    for (const MeshValidationReport& report : reports)
+        if (!report.trimmable())
+            return false;
+    return true;
+}
+
+std::string LoadedScene::trimUnavailableReason() const
+{
+    for (std::size_t i = 0; i < reports.size(); ++i) {
+        if (!reports[i].trimmable()) {
+            const std::string& name = scene.objects[i].name;
+            return (reports.size() > 1 ? "Object '" + name + "': " : std::string()) + reports[i].trimUnavailableReason();
+        }
+    }
+    return {};
+}
+
+LoadedScene loadScene(const std::string& source)
+{
+    LoadedScene loaded;
+    loaded.source = source;
+    if (isDemoSource(source)) {
+        loaded.displayName = source.substr(kDemoPrefix.size());
+        loaded.scene = demoScene(loaded.displayName);
+    } else {
+        loaded.displayName = std::filesystem::path(source).filename().string();
+        loaded.scene = fileScene(source);
+    }
+    for (const SceneObject& object : loaded.scene.objects)
+        loaded.reports.push_back(validateMesh(object.mesh));
+    return loaded;
+}
+
+} // namespace trimlab

@@ -1,0 +1,37 @@
+#pragma once
+/// \file
+/// Opening a scene the way every entry point does it (GUI menu, recent files, drag and
+/// drop, command line, tests): from a mesh file or a built-in demo ("demo:NAME"), with
+/// the validation report that decides whether the trim modes are available.
+
+#include "mesh/mesh_validation.h"
+#include "scene/scene.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace trimlab {
+
+struct LoadedScene {
+    Scene scene;
+    std::string source;      ///< as given: a file path or "demo:NAME"
+    std::string displayName; ///< the file name or the demo name
+    std::vector<MeshValidationReport> reports; ///< one per scene object
+
+    /// True when every object is a closed, oriented surface (winding numbers defined).
+    [[nodiscard]] bool trimmable() const;
+    /// Why the trim modes are unavailable ("" when trimmable), naming the object.
+    [[nodiscard]] std::string trimUnavailableReason() const;
+};
+
+/// The prefix of built-in demo sources.
+inline constexpr std::string_view kDemoPrefix = "demo:";
+
+[[nodiscard]] bool isDemoSource(std::string_view source);
+
+/// Loads `source`. Throws MeshLoadError for unreadable or malformed files and
+/// std::invalid_argument for an unknown demo name (listing the known ones).
+[[nodiscard]] LoadedScene loadScene(const std::string& source);
+
+} // namespace trimlab
