@@ -1,0 +1,76 @@
+#include "frame_stats_labels.h"
+
+#include <QLabel>
+#include <QLocale>
+#include <QStatusBar>
+
+namespace trimlab::ui {
+
+namespace {
+
+/// "12,345" below a million, "1.23 M" above.
+QString countText(std::uint64_t count)
+{
+    if (count < 1000000)
+        return QLocale().toString(qulonglong(count));
+    return QStringLiteral("%1 M").arg(double(count) / 1e6, 0, 'f', 2);
+}
+
+} // namespace
+
+FrameStatsLabels::FrameStatsLabels(QStatusBar* statusBar) : QObject(statusBar)
+{
+    m_frameTime = addLabel(statusBar, QStringLiteral("frameTimeLabel"),
+                           tr("GPU time of the last frame (clear, store and resolve passes)"));
+    m_fragments = addLabel(statusBar, QStringLiteral("fragmentsLabel"),
+                           tr("Fragments inside the kept span (after clipping) in the last frame"));
+    m_overflow = addLabel(statusBar, QStringLiteral("overflowLabel"),
+                          tr("Pixels that received more than k fragments"));
+    m_unresolved = addLabel(statusBar, QStringLiteral("unresolvedLabel"),
+                            tr("Overflowed pixels whose trim point lies beyond the k nearest fragments; they "
+                               "show magenta. Increase k in the Render panel."));
+    m_memory = addLabel(statusBar, QStringLiteral("memoryLabel"),
+                        tr("GPU memory held by the k⁺-buffer, the render target and the scene"));
+    clear();
+}
+
+QLabel* FrameStatsLabels::addLabel(QStatusBar* statusBar, const QString& objectName, const QString& toolTip)
+{
+    auto* label = new QLabel(statusBar);
+    label->setObjectName(objectName);
+    label->setToolTip(toolTip);
+    label->setContentsMargins(6, 0, 6, 0);
+    statusBar->addPermanentWidget(label);
+    return label;
+}
+
+void FrameStatsLabels::showStats(const render::FrameStats& stats)
+{
+    // The GPU timer can be unavailable (llvmpipe's first query); the wall time, which
+    // includes waiting for the GPU, is then the honest number.
+    m_frameTime->setText(stats.gpuMilliseconds >= 0.0 ? tr("GPU %1 ms").arg(stats.gpuMilliseconds, 0, 'f', 1)
+                                                      : tr("frame %1 ms").arg(stats.wallMilliseconds, 0, 'f', 1));
+    m_fragments->setText(tr("%1 fragments").arg(countText(stats.counts.fragmentsInSpan)));
+    m_overflow->setText(tr("overflow %1 px").arg(countText(stats.counts.overflowPixels)));
+    const std::uint64_t unresolved = stats.counts.unresolvedPixels;
+    const std::uint64_t dropped = stats.counts.spinGiveUps;
+    QString text = tr("unresolved %1 px").arg(countText(unresolved));
+    if (dropped > 0) // fragments lost to the bounded spin-lock: the image may be wrong
+        text += tr(", %1 fragments dropped").arg(countText(dropped));
+    m_unresolved->setText(text);
+    m_unresolved->setStyleSheet(unresolved > 0 || dropped > 0 ? QStringLiteral("QLabel { background: #c0392b; color: white; }")
+                                               : QString());
+    m_memory->setText(tr("%1 MB").arg(stats.bufferMegabytes, 0, 'f', 1));
+}
+
+void FrameStatsLabels::clear()
+{
+    m_frameTime->setText(tr("GPU – ms"));
+    m_fragments->setText(tr("– fragments"));
+    m_overflow->setText(tr("overflow – px"));
+    m_unresolved->setText(tr("unresolved – px"));
+    m_unresolved->setStyleSheet(QString());
+    m_memory->setText(tr("– MB"));
+}
+
+} // namespace trimlab::ui

@@ -1,0 +1,399 @@
+#include "main_window.h"
+
+#include "frame_stats_labels.h"
+#include "mesh_file_filter.h"
+#include "render_panel.h"
+#include "render_settings_store.h"
+#include "scene/demo_scenes.h"
+#include "scene_loader.h"
+#include "viewport_widget.h"
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QScrollArea>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTimer>
+
+namespace trimlab::ui {
+
+namespace {
+
+const QString kGeometryKey = QStringLiteral("window/geometry");
+const QString kStateKey = QStringLiteral("window/state");
+constexpr int kStatusMessageMs = 5000;
+
+/// The first local file among dragged URLs, or "" when there is none.
+QString firstLocalFile(const QMimeData* data)
+{
+    if (!data || !data->hasUrls())
+        return {};
+    for (const QUrl& url : data->urls()) {
+        if (url.isLocalFile())
+            return url.toLocalFile();
+    }
+    return {};
+}
+
+QString sceneLabel(const QString& source)
+{
+    if (isDemoSource(source.toStdString()))
+        return source;
+    return QFileInfo(source).fileName();
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : MainWindow(std::make_unique<QSettings>(QSettings::NativeFormat, QSettings::UserScope, QStringLiteral("TrimLab"),
+                                             QStringLiteral("TrimLab")),
+                 parent)
+{
+}
+
+MainWindow::MainWindow(const QString& settingsFile, QWidget* parent)
+    : MainWindow(std::make_unique<QSettings>(settingsFile, QSettings::IniFormat), parent)
+{
+}
+
+MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
+    : QMainWindow(parent), m_settings(std::move(settings))
+{
+    setObjectName(QStringLiteral("mainWindow"));
+    setAcceptDrops(true);
+    createCentralView();
+    m_loader = new SceneLoader(this);
+    m_statsLabels = new FrameStatsLabels(statusBar());
+    createDock();
+    createFileMenu();
+    createViewMenu();
+    createHelpMenu();
+    connectParts();
+    restoreSettings();
+    updateTitle();
+    QTimer::singleShot(0, this, &MainWindow::openDefaultIfNothingRequested);
+}
+
+MainWindow::~MainWindow() = default;
+
+QString MainWindow::defaultSource()
+{
+    return QStringLiteral("demo:pushed-sphere");
+}
+
+void MainWindow::createCentralView()
+{
+    const QString glProblem = ViewportWidget::openGlProblem();
+    if (glProblem.isEmpty()) {
+        m_viewport = new ViewportWidget(this);
+        m_viewport->setObjectName(QStringLiteral("viewport"));
+        setCentralWidget(m_viewport);
+        return;
+    }
+    // No usable OpenGL: a QOpenGLWidget in the window would break the window itself, so
+    // the viewport stays detached (loading and the panel still work) and a text explains.
+    m_detachedViewport = std::make_unique<ViewportWidget>();
+    m_viewport = m_detachedViewport.get();
+    m_viewport->setUnavailable(glProblem);
+    auto* label = new QLabel(tr("The 3D view is unavailable.\n\n%1").arg(glProblem), this);
+    label->setObjectName(QStringLiteral("viewportUnavailableLabel"));
+    label->setAlignment(Qt::AlignCenter);
+    label->setWordWrap(true);
+    label->setMargin(24);
+    setCentralWidget(label);
+    QTimer::singleShot(0, this, [this, glProblem] { onRenderError(glProblem); });
+}
+
+void MainWindow::createDock()
+{
+    m_panel = new RenderPanel;
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(m_panel);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    m_dock = new QDockWidget(tr("Render"), this);
+    m_dock->setObjectName(QStringLiteral("renderDock"));
+    m_dock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
+    m_dock->setWidget(scroll);
+    addDockWidget(Qt::RightDockWidgetArea, m_dock);
+}
+
+void MainWindow::createFileMenu()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* open = file->addAction(tr("&Open…"), this, &MainWindow::showOpenDialog);
+    open->setShortcut(QKeySequence::Open);
+    QMenu* demos = file->addMenu(tr("Open &Demo"));
+    for (const std::string& name : demoSceneNames()) {
+        const QString source = QString::fromStdString(std::string(kDemoPrefix) + name);
+        QAction* action = demos->addAction(QString::fromStdString(name), this, [this, source] { openSource(source); });
+        action->setStatusTip(QString::fromStdString(std::string(demoSceneDescription(name))));
+    }
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    file->addSeparator();
+    QAction* exportImage = file->addAction(tr("&Export Image…"), this, &MainWindow::showExportDialog);
+    exportImage->setShortcut(QKeySequence(tr("Ctrl+E")));
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+    quit->setMenuRole(QAction::QuitRole);
+}
+
+void MainWindow::rebuildRecentMenu()
+{
+    m_recentMenu->clear();
+    for (const QString& path : m_recent.paths())
+        m_recentMenu->addAction(path, this, [this, path] { openRecent(path); });
+    if (m_recent.paths().isEmpty()) {
+        m_recentMenu->addAction(tr("(none)"))->setEnabled(false);
+        return;
+    }
+    m_recentMenu->addSeparator();
+    m_recentMenu->addAction(tr("Clear List"), this, [this] {
+        for (const QString& path : m_recent.paths())
+            m_recent.remove(path);
+        m_recent.save(*m_settings);
+        rebuildRecentMenu();
+    });
+}
+
+void MainWindow::createViewMenu()
+{
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    // Single-key shortcuts act only while the viewport has focus (never while typing).
+    QAction* fit = m_viewMenu->addAction(tr("&Fit to View"), m_viewport, &ViewportWidget::fitToView);
+    fit->setShortcut(QKeySequence(Qt::Key_F));
+    fit->setShortcutContext(Qt::WidgetShortcut);
+    m_viewport->addAction(fit);
+    QAction* reset = m_viewMenu->addAction(tr("&Reset View"), m_viewport, &ViewportWidget::resetView);
+    reset->setShortcut(QKeySequence(Qt::Key_Home));
+    reset->setShortcutContext(Qt::WidgetShortcut);
+    m_viewport->addAction(reset);
+    m_viewMenu->addSeparator();
+    QAction* panel = m_dock->toggleViewAction();
+    panel->setText(tr("Render &Panel"));
+    m_viewMenu->addAction(panel);
+}
+
+void MainWindow::createHelpMenu()
+{
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* about = help->addAction(tr("&About TrimLab"), this, &MainWindow::showAbout);
+    about->setMenuRole(QAction::AboutRole);
+}
+
+void MainWindow::connectParts()
+{
+    connect(m_loader, &SceneLoader::loaded, this, &MainWindow::onSceneLoaded);
+    connect(m_loader, &SceneLoader::failed, this, &MainWindow::onLoadFailed);
+    connect(m_loader, &SceneLoader::canceled, this, [this](const QString& source) {
+        statusBar()->showMessage(tr("Opening %1 canceled.").arg(sceneLabel(source)), kStatusMessageMs);
+    });
+    connect(m_panel, &RenderPanel::renderChoicesChanged, this, &MainWindow::applyRenderChoices);
+    connect(m_panel, &RenderPanel::viewDirectionRequested, this, [this] {
+        const Camera camera = m_viewport->camera();
+        m_panel->setClipNormal(camera.target - camera.eye);
+    });
+    connect(m_viewport, &ViewportWidget::frameRendered, m_statsLabels, &FrameStatsLabels::showStats);
+    connect(m_viewport, &ViewportWidget::framePixelSizeChanged, m_panel, &RenderPanel::setFramePixelSize);
+    // Queued: the viewport reports from inside paintGL, where no dialog may open.
+    connect(m_viewport, &ViewportWidget::renderError, this, &MainWindow::onRenderError, Qt::QueuedConnection);
+}
+
+void MainWindow::restoreSettings()
+{
+    m_recent.load(*m_settings);
+    rebuildRecentMenu();
+    m_panel->setRenderChoices(loadRenderChoices(*m_settings));
+    applyRenderChoices();
+    if (!restoreGeometry(m_settings->value(kGeometryKey).toByteArray()))
+        resize(1100, 720);
+    restoreState(m_settings->value(kStateKey).toByteArray());
+}
+
+void MainWindow::saveWindowState()
+{
+    m_settings->setValue(kGeometryKey, saveGeometry());
+    m_settings->setValue(kStateKey, saveState());
+    m_settings->sync();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    saveWindowState();
+    QMainWindow::closeEvent(event);
+}
+
+void MainWindow::openSource(const QString& source)
+{
+    m_openRequested = true;
+    statusBar()->showMessage(tr("Opening %1…").arg(sceneLabel(source)));
+    m_loader->load(source);
+}
+
+void MainWindow::openDefaultIfNothingRequested()
+{
+    if (!m_openRequested)
+        openSource(defaultSource());
+}
+
+bool MainWindow::isLoading() const
+{
+    return m_loader->isLoading();
+}
+
+void MainWindow::openRecent(const QString& path)
+{
+    if (QFileInfo::exists(path)) {
+        openSource(path);
+        return;
+    }
+    m_recent.remove(path);
+    m_recent.save(*m_settings);
+    rebuildRecentMenu();
+    showMessage(QMessageBox::Warning, tr("File not found"), tr("“%1” no longer exists.").arg(path),
+                tr("It was removed from the recent files."));
+}
+
+void MainWindow::showOpenDialog()
+{
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open Mesh"), loadLastDirectory(*m_settings), meshFileDialogFilter());
+    if (path.isEmpty())
+        return;
+    saveLastDirectory(*m_settings, QFileInfo(path).absolutePath());
+    openSource(path);
+}
+
+void MainWindow::onSceneLoaded(std::shared_ptr<const LoadedScene> loaded)
+{
+    m_scene = std::move(loaded);
+    const QString source = QString::fromStdString(m_scene->source);
+    const bool trimmable = m_scene->trimmable();
+    m_panel->setSceneInfo(m_scene->scene.worldBounds(), trimmable,
+                          QString::fromStdString(m_scene->trimUnavailableReason()));
+    m_viewport->setScene(std::shared_ptr<const Scene>(m_scene, &m_scene->scene));
+    applyRenderChoices();
+    if (!isDemoSource(m_scene->source)) {
+        m_recent.add(source);
+        m_recent.save(*m_settings);
+        rebuildRecentMenu();
+    }
+    updateTitle();
+    statusBar()->showMessage(tr("%1: %2 triangles%3")
+                                 .arg(QString::fromStdString(m_scene->displayName))
+                                 .arg(m_scene->scene.triangleCount())
+                                 .arg(trimmable ? QString() : tr(" — trim modes unavailable")),
+                             kStatusMessageMs);
+    emit sceneLoaded(source);
+}
+
+void MainWindow::onLoadFailed(const QString& source, const QString& message)
+{
+    statusBar()->clearMessage();
+    showMessage(QMessageBox::Critical, tr("Could not open"), tr("Could not open “%1”.").arg(sceneLabel(source)),
+                message);
+    emit sceneLoadFailed(source, message);
+}
+
+void MainWindow::onRenderError(const QString& message)
+{
+    m_statsLabels->clear();
+    showMessage(QMessageBox::Critical, tr("OpenGL problem"), tr("The viewport cannot render."), message);
+}
+
+void MainWindow::applyRenderChoices()
+{
+    const RenderChoices choices = m_panel->renderChoices();
+    saveRenderChoices(*m_settings, choices);
+    TrimSettings effective = choices.trim;
+    // The winding index is undefined for open or inconsistently oriented surfaces.
+    effective.trimEnabled = effective.trimEnabled && m_panel->sceneTrimmable();
+    m_viewport->setTrimSettings(effective);
+    m_viewport->setK(choices.k);
+}
+
+bool MainWindow::exportImage(const QString& path, QString* error)
+{
+    const QImage image = m_viewport->readColorImage();
+    QString reason;
+    if (image.isNull())
+        reason = tr("Nothing has been rendered yet.");
+    else if (!image.convertToFormat(QImage::Format_RGB32).save(path, "PNG"))
+        reason = tr("Could not write “%1”.").arg(path);
+    if (error)
+        *error = reason;
+    return reason.isEmpty();
+}
+
+void MainWindow::showExportDialog()
+{
+    const QString name = m_scene ? QString::fromStdString(m_scene->displayName) : QStringLiteral("trimlab");
+    const QString suggested = loadLastDirectory(*m_settings) + QLatin1Char('/') + QFileInfo(name).completeBaseName() +
+                              QStringLiteral(".png");
+    QString path = QFileDialog::getSaveFileName(this, tr("Export Image"), suggested, tr("PNG image (*.png)"));
+    if (path.isEmpty())
+        return;
+    if (!path.endsWith(QStringLiteral(".png"), Qt::CaseInsensitive))
+        path += QStringLiteral(".png");
+    saveLastDirectory(*m_settings, QFileInfo(path).absolutePath());
+    QString error;
+    if (exportImage(path, &error))
+        statusBar()->showMessage(tr("Saved %1").arg(path), kStatusMessageMs);
+    else
+        showMessage(QMessageBox::Warning, tr("Export Image"), tr("The image was not saved."), error);
+}
+
+void MainWindow::showAbout()
+{
+    const auto caps = m_viewport->capabilities();
+    const QString gl = caps ? caps->summary().toHtmlEscaped()
+                            : tr("not available — %1").arg(m_viewport->errorMessage().toHtmlEscaped());
+    QMessageBox::about(this, tr("About TrimLab"),
+                       tr("<h3>TrimLab %1</h3>"
+                          "<p>Self-trimmed rendering of self-crossing surfaces by their winding number, on the GPU "
+                          "with a k⁺-buffer, checked against an exact CPU ray caster.</p>"
+                          "<p><b>OpenGL:</b> %2<br><b>Qt:</b> %3</p>")
+                           .arg(QStringLiteral(TRIMLAB_VERSION), gl, QString::fromLatin1(qVersion())));
+}
+
+void MainWindow::showMessage(QMessageBox::Icon icon, const QString& title, const QString& text, const QString& details)
+{
+    // Window-modal and non-blocking: loading and rendering continue behind it.
+    auto* box = new QMessageBox(icon, title, text, QMessageBox::Ok, this);
+    box->setInformativeText(details);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+void MainWindow::updateTitle()
+{
+    setWindowTitle(m_scene ? tr("%1 — TrimLab").arg(QString::fromStdString(m_scene->displayName))
+                           : QStringLiteral("TrimLab"));
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (!firstLocalFile(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+    const QString path = firstLocalFile(event->mimeData());
+    if (path.isEmpty())
+        return;
+    event->acceptProposedAction();
+    openSource(path);
+}
+
+} // namespace trimlab::ui

@@ -1,0 +1,170 @@
+#include "render_panel.h"
+
+#include "clip_plane_editor.h"
+#include "mfr/kplus_buffer.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <array>
+
+namespace trimlab::ui {
+
+namespace {
+
+struct RuleEntry {
+    StaticRule rule;
+    const char* label;
+    const char* toolTip;
+};
+
+/// Combo box order. The item data is the stable ruleName().
+constexpr std::array<RuleEntry, 3> kRules = {{
+    {StaticRule::Parity, QT_TRANSLATE_NOOP("RenderPanel", "Parity"),
+     QT_TRANSLATE_NOOP("RenderPanel", "Interior where the winding index is odd")},
+    {StaticRule::PositiveIndex, QT_TRANSLATE_NOOP("RenderPanel", "Positive index"),
+     QT_TRANSLATE_NOOP("RenderPanel", "Interior where the winding index is at least 1")},
+    {StaticRule::AlternatingBorder, QT_TRANSLATE_NOOP("RenderPanel", "Alternating border"),
+     QT_TRANSLATE_NOOP("RenderPanel", "Interior where the winding index mod 4 is 1 or 2")},
+}};
+
+QString ruleKey(StaticRule rule)
+{
+    const std::string_view name = ruleName(rule);
+    return QString::fromLatin1(name.data(), qsizetype(name.size()));
+}
+
+} // namespace
+
+RenderPanel::RenderPanel(QWidget* parent) : QWidget(parent)
+{
+    setObjectName(QStringLiteral("renderPanel"));
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(createTrimGroup());
+    m_clip = new ClipPlaneEditor(this);
+    connect(m_clip, &ClipPlaneEditor::planeChanged, this, &RenderPanel::renderChoicesChanged);
+    connect(m_clip, &ClipPlaneEditor::viewDirectionRequested, this, &RenderPanel::viewDirectionRequested);
+    layout->addWidget(m_clip);
+    layout->addWidget(createBufferGroup());
+    layout->addStretch();
+    setRenderChoices(RenderChoices{});
+}
+
+QWidget* RenderPanel::createTrimGroup()
+{
+    auto* group = new QGroupBox(tr("Trim"), this);
+    auto* form = new QFormLayout(group);
+    m_trim = new QCheckBox(tr("Trim by winding number"), group);
+    m_trim->setObjectName(QStringLiteral("trimCheckBox"));
+    m_trim->setToolTip(tr("Show the self-trimmed surface: the first point along each ray whose two sides classify "
+                          "differently under the rule. Off: ordinary rendering."));
+    form->addRow(m_trim);
+    m_rule = new QComboBox(group);
+    m_rule->setObjectName(QStringLiteral("ruleComboBox"));
+    for (const RuleEntry& entry : kRules) {
+        m_rule->addItem(tr(entry.label), ruleKey(entry.rule));
+        m_rule->setItemData(m_rule->count() - 1, tr(entry.toolTip), Qt::ToolTipRole);
+    }
+    form->addRow(tr("Rule"), m_rule);
+    m_trimUnavailable = new QLabel(group);
+    m_trimUnavailable->setObjectName(QStringLiteral("trimUnavailableLabel"));
+    m_trimUnavailable->setWordWrap(true);
+    m_trimUnavailable->setStyleSheet(QStringLiteral("QLabel { color: #e67e22; }"));
+    m_trimUnavailable->setVisible(false);
+    form->addRow(m_trimUnavailable);
+    connect(m_trim, &QCheckBox::toggled, this, &RenderPanel::renderChoicesChanged);
+    connect(m_rule, &QComboBox::currentIndexChanged, this, &RenderPanel::renderChoicesChanged);
+    return group;
+}
+
+QWidget* RenderPanel::createBufferGroup()
+{
+    auto* group = new QGroupBox(tr("k⁺-buffer"), this);
+    auto* form = new QFormLayout(group);
+    auto* row = new QWidget(group);
+    auto* rowLayout = new QHBoxLayout(row);
+    rowLayout->setContentsMargins(0, 0, 0, 0);
+    m_k = new QSpinBox(row);
+    m_k->setObjectName(QStringLiteral("kSpinBox"));
+    m_k->setRange(1, render::KPlusBuffer::kMaxK);
+    m_k->setKeyboardTracking(false); // reallocate on Enter, not on every digit
+    m_k->setToolTip(tr("Fragments kept per pixel. Pixels with more fragments overflow; where the trim point lies "
+                       "beyond the k nearest they are unresolved (magenta)."));
+    m_memory = new QLabel(row);
+    m_memory->setObjectName(QStringLiteral("kMemoryLabel"));
+    rowLayout->addWidget(m_k);
+    rowLayout->addWidget(m_memory, 1);
+    form->addRow(tr("k"), row);
+    connect(m_k, &QSpinBox::valueChanged, this, [this] {
+        updateMemoryEstimate();
+        emit renderChoicesChanged();
+    });
+    return group;
+}
+
+void RenderPanel::setRenderChoices(const RenderChoices& choices)
+{
+    const QSignalBlocker trimBlocker(m_trim);
+    const QSignalBlocker ruleBlocker(m_rule);
+    const QSignalBlocker kBlocker(m_k);
+    m_trim->setChecked(choices.trim.trimEnabled);
+    m_rule->setCurrentIndex(m_rule->findData(ruleKey(choices.trim.rule)));
+    m_clip->setPlane(choices.trim.clip);
+    m_k->setValue(choices.k);
+    updateMemoryEstimate();
+}
+
+RenderChoices RenderPanel::renderChoices() const
+{
+    RenderChoices choices;
+    choices.trim.trimEnabled = m_trim->isChecked();
+    const auto rule = parseStaticRule(m_rule->currentData().toString().toStdString());
+    choices.trim.rule = rule.value_or(StaticRule::AlternatingBorder);
+    choices.trim.clip = m_clip->plane();
+    choices.k = m_k->value();
+    return choices;
+}
+
+void RenderPanel::setSceneInfo(const Bounds& bounds, bool trimmable, const QString& reason)
+{
+    m_trimmable = trimmable;
+    m_clip->setSceneBounds(bounds);
+    m_trim->setEnabled(trimmable);
+    m_rule->setEnabled(trimmable);
+    m_trimUnavailable->setText(trimmable ? QString() : tr("Trim modes unavailable: %1").arg(reason));
+    m_trimUnavailable->setVisible(!trimmable);
+}
+
+void RenderPanel::setFramePixelSize(QSize size)
+{
+    m_framePixelSize = size;
+    updateMemoryEstimate();
+}
+
+void RenderPanel::setClipNormal(const glm::dvec3& viewDirection)
+{
+    m_clip->setNormalThroughCenter(viewDirection);
+}
+
+void RenderPanel::updateMemoryEstimate()
+{
+    if (m_framePixelSize.isEmpty()) {
+        m_memory->setText(QString());
+        return;
+    }
+    const std::size_t bytes =
+        render::KPlusBuffer::requiredBytes(m_framePixelSize.width(), m_framePixelSize.height(), m_k->value());
+    m_memory->setText(tr("≈ %1 MB at %2×%3")
+                          .arg(double(bytes) / (1024.0 * 1024.0), 0, 'f', 1)
+                          .arg(m_framePixelSize.width())
+                          .arg(m_framePixelSize.height()));
+}
+
+} // namespace trimlab::ui

@@ -1,0 +1,66 @@
+#pragma once
+/// \file
+/// The Render panel (the content of the main window's "Render" dock): trim on/off, the
+/// static rule, the clipping plane (clip_plane_editor.h) and the k⁺-buffer capacity with
+/// the GPU memory it needs at the current frame size. When the scene is not trimmable
+/// the trim controls are disabled and a label says why; the user's choice is kept and
+/// applies again to the next trimmable scene.
+
+#include "render_choices.h"
+
+#include <QSize>
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QSpinBox;
+
+namespace trimlab::ui {
+
+class ClipPlaneEditor;
+
+class RenderPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit RenderPanel(QWidget* parent = nullptr);
+
+    /// Shows `choices` without emitting renderChoicesChanged().
+    void setRenderChoices(const RenderChoices& choices);
+    /// What the user chose (trimEnabled as ticked, even while the scene is not trimmable).
+    [[nodiscard]] RenderChoices renderChoices() const;
+
+    /// The current scene: its bounds (for the clip offset slider) and whether the trim
+    /// modes apply; `reason` is LoadedScene::trimUnavailableReason().
+    void setSceneInfo(const Bounds& bounds, bool trimmable, const QString& reason);
+    [[nodiscard]] bool sceneTrimmable() const { return m_trimmable; }
+    /// The frame size the k⁺-buffer memory estimate is computed for (device pixels).
+    void setFramePixelSize(QSize size);
+    /// Answers viewDirectionRequested(): clip normal along `viewDirection`, through the
+    /// scene centre.
+    void setClipNormal(const glm::dvec3& viewDirection);
+
+    [[nodiscard]] ClipPlaneEditor* clipEditor() const { return m_clip; }
+
+signals:
+    /// Any user edit of the render choices.
+    void renderChoicesChanged();
+    /// The clip "View" preset was pressed (see setClipNormal).
+    void viewDirectionRequested();
+
+private:
+    QWidget* createTrimGroup();
+    QWidget* createBufferGroup();
+    void updateMemoryEstimate();
+
+    QCheckBox* m_trim = nullptr;
+    QComboBox* m_rule = nullptr;
+    QLabel* m_trimUnavailable = nullptr;
+    ClipPlaneEditor* m_clip = nullptr;
+    QSpinBox* m_k = nullptr;
+    QLabel* m_memory = nullptr;
+    QSize m_framePixelSize;
+    bool m_trimmable = true;
+};
+
+} // namespace trimlab::ui

@@ -1,0 +1,24 @@
+#pragma once
+/// \file
+/// Reading and writing the render choices and the file dialogs' last directory in a
+/// QSettings (keys "render/…" and "paths/lastDirectory"; recent files: recent_files.h;
+/// window geometry and dock state: main_window.cpp). Values that are missing or unusable
+/// (unknown rule name, k out of range, zero or non-finite normal) fall back to
+/// firstStartRenderChoices(), field by field — so no saved settings means first start.
+
+#include "render_choices.h"
+
+#include <QString>
+
+class QSettings;
+
+namespace trimlab::ui {
+
+[[nodiscard]] RenderChoices loadRenderChoices(const QSettings& settings);
+void saveRenderChoices(QSettings& settings, const RenderChoices& choices);
+
+/// The folder file dialogs start in; the user's home folder when none was saved.
+[[nodiscard]] QString loadLastDirectory(const QSettings& settings);
+void saveLastDirectory(QSettings& settings, const QString& directory);
+
+} // namespace trimlab::ui

@@ -1,0 +1,354 @@
+#include "viewport_widget.h"
+
+#include "gl/gl_error.h"
+#include "gl/offscreen_gl_context.h"
+#include "mfr/kplus_buffer.h"
+#include "trim/trim_shading.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QPainter>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+
+namespace trimlab::ui {
+
+namespace {
+
+/// Pixels of margin around the message painted into the view.
+constexpr int kMessageMargin = 24;
+/// QWheelEvent::angleDelta of one wheel notch (15° in eighths of a degree).
+constexpr double kAngleDeltaPerNotch = 120.0;
+
+} // namespace
+
+ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent)
+{
+    setFormat(render::OffscreenGlContext::requestedFormat());
+    setFocusPolicy(Qt::StrongFocus);
+    setMinimumSize(160, 120);
+    setToolTip(tr("Left drag: orbit · Right/middle or Shift+left drag: pan · Wheel: zoom (Ctrl: toward the "
+                  "cursor) · Double click or F: fit"));
+}
+
+ViewportWidget::~ViewportWidget()
+{
+    releaseGl();
+}
+
+void ViewportWidget::setScene(std::shared_ptr<const Scene> scene)
+{
+    m_scene = std::move(scene);
+    m_orbit.setSceneBounds(m_scene ? m_scene->worldBounds() : Bounds{});
+    m_sceneUploaded = false;
+    m_resetPending = true;
+    m_lastFrame.reset();
+    update();
+}
+
+void ViewportWidget::setTrimSettings(const TrimSettings& settings)
+{
+    m_settings = settings;
+    update();
+}
+
+void ViewportWidget::setK(int k)
+{
+    m_k = std::clamp(k, 1, render::KPlusBuffer::kMaxK);
+    update();
+}
+
+Camera ViewportWidget::camera() const
+{
+    if (!m_resetPending)
+        return m_orbit.camera();
+    OrbitController reset = m_orbit;
+    reset.fit(aspect());
+    return reset.camera();
+}
+
+void ViewportWidget::applyPendingReset()
+{
+    if (!m_resetPending)
+        return;
+    m_orbit.fit(aspect());
+    m_resetPending = false;
+}
+
+void ViewportWidget::setCamera(const Camera& camera)
+{
+    m_orbit.setCamera(camera);
+    m_resetPending = false;
+    update();
+}
+
+void ViewportWidget::fitToView()
+{
+    applyPendingReset();
+    m_orbit.fitKeepingDirection(aspect());
+    update();
+}
+
+void ViewportWidget::resetView()
+{
+    m_orbit.fit(aspect());
+    m_resetPending = false;
+    update();
+}
+
+QSize ViewportWidget::framePixelSize() const
+{
+    // QOpenGLWidget sizes its framebuffer as size() × devicePixelRatio(), rounded.
+    const QSize size = this->size() * devicePixelRatio();
+    return size.expandedTo(QSize(1, 1));
+}
+
+double ViewportWidget::aspect() const
+{
+    const QSize size = framePixelSize();
+    return double(size.width()) / double(size.height());
+}
+
+QString ViewportWidget::openGlProblem()
+{
+    try {
+        const render::OffscreenGlContext probe;
+        return {};
+    } catch (const render::GlError& e) {
+        return QString::fromStdString(e.what());
+    }
+}
+
+void ViewportWidget::setUnavailable(const QString& reason)
+{
+    m_error = reason;
+    m_reportedError = reason;
+}
+
+std::optional<render::GlCapabilities> ViewportWidget::capabilities() const
+{
+    if (!m_renderer)
+        return std::nullopt;
+    return m_renderer->capabilities();
+}
+
+QImage ViewportWidget::readColorImage()
+{
+    if (!m_renderer || !m_lastFrame)
+        return {};
+    makeCurrent();
+    QImage image = m_renderer->readColor();
+    doneCurrent();
+    return image;
+}
+
+TrimImage ViewportWidget::readTrimImage()
+{
+    if (!m_renderer || !m_lastFrame)
+        return {};
+    makeCurrent();
+    TrimImage image = m_renderer->readTrimImage();
+    doneCurrent();
+    return image;
+}
+
+void ViewportWidget::initializeGL()
+{
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseGl, Qt::UniqueConnection);
+    m_sceneUploaded = false;
+    try {
+        m_renderer = std::make_unique<render::TrimRenderer>(*context());
+        setError({});
+    } catch (const render::GlError& e) {
+        setError(QString::fromStdString(e.what()));
+    } catch (const std::exception& e) {
+        setError(tr("The renderer could not start: %1").arg(QString::fromStdString(e.what())));
+    }
+}
+
+void ViewportWidget::releaseGl()
+{
+    if (!m_renderer)
+        return;
+    makeCurrent();
+    m_renderer.reset();
+    doneCurrent();
+    m_sceneUploaded = false;
+}
+
+void ViewportWidget::resizeGL(int, int)
+{
+    emit framePixelSizeChanged(framePixelSize());
+}
+
+void ViewportWidget::paintGL()
+{
+    if (!m_renderer) {
+        clearToBackground();
+        paintMessage(m_error.isEmpty() ? tr("OpenGL is not available.") : m_error);
+        return;
+    }
+    if (!m_scene || m_scene->empty()) {
+        clearToBackground();
+        paintMessage(tr("No scene. Open a mesh with File ▸ Open… or drop a mesh file here."));
+        return;
+    }
+    try {
+        renderFrame();
+    } catch (const render::GlError& e) {
+        setError(QString::fromStdString(e.what()));
+    } catch (const std::exception& e) {
+        setError(tr("Rendering failed: %1").arg(QString::fromStdString(e.what())));
+    }
+    if (!m_error.isEmpty()) {
+        m_lastFrame.reset();
+        clearToBackground();
+        paintMessage(m_error);
+        return;
+    }
+    emit frameRendered(m_lastFrame->stats);
+}
+
+void ViewportWidget::renderFrame()
+{
+    const QSize size = framePixelSize();
+    if (!m_sceneUploaded) {
+        m_renderer->setScene(*m_scene);
+        m_sceneUploaded = true;
+    }
+    applyPendingReset();
+    m_renderer->setK(m_k);
+    const Camera camera = m_orbit.camera();
+    m_renderer->render(camera, m_settings, size.width(), size.height());
+    m_renderer->blitTo(defaultFramebufferObject());
+    m_lastFrame = ViewportFrame{camera, m_settings, m_k, size, m_renderer->lastStats()};
+    setError({});
+}
+
+void ViewportWidget::clearToBackground()
+{
+    QOpenGLFunctions* gl = context()->functions();
+    gl->glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+    gl->glClearColor(kBackgroundColor.r, kBackgroundColor.g, kBackgroundColor.b, 1.0f);
+    gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void ViewportWidget::paintMessage(const QString& text)
+{
+    QPainter painter(this);
+    painter.setPen(QColor(235, 235, 235));
+    const QRect area = rect().adjusted(kMessageMargin, kMessageMargin, -kMessageMargin, -kMessageMargin);
+    painter.drawText(area, Qt::AlignCenter | Qt::TextWordWrap, text);
+}
+
+void ViewportWidget::setError(const QString& message)
+{
+    m_error = message;
+    if (message.isEmpty()) {
+        m_reportedError.clear();
+        return;
+    }
+    if (message == m_reportedError)
+        return;
+    m_reportedError = message;
+    emit renderError(message);
+}
+
+double ViewportWidget::depthUnderCursor(QPointF position)
+{
+    const double fallback = m_orbit.distance();
+    if (!m_lastFrame)
+        return fallback;
+    const TrimImage image = readTrimImage();
+    const int x = int(std::floor(position.x() * devicePixelRatio()));
+    const int y = int(std::floor(position.y() * devicePixelRatio()));
+    if (x < 0 || y < 0 || x >= image.width || y >= image.height)
+        return fallback;
+    const TrimPixel& pixel = image.at(x, y);
+    const double depth = pixel.viewDepth;
+    return pixel.covered() && std::isfinite(depth) && depth > 0.0 ? depth : fallback;
+}
+
+void ViewportWidget::mousePressEvent(QMouseEvent* event)
+{
+    const bool shiftLeft = event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier);
+    if (shiftLeft || event->button() == Qt::RightButton || event->button() == Qt::MiddleButton) {
+        m_drag = Drag::Pan;
+        m_grabDepth = depthUnderCursor(event->position());
+    } else if (event->button() == Qt::LeftButton) {
+        m_drag = Drag::Orbit;
+    } else {
+        QOpenGLWidget::mousePressEvent(event);
+        return;
+    }
+    applyPendingReset();
+    m_lastMouse = event->position();
+    event->accept();
+}
+
+void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
+{
+    if (m_drag == Drag::None) {
+        QOpenGLWidget::mouseMoveEvent(event);
+        return;
+    }
+    const QPointF delta = event->position() - m_lastMouse;
+    m_lastMouse = event->position();
+    if (m_drag == Drag::Orbit)
+        m_orbit.orbitByDrag(delta.x(), delta.y(), height());
+    else
+        m_orbit.pan(delta.x(), delta.y(), height(), m_grabDepth);
+    event->accept();
+    update();
+}
+
+void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (event->buttons() == Qt::NoButton)
+        m_drag = Drag::None;
+    event->accept();
+}
+
+void ViewportWidget::mouseDoubleClickEvent(QMouseEvent* event)
+{
+    if (event->button() != Qt::LeftButton) {
+        QOpenGLWidget::mouseDoubleClickEvent(event);
+        return;
+    }
+    m_drag = Drag::None;
+    fitToView();
+    event->accept();
+}
+
+void ViewportWidget::wheelEvent(QWheelEvent* event)
+{
+    const double notches = event->angleDelta().y() / kAngleDeltaPerNotch;
+    if (notches == 0.0) {
+        event->ignore();
+        return;
+    }
+    applyPendingReset();
+    const double factor = OrbitController::wheelZoomFactor(notches);
+    if (event->modifiers() & Qt::ControlModifier)
+        m_orbit.zoomAt(factor, event->position().x(), event->position().y(), width(), height());
+    else
+        m_orbit.zoom(factor);
+    event->accept();
+    update();
+}
+
+void ViewportWidget::keyPressEvent(QKeyEvent* event)
+{
+    if (event->key() == Qt::Key_F && !(event->modifiers() & ~Qt::KeypadModifier)) {
+        fitToView();
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
+}
+
+} // namespace trimlab::ui

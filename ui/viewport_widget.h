@@ -1,0 +1,132 @@
+#pragma once
+/// \file
+/// The 3D view: a QOpenGLWidget that owns a TrimRenderer and an OrbitController. It
+/// renders only when something changed (scene, settings, camera, size) — never in a loop
+/// — at the widget's device-pixel size, and blits the result into its framebuffer.
+///
+/// Mouse: left drag orbits, right or middle drag (or Shift + left drag) pans, the wheel
+/// dollies toward the target (Ctrl + wheel toward the point under the cursor), a double
+/// click fits the scene. Keys: F fits the scene.
+///
+/// OpenGL failures (no 4.3 context, a shader that does not build, too little GPU memory)
+/// never crash and never leave a silent black view: the message is painted into the view
+/// and emitted once through renderError().
+
+#include "trim_renderer.h"
+#include "view/orbit_controller.h"
+
+#include <QImage>
+#include <QOpenGLWidget>
+#include <QPointF>
+
+#include <memory>
+#include <optional>
+
+namespace trimlab::ui {
+
+/// What the last successful frame was rendered with (for tests, exports and readbacks).
+struct ViewportFrame {
+    Camera camera;
+    TrimSettings settings;
+    int k = 0;
+    QSize pixelSize; ///< device pixels, as passed to TrimRenderer::render
+    render::FrameStats stats;
+};
+
+class ViewportWidget : public QOpenGLWidget {
+    Q_OBJECT
+public:
+    explicit ViewportWidget(QWidget* parent = nullptr);
+    ~ViewportWidget() override;
+
+    /// Shows `scene` (nullptr: an empty view). The view is reset (reset view) on the next
+    /// frame, when the widget's final size is known.
+    void setScene(std::shared_ptr<const Scene> scene);
+    /// The settings to render with. The caller passes trimEnabled = false for scenes that
+    /// are not trimmable.
+    void setTrimSettings(const TrimSettings& settings);
+    /// k⁺-buffer capacity, 1..KPlusBuffer::kMaxK (clamped).
+    void setK(int k);
+    [[nodiscard]] const TrimSettings& trimSettings() const { return m_settings; }
+    [[nodiscard]] int k() const { return m_k; }
+
+    /// The camera the next frame uses (depth range enclosing the scene).
+    [[nodiscard]] Camera camera() const;
+    /// Adopts `camera` (see OrbitController::setCamera) and re-renders.
+    void setCamera(const Camera& camera);
+    /// Frames the scene keeping the view direction.
+    void fitToView();
+    /// Frames the scene from the default direction (fitCamera's).
+    void resetView();
+
+    /// The size frames are rendered at: the widget size in device pixels.
+    [[nodiscard]] QSize framePixelSize() const;
+    /// The last successful frame, or nullopt before the first one.
+    [[nodiscard]] const std::optional<ViewportFrame>& lastFrame() const { return m_lastFrame; }
+    /// The last frame's color image (top row first); null without a frame.
+    [[nodiscard]] QImage readColorImage();
+    /// The last frame's per-pixel answers; empty without a frame.
+    [[nodiscard]] TrimImage readTrimImage();
+
+    /// Why no viewport can render on this platform: "" when an OpenGL 4.3 core context
+    /// with TrimLab's requirements can be created, else the reason. Creates and destroys
+    /// an offscreen context; call before showing any ViewportWidget. (Without any OpenGL,
+    /// Qt cannot even composite a window that contains a QOpenGLWidget, so such a window
+    /// must not contain one.)
+    [[nodiscard]] static QString openGlProblem();
+    /// Marks the view as unable to render for `reason` (shown by errorMessage()); used
+    /// when openGlProblem() is not empty and the widget is therefore never shown.
+    void setUnavailable(const QString& reason);
+
+    /// The OpenGL context's capabilities once the renderer exists.
+    [[nodiscard]] std::optional<render::GlCapabilities> capabilities() const;
+    /// Why the view cannot render ("" when it can).
+    [[nodiscard]] const QString& errorMessage() const { return m_error; }
+
+signals:
+    /// After every successful frame.
+    void frameRendered(const trimlab::render::FrameStats& stats);
+    /// Once per distinct failure (renderer creation, scene upload or a frame).
+    void renderError(const QString& message);
+    /// The frame size in device pixels changed.
+    void framePixelSizeChanged(QSize size);
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int width, int height) override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    enum class Drag { None, Orbit, Pan };
+
+    void releaseGl();
+    void applyPendingReset();
+    void renderFrame();
+    void clearToBackground();
+    void paintMessage(const QString& text);
+    void setError(const QString& message);
+    [[nodiscard]] double aspect() const;
+    [[nodiscard]] double depthUnderCursor(QPointF position);
+
+    OrbitController m_orbit;
+    std::unique_ptr<render::TrimRenderer> m_renderer;
+    std::shared_ptr<const Scene> m_scene;
+    TrimSettings m_settings;
+    int m_k = 16;
+    bool m_sceneUploaded = false;
+    bool m_resetPending = false;
+    std::optional<ViewportFrame> m_lastFrame;
+    QString m_error;
+    QString m_reportedError;
+    Drag m_drag = Drag::None;
+    QPointF m_lastMouse;
+    double m_grabDepth = 0.0;
+};
+
+} // namespace trimlab::ui
