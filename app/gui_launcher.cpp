@@ -1,0 +1,34 @@
+#include "gui_launcher.h"
+
+#include "cli_messages.h"
+
+#include "gl/offscreen_gl_context.h"
+#include "main_window.h"
+
+#include <QApplication>
+#include <QSurfaceFormat>
+
+#include <cstdlib>
+
+namespace trimlab::app {
+
+int runGui(int argc, char** argv)
+{
+    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY") && !std::getenv("QT_QPA_PLATFORM")) {
+        printError("the GUI needs a display; for a headless image use: xvfb-run -a trimlab render demo:pushed-sphere -o out.png");
+        return 1;
+    }
+    // Before QApplication: every OpenGL widget then gets a 4.3 core context.
+    QSurfaceFormat::setDefaultFormat(render::OffscreenGlContext::requestedFormat());
+    QApplication application(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("TrimLab"));
+    QApplication::setApplicationName(QStringLiteral("TrimLab"));
+    QApplication::setApplicationVersion(QStringLiteral(TRIMLAB_VERSION));
+    ui::MainWindow window;
+    window.show();
+    if (argc > 1)
+        window.openSource(QString::fromLocal8Bit(argv[1]));
+    return application.exec();
+}
+
+} // namespace trimlab::app

@@ -1,0 +1,228 @@
+// The trimlab executable as users and scripts call it: exit codes and one-line errors for
+// bad arguments and files, the info report, and `render` with both backends producing
+// images whose ids and depths agree with the in-process CPU reference.
+#include "gl_test_context.h"
+#include "test_paths.h"
+#include "trim_comparison.h"
+
+#include "io/pfm_image.h"
+#include "scene/scene_source.h"
+#include "trim/reference_renderer.h"
+
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace trimlab;
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+Run runTrimlab(const QStringList& arguments)
+{
+    QProcess process;
+    process.start(QStringLiteral(TRIMLAB_EXECUTABLE), arguments);
+    if (!process.waitForFinished(120000))
+        return {};
+    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
+            QString::fromLocal8Bit(process.readAllStandardOutput()),
+            QString::fromLocal8Bit(process.readAllStandardError())};
+}
+
+QString data(const QString& relative)
+{
+    return QString::fromStdString(test::testDataPath(relative.toStdString()).string());
+}
+
+// Decodes the --ids PNG (docs/file-formats.md) into primitive and object ids.
+TrimImage decodeIds(const QImage& png)
+{
+    const QImage image = png.convertToFormat(QImage::Format_RGBA64);
+    TrimImage trim(image.width(), image.height());
+    for (int y = 0; y < image.height(); ++y) {
+        const auto* row = reinterpret_cast<const QRgba64*>(image.constScanLine(y));
+        for (int x = 0; x < image.width(); ++x) {
+            if (row[x].red() == 0)
+                continue;
+            trim.at(x, y).objectId = row[x].red() - 1;
+            trim.at(x, y).primitiveId = row[x].green() + (int(row[x].blue()) << 16);
+        }
+    }
+    return trim;
+}
+
+// The reference's answer reduced to what the ids file holds.
+TrimImage idsOnly(const TrimImage& full)
+{
+    TrimImage reduced(full.width, full.height);
+    for (std::size_t i = 0; i < full.pixels.size(); ++i) {
+        reduced.pixels[i].primitiveId = full.pixels[i].primitiveId;
+        reduced.pixels[i].objectId = full.pixels[i].objectId;
+    }
+    return reduced;
+}
+
+const QStringList kPushedSphereView = {"render", "demo:pushed-sphere", "--rule", "alternating-border", "--clip", "0,0,-1,0",
+                                       "--size", "256x192"};
+
+} // namespace
+
+class TestCommandLine : public QObject {
+    Q_OBJECT
+private slots:
+    void badArgumentsExitWithTwo_data();
+    void badArgumentsExitWithTwo();
+    void badInputsExitWithOne_data();
+    void badInputsExitWithOne();
+    void infoPrintsTheValidationReport();
+    void openMeshRendersUntrimmedByDefault();
+    void referenceBackendMatchesInProcessReference();
+    void kplusBackendAgreesWithReference();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestCommandLine::badArgumentsExitWithTwo_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("no source") << QStringList{"render", "-o", "x.png"} << "exactly one source";
+    QTest::newRow("no output") << QStringList{"render", "demo:sphere"} << "-o out.png";
+    QTest::newRow("bad size") << QStringList{"render", "demo:sphere", "--size", "10", "-o", "x.png"} << "--size";
+    QTest::newRow("bad clip") << QStringList{"render", "demo:sphere", "--clip", "1,2", "-o", "x.png"} << "--clip";
+    QTest::newRow("zero clip normal") << QStringList{"render", "demo:sphere", "--clip", "0,0,0,1", "-o", "x.png"}
+                                      << "must not be zero";
+    QTest::newRow("bad rule") << QStringList{"render", "demo:sphere", "--rule", "winding", "-o", "x.png"} << "--rule";
+    QTest::newRow("bad k") << QStringList{"render", "demo:sphere", "--k", "0", "-o", "x.png"} << "--k";
+    QTest::newRow("bad camera") << QStringList{"render", "demo:sphere", "--camera", "0,0,3", "-o", "x.png"}
+                                << "--camera";
+    QTest::newRow("bad backend") << QStringList{"render", "demo:sphere", "--backend", "vulkan", "-o", "x.png"}
+                                 << "--backend";
+    QTest::newRow("unknown option") << QStringList{"render", "demo:sphere", "--frobnicate", "-o", "x.png"}
+                                    << "frobnicate";
+    QTest::newRow("info without source") << QStringList{"info"} << "exactly one source";
+}
+
+void TestCommandLine::badArgumentsExitWithTwo()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    const Run run = runTrimlab(arguments);
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.startsWith("trimlab: error: ") && run.err.contains(message), qPrintable(run.err));
+    QCOMPARE(run.err.trimmed().count('\n'), 0);
+}
+
+void TestCommandLine::badInputsExitWithOne_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("unknown demo") << QStringList{"render", "demo:teapot", "--backend", "reference", "-o", "x.png"}
+                                  << "Unknown demo scene 'teapot'";
+    QTest::newRow("missing file") << QStringList{"info", "/nonexistent/mesh.obj"} << "/nonexistent/mesh.obj";
+    QTest::newRow("broken file") << QStringList{"info", data("broken/nan.obj")} << "nan.obj";
+    QTest::newRow("trim asked on an open mesh")
+        << QStringList{"render", data("meshes/open_square.obj"), "--rule", "parity", "--backend", "reference", "-o",
+                       "x.png"}
+        << "unavailable";
+}
+
+void TestCommandLine::badInputsExitWithOne()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    const Run run = runTrimlab(arguments);
+    QCOMPARE(run.exitCode, 1);
+    QVERIFY2(run.err.startsWith("trimlab: error: ") && run.err.contains(message), qPrintable(run.err));
+}
+
+void TestCommandLine::infoPrintsTheValidationReport()
+{
+    Run run = runTrimlab({"info", data("meshes/cube.obj")});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.out.contains("trim modes: available"), qPrintable(run.out));
+    run = runTrimlab({"info", data("meshes/open_square.obj")});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.out.contains("trim modes: unavailable") && run.out.contains("boundary"), qPrintable(run.out));
+}
+
+void TestCommandLine::openMeshRendersUntrimmedByDefault()
+{
+    const QString out = m_dir.filePath("open.png");
+    const Run run = runTrimlab({"render", data("meshes/open_square.obj"), "--backend", "reference", "--size", "64x48",
+                                "-o", out});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.err.contains("note: rendering without trimming"), qPrintable(run.err));
+    QVERIFY(!QImage(out).isNull());
+}
+
+// The CLI's reference backend is the in-process reference with the same fitted camera:
+// its ids must be identical, its depths equal the view depth times the ray length.
+void TestCommandLine::referenceBackendMatchesInProcessReference()
+{
+    const QString ids = m_dir.filePath("ref-ids.png");
+    const QString depth = m_dir.filePath("ref.pfm");
+    const Run run = runTrimlab(kPushedSphereView + QStringList{"--backend", "reference", "--ids", ids, "--depth", depth,
+                                                               "-o", m_dir.filePath("ref.png")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+
+    const LoadedScene loaded = loadScene("demo:pushed-sphere");
+    const Camera camera = fitCamera(loaded.scene.worldBounds(), 256.0 / 192.0);
+    TrimSettings settings;
+    settings.clip = ClipPlane{true, {0.0, 0.0, -1.0}, 0.0};
+    const ReferenceResult reference = ReferenceRenderer(loaded.scene).render(camera, 256, 192, settings);
+    const TrimImage fromFile = decodeIds(QImage(ids));
+    const FloatImage distances = readPfm(depth.toStdString());
+    int idMismatches = 0;
+    int depthMismatches = 0;
+    for (int y = 0; y < 192; ++y) {
+        for (int x = 0; x < 256; ++x) {
+            const TrimPixel& r = reference.trim.at(x, y);
+            idMismatches += fromFile.at(x, y).primitiveId == r.primitiveId ? 0 : 1;
+            const float d = distances.values[std::size_t(y) * 256 + x];
+            const double expected = r.covered() ? double(r.viewDepth) * glm::length(pixelRay(camera, 256, 192, x, y).direction)
+                                                : INFINITY;
+            depthMismatches += (r.covered() ? std::abs(d - expected) <= 1e-5 * expected : std::isinf(d)) ? 0 : 1;
+        }
+    }
+    QCOMPARE(idMismatches, 0);
+    QCOMPARE(depthMismatches, 0);
+    QVERIFY(reference.stats.coveredPixels > 3000);
+}
+
+// The acceptance check: `render` with the k+-buffer and with --backend reference
+// agree on >= 99.9 % of covered pixels.
+void TestCommandLine::kplusBackendAgreesWithReference()
+{
+    QString why;
+    if (!test::tryCreateGlContext(&why)) {
+        if (test::glRequired())
+            QFAIL(qPrintable("TRIMLAB_REQUIRE_GL=1 but no OpenGL 4.3 context: " + why));
+        QSKIP(qPrintable("no OpenGL 4.3 context: " + why));
+    }
+    const QString gpuIds = m_dir.filePath("gpu-ids.png");
+    const Run run = runTrimlab(kPushedSphereView + QStringList{"--ids", gpuIds, "-o", m_dir.filePath("gpu.png")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains("0 overflowed pixels"), qPrintable(run.out));
+
+    const LoadedScene loaded = loadScene("demo:pushed-sphere");
+    const Camera camera = fitCamera(loaded.scene.worldBounds(), 256.0 / 192.0);
+    TrimSettings settings;
+    settings.clip = ClipPlane{true, {0.0, 0.0, -1.0}, 0.0};
+    const ReferenceResult reference = ReferenceRenderer(loaded.scene).render(camera, 256, 192, settings);
+    const test::TrimComparison comparison =
+        test::compareTrimImages(decodeIds(QImage(gpuIds)), idsOnly(reference.trim), reference.diagnostics);
+    qInfo("%s", qPrintable(comparison.summary()));
+    QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05, qPrintable(comparison.summary()));
+}
+
+QTEST_MAIN(TestCommandLine)
+#include "tst_command_line.moc"
