@@ -1,6 +1,7 @@
 #include "render_options.h"
 
 #include "mfr/kplus_buffer.h"
+#include "mfr/fragment_method.h"
 #include "trim/clip_plane.h"
 
 #include <QCommandLineParser>
@@ -91,7 +92,7 @@ std::optional<QString> parseBackendOptions(const QCommandLineParser& parser, Ren
         if (auto e = parseSize(parser.value("size"), options))
             return e;
     if (parser.isSet("k"))
-        if (auto e = parseIntOption("k", parser.value("k"), 1, render::KPlusBuffer::kMaxK, options.k))
+        if (auto e = parseIntOption("k", parser.value("k"), 1, render::MethodParameters::kMaxK, options.k))
             return e;
     if (parser.isSet("repeat"))
         if (auto e = parseIntOption("repeat", parser.value("repeat"), 1, 1000, options.repeat))

@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// Per-frame counters the shaders increment (an atomic counter buffer; the layout is in
-/// shaders/common/kplus_images.glsl): how many fragments were stored, how many pixels
-/// overflowed or could not be resolved, how many fragments gave up waiting for a lock.
+/// shaders/common/frame_counters.glsl): fragments in the span, stored and lost, pixels
+/// that overflowed or could not be resolved, fragments that gave up waiting for a lock.
 
 #include "gl/gl_functions.h"
 #include "gl/gl_objects.h"
@@ -11,11 +11,14 @@
 
 namespace trimlab::render {
 
+/// Layout: shaders/common/frame_counters.glsl.
 struct FrameCounts {
     std::uint64_t fragmentsInSpan = 0;  ///< fragments inside the kept span (after clipping)
-    std::uint64_t overflowPixels = 0;   ///< pixels that received more than k fragments
-    std::uint64_t unresolvedPixels = 0; ///< overflowed pixels whose trim point lies beyond k
+    std::uint64_t overflowPixels = 0;   ///< pixels that lost fragments to a capacity limit
+    std::uint64_t unresolvedPixels = 0; ///< of those, pixels whose trim point may have been lost
     std::uint64_t spinGiveUps = 0;      ///< fragments dropped after the bounded spin-lock
+    std::uint64_t fragmentsLost = 0;    ///< fragments not stored (capacity, spin give-ups)
+    std::uint64_t fragmentsStored = 0;  ///< fragments written to the method's storage
 };
 
 class FrameCounters {

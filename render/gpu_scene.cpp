@@ -45,7 +45,7 @@ void uploadBuffer(GlFunctions& gl, GLuint buffer, GLenum target, const void* dat
 } // namespace
 
 GpuScene::GpuScene(GlFunctions& gl)
-    : m_gl(gl), m_vao(gl), m_positions(gl), m_normals(gl), m_indices(gl), m_objectTable(gl)
+    : m_gl(gl), m_vao(gl), m_positions(gl), m_normals(gl), m_indices(gl), m_objectTable(gl), m_colors(gl)
 {
 }
 
@@ -62,6 +62,8 @@ void GpuScene::upload(const Scene& scene)
         range.baseVertex = GLint(positions.size());
         range.indexCount = GLsizei(object.mesh.triangleCount() * 3);
         range.indexOffsetBytes = triangles.size() * sizeof(glm::uvec3);
+        range.vertexCount = object.mesh.vertexCount();
+        range.triangles = object.mesh.triangles;
         const std::vector<glm::vec3> objectNormals = vertexNormals(object.mesh);
         positions.insert(positions.end(), object.mesh.positions.begin(), object.mesh.positions.end());
         normals.insert(normals.end(), objectNormals.begin(), objectNormals.end());
@@ -83,7 +85,38 @@ void GpuScene::upload(const Scene& scene)
                  std::max<std::size_t>(1, m_objects.size()) * sizeof(GpuObjectEntry), "object table");
     m_memoryBytes = (positions.size() + normals.size()) * sizeof(glm::vec3) + triangles.size() * sizeof(glm::uvec3) +
                     m_objects.size() * sizeof(GpuObjectEntry);
+    m_vertexCount = positions.size();
+    setVertexColors({});
     setView(glm::dmat4(1.0));
+}
+
+void GpuScene::updatePositions(std::size_t objectIndex, const std::vector<glm::vec3>& positions)
+{
+    if (objectIndex >= m_objects.size() || positions.size() != m_objects[objectIndex].vertexCount)
+        throw std::invalid_argument("updatePositions: object " + std::to_string(objectIndex) + " has " +
+                                    std::to_string(objectIndex < m_objects.size() ? m_objects[objectIndex].vertexCount : 0) +
+                                    " vertices, got " + std::to_string(positions.size()) + ".");
+    const ObjectRange& object = m_objects[objectIndex];
+    const std::vector<glm::vec3> normals = vertexNormals(TriangleMesh{positions, object.triangles});
+    const auto offset = GLintptr(std::size_t(object.baseVertex) * sizeof(glm::vec3));
+    const auto bytes = GLsizeiptr(positions.size() * sizeof(glm::vec3));
+    m_gl.glBindBuffer(GL_ARRAY_BUFFER, m_positions.id());
+    m_gl.glBufferSubData(GL_ARRAY_BUFFER, offset, bytes, positions.data());
+    m_gl.glBindBuffer(GL_ARRAY_BUFFER, m_normals.id());
+    m_gl.glBufferSubData(GL_ARRAY_BUFFER, offset, bytes, normals.data());
+}
+
+void GpuScene::setVertexColors(const std::vector<std::uint32_t>& rgba8)
+{
+    if (!rgba8.empty() && rgba8.size() != m_vertexCount)
+        throw std::invalid_argument("setVertexColors: the scene has " + std::to_string(m_vertexCount) +
+                                    " vertices, got " + std::to_string(rgba8.size()) + " colors.");
+    m_hasVertexColors = !rgba8.empty();
+    // Never an empty buffer: the resolve shaders always declare the block.
+    const std::uint32_t white = 0xFFFFFFFFu;
+    const void* data = m_hasVertexColors ? static_cast<const void*>(rgba8.data()) : &white;
+    uploadBuffer(m_gl, m_colors.id(), GL_SHADER_STORAGE_BUFFER, data,
+                 m_hasVertexColors ? rgba8.size() * sizeof(std::uint32_t) : sizeof(white), "vertex colors");
 }
 
 void GpuScene::setView(const glm::dmat4& view)
@@ -129,6 +162,7 @@ void GpuScene::draw(GLuint program, const glm::dmat4& projection)
 
 void GpuScene::bindStorage()
 {
+    m_gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kColorsBinding, m_colors.id());
     m_gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPositionsBinding, m_positions.id());
     m_gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNormalsBinding, m_normals.id());
     m_gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kIndicesBinding, m_indices.id());

@@ -18,6 +18,7 @@ namespace trimlab::render {
 
 /// Shader storage binding points of the scene data (shaders/common/scene_data.glsl).
 enum SceneStorageBinding : GLuint {
+    kColorsBinding = 0,
     kPositionsBinding = 1,
     kNormalsBinding = 2,
     kIndicesBinding = 3,
@@ -32,6 +33,17 @@ public:
     /// std::invalid_argument when the scene exceeds the fragment format (32 objects,
     /// 2^24 triangles per object).
     void upload(const Scene& scene);
+
+    /// Replaces the positions of object `objectIndex` (same vertex count as uploaded; e.g. the
+    /// next pose of an animation) and recomputes its normals. Connectivity is unchanged.
+    /// Throws std::invalid_argument on a count mismatch.
+    void updatePositions(std::size_t objectIndex, const std::vector<glm::vec3>& positions);
+
+    /// Per-vertex colors for the whole scene (RGBA8, one per uploaded vertex in object
+    /// order), shown instead of the trim palette; an empty vector switches them off.
+    /// Throws std::invalid_argument on a count mismatch.
+    void setVertexColors(const std::vector<std::uint32_t>& rgba8);
+    [[nodiscard]] bool hasVertexColors() const { return m_hasVertexColors; }
 
     /// Updates the per-object view-space transforms for `view` (call once per frame).
     void setView(const glm::dmat4& view);
@@ -53,6 +65,8 @@ private:
         GLint baseVertex = 0;
         GLsizei indexCount = 0;
         std::size_t indexOffsetBytes = 0;
+        std::size_t vertexCount = 0;
+        std::vector<glm::uvec3> triangles; // kept for recomputing normals on updatePositions
     };
 
     GlFunctions& m_gl;
@@ -61,6 +75,9 @@ private:
     GlBuffer m_normals;
     GlBuffer m_indices;
     GlBuffer m_objectTable;
+    GlBuffer m_colors;
+    bool m_hasVertexColors = false;
+    std::size_t m_vertexCount = 0;
     std::vector<ObjectRange> m_objects;
     std::vector<glm::dmat4> m_modelView;
     std::size_t m_triangleCount = 0;

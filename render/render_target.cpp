@@ -14,6 +14,8 @@ namespace {
 constexpr std::uint32_t kObjectMask = 0xFFu;
 constexpr std::uint32_t kFrontFacingBit = 1u << 8;
 constexpr std::uint32_t kBackFacingBit = 1u << 9;
+constexpr std::uint32_t kOverflowedBit = 1u << 10;
+constexpr std::uint32_t kUnresolvedBit = 1u << 11;
 
 void allocateTexture(GlFunctions& gl, GLuint texture, GLenum internalFormat, int width, int height)
 {
@@ -27,6 +29,8 @@ TrimPixel decodeInfo(const std::uint32_t* texel)
 {
     TrimPixel p;
     p.windingAtStart = std::bit_cast<std::int32_t>(texel[3]);
+    p.overflowed = (texel[1] & kOverflowedBit) != 0;
+    p.unresolved = (texel[1] & kUnresolvedBit) != 0;
     if (texel[0] == 0)
         return p;
     p.primitiveId = std::int32_t(texel[0] - 1);
@@ -38,7 +42,14 @@ TrimPixel decodeInfo(const std::uint32_t* texel)
 
 } // namespace
 
-RenderTarget::RenderTarget(GlFunctions& gl) : m_gl(gl), m_framebuffer(gl) {}
+RenderTarget::RenderTarget(GlFunctions& gl) : m_gl(gl), m_framebuffer(gl), m_emptyVao(gl) {}
+
+void RenderTarget::drawFullscreenTriangle()
+{
+    m_gl.glBindVertexArray(m_emptyVao.id());
+    m_gl.glDrawArrays(GL_TRIANGLES, 0, 3);
+    m_gl.glBindVertexArray(0);
+}
 
 std::size_t RenderTarget::memoryBytes() const
 {

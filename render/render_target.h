@@ -26,6 +26,9 @@ public:
 
     /// Binds the framebuffer with both color attachments as draw buffers.
     void bindForDrawing();
+    /// Draws one triangle covering the viewport (shaders/fullscreen.vert) with the current
+    /// program; no vertex buffer needed.
+    void drawFullscreenTriangle();
     /// Copies the color image into `framebuffer` (0 = the default one) at the same size.
     void blitColorTo(GLuint framebuffer);
 
@@ -40,6 +43,7 @@ private:
     GlTexture m_color;
     GlTexture m_info;
     GlTexture m_depth;
+    GlVertexArray m_emptyVao; // core profile: a draw needs a bound vertex array
     int m_width = 0;
     int m_height = 0;
 };

@@ -1,13 +1,13 @@
 #pragma once
 /// \file
 /// Renders a Scene trimmed by a static rule, with an optional clipping plane, through the
-/// k⁺-buffer: clear → store (one geometry pass) → resolve (one full-screen pass) into a
-/// RenderTarget. Owns every GL object it uses; the caller owns the context and must keep
-/// it current across calls and at destruction.
+/// multi-fragment method the user picked (render/mfr/), into a RenderTarget. Owns every
+/// GL object it uses; the caller owns the context and must keep it current across calls
+/// and at destruction.
 
 #include "frame_counters.h"
 #include "gl/gl_capabilities.h"
-#include "mfr/kplus_buffer.h"
+#include "mfr/fragment_method.h"
 
 #include "scene/scene.h"
 #include "trim/trim_image.h"
@@ -28,13 +28,15 @@ class ShaderLibrary;
 
 /// What the last frame cost and what it found.
 struct FrameStats {
+    FragmentMethodKind method = FragmentMethodKind::KPlusArray;
     FrameCounts counts;
-    /// GL_TIME_ELAPSED of clear + store + resolve; negative when the driver's answer was
-    /// implausible (llvmpipe returns garbage for the first timer query of a context).
+    MethodStats methodStats;
+    /// GL_TIME_ELAPSED of the frame; negative when the driver's answer was implausible
+    /// (llvmpipe returns garbage for the first timer query of a context).
     double gpuMilliseconds = 0.0;
     /// Wall-clock time of render() including the wait for the GPU's results.
     double wallMilliseconds = 0.0;
-    double bufferMegabytes = 0.0; ///< k⁺-buffer + render target + scene buffers
+    double bufferMegabytes = 0.0; ///< method storage + render target + scene buffers
     int width = 0;
     int height = 0;
     int k = 0;
@@ -52,9 +54,20 @@ public:
     /// Uploads `scene` (replacing the previous one). Throws GpuMemoryError or
     /// std::invalid_argument (scene beyond the fragment format's limits).
     void setScene(const Scene& scene);
-    /// Capacity of the k⁺-buffer per pixel, 1..KPlusBuffer::kMaxK. Default 16.
+    /// The uploaded scene's buffers, e.g. to update an animated object's positions or to
+    /// show per-vertex colors.
+    [[nodiscard]] GpuScene& gpuScene() { return *m_scene; }
+
+    /// Switches the multi-fragment method (its storage is allocated on the next frame).
+    void setMethod(FragmentMethodKind method);
+    [[nodiscard]] FragmentMethodKind method() const { return m_method->kind(); }
+    void setParameters(const MethodParameters& parameters);
+    [[nodiscard]] const MethodParameters& parameters() const { return m_parameters; }
+    /// Shorthand for the k of the parameters, 1..MethodParameters::kMaxK. Default 16.
     void setK(int k);
-    [[nodiscard]] int k() const { return m_k; }
+    [[nodiscard]] int k() const { return m_parameters.k; }
+    /// GPU memory the current method would hold at width×height (nullopt: scene-dependent).
+    [[nodiscard]] std::optional<std::size_t> estimateMethodBytes(int width, int height) const;
 
     /// Renders one frame at width×height into the internal render target.
     /// `settings.trimEnabled` must be false for scenes that are not closed oriented
@@ -67,27 +80,22 @@ public:
     [[nodiscard]] QImage readColor();
     /// The last frame's per-pixel answers, for comparison with the CPU reference.
     [[nodiscard]] TrimImage readTrimImage();
-
-    /// Per-pixel fragment counts of the last frame's store pass (depth complexity up to k).
-    [[nodiscard]] KPlusOccupancy readOccupancy();
+    /// Per-pixel fragment counts of the last frame (methods that keep them).
+    [[nodiscard]] std::optional<PixelOccupancy> readOccupancy();
 
     [[nodiscard]] const FrameStats& lastStats() const { return m_stats; }
     [[nodiscard]] const GlCapabilities& capabilities() const { return m_capabilities; }
 
 private:
-    void storePass(const Camera& camera, const TrimSettings& settings, const glm::dmat4& projection);
-    void resolvePass(const Camera& camera, const TrimSettings& settings, const glm::dmat4& projection);
-
     GlCapabilities m_capabilities; // first: m_gl's initialisation checks it
     GlFunctions& m_gl;
     std::unique_ptr<ShaderLibrary> m_shaders;
     std::unique_ptr<GpuScene> m_scene;
-    std::unique_ptr<KPlusBuffer> m_kplus;
     std::unique_ptr<RenderTarget> m_target;
     std::unique_ptr<FrameCounters> m_counters;
-    GlVertexArray m_emptyVao;
+    std::unique_ptr<FragmentMethod> m_method;
+    MethodParameters m_parameters;
     GlQuery m_timer;
-    int m_k = 16;
     FrameStats m_stats;
 };
 

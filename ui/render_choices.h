@@ -9,7 +9,7 @@ namespace trimlab::ui {
 
 struct RenderChoices {
     TrimSettings trim;
-    /// k⁺-buffer capacity per pixel, 1..KPlusBuffer::kMaxK (TrimRenderer's default).
+    /// k⁺-buffer capacity per pixel, 1..MethodParameters::kMaxK (TrimRenderer's default).
     int k = 16;
 };
 

@@ -2,6 +2,7 @@
 
 #include "clip_plane_editor.h"
 #include "mfr/kplus_buffer.h"
+#include "mfr/fragment_method.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -93,7 +94,7 @@ QWidget* RenderPanel::createBufferGroup()
     rowLayout->setContentsMargins(0, 0, 0, 0);
     m_k = new QSpinBox(row);
     m_k->setObjectName(QStringLiteral("kSpinBox"));
-    m_k->setRange(1, render::KPlusBuffer::kMaxK);
+    m_k->setRange(1, render::MethodParameters::kMaxK);
     m_k->setKeyboardTracking(false); // reallocate on Enter, not on every digit
     m_k->setToolTip(tr("Fragments kept per pixel. Pixels with more fragments overflow; where the trim point lies "
                        "beyond the k nearest they are unresolved (magenta)."));

@@ -1,6 +1,7 @@
 #include "render_settings_store.h"
 
 #include "mfr/kplus_buffer.h"
+#include "mfr/fragment_method.h"
 
 #include <QDir>
 #include <QSettings>
@@ -54,7 +55,7 @@ RenderChoices loadRenderChoices(const QSettings& settings)
     choices.trim.clip = loadClipPlane(settings, fallback.trim.clip);
     bool ok = false;
     const int k = settings.value(kK).toInt(&ok);
-    choices.k = ok && k >= 1 && k <= render::KPlusBuffer::kMaxK ? k : fallback.k;
+    choices.k = ok && k >= 1 && k <= render::MethodParameters::kMaxK ? k : fallback.k;
     return choices;
 }
 

@@ -3,6 +3,7 @@
 #include "gl/gl_error.h"
 #include "gl/offscreen_gl_context.h"
 #include "mfr/kplus_buffer.h"
+#include "mfr/fragment_method.h"
 #include "trim/trim_shading.h"
 
 #include <QKeyEvent>
@@ -58,7 +59,7 @@ void ViewportWidget::setTrimSettings(const TrimSettings& settings)
 
 void ViewportWidget::setK(int k)
 {
-    m_k = std::clamp(k, 1, render::KPlusBuffer::kMaxK);
+    m_k = std::clamp(k, 1, render::MethodParameters::kMaxK);
     update();
 }
 

@@ -45,7 +45,7 @@ public:
     /// The settings to render with. The caller passes trimEnabled = false for scenes that
     /// are not trimmable.
     void setTrimSettings(const TrimSettings& settings);
-    /// k⁺-buffer capacity, 1..KPlusBuffer::kMaxK (clamped).
+    /// k⁺-buffer capacity, 1..MethodParameters::kMaxK (clamped).
     void setK(int k);
     [[nodiscard]] const TrimSettings& trimSettings() const { return m_settings; }
     [[nodiscard]] int k() const { return m_k; }

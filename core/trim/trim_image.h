@@ -20,6 +20,12 @@ struct TrimPixel {
     std::int8_t facing = 0;        ///< +1 front-facing, −1 back-facing, 0 empty
     /// Winding index at the start of the kept span (near plane or clip plane).
     std::int32_t windingAtStart = 0;
+    /// GPU methods with a capacity: the pixel lost fragments (more than it could hold).
+    bool overflowed = false;
+    /// The pixel lost fragments and its trim point may have been among them, so it shows
+    /// nothing (painted as unresolved) rather than something wrong. Never set by the
+    /// CPU reference.
+    bool unresolved = false;
 
     [[nodiscard]] bool covered() const { return primitiveId >= 0; }
 };

@@ -37,9 +37,8 @@ GlCapabilities queryCapabilities(QOpenGLContext& context)
     caps.renderer = glString(f, GL_RENDERER);
     caps.versionString = glString(f, GL_VERSION);
     caps.glslVersion = glString(f, GL_SHADING_LANGUAGE_VERSION);
-    caps.fragmentShaderInterlock = context.hasExtension("GL_ARB_fragment_shader_interlock") ||
-                                   context.hasExtension("GL_NV_fragment_shader_interlock") ||
-                                   context.hasExtension("GL_INTEL_fragment_shader_ordering");
+    caps.extensions = context.extensions();
+    caps.fragmentShaderInterlock = caps.hasExtension("GL_ARB_fragment_shader_interlock");
     if (caps.majorVersion > 4 || (caps.majorVersion == 4 && caps.minorVersion >= 3)) {
         GLint value = 0;
         f.glGetIntegerv(0x90DE /* GL_MAX_SHADER_STORAGE_BLOCK_SIZE */, &value);

@@ -2,6 +2,7 @@
 /// \file
 /// What the current OpenGL context offers, and whether it is enough for TrimLab.
 
+#include <QSet>
 #include <QString>
 
 #include <optional>
@@ -18,13 +19,15 @@ struct GlCapabilities {
     QString renderer;
     QString versionString;
     QString glslVersion;
-    /// GL_ARB_fragment_shader_interlock, GL_NV_fragment_shader_interlock or
-    /// GL_INTEL_fragment_shader_ordering: lets the k⁺-buffer replace its spin-lock.
+    /// GL_ARB_fragment_shader_interlock: lets the k⁺-buffer replace its spin-lock.
     bool fragmentShaderInterlock = false;
     qint64 maxShaderStorageBlockBytes = 0;
     int maxTextureSize = 0;
     int maxArrayTextureLayers = 0;
     int maxFragmentImageUniforms = 0;
+    QSet<QByteArray> extensions;
+
+    [[nodiscard]] bool hasExtension(const char* name) const { return extensions.contains(QByteArray(name)); }
 
     /// "llvmpipe (LLVM 15.0.6, 256 bits) — OpenGL 4.5 (Core Profile) Mesa 22.3.6": for the
     /// About box, benchmark headers and logs.

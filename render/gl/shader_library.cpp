@@ -10,11 +10,18 @@ namespace trimlab::render {
 const std::vector<ProgramDescription>& programCatalog()
 {
     // K_MAX is the compile-time capacity of a pixel's local fragment array in the
-    // resolve pass; the renderer compiles one variant per k the user picks.
+    // resolve pass; the renderer compiles one variant per k the user picks. Interlock
+    // variants only build where the driver has the extension (representativeDefines are
+    // also checked by glslangValidator, which knows every extension).
     static const std::vector<ProgramDescription> catalog = {
-        {"kplus_clear", {"kplus_clear.comp"}, {{}}},
-        {"kplus_store", {"scene.vert", "kplus_store.frag"}, {{}}},
-        {"trim_resolve", {"fullscreen.vert", "trim_resolve.frag"}, {{"K_MAX 1"}, {"K_MAX 16"}, {"K_MAX 64"}}},
+        {"pixel_state_clear", {"pixel_state_clear.comp"}, {{}}},
+        {"kplus_store",
+         {"scene.vert", "kplus_store.frag"},
+         {{{}},
+          {{"KPLUS_HEAP"}},
+          {{"KPLUS_INTERLOCK_ARB"}, "GL_ARB_fragment_shader_interlock"},
+          {{"KPLUS_HEAP", "KPLUS_INTERLOCK_ARB"}, "GL_ARB_fragment_shader_interlock"}}},
+        {"kplus_resolve", {"fullscreen.vert", "kplus_resolve.frag"}, {{{"K_MAX 1"}}, {{"K_MAX 16"}}, {{"K_MAX 64"}}}},
     };
     return catalog;
 }

@@ -14,14 +14,20 @@
 
 namespace trimlab::render {
 
+/// One set of defines a program is used with, and the OpenGL extension it needs
+/// (nullptr: none). The whole-library test builds every variant the test context
+/// supports and checks all of them with glslangValidator.
+struct ProgramVariant {
+    QStringList defines;
+    const char* requiredExtension = nullptr;
+};
+
 /// A program: its name and the shader files of its stages (the stage follows from the
 /// extension: .vert, .frag, .comp).
 struct ProgramDescription {
     QString name;
     QStringList files;
-    /// Define sets the program is used with (at least one, possibly empty); the
-    /// whole-library test compiles every one of them.
-    std::vector<QStringList> representativeDefines;
+    std::vector<ProgramVariant> variants; ///< at least one
 };
 
 /// The catalog of every program in the application.

@@ -1,70 +1,64 @@
 #pragma once
 /// \file
-/// The k⁺-buffer of thesis chapter 7 with the max-array (K⁺B-Array): per pixel, the k
-/// nearest fragments of the kept span, captured unsorted under a per-pixel spin-lock with
-/// fragment culling against the current maximum (layer 0), sorted in the resolve pass.
-/// Besides the fragments it keeps, per pixel, the exact winding index at the span start
-/// and an overflow flag (more than k fragments arrived). Shaders:
-/// kplus_clear.comp, kplus_store.frag, trim_resolve.frag.
+/// The k⁺-buffer of thesis chapter 7 (K⁺B-Array and K⁺B-Heap): per pixel, the k nearest
+/// fragments of the kept span, captured unsorted in one geometry pass under a per-pixel
+/// lock with fragment culling against the current maximum, sorted in the resolve pass
+/// (insertion sort up to 16, shell sort above). The lock is a bounded spin-lock on
+/// imageAtomicExchange, or fragment shader interlock where the driver offers it.
+/// Besides the fragments, the exact winding index at the span start and an overflow flag
+/// per pixel (PixelState). Shaders: kplus_store.frag, kplus_resolve.frag.
 
-#include "gl/gl_functions.h"
 #include "gl/gl_objects.h"
+#include "mfr/fragment_method.h"
+#include "mfr/pixel_state.h"
 
-#include <cstddef>
-#include <cstdint>
-#include <vector>
+#include <QStringList>
 
 namespace trimlab::render {
 
-class ShaderLibrary;
+struct GlCapabilities;
 
-/// Per-pixel occupancy of the buffer after a store pass, row 0 at the top: the number of
-/// fragments held (<= k) and whether more than k arrived. For diagnostics and tests.
-struct KPlusOccupancy {
-    int width = 0;
-    int height = 0;
-    std::vector<std::uint32_t> held;
-    std::vector<std::uint8_t> overflowed;
-};
+/// The critical-section mechanism the store pass uses on this driver. Only the ARB
+/// interlock is used: NVIDIA and Intel drivers that have the NV/INTEL forerunners expose
+/// it too, and glslangValidator cannot check the older extensions.
+enum class KPlusLock { SpinLock, InterlockArb };
 
-class KPlusBuffer {
+/// Picks interlock where the context has it (and the user allows it), else the spin-lock.
+[[nodiscard]] KPlusLock chooseKPlusLock(const GlCapabilities& capabilities, bool allowInterlock);
+/// "spin-lock" or "GL_ARB_fragment_shader_interlock".
+[[nodiscard]] const char* kplusLockName(KPlusLock lock);
+/// The store shader's defines for `lock` and the data structure.
+[[nodiscard]] QStringList kplusStoreDefines(KPlusLock lock, bool heap);
+
+class KPlusBuffer final : public FragmentMethod {
 public:
-    /// Largest k the resolve pass supports (its per-pixel register array).
-    static constexpr int kMaxK = 128;
+    /// `heap`: the max-heap variant (K⁺B-Heap), else the max-array.
+    KPlusBuffer(GlFunctions& gl, bool heap);
 
-    KPlusBuffer(GlFunctions& gl, ShaderLibrary& shaders);
+    [[nodiscard]] FragmentMethodKind kind() const override;
+    void render(TrimFrame& frame) override;
+    [[nodiscard]] MethodStats stats() const override { return m_stats; }
+    [[nodiscard]] std::optional<std::size_t> estimateBytes(int width, int height,
+                                                           const MethodParameters& parameters) const override;
 
-    /// Allocates for a width×height viewport and capacity k (1..kMaxK); reallocates only
-    /// on change. Throws GpuMemoryError (with the sizes involved) when it does not fit.
-    void allocate(int width, int height, int k);
-
-    /// Clear pass: counters, locks, winding and overflow flags to zero.
-    void clear();
-    /// Binds the image units for the store pass (read/write).
-    void bindImages();
-
-    /// Reads the counters and overflow flags back (waits for the GPU).
-    [[nodiscard]] KPlusOccupancy readOccupancy();
-
-    [[nodiscard]] int k() const { return m_k; }
-    [[nodiscard]] int width() const { return m_width; }
-    [[nodiscard]] int height() const { return m_height; }
-    /// Bytes of GPU memory held: the fragment layers plus the four per-pixel images.
-    [[nodiscard]] std::size_t memoryBytes() const;
-    /// Bytes a width×height buffer with capacity k needs.
+    /// Per-pixel fragments held (≤ k) and overflow flags of the last frame.
+    [[nodiscard]] std::optional<PixelOccupancy> readOccupancy() override { return m_state.readOccupancy(); }
     [[nodiscard]] static std::size_t requiredBytes(int width, int height, int k);
 
 private:
+    void allocate(int width, int height, int k);
+    void bindFragments();
+    void storePass(TrimFrame& frame, KPlusLock lock);
+    void resolvePass(TrimFrame& frame);
+
     GlFunctions& m_gl;
-    ShaderLibrary& m_shaders;
-    GlTexture m_counter;
-    GlTexture m_semaphore;
-    GlTexture m_winding;
-    GlTexture m_overflow;
+    bool m_heap;
+    PixelState m_state;
     GlTexture m_fragments;
     int m_width = 0;
     int m_height = 0;
     int m_k = 0;
+    MethodStats m_stats;
 };
 
 } // namespace trimlab::render

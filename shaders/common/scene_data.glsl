@@ -4,6 +4,8 @@
 layout(std430, binding = 1) readonly buffer ScenePositions { float scenePositions[]; };
 layout(std430, binding = 2) readonly buffer SceneNormals { float sceneNormals[]; };
 layout(std430, binding = 3) readonly buffer SceneIndices { uint sceneIndices[]; };
+// Optional per-vertex colors (e.g. a segmentation), RGBA8 packed; used when u_vertexColors.
+layout(std430, binding = 0) readonly buffer SceneColors { uint sceneColors[]; };
 
 struct SceneObject {
     mat4 modelView;
@@ -15,17 +17,27 @@ struct SceneObject {
 };
 layout(std430, binding = 4) readonly buffer SceneObjects { SceneObject sceneObjects[]; };
 
+uniform bool u_vertexColors;
+
 vec3 scenePosition(uint v) { return vec3(scenePositions[3u * v], scenePositions[3u * v + 1u], scenePositions[3u * v + 2u]); }
 vec3 sceneNormal(uint v) { return vec3(sceneNormals[3u * v], sceneNormals[3u * v + 1u], sceneNormals[3u * v + 2u]); }
+vec3 sceneColor(uint v) { return unpackUnorm4x8(sceneColors[v]).rgb; }
 
-// Smooth view-space normal of primitive `primitiveId` of object `objectId` at the
-// view-space point `p` on it (barycentric interpolation of the vertex normals).
-vec3 interpolatedViewNormal(uint objectId, uint primitiveId, vec3 p)
+// A point on a scene triangle, seen from the view: the triangle's vertices and the
+// point's barycentric coordinates.
+struct SurfacePoint {
+    uint objectId;
+    uvec3 vertices;
+    vec3 barycentric;
+    vec3 faceNormal; // view space, not normalised: (b - a) x (c - a)
+};
+
+// The view-space point `p` on primitive `primitiveId` of object `objectId`.
+SurfacePoint surfacePoint(uint objectId, uint primitiveId, vec3 p)
 {
     SceneObject object = sceneObjects[objectId];
-    uvec3 v = uvec3(sceneIndices[object.baseIndex + 3u * primitiveId],
-                    sceneIndices[object.baseIndex + 3u * primitiveId + 1u],
-                    sceneIndices[object.baseIndex + 3u * primitiveId + 2u]) + uvec3(object.baseVertex);
+    uint first = object.baseIndex + 3u * primitiveId;
+    uvec3 v = uvec3(sceneIndices[first], sceneIndices[first + 1u], sceneIndices[first + 2u]) + uvec3(object.baseVertex);
     vec3 a = (object.modelView * vec4(scenePosition(v.x), 1.0)).xyz;
     vec3 b = (object.modelView * vec4(scenePosition(v.y), 1.0)).xyz;
     vec3 c = (object.modelView * vec4(scenePosition(v.z), 1.0)).xyz;
@@ -38,9 +50,20 @@ vec3 interpolatedViewNormal(uint objectId, uint primitiveId, vec3 p)
         bary.x = 1.0 - bary.y - bary.z;
         bary = clamp(bary, 0.0, 1.0);
     }
-    mat3 normalMatrix = mat3(object.normalMatrix);
-    vec3 smoothNormal = normalMatrix * (bary.x * sceneNormal(v.x) + bary.y * sceneNormal(v.y) + bary.z * sceneNormal(v.z));
-    if (dot(smoothNormal, smoothNormal) == 0.0)
-        smoothNormal = n;
-    return normalize(smoothNormal);
+    return SurfacePoint(objectId, v, bary, n);
+}
+
+// Smooth view-space normal at the point (barycentric interpolation of vertex normals).
+vec3 interpolatedViewNormal(SurfacePoint s)
+{
+    mat3 normalMatrix = mat3(sceneObjects[s.objectId].normalMatrix);
+    vec3 n = normalMatrix * (s.barycentric.x * sceneNormal(s.vertices.x) + s.barycentric.y * sceneNormal(s.vertices.y) +
+                             s.barycentric.z * sceneNormal(s.vertices.z));
+    return normalize(dot(n, n) > 0.0 ? n : s.faceNormal);
+}
+
+vec3 interpolatedColor(SurfacePoint s)
+{
+    return s.barycentric.x * sceneColor(s.vertices.x) + s.barycentric.y * sceneColor(s.vertices.y) +
+           s.barycentric.z * sceneColor(s.vertices.z);
 }

@@ -12,3 +12,11 @@ vec3 shadeTrimPoint(bool frontFacing, vec3 normal, vec3 toViewer)
     vec3 base = frontFacing ? FRONT_FACING_COLOR : BACK_FACING_COLOR;
     return base * (AMBIENT + (1.0 - AMBIENT) * abs(dot(normal, toViewer)));
 }
+
+// Shading with a per-vertex color (e.g. a segmentation): the back side, seen through a
+// cut or a trimmed hole, is darkened so inside and outside stay distinguishable.
+vec3 shadeColoredPoint(vec3 color, bool frontFacing, vec3 normal, vec3 toViewer)
+{
+    vec3 base = frontFacing ? color : 0.55 * color;
+    return base * (AMBIENT + (1.0 - AMBIENT) * abs(dot(normal, toViewer)));
+}

@@ -95,7 +95,7 @@ void TestKPlusOccupancy::keepsNearestKAndCountsExactly()
     TrimSettings settings;
     settings.trimEnabled = false;
     renderLayers(8, settings);
-    const KPlusOccupancy occupancy = m_renderer->readOccupancy();
+    const PixelOccupancy occupancy = m_renderer->readOccupancy().value();
     const TrimImage trim = m_renderer->readTrimImage();
     int wrong = 0;
     for (int i = 0; i < kWidth * kHeight; ++i) {
@@ -146,7 +146,7 @@ void TestKPlusOccupancy::largeKHoldsEveryLayer()
     TrimSettings settings;
     settings.rule = StaticRule::PositiveIndex;
     renderLayers(kLayers, settings);
-    const KPlusOccupancy occupancy = m_renderer->readOccupancy();
+    const PixelOccupancy occupancy = m_renderer->readOccupancy().value();
     const TrimImage trim = m_renderer->readTrimImage();
     int wrong = 0;
     for (int i = 0; i < kWidth * kHeight; ++i) {
@@ -169,7 +169,7 @@ void TestKPlusOccupancy::clipPlaneStartsTheSpanBetweenLayers()
     settings.rule = StaticRule::PositiveIndex;
     settings.clip = ClipPlane{true, {0.0, 0.0, -1.0}, -0.5 * (layerDepth(3) + layerDepth(4))};
     renderLayers(8, settings);
-    const KPlusOccupancy occupancy = m_renderer->readOccupancy();
+    const PixelOccupancy occupancy = m_renderer->readOccupancy().value();
     const TrimImage trim = m_renderer->readTrimImage();
     int wrong = 0;
     for (int i = 0; i < kWidth * kHeight; ++i) {

@@ -26,11 +26,32 @@ bool isReferenceSilhouette(const TrimImage& reference, int x, int y)
     return covered && empty;
 }
 
+bool tiedWithShown(const PixelTrace& trace, const TrimPixel& actual)
+{
+    if (trace.walk.shownIndex < 0 || actual.windingAtStart != trace.pixel.windingAtStart)
+        return false;
+    const RayHit& shown = trace.hits[std::size_t(trace.walk.shownIndex)];
+    for (const RayHit& hit : trace.hits) {
+        if (hit.t == shown.t && hit.facing == shown.facing && hit.objectId == actual.objectId &&
+            hit.primitiveId == actual.primitiveId && hit.facing == actual.facing)
+            return true;
+    }
+    return false;
+}
+
 } // namespace
+
+TieCheck referenceTieCheck(const ReferenceRenderer& reference, const Camera& camera, int width, int height,
+                           const TrimSettings& settings)
+{
+    return [&reference, camera, width, height, settings](int x, int y, const TrimPixel& actual) {
+        return tiedWithShown(reference.tracePixel(camera, width, height, x, y, settings), actual);
+    };
+}
 
 double TrimComparison::agreement() const
 {
-    const int compared = coveredPixels - excluded();
+    const int compared = coveredPixels - excluded() - overflowed;
     return compared > 0 ? double(agreeing) / double(compared) : 1.0;
 }
 
@@ -41,21 +62,26 @@ double TrimComparison::excludedFraction() const
 
 QString TrimComparison::summary() const
 {
-    return QStringLiteral("agreement %1 % (%2 of %3 compared pixels; %4 disagree); excluded %5 of %6 covered "
-                          "(edge %7, depth order %8, silhouette %9)")
+    return QStringLiteral("agreement %1 % (%2 of %3 compared pixels, %10 by depth ties; %4 disagree); "
+                          "excluded %5 of %6 covered (edge %7, depth order %8, silhouette %9); %11 reported overflowed "
+                          "(%12 of them differ)")
         .arg(100.0 * agreement(), 0, 'f', 3)
         .arg(agreeing)
-        .arg(coveredPixels - excluded())
+        .arg(coveredPixels - excluded() - overflowed)
         .arg(disagreeing)
         .arg(excluded())
         .arg(coveredPixels)
         .arg(edgeExcluded)
         .arg(depthExcluded)
-        .arg(silhouetteExcluded);
+        .arg(silhouetteExcluded)
+        .arg(tieAgreeing)
+        .arg(overflowed)
+        .arg(overflowedDisagreeing);
 }
 
 TrimComparison compareTrimImages(const TrimImage& actual, const TrimImage& reference,
-                                 const ReferenceDiagnostics& diagnostics, const ComparisonTolerance& tolerance)
+                                 const ReferenceDiagnostics& diagnostics, const ComparisonTolerance& tolerance,
+                                 const TieCheck& ties)
 {
     TrimComparison result;
     result.disagreementMask = QImage(reference.width, reference.height, QImage::Format_Grayscale8);
@@ -64,11 +90,21 @@ TrimComparison compareTrimImages(const TrimImage& actual, const TrimImage& refer
         for (int x = 0; x < reference.width; ++x) {
             const TrimPixel& a = actual.at(x, y);
             const TrimPixel& r = reference.at(x, y);
-            if (!a.covered() && !r.covered())
+            if (!a.covered() && !r.covered() && !a.unresolved)
                 continue;
             ++result.coveredPixels;
+            if (a.overflowed || a.unresolved) {
+                ++result.overflowed;
+                result.overflowedDisagreeing += samePixel(a, r) ? 0 : 1;
+                continue;
+            }
             if (samePixel(a, r)) {
                 ++result.agreeing;
+                continue;
+            }
+            if (ties && a.covered() && r.covered() && ties(x, y, a)) {
+                ++result.agreeing;
+                ++result.tieAgreeing;
                 continue;
             }
             const std::size_t i = diagnostics.index(x, y);

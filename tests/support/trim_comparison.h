@@ -12,14 +12,31 @@
 ///   of flipping (ReferenceDiagnostics::depthMargin);
 /// - silhouette: exactly one image covers the pixel and the reference's 3×3 neighbourhood
 ///   has both covered and empty pixels.
+/// Two more cases are legitimate and counted apart:
+/// - tie: coplanar duplicated triangles; the GPU shows another of the fragments that lie
+///   at exactly the shown depth, with the same facing and winding (a `TieCheck` decides);
+/// - overflowed: a capacity-bounded method reports that the pixel lost fragments. Such a
+///   pixel may differ; a method must report overflow wherever it is wrong, so a wrong pixel
+///   without the flag counts as disagreeing.
 
 #include "trim/reference_diagnostics.h"
+#include "trim/reference_renderer.h"
 #include "trim/trim_image.h"
 
 #include <QImage>
 #include <QString>
 
+#include <functional>
+
 namespace trimlab::test {
+
+/// True when `actual`, shown at pixel (x, y) instead of the reference's answer, is one of
+/// the fragments tied exactly in depth with the reference's shown fragment.
+using TieCheck = std::function<bool(int x, int y, const TrimPixel& actual)>;
+
+/// A TieCheck from the reference's full hit list of the pixel.
+[[nodiscard]] TieCheck referenceTieCheck(const ReferenceRenderer& reference, const Camera& camera, int width,
+                                         int height, const TrimSettings& settings);
 
 struct ComparisonTolerance {
     double edgeTolerancePx = 1.0 / 32.0;
@@ -28,15 +45,18 @@ struct ComparisonTolerance {
 
 struct TrimComparison {
     int coveredPixels = 0;   ///< covered in either image
-    int agreeing = 0;
-    int disagreeing = 0;     ///< differ and not excluded
+    int agreeing = 0;        ///< including ties
+    int tieAgreeing = 0;     ///< of those, agreeing through a depth tie
+    int disagreeing = 0;     ///< differ, not excluded, not reported as overflowed
+    int overflowed = 0;      ///< reported as overflowed by the GPU method (not compared)
+    int overflowedDisagreeing = 0;
     int edgeExcluded = 0;
     int depthExcluded = 0;
     int silhouetteExcluded = 0;
     QImage disagreementMask; ///< Grayscale8, 255 where disagreeing, row 0 at the top
 
     [[nodiscard]] int excluded() const { return edgeExcluded + depthExcluded + silhouetteExcluded; }
-    /// agreeing / (covered − excluded); 1 when nothing is left to compare.
+    /// agreeing / (covered − excluded − overflowed); 1 when nothing is left to compare.
     [[nodiscard]] double agreement() const;
     /// excluded / covered.
     [[nodiscard]] double excludedFraction() const;
@@ -46,7 +66,8 @@ struct TrimComparison {
 /// Both images must have the diagnostics' size.
 [[nodiscard]] TrimComparison compareTrimImages(const TrimImage& actual, const TrimImage& reference,
                                                const ReferenceDiagnostics& diagnostics,
-                                               const ComparisonTolerance& tolerance = {});
+                                               const ComparisonTolerance& tolerance = {},
+                                               const TieCheck& ties = {});
 
 /// A false-color picture of a trim image for failure artifacts: empty pixels black,
 /// covered ones colored by primitive id, front-facing brighter than back-facing.

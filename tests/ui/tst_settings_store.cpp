@@ -4,6 +4,7 @@
 #include "render_settings_store.h"
 
 #include "mfr/kplus_buffer.h"
+#include "mfr/fragment_method.h"
 
 #include <QSettings>
 #include <QTemporaryDir>
@@ -50,7 +51,7 @@ void TestSettingsStore::renderChoicesRoundTrip()
     saved.trim.trimEnabled = false;
     saved.trim.rule = StaticRule::Parity;
     saved.trim.clip = ClipPlane{true, {0.25, -0.5, 1.0 / 3.0}, -0.125};
-    saved.k = render::KPlusBuffer::kMaxK;
+    saved.k = render::MethodParameters::kMaxK;
     {
         QSettings settings(iniPath(), QSettings::IniFormat);
         saveRenderChoices(settings, saved);
@@ -62,7 +63,7 @@ void TestSettingsStore::renderChoicesRoundTrip()
     QCOMPARE(loaded.trim.clip.enabled, true);
     QCOMPARE(loaded.trim.clip.normal, saved.trim.clip.normal); // exact: doubles survive the INI file
     QCOMPARE(loaded.trim.clip.offset, -0.125);
-    QCOMPARE(loaded.k, render::KPlusBuffer::kMaxK);
+    QCOMPARE(loaded.k, render::MethodParameters::kMaxK);
 }
 
 void TestSettingsStore::brokenValuesFallBackFieldByField()

@@ -1,0 +1,7 @@
+// Per-frame statistics the shaders increment (render/frame_counters.h reads them back).
+layout(binding = 0, offset = 0) uniform atomic_uint u_fragmentsInSpan;  // fragments in the kept span
+layout(binding = 0, offset = 4) uniform atomic_uint u_overflowPixels;   // pixels that lost fragments
+layout(binding = 0, offset = 8) uniform atomic_uint u_unresolvedPixels; // of those, trim point lost
+layout(binding = 0, offset = 12) uniform atomic_uint u_spinGiveUps;     // fragments that gave up the lock
+layout(binding = 0, offset = 16) uniform atomic_uint u_fragmentsLost;   // fragments not stored (capacity)
+layout(binding = 0, offset = 20) uniform atomic_uint u_fragmentsStored; // fragments written to storage

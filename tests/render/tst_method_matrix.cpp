@@ -1,0 +1,153 @@
+// Every multi-fragment method × every static rule × two clip planes × three scenes against
+// the CPU reference (issue: multi-fragment backends): a self-crossing surface, coplanar
+// duplicated triangles (a doubly covered sphere: depth ties), and 17 nested spheres (34
+// layers through the centre, beyond k = 16). Exact methods must agree everywhere;
+// bounded ones wherever they report no overflow, and report overflow wherever they are
+// wrong. tests/support/method_check.h holds the criteria.
+#include "gl_test_context.h"
+#include "method_check.h"
+
+#include "scene/demo_scenes.h"
+#include "scene/shape_generators.h"
+
+#include <glm/geometric.hpp>
+
+#include <QtTest>
+
+#include <map>
+
+using namespace trimlab;
+using namespace trimlab::render;
+
+namespace {
+
+constexpr int kWidth = 200;
+constexpr int kHeight = 150;
+constexpr int kNestedSpheres = 17;
+
+Scene doublyCoveredSphere()
+{
+    const TriangleMesh sphere = makeIcosphere(glm::dvec3(0.0), 1.0, 3);
+    Scene scene;
+    scene.objects.push_back({"sphere", sphere, glm::dmat4(1.0)});
+    scene.objects.push_back({"same sphere", sphere, glm::dmat4(1.0)});
+    return scene;
+}
+
+Scene nestedSpheres()
+{
+    TriangleMesh all;
+    for (int i = 0; i < kNestedSpheres; ++i)
+        appendMesh(all, makeIcosphere(glm::dvec3(0.0), 1.0 - 0.05 * i, 2));
+    Scene scene;
+    scene.objects.push_back({"nested spheres", all, glm::dmat4(1.0)});
+    return scene;
+}
+
+Scene sceneNamed(const std::string& name)
+{
+    if (name == "doubly-covered")
+        return doublyCoveredSphere();
+    if (name == "nested-17")
+        return nestedSpheres();
+    return *makeDemoScene(name);
+}
+
+ClipPlane clipPlane(int which, const Bounds& bounds)
+{
+    const glm::dvec3 n = glm::normalize(which == 0 ? glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.5, -0.4, -1.0));
+    const double shift = which == 0 ? 0.0 : 0.15 * bounds.radius();
+    return ClipPlane{true, n, -glm::dot(n, bounds.center()) + shift};
+}
+
+} // namespace
+
+Q_DECLARE_METATYPE(trimlab::render::FragmentMethodKind)
+Q_DECLARE_METATYPE(trimlab::StaticRule)
+
+class TestMethodMatrix : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void agreesWithReference_data();
+    void agreesWithReference();
+
+private:
+    struct Prepared {
+        Scene scene;
+        std::unique_ptr<ReferenceRenderer> reference;
+        std::map<std::string, ReferenceResult> results;
+    };
+    Prepared& prepare(const std::string& name);
+
+    std::unique_ptr<OffscreenGlContext> m_context;
+    std::unique_ptr<TrimRenderer> m_renderer;
+    std::map<std::string, Prepared> m_scenes;
+    std::string m_uploaded;
+};
+
+void TestMethodMatrix::initTestCase()
+{
+    TRIMLAB_INIT_GL_CONTEXT(m_context);
+    m_renderer = std::make_unique<TrimRenderer>(m_context->context());
+}
+
+void TestMethodMatrix::agreesWithReference_data()
+{
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<StaticRule>("rule");
+    QTest::addColumn<int>("plane");
+    QTest::addColumn<FragmentMethodKind>("method");
+    for (const char* scene : {"pushed-sphere", "doubly-covered", "nested-17"})
+        for (StaticRule rule : {StaticRule::Parity, StaticRule::PositiveIndex, StaticRule::AlternatingBorder})
+            for (int plane : {0, 1})
+                for (const MethodInfo& info : fragmentMethods())
+                    QTest::newRow(qPrintable(QString("%1 %2 %3 plane %4")
+                                                 .arg(QString::fromLatin1(info.id.data()), scene,
+                                                      QString::fromLatin1(ruleName(rule).data()))
+                                                 .arg(plane)))
+                        << QString(scene) << rule << plane << info.kind;
+}
+
+TestMethodMatrix::Prepared& TestMethodMatrix::prepare(const std::string& name)
+{
+    auto it = m_scenes.find(name);
+    if (it == m_scenes.end()) {
+        Prepared prepared{sceneNamed(name), nullptr, {}};
+        prepared.reference = std::make_unique<ReferenceRenderer>(prepared.scene);
+        it = m_scenes.emplace(name, std::move(prepared)).first;
+    }
+    if (m_uploaded != name) {
+        m_renderer->setScene(it->second.scene);
+        m_uploaded = name;
+    }
+    return it->second;
+}
+
+void TestMethodMatrix::agreesWithReference()
+{
+    QFETCH(QString, scene);
+    QFETCH(StaticRule, rule);
+    QFETCH(int, plane);
+    QFETCH(FragmentMethodKind, method);
+    Prepared& prepared = prepare(scene.toStdString());
+    const Bounds bounds = prepared.scene.worldBounds();
+    test::MethodCase testCase{QTest::currentDataTag(), fitCamera(bounds, double(kWidth) / kHeight), {}, {}, kWidth,
+                              kHeight};
+    testCase.settings.rule = rule;
+    testCase.settings.clip = clipPlane(plane, bounds);
+    const std::string key = std::string(ruleName(rule)) + std::to_string(plane);
+    auto result = prepared.results.find(key);
+    if (result == prepared.results.end())
+        result = prepared.results
+                     .emplace(key, prepared.reference->render(testCase.camera, kWidth, kHeight, testCase.settings))
+                     .first;
+    QString summary;
+    const auto failure = test::checkMethodAgainstReference(*m_renderer, method, testCase, *prepared.reference,
+                                                           result->second, &summary);
+    qInfo("%s", qPrintable(summary));
+    QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
+}
+
+QTEST_MAIN(TestMethodMatrix)
+#include "tst_method_matrix.moc"

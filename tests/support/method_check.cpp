@@ -1,0 +1,68 @@
+#include "method_check.h"
+
+#include "image_artifacts.h"
+
+namespace trimlab::test {
+
+namespace {
+
+QString artifactName(const MethodCase& testCase, render::FragmentMethodKind method)
+{
+    QString name = QString::fromLatin1(render::methodInfo(method).id.data()) + "-" + testCase.name;
+    for (QChar& c : name)
+        if (!c.isLetterOrNumber() && c != '-')
+            c = '_';
+    return name;
+}
+
+std::optional<QString> firstViolation(const TrimComparison& comparison, const render::FrameStats& stats, bool bounded,
+                                      const MethodCase& testCase, const MethodCriteria& criteria)
+{
+    const double pixels = double(testCase.width) * testCase.height;
+    if (comparison.coveredPixels < criteria.minimumCoverage * pixels)
+        return QStringLiteral("the scene covers only %1 pixels: a vacuous case").arg(comparison.coveredPixels);
+    if (comparison.agreement() < criteria.minimumAgreement)
+        return QStringLiteral("agreement below %1 %").arg(100.0 * criteria.minimumAgreement);
+    if (comparison.excludedFraction() > criteria.maximumExcluded)
+        return QStringLiteral("more than %1 % of the covered pixels excluded").arg(100.0 * criteria.maximumExcluded);
+    if (!bounded && (comparison.overflowed > 0 || stats.counts.fragmentsLost > 0))
+        return QStringLiteral("an unbounded method reported %1 overflowed pixels and %2 lost fragments")
+            .arg(comparison.overflowed)
+            .arg(stats.counts.fragmentsLost);
+    return std::nullopt;
+}
+
+} // namespace
+
+std::optional<QString> checkMethodAgainstReference(render::TrimRenderer& renderer, render::FragmentMethodKind method,
+                                                   const MethodCase& testCase, const ReferenceRenderer& referenceRenderer,
+                                                   const ReferenceResult& reference, QString* summary,
+                                                   const MethodCriteria& criteria)
+{
+    renderer.setMethod(method);
+    renderer.setParameters(testCase.parameters);
+    renderer.render(testCase.camera, testCase.settings, testCase.width, testCase.height);
+    const TrimImage gpu = renderer.readTrimImage();
+    const TrimComparison comparison =
+        compareTrimImages(gpu, reference.trim, reference.diagnostics, {},
+                          referenceTieCheck(referenceRenderer, testCase.camera, testCase.width, testCase.height,
+                                            testCase.settings));
+    const render::FrameStats& stats = renderer.lastStats();
+    const QString text = comparison.summary() +
+                         QStringLiteral("; %1 geometry passes, %2 fragments stored, %3 lost, %4 ms wall")
+                             .arg(stats.methodStats.geometryPasses)
+                             .arg(stats.counts.fragmentsStored)
+                             .arg(stats.counts.fragmentsLost)
+                             .arg(stats.wallMilliseconds, 0, 'f', 1);
+    if (summary)
+        *summary = text;
+    const bool bounded = render::methodInfo(method).bounded;
+    std::optional<QString> violation = firstViolation(comparison, stats, bounded, testCase, criteria);
+    if (!violation)
+        return std::nullopt;
+    const QString files = writeComparisonArtifacts(artifactName(testCase, method), trimImageToPicture(gpu),
+                                                   trimImageToPicture(reference.trim), comparison.disagreementMask);
+    return *violation + ": " + text + "; " + files;
+}
+
+} // namespace trimlab::test

@@ -1,0 +1,48 @@
+#pragma once
+/// \file
+/// One GPU-vs-reference check of a multi-fragment method, shared by the render tests:
+/// render a case with a method, compare with the CPU reference (trim_comparison.h), and
+/// say why it fails, if it does (with actual/expected/diff images written).
+
+#include "trim_comparison.h"
+#include "trim_renderer.h"
+
+#include "trim/reference_renderer.h"
+
+#include <QString>
+
+#include <optional>
+
+namespace trimlab::test {
+
+struct MethodCase {
+    QString name;            ///< used for artifact file names
+    Camera camera;
+    TrimSettings settings;
+    render::MethodParameters parameters;
+    int width = 256;
+    int height = 192;
+};
+
+/// The acceptance criteria of the render tests.
+struct MethodCriteria {
+    double minimumAgreement = 0.999;   ///< on compared pixels
+    double maximumExcluded = 0.05;     ///< edge/depth/silhouette exclusions per covered pixel
+    double minimumCoverage = 0.05;     ///< covered pixels per image pixel: no vacuous cases
+};
+
+/// Renders `testCase` with `method` on `renderer` (whose scene is already set) and
+/// compares with `reference` (computed for the same camera, size and settings by
+/// `referenceRenderer`). Bounded methods may differ only on pixels they flag as
+/// overflowed; unbounded ones must flag none and lose no fragment. Returns nullopt on
+/// success, else the failure message (artifacts written). `summary` receives the
+/// comparison summary either way.
+[[nodiscard]] std::optional<QString> checkMethodAgainstReference(render::TrimRenderer& renderer,
+                                                                 render::FragmentMethodKind method,
+                                                                 const MethodCase& testCase,
+                                                                 const ReferenceRenderer& referenceRenderer,
+                                                                 const ReferenceResult& reference,
+                                                                 QString* summary = nullptr,
+                                                                 const MethodCriteria& criteria = {});
+
+} // namespace trimlab::test
