@@ -22,6 +22,8 @@ const std::vector<ProgramDescription>& programCatalog()
           {{"KPLUS_INTERLOCK_ARB"}, "GL_ARB_fragment_shader_interlock"},
           {{"KPLUS_HEAP", "KPLUS_INTERLOCK_ARB"}, "GL_ARB_fragment_shader_interlock"}}},
         {"kplus_resolve", {"fullscreen.vert", "kplus_resolve.frag"}, {{{"K_MAX 1"}}, {{"K_MAX 16"}}, {{"K_MAX 64"}}}},
+        // buffer methods (S-buffer, K+B-SB, AB_FP, AB_LL)
+        // peeling methods (F2B, DUAL, two-pass)
     };
     return catalog;
 }

@@ -9,6 +9,8 @@ const std::vector<MethodInfo>& fragmentMethods()
     static const std::vector<MethodInfo> methods = {
         {FragmentMethodKind::KPlusArray, "kplus-array", "k⁺-buffer (max-array)", true, true, false},
         {FragmentMethodKind::KPlusHeap, "kplus-heap", "k⁺-buffer (max-heap)", true, true, false},
+        // buffer methods (S-buffer, K+B-SB, AB_FP, AB_LL)
+        // peeling methods (F2B, DUAL, two-pass)
     };
     return methods;
 }

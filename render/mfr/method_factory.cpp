@@ -13,8 +13,8 @@ std::unique_ptr<FragmentMethod> createFragmentMethod(FragmentMethodKind kind, Gl
         return std::make_unique<KPlusBuffer>(gl, false);
     case FragmentMethodKind::KPlusHeap:
         return std::make_unique<KPlusBuffer>(gl, true);
-    // buffer methods
-    // peeling methods
+    // buffer methods (S-buffer, K+B-SB, AB_FP, AB_LL)
+    // peeling methods (F2B, DUAL, two-pass)
     default:
         break;
     }

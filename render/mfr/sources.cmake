@@ -4,4 +4,6 @@ target_sources(trimlab_render PRIVATE
   mfr/method_factory.cpp
   mfr/pixel_state.cpp
   mfr/kplus_buffer.cpp
+  # buffer methods (S-buffer, K+B-SB, AB_FP, AB_LL)
+  # peeling methods (F2B, DUAL, two-pass)
 )
