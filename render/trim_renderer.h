@@ -61,6 +61,9 @@ public:
     /// Switches the multi-fragment method (its storage is allocated on the next frame).
     void setMethod(FragmentMethodKind method);
     [[nodiscard]] FragmentMethodKind method() const { return m_method->kind(); }
+    /// The current method object, e.g. to ask a concrete method (via dynamic_cast) for its
+    /// allocation after a frame.
+    [[nodiscard]] FragmentMethod& methodObject() { return *m_method; }
     void setParameters(const MethodParameters& parameters);
     [[nodiscard]] const MethodParameters& parameters() const { return m_parameters; }
     /// Shorthand for the k of the parameters, 1..MethodParameters::kMaxK. Default 16.

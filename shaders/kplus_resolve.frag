@@ -3,6 +3,7 @@
 // 8.1.2): sort the pixel's slots in registers and walk them front to back from the exact
 // winding index at the span start. A pixel that overflowed is still exact when its trim
 // point is among the k nearest; otherwise it is unresolved (counted, painted magenta).
+// With KPLUS_NODE_REGION it resolves K+B-SB, whose slots are a node-buffer region.
 
 #include "common/bindings.glsl"
 #define KPLUS_ACCESS readonly
@@ -27,6 +28,7 @@ void main()
 {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     int count = int(min(imageLoad(u_counter, pixel).r, uint(K_MAX)));
+    beginPixelStorage(pixel);
     for (int i = 0; i < count; ++i)
         g_fragments[i] = loadSlot(pixel, i);
     sortFragments(count);

@@ -5,6 +5,9 @@
 // bounded spin-lock on imageAtomicExchange, or GL_ARB_fragment_shader_interlock
 // (KPLUS_INTERLOCK_ARB) where the driver has it.
 // In the same pass every fragment behind the span start updates the exact winding index.
+// With KPLUS_NODE_REGION this is K+B-SB's store pass (thesis 7.1.3): the slots are the
+// pixel's region of the node buffer, and the count pass before it already counted the
+// winding index and the fragments of the span.
 //
 // No color is written and the shader ends in discard: llvmpipe drops earlier fragments
 // of a tile that a later triangle fully covers when the shader looks opaque (PLATFORM.md).
@@ -37,9 +40,9 @@ void spinLockedInsert(ivec2 pixel, uvec2 f, float depth)
 {
     for (int spin = 0; spin < u_maxSpin; ++spin) {
         if (imageAtomicExchange(u_semaphore, pixel, 1u) == 0u) {
-            memoryBarrierImage();
+            memoryBarrier();
             insertLocked(pixel, f, depth);
-            memoryBarrierImage();
+            memoryBarrier();
             imageAtomicExchange(u_semaphore, pixel, 0u);
             return;
         }
@@ -53,11 +56,16 @@ void spinLockedInsert(ivec2 pixel, uvec2 f, float depth)
 void main()
 {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
+#ifdef KPLUS_NODE_REGION
+    bool kept = clipKeeps(v_viewPos);
+#else
     bool kept = countWinding(pixel, v_viewPos);
-    float depth = -v_viewPos.z;
-    uvec2 f = packFragment(depth, uint(gl_PrimitiveID), u_objectId, gl_FrontFacing);
     if (kept)
         atomicCounterIncrement(u_fragmentsInSpan);
+#endif
+    float depth = -v_viewPos.z;
+    uvec2 f = packFragment(depth, uint(gl_PrimitiveID), u_objectId, gl_FrontFacing);
+    beginPixelStorage(pixel);
     bool candidate = kept && !cullBeforeLock(pixel, depth);
 #ifdef CRITICAL_BEGIN
     // Interlock calls must not sit in control flow: the condition goes inside.

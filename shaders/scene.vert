@@ -7,6 +7,10 @@ uniform mat4 u_modelView;
 uniform mat4 u_projection;
 
 out vec3 v_viewPos;
+// Methods that count fragments in one geometry pass and store them in another (S-buffer,
+// K+B-SB) need both passes to rasterise exactly the same fragments.
+invariant gl_Position;
+invariant v_viewPos;
 
 void main()
 {

@@ -5,6 +5,7 @@ target_sources(trimlab_core PRIVATE
   trim/trim_walk.cpp
   trim/reference_diagnostics.cpp
   trim/reference_renderer.cpp
+  trim/trim_agreement.cpp
   trim/winding_number.cpp
 )
 # The watertight ray-triangle test relies on every vertex being sheared by identical

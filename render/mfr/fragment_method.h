@@ -61,6 +61,7 @@ struct MethodStats {
     int fullscreenPasses = 0;   ///< resolve / referencing passes
     std::size_t bytes = 0;      ///< GPU memory the method holds
     bool interlock = false;     ///< the critical section used fragment shader interlock
+    int regrowths = 0;          ///< times the storage grew and the frame was rendered again (AB_LL)
 };
 
 class FragmentMethod {

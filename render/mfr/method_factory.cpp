@@ -1,6 +1,13 @@
 #include "mfr/method_factory.h"
 
+#include "mfr/abuffer_fixed.h"
+#include "mfr/abuffer_linked_list.h"
+#include "mfr/dual_peeling.h"
+#include "mfr/f2b_peeling.h"
 #include "mfr/kplus_buffer.h"
+#include "mfr/kplus_s_buffer.h"
+#include "mfr/s_buffer.h"
+#include "mfr/two_pass.h"
 
 #include <stdexcept>
 
@@ -14,7 +21,21 @@ std::unique_ptr<FragmentMethod> createFragmentMethod(FragmentMethodKind kind, Gl
     case FragmentMethodKind::KPlusHeap:
         return std::make_unique<KPlusBuffer>(gl, true);
     // buffer methods (S-buffer, K+B-SB, AB_FP, AB_LL)
+    case FragmentMethodKind::SBuffer:
+        return std::make_unique<SBuffer>(gl);
+    case FragmentMethodKind::KPlusSBuffer:
+        return std::make_unique<KPlusSBuffer>(gl);
+    case FragmentMethodKind::ABufferFixed:
+        return std::make_unique<ABufferFixed>(gl);
+    case FragmentMethodKind::ABufferLinkedList:
+        return std::make_unique<ABufferLinkedList>(gl);
     // peeling methods (F2B, DUAL, two-pass)
+    case FragmentMethodKind::PeelingF2B:
+        return std::make_unique<F2BPeeling>(gl);
+    case FragmentMethodKind::PeelingDual:
+        return std::make_unique<DualPeeling>(gl);
+    case FragmentMethodKind::TwoPass:
+        return std::make_unique<TwoPassTrim>(gl);
     default:
         break;
     }

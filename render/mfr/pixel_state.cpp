@@ -77,7 +77,10 @@ PixelOccupancy PixelState::readOccupancy()
     PixelOccupancy occupancy{m_width, m_height, {}, {}};
     occupancy.held = readImageTopDown(m_gl, m_counter.id(), m_width, m_height);
     const std::vector<std::uint32_t> flags = readImageTopDown(m_gl, m_overflow.id(), m_width, m_height);
-    occupancy.overflowed.assign(flags.begin(), flags.end());
+    occupancy.overflowed.resize(flags.size());
+    // Any nonzero value is an overflow (AB_FP keeps a depth code there, not just 1).
+    std::transform(flags.begin(), flags.end(), occupancy.overflowed.begin(),
+                   [](std::uint32_t flag) { return std::uint8_t(flag != 0 ? 1 : 0); });
     return occupancy;
 }
 

@@ -5,10 +5,10 @@
 #define IMAGE_WINDING 2    // r32i: winding index at the start of the kept span
 #define IMAGE_OVERFLOW 3   // r32ui: 1 once a pixel lost fragments to a capacity limit
 #define IMAGE_FRAGMENTS 4  // rg32ui 2D array: per-pixel fragment slots (k+, AB_FP)
-#define IMAGE_HEAD 5       // r32ui: per-pixel head/offset into a node buffer (AB_LL, S-buffer)
-#define IMAGE_PEEL_DEPTH 6 // r32f / rg32f: depth(s) peeled so far (F2B, DUAL)
-#define IMAGE_WALK 7       // rg32ui: trim walk state carried between peeling passes
+#define IMAGE_HEAD 5       // r32ui: per-pixel head/offset into a node buffer (AB_LL, S-buffer, K+B-SB)
+#define IMAGE_PEEL_DEPTH 6 // r32ui 2D array: peeling cursor, one field per layer (F2B, DUAL; peel_state.glsl)
+#define IMAGE_WALK 7       // rgba32ui 2D array: trim walks carried between peeling passes (F2B, DUAL)
 // Shader storage blocks (the scene data uses 1-4, see scene_data.glsl).
 #define STORAGE_NODES 5    // uvec2 nodes[] of node-buffer methods
 #define STORAGE_LINKS 6    // uint next[] of linked lists
-#define STORAGE_SHARED_COUNTERS 7 // uint counters[] of the S-buffer's memory referencing
+#define STORAGE_SHARED_COUNTERS 7 // uint counters[] of the S-buffer's memory referencing; AB_LL's one node counter

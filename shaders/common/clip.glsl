@@ -5,9 +5,11 @@ uniform bool u_clipEnabled;
 uniform vec4 u_clipPlaneView; // (n, d) in view space; kept where dot(n, p) + d >= 0
 uniform float u_zNear;
 
+// `precise`: a count pass and a later store pass must classify every fragment alike.
 bool clipKeeps(vec3 viewPos)
 {
-    return !u_clipEnabled || dot(u_clipPlaneView.xyz, viewPos) + u_clipPlaneView.w >= 0.0;
+    precise float side = dot(u_clipPlaneView.xyz, viewPos) + u_clipPlaneView.w;
+    return !u_clipEnabled || side >= 0.0;
 }
 
 // True when the pixel ray through `viewPos` starts (at the near plane) on the kept side.

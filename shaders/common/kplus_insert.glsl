@@ -1,16 +1,30 @@
 // Insertion into a pixel's k slots while holding its lock (thesis 7.1.2): the max-array
-// (farthest fragment at slot 0) or, with KPLUS_HEAP, the max-heap of Algorithm 7.7.
+// (farthest fragment at slot 0) or the max-heap of Algorithm 7.7. The k+-buffer picks one
+// for all pixels (KPLUS_HEAP); K+B-SB (KPLUS_NODE_REGION) picks per pixel as thesis 7.1.3
+// says: the max-heap where the pixel overflows (f(p) > k, flagged by its referencing
+// pass) and k > 16, else the max-array.
 // Slot 0 is only ever written with its final value, so culling reads of slot 0 outside
 // the lock never see a maximum smaller than the true one.
 // Needs kplus_storage.glsl (with write access) and fragment_pack.glsl.
 
 uniform int u_k;
 
+#ifdef KPLUS_NODE_REGION
+void storeSlot(ivec2 pixel, int slot, uvec2 f) { nodes[g_regionStart + uint(slot)] = f; }
+
+bool usesHeap(ivec2 pixel) { return u_k > 16 && imageLoad(u_overflow, pixel).r != 0u; }
+#else
 void storeSlot(ivec2 pixel, int slot, uvec2 f) { imageStore(u_fragments, ivec3(pixel, slot), uvec4(f, 0u, 0u)); }
 
 #ifdef KPLUS_HEAP
+bool usesHeap(ivec2 pixel) { return true; }
+#else
+bool usesHeap(ivec2 pixel) { return false; }
+#endif
+#endif
+
 // Up-heap with a moving hole: parents smaller than the new fragment move down.
-void insertEmpty(ivec2 pixel, int count, uvec2 f, float depth)
+void heapInsertEmpty(ivec2 pixel, int count, uvec2 f, float depth)
 {
     int hole = count;
     while (hole > 0) {
@@ -25,7 +39,7 @@ void insertEmpty(ivec2 pixel, int count, uvec2 f, float depth)
 }
 
 // The root (maximum) is evicted; down-heap with a moving hole: larger children move up.
-void insertFull(ivec2 pixel, uvec2 f, float depth)
+void heapInsertFull(ivec2 pixel, uvec2 f, float depth)
 {
     int hole = 0;
     while (true) {
@@ -47,9 +61,8 @@ void insertFull(ivec2 pixel, uvec2 f, float depth)
     }
     storeSlot(pixel, hole, f);
 }
-#else
 // Max-array: append; a new maximum swaps into slot 0.
-void insertEmpty(ivec2 pixel, int count, uvec2 f, float depth)
+void arrayInsertEmpty(ivec2 pixel, int count, uvec2 f, float depth)
 {
     if (count > 0) {
         uvec2 head = loadSlot(pixel, 0);
@@ -63,7 +76,7 @@ void insertEmpty(ivec2 pixel, int count, uvec2 f, float depth)
 }
 
 // The maximum is evicted: the new maximum among slots 1..k-1 and f goes to slot 0.
-void insertFull(ivec2 pixel, uvec2 f, float depth)
+void arrayInsertFull(ivec2 pixel, uvec2 f, float depth)
 {
     int maxSlot = 0;
     float maxDepth = depth;
@@ -81,7 +94,22 @@ void insertFull(ivec2 pixel, uvec2 f, float depth)
         storeSlot(pixel, maxSlot, f);
     }
 }
-#endif
+
+void insertEmpty(ivec2 pixel, int count, uvec2 f, float depth)
+{
+    if (usesHeap(pixel))
+        heapInsertEmpty(pixel, count, f, depth);
+    else
+        arrayInsertEmpty(pixel, count, f, depth);
+}
+
+void insertFull(ivec2 pixel, uvec2 f, float depth)
+{
+    if (usesHeap(pixel))
+        heapInsertFull(pixel, f, depth);
+    else
+        arrayInsertFull(pixel, f, depth);
+}
 
 // Algorithm 7.8's critical section: insert into a pixel that is not full, or replace the
 // maximum of a full one (re-checking the cull under the lock).
@@ -90,7 +118,7 @@ void insertLocked(ivec2 pixel, uvec2 f, float depth)
     uint count = imageLoad(u_counter, pixel).r;
     if (count < uint(u_k)) {
         insertEmpty(pixel, int(count), f, depth);
-        memoryBarrierImage();
+        memoryBarrier(); // the slots (image or node buffer) before the count
         imageStore(u_counter, pixel, uvec4(count + 1u));
         atomicCounterIncrement(u_fragmentsStored);
         return;

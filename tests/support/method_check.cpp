@@ -21,14 +21,9 @@ std::optional<QString> firstViolation(const TrimComparison& comparison, const re
     const double pixels = double(testCase.width) * testCase.height;
     if (comparison.coveredPixels < criteria.minimumCoverage * pixels)
         return QStringLiteral("the scene covers only %1 pixels: a vacuous case").arg(comparison.coveredPixels);
-    if (comparison.agreement() < criteria.minimumAgreement)
-        return QStringLiteral("agreement below %1 %").arg(100.0 * criteria.minimumAgreement);
-    if (comparison.excludedFraction() > criteria.maximumExcluded)
-        return QStringLiteral("more than %1 % of the covered pixels excluded").arg(100.0 * criteria.maximumExcluded);
-    if (!bounded && (comparison.overflowed > 0 || stats.counts.fragmentsLost > 0))
-        return QStringLiteral("an unbounded method reported %1 overflowed pixels and %2 lost fragments")
-            .arg(comparison.overflowed)
-            .arg(stats.counts.fragmentsLost);
+    const AgreementCriteria shared{criteria.minimumAgreement, criteria.maximumExcluded};
+    if (const auto violation = agreementViolation(comparison, shared, bounded, stats.counts.fragmentsLost))
+        return QString::fromStdString(*violation);
     return std::nullopt;
 }
 

@@ -1,0 +1,88 @@
+#include "mfr/kplus_s_buffer.h"
+
+#include "frame_counters.h"
+#include "gl/shader_library.h"
+#include "gpu_scene.h"
+#include "mfr/bindings.h"
+#include "mfr/kplus_buffer.h"
+#include "mfr/trim_frame.h"
+#include "passes/trim_pass_state.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace trimlab::render {
+
+namespace {
+
+// Bounded spin of the store pass's lock, as for the k⁺-buffer (kplus_buffer.cpp).
+constexpr int kMaxSpin = 4096;
+
+} // namespace
+
+KPlusSBuffer::KPlusSBuffer(GlFunctions& gl)
+    : m_gl(gl), m_state(gl), m_head(gl), m_referencing(gl), m_nodes(gl, 8, "K+B-SB node buffer")
+{
+}
+
+std::optional<std::size_t> KPlusSBuffer::estimateBytes(int, int, const MethodParameters&) const
+{
+    return std::nullopt;
+}
+
+void KPlusSBuffer::render(TrimFrame& frame)
+{
+    m_k = frame.parameters.k;
+    if (m_k < 1 || m_k > MethodParameters::kMaxK)
+        throw std::invalid_argument("k must be between 1 and " + std::to_string(MethodParameters::kMaxK) + " (got " +
+                                    std::to_string(m_k) + ").");
+    const KPlusLock lock = chooseKPlusLock(frame.capabilities, frame.parameters.allowInterlock);
+    m_state.allocate(frame.width, frame.height);
+    m_head.allocate(frame.width, frame.height);
+    m_state.clear(frame.shaders);
+    m_referencing.countPass(frame, m_state);
+    m_countedTotal =
+        m_referencing.reference(frame, m_state, m_head, frame.parameters.sharedCounters, std::uint32_t(m_k));
+    m_nodes.reserve(m_countedTotal, frame.capabilities, frame.width, frame.height);
+    storePass(frame, lock);
+    m_gl.glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                         GL_ATOMIC_COUNTER_BARRIER_BIT);
+    resolvePass(frame);
+    // Per-pixel passes: clear, two referencing passes (addresses, regions), resolve.
+    m_stats = {2, 4, m_state.memoryBytes() + m_head.memoryBytes() + m_referencing.memoryBytes() + m_nodes.bytes(),
+               lock != KPlusLock::SpinLock};
+}
+
+void KPlusSBuffer::storePass(TrimFrame& frame, KPlusLock lock)
+{
+    QStringList defines = kplusStoreDefines(lock, false);
+    defines << QStringLiteral("KPLUS_NODE_REGION");
+    const GLuint program = frame.shaders.program(QStringLiteral("kplus_sbuffer_store"), defines);
+    m_gl.glUseProgram(program);
+    setClipUniforms(frame, program);
+    m_gl.glUniform1i(m_gl.glGetUniformLocation(program, "u_k"), m_k);
+    m_gl.glUniform1i(m_gl.glGetUniformLocation(program, "u_maxSpin"), kMaxSpin);
+    m_state.bind();
+    m_head.bind();
+    m_nodes.bind(binding::kNodesStorage, m_countedTotal);
+    frame.counters.bind();
+    beginCapturePass(frame);
+    frame.scene.draw(program, frame.projection);
+    endCapturePass(frame);
+}
+
+void KPlusSBuffer::resolvePass(TrimFrame& frame)
+{
+    const GLuint program = frame.shaders.program(QStringLiteral("kplus_sbuffer_resolve"),
+                                                 {QStringLiteral("KPLUS_NODE_REGION"), QStringLiteral("K_MAX %1").arg(m_k)});
+    m_gl.glUseProgram(program);
+    setTrimWalkUniforms(frame, program);
+    setOutputUniforms(frame, program);
+    m_state.bind();
+    m_head.bind();
+    m_nodes.bind(binding::kNodesStorage, m_countedTotal);
+    frame.counters.bind();
+    drawResolvePass(frame, program);
+}
+
+} // namespace trimlab::render
