@@ -7,6 +7,7 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string_view>
 
 namespace trimlab {
@@ -99,6 +100,20 @@ std::size_t totalBufferBytes(const tinygltf::Model& model)
     return total;
 }
 
+std::string typeName(int type)
+{
+    switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+    case TINYGLTF_TYPE_VEC2: return "VEC2";
+    case TINYGLTF_TYPE_VEC3: return "VEC3";
+    case TINYGLTF_TYPE_VEC4: return "VEC4";
+    case TINYGLTF_TYPE_MAT2: return "MAT2";
+    case TINYGLTF_TYPE_MAT3: return "MAT3";
+    case TINYGLTF_TYPE_MAT4: return "MAT4";
+    default: return "type " + std::to_string(type);
+    }
+}
+
 const tinygltf::Accessor& checkedAccessor(const tinygltf::Model& model, int accessor, int expectedType,
                                           const GltfReadContext& context)
 {
@@ -106,8 +121,7 @@ const tinygltf::Accessor& checkedAccessor(const tinygltf::Model& model, int acce
         fail(context, accessor, "does not exist (the file has " + std::to_string(model.accessors.size()) + " accessors)");
     const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(accessor)];
     if (a.type != expectedType)
-        fail(context, accessor, std::string("has the wrong type; expected ") +
-                                    (expectedType == TINYGLTF_TYPE_VEC3 ? "VEC3" : "SCALAR"));
+        fail(context, accessor, "has the wrong type; expected " + typeName(expectedType));
     if (tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType)) <= 0)
         fail(context, accessor, "has an unknown component type " + std::to_string(a.componentType));
     if (a.bufferView < 0 && a.count > std::max<std::size_t>(totalBufferBytes(model), 1u << 20))
@@ -185,6 +199,23 @@ std::vector<glm::vec3> readGltfPositions(const tinygltf::Model& model, int acces
         positions.emplace_back(values[3 * i], values[3 * i + 1], values[3 * i + 2]);
     }
     return positions;
+}
+
+std::vector<double> readGltfNumbers(const tinygltf::Model& model, int accessor, int type,
+                                    const GltfReadContext& context)
+{
+    const tinygltf::Accessor& a = checkedAccessor(model, accessor, type, context);
+    const int components = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(type));
+    const bool matrix = type == TINYGLTF_TYPE_MAT2 || type == TINYGLTF_TYPE_MAT3 || type == TINYGLTF_TYPE_MAT4;
+    if (components <= 0 || (matrix && a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT))
+        fail(context, accessor, "matrices must be stored as FLOAT components");
+    std::vector<double> values = readComponents(model, a, accessor, components, context);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i]))
+            fail(context, accessor, "element " + std::to_string(i / std::size_t(components)) + " is not finite (" +
+                                        describeNonFinite(values[i]) + ")");
+    }
+    return values;
 }
 
 std::vector<std::uint32_t> readGltfIndices(const tinygltf::Model& model, int accessor, std::size_t vertexCount,

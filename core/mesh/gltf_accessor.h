@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// Validated reading of glTF 2.0 accessors (positions and indices) from a tinygltf model.
+/// Validated reading of glTF 2.0 accessors (positions, indices, and any numbers: animation
+/// keyframes, morph weights, skin joints and matrices) from a tinygltf model.
 /// Every byte range is checked against its buffer view and buffer before it is read.
 /// Internal to the glTF reader; includes no tinygltf header.
 
@@ -31,6 +32,17 @@ struct GltfReadContext {
 /// byte range outside its buffer view or buffer, a bad stride, or a non-finite value.
 [[nodiscard]] std::vector<glm::vec3> readGltfPositions(const tinygltf::Model& model, int accessor,
                                                        const GltfReadContext& context);
+
+/// Reads accessor `accessor` as #count × n numbers (row i holds element i; n = 1 for
+/// SCALAR, 2–4 for VECn, 4/9/16 for MATn in glTF's column-major order). `type` is a
+/// TINYGLTF_TYPE_* constant the accessor must have. Any component type is accepted for
+/// scalars and vectors (normalized integers map to [0, 1] or [−1, 1], as for animation
+/// rotations, morph weights and skin weights); matrices must be FLOAT. Sparse accessors
+/// and accessors without a buffer view (zeros) are supported.
+/// Throws MeshLoadError naming the accessor for the layout problems readGltfPositions
+/// reports, a wrong type, and non-finite values.
+[[nodiscard]] std::vector<double> readGltfNumbers(const tinygltf::Model& model, int accessor, int type,
+                                                  const GltfReadContext& context);
 
 /// Reads accessor `accessor` as vertex indices: a SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT
 /// or UNSIGNED_INT, each less than `vertexCount`. Throws MeshLoadError naming the accessor

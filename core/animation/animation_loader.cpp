@@ -1,0 +1,21 @@
+#include "animation/animation_loader.h"
+
+#include "animation/sequence_files.h"
+#include "animation/sequence_loader.h"
+#include "mesh/mesh_load_error.h"
+
+namespace trimlab {
+
+MeshAnimation loadAnimation(const std::string& source, const AnimationLoadOptions& options, const TaskControl& control)
+{
+    MeshAnimation animation = isGltfSource(source) ? loadGltfAnimation(source, options.gltf, control)
+                                                   : loadMeshSequence(sequenceFiles(source), control, options.threads);
+    if (options.restPose >= animation.poseCount())
+        throw MeshLoadError(source, "the rest pose " + std::to_string(options.restPose) +
+                                        " does not exist; the animation has " + std::to_string(animation.poseCount()) +
+                                        " poses (0 to " + std::to_string(animation.poseCount() - 1) + ")");
+    animation.restPose = options.restPose;
+    return animation;
+}
+
+} // namespace trimlab

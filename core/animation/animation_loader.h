@@ -1,0 +1,29 @@
+#pragma once
+/// \file
+/// The one entry point for loading a mesh animation: a mesh sequence (folder or
+/// pattern) or a glTF file, with a chosen rest pose.
+
+#include "animation/gltf_animation.h"
+#include "animation/mesh_animation.h"
+#include "animation/task_control.h"
+
+#include <cstddef>
+#include <string>
+
+namespace trimlab {
+
+struct AnimationLoadOptions {
+    GltfAnimationOptions gltf; ///< for glTF sources only
+    std::size_t restPose = 0;  ///< index of the rest pose in the loaded poses
+    unsigned threads = 0;      ///< file loading threads (0 = hardware concurrency)
+};
+
+/// Loads `source`: a .gltf/.glb(.gz) file (gltf_animation.h), otherwise a folder or a
+/// numbered or wildcard pattern (sequence_files.h) loaded by loadMeshSequence, and sets
+/// the rest pose. Throws MeshLoadError naming the source or the offending file, also when
+/// `options.restPose` is not a pose index ("the rest pose 40 does not exist; the
+/// animation has 35 poses (0 to 34)"); OperationCancelled when asked to stop.
+[[nodiscard]] MeshAnimation loadAnimation(const std::string& source, const AnimationLoadOptions& options = {},
+                                          const TaskControl& control = {});
+
+} // namespace trimlab

@@ -1,0 +1,115 @@
+#include "animation/gltf_animation.h"
+
+#include "animation/gltf_animated_geometry.h"
+#include "animation/gltf_animation_clip.h"
+#include "animation/gltf_node_transforms.h"
+#include "animation/pose_welding.h"
+#include "mesh/gltf_document.h"
+#include "mesh/gzip_input.h"
+#include "mesh/mesh_io.h"
+#include "mesh/mesh_load_error.h"
+#include "mesh/reader_support.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+namespace trimlab {
+
+namespace {
+
+std::vector<double> sampleTimes(const GltfAnimationClip& clip, double fps, const std::string& name)
+{
+    if (!std::isfinite(fps) || fps < 0.0)
+        throw MeshLoadError(name, "the frame rate must be a positive number (or 0 for the keyframe times)");
+    if (fps == 0.0)
+        return clip.keyframeTimes;
+    const double start = clip.keyframeTimes.front();
+    const double span = clip.keyframeTimes.back() - start;
+    const double frames = std::floor(span * fps + 1e-9) + 1.0;
+    if (frames > double(kMaxSampledPoses))
+        throw MeshLoadError(name, "sampling " + std::to_string(span) + " s at " + std::to_string(fps) + " fps gives more than " +
+                                      std::to_string(kMaxSampledPoses) + " poses");
+    std::vector<double> times;
+    for (std::size_t i = 0; i < std::size_t(frames); ++i)
+        times.push_back(start + double(i) / fps);
+    return times;
+}
+
+std::string poseName(const std::string& clip, double time)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, " t=%.3f s", time);
+    return clip + text;
+}
+
+std::vector<glm::vec3> toFloatPositions(const std::vector<glm::dvec3>& positions, const std::string& name,
+                                        const std::string& pose)
+{
+    std::vector<glm::vec3> result;
+    result.reserve(positions.size());
+    for (std::size_t v = 0; v < positions.size(); ++v) {
+        const glm::dvec3& p = positions[v];
+        if (!isFiniteFloat(p.x) || !isFiniteFloat(p.y) || !isFiniteFloat(p.z))
+            throw MeshLoadError(name, "vertex " + std::to_string(v) + " of pose '" + pose +
+                                          "' is not finite after skinning (check the skin's matrices and weights)");
+        result.emplace_back(p);
+    }
+    return result;
+}
+
+std::string readFileBytes(const std::filesystem::path& path, const std::string& name)
+{
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error))
+        throw MeshLoadError(name, "cannot open the file: it does not exist or is not a file");
+    if (std::filesystem::file_size(path, error) > kMaxMeshInputBytes)
+        throw MeshLoadError(name, "the file is larger than the 2 GiB a mesh file may have");
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in && !in.eof())
+        throw MeshLoadError(name, "reading the file failed");
+    if (bytes.empty())
+        throw MeshLoadError(name, "the file is empty (0 bytes)");
+    return bytes;
+}
+
+} // namespace
+
+MeshAnimation readGltfAnimation(std::string_view bytes, const std::string& displayName,
+                                const std::filesystem::path& baseDir, const GltfAnimationOptions& options,
+                                const TaskControl& control)
+{
+    const std::string plain = hasGzipMagic(bytes) ? gunzip(bytes, displayName, kMaxMeshInputBytes) : std::string(bytes);
+    const tinygltf::Model model = parseGltfDocument(plain, displayName, baseDir);
+    const GltfAnimationClip clip = readAnimationClip(model, options.animation, displayName);
+    const std::vector<int> parents = nodeParents(model, displayName);
+    const GltfAnimatedGeometry geometry = readAnimatedGeometry(model, parents, displayName);
+    const std::vector<NodeTransform> fileNodes = fileNodeTransforms(model, displayName);
+    const std::vector<double> times = sampleTimes(clip, options.fps, displayName);
+    MeshAnimation animation;
+    animation.triangles = geometry.triangles;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        control.throwIfCancelled();
+        std::vector<NodeTransform> nodes = fileNodes;
+        clip.apply(times[i], nodes);
+        animation.poseNames.push_back(poseName(clip.name, times[i]));
+        animation.poses.push_back(toFloatPositions(geometry.pose(nodes, worldMatrices(nodes, parents)), displayName,
+                                                   animation.poseNames.back()));
+        animation.poseTimes.push_back(times[i]);
+        control.report("load", i + 1, times.size());
+    }
+    return weldAcrossPoses(animation);
+}
+
+MeshAnimation loadGltfAnimation(const std::filesystem::path& path, const GltfAnimationOptions& options,
+                                const TaskControl& control)
+{
+    const std::string name = path.string();
+    std::filesystem::path baseDir = path.parent_path();
+    if (baseDir.empty())
+        baseDir = ".";
+    return readGltfAnimation(readFileBytes(path, name), name, baseDir, options, control);
+}
+
+} // namespace trimlab

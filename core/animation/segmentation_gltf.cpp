@@ -1,0 +1,127 @@
+#include "animation/segmentation_gltf.h"
+
+#include <tiny_gltf.h>
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace trimlab {
+
+namespace {
+
+// Appends `bytes` to buffer 0 (4-byte aligned) as a new buffer view; returns its index.
+int addView(tinygltf::Model& model, const void* bytes, std::size_t size, int target)
+{
+    std::vector<unsigned char>& data = model.buffers[0].data;
+    data.resize((data.size() + 3) / 4 * 4, 0);
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = data.size();
+    view.byteLength = size;
+    view.target = target;
+    const auto* begin = static_cast<const unsigned char*>(bytes);
+    data.insert(data.end(), begin, begin + size);
+    model.bufferViews.push_back(view);
+    return int(model.bufferViews.size() - 1);
+}
+
+int addAccessor(tinygltf::Model& model, int view, int componentType, int type, std::size_t count)
+{
+    tinygltf::Accessor accessor;
+    accessor.bufferView = view;
+    accessor.componentType = componentType;
+    accessor.type = type;
+    accessor.count = count;
+    model.accessors.push_back(accessor);
+    return int(model.accessors.size() - 1);
+}
+
+int addPositions(tinygltf::Model& model, const TriangleMesh& mesh)
+{
+    const int view = addView(model, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3),
+                             TINYGLTF_TARGET_ARRAY_BUFFER);
+    const int accessor = addAccessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, mesh.positions.size());
+    glm::vec3 low = mesh.positions.front();
+    glm::vec3 high = low;
+    for (const glm::vec3& p : mesh.positions) {
+        low = glm::min(low, p);
+        high = glm::max(high, p);
+    }
+    model.accessors[std::size_t(accessor)].minValues = {low.x, low.y, low.z};
+    model.accessors[std::size_t(accessor)].maxValues = {high.x, high.y, high.z};
+    return accessor;
+}
+
+tinygltf::Model buildModel(const TriangleMesh& mesh, const VertexLabeling& segmentation, std::span<const WheelColor> colors)
+{
+    tinygltf::Model model;
+    model.asset.generator = "TrimLab segmentation export";
+    model.asset.extras = tinygltf::Value(tinygltf::Value::Object{{"segment_count", tinygltf::Value(int(segmentation.count))}});
+    model.buffers.emplace_back();
+    tinygltf::Primitive primitive;
+    primitive.mode = TINYGLTF_MODE_TRIANGLES;
+    primitive.attributes["POSITION"] = addPositions(model, mesh);
+    std::vector<glm::vec3> rgb;
+    std::vector<float> labels;
+    for (const std::uint32_t label : segmentation.labels) {
+        rgb.push_back(colors[label].rgb());
+        labels.push_back(float(label));
+    }
+    const int colorView = addView(model, rgb.data(), rgb.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
+    primitive.attributes["COLOR_0"] = addAccessor(model, colorView, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, rgb.size());
+    const int labelView = addView(model, labels.data(), labels.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+    primitive.attributes["_SEGMENT"] =
+        addAccessor(model, labelView, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, labels.size());
+    const int indexView = addView(model, mesh.triangles.data(), mesh.triangles.size() * sizeof(glm::uvec3),
+                                  TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    primitive.indices = addAccessor(model, indexView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
+                                    3 * mesh.triangles.size());
+    tinygltf::Mesh gltfMesh;
+    gltfMesh.name = "segmentation";
+    gltfMesh.primitives.push_back(primitive);
+    model.meshes.push_back(gltfMesh);
+    tinygltf::Node node;
+    node.mesh = 0;
+    model.nodes.push_back(node);
+    tinygltf::Scene scene;
+    scene.nodes = {0};
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+    return model;
+}
+
+} // namespace
+
+std::string segmentationGltf(const TriangleMesh& mesh, const VertexLabeling& segmentation, std::span<const WheelColor> colors)
+{
+    if (segmentation.labels.size() != mesh.positions.size() || mesh.positions.empty())
+        throw std::invalid_argument("segmentationGltf: " + std::to_string(segmentation.labels.size()) + " labels for " +
+                                    std::to_string(mesh.positions.size()) + " vertices");
+    if (colors.size() < segmentation.count)
+        throw std::invalid_argument("segmentationGltf: fewer colours than segments");
+    const tinygltf::Model model = buildModel(mesh, segmentation, colors);
+    std::ostringstream out;
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToStream(&model, out, true, false))
+        throw std::runtime_error("tinygltf could not serialise the segmentation");
+    return out.str();
+}
+
+void writeSegmentationGltf(const std::filesystem::path& path, const TriangleMesh& mesh, const VertexLabeling& segmentation,
+                           std::span<const WheelColor> colors)
+{
+    const std::string text = segmentationGltf(mesh, segmentation, colors);
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(text.data(), std::streamsize(text.size()));
+    out.close();
+    if (!out)
+        throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
+}
+
+} // namespace trimlab

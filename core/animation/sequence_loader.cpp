@@ -1,0 +1,48 @@
+#include "animation/sequence_loader.h"
+
+#include "animation/parallel_for.h"
+#include "animation/pose_topology.h"
+#include "mesh/mesh_io.h"
+
+#include <exception>
+#include <stdexcept>
+
+namespace trimlab {
+
+MeshAnimation loadMeshSequence(const std::vector<std::filesystem::path>& files, const TaskControl& control,
+                               unsigned threads)
+{
+    if (files.empty())
+        throw std::invalid_argument("loadMeshSequence: no files");
+    control.throwIfCancelled();
+    MeshAnimation animation;
+    TriangleMesh first = loadMesh(files.front());
+    animation.triangles = std::move(first.triangles);
+    animation.poses.resize(files.size());
+    animation.poses.front() = std::move(first.positions);
+    const std::size_t vertexCount = animation.poses.front().size();
+    // Errors are kept per file so that the first bad file in sequence order is reported,
+    // whichever thread found its problem first.
+    std::vector<std::exception_ptr> errors(files.size());
+    parallelFor(
+        files.size() - 1, threads,
+        [&](std::size_t i) {
+            try {
+                TriangleMesh pose = loadMesh(files[i + 1]);
+                requireSameTopology(animation.triangles, vertexCount, pose, files[i + 1].string());
+                animation.poses[i + 1] = std::move(pose.positions);
+            } catch (...) {
+                errors[i + 1] = std::current_exception();
+            }
+        },
+        control, "load");
+    for (const std::exception_ptr& error : errors) {
+        if (error)
+            std::rethrow_exception(error);
+    }
+    for (const std::filesystem::path& file : files)
+        animation.poseNames.push_back(file.filename().string());
+    return animation;
+}
+
+} // namespace trimlab

@@ -1,0 +1,10 @@
+# Mesh animations and their segmentation (core/animation/; thesis chapter 3).
+trimlab_add_test(core animation_loading LIBS trimlab::core)
+trimlab_add_test(core animation_gltf LIBS trimlab::core)
+trimlab_add_test(core animation_features LIBS trimlab::core)
+trimlab_add_test(core animation_partition LIBS trimlab::core)
+trimlab_add_test(core animation_oversegmentation LIBS trimlab::core)
+trimlab_add_test(core animation_cleaning LIBS trimlab::core)
+trimlab_add_test(core animation_segmenter LIBS trimlab::core)
+trimlab_add_test(core animation_colors LIBS trimlab::core)
+trimlab_add_test(core animation_export LIBS trimlab::core)
