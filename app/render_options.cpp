@@ -1,7 +1,7 @@
 #include "render_options.h"
 
-#include "mfr/kplus_buffer.h"
 #include "mfr/fragment_method.h"
+#include "render_choices.h"
 #include "trim/clip_plane.h"
 
 #include <QCommandLineParser>
@@ -19,11 +19,18 @@ void addRenderOptions(QCommandLineParser& parser)
     parser.addOptions({
         {"rule", "parity | positive-index | alternating-border | none (no trimming). Default: alternating-border.", "rule"},
         {"clip", "Clipping plane a,b,c,d keeping a*x+b*y+c*z+d >= 0 (world space).", "a,b,c,d"},
-        {"k", "Fragments kept per pixel by the k+-buffer (1-128). Default: 16.", "N"},
+        {"k", "Fragments kept per pixel by the capacity-bounded methods (k+-buffer, K+B-SB, AB_FP; 1-128). Default: 16.",
+         "N"},
+        {"method", QStringLiteral("Multi-fragment method of the OpenGL backend: %1. Default: kplus-array.")
+                       .arg(fragmentMethodIds().join(QStringLiteral(", "))),
+         "id"},
+        {"shared-counters", "S, the shared counters of the S-buffer's memory referencing (1-1048576). Default: 1024.",
+         "S"},
         {"size", "Image size. Default: 1024x768.", "WxH"},
         {"camera", "Eye, target, up and vertical field of view in degrees. Default: fitted to the scene.",
          "ex,ey,ez,tx,ty,tz,ux,uy,uz,fovy"},
-        {"backend", "kplus (OpenGL k+-buffer) or reference (exact CPU ray caster). Default: kplus.", "name"},
+        {"backend", "kplus (OpenGL, the method of --method) or reference (exact CPU ray caster). Default: kplus.",
+         "name"},
         {"threads", "Worker threads of the reference backend (0 = all cores).", "N"},
         {"repeat", "Render N times and report the median time (the first frame includes shader JIT). Default: 1.", "N"},
         {{"o", "output"}, "Output PNG (required).", "file.png"},
@@ -31,19 +38,6 @@ void addRenderOptions(QCommandLineParser& parser)
         {"ids", "Also write object and primitive ids as a 16-bit RGBA PNG (see docs/file-formats.md).", "file.png"},
     });
     parser.addHelpOption();
-}
-
-std::optional<QString> parseSize(const QString& text, RenderOptions& options)
-{
-    static const QRegularExpression pattern(QStringLiteral(R"(^(\d{1,5})x(\d{1,5})$)"));
-    const QRegularExpressionMatch m = pattern.match(text);
-    if (!m.hasMatch())
-        return QStringLiteral("--size must look like 1024x768, got '%1'").arg(text);
-    options.width = m.captured(1).toInt();
-    options.height = m.captured(2).toInt();
-    if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
-        return QStringLiteral("--size must be between 1x1 and 16384x16384, got '%1'").arg(text);
-    return std::nullopt;
 }
 
 std::optional<QString> parseRule(const QString& text, RenderOptions& options)
@@ -57,15 +51,6 @@ std::optional<QString> parseRule(const QString& text, RenderOptions& options)
     if (!rule)
         return QStringLiteral("unknown --rule '%1' (use parity, positive-index, alternating-border or none)").arg(text);
     options.trim.rule = *rule;
-    return std::nullopt;
-}
-
-std::optional<QString> parseIntOption(const QString& name, const QString& text, int lo, int hi, int& out)
-{
-    bool ok = false;
-    out = text.toInt(&ok);
-    if (!ok || out < lo || out > hi)
-        return QStringLiteral("--%1 must be an integer from %2 to %3, got '%4'").arg(name).arg(lo).arg(hi).arg(text);
     return std::nullopt;
 }
 
@@ -86,20 +71,36 @@ std::optional<QString> parseGeometryOptions(const QCommandLineParser& parser, Re
     return std::nullopt;
 }
 
+std::optional<QString> parseMethodOptions(const QCommandLineParser& parser, RenderOptions& options)
+{
+    if (parser.isSet("method")) {
+        const QString id = parser.value("method");
+        const auto method = render::parseFragmentMethod(id.toStdString());
+        if (!method)
+            return QStringLiteral("unknown --method '%1' (this build has: %2)")
+                .arg(id, fragmentMethodIds().join(QStringLiteral(", ")));
+        options.method = *method;
+    }
+    if (parser.isSet("shared-counters"))
+        return parseIntegerOption("shared-counters", parser.value("shared-counters"), 1, ui::kMaxSharedCounters,
+                              options.sharedCounters);
+    return std::nullopt;
+}
+
 std::optional<QString> parseBackendOptions(const QCommandLineParser& parser, RenderOptions& options)
 {
     if (parser.isSet("size"))
-        if (auto e = parseSize(parser.value("size"), options))
+        if (auto e = parseImageSize(parser.value("size"), options.width, options.height))
             return e;
     if (parser.isSet("k"))
-        if (auto e = parseIntOption("k", parser.value("k"), 1, render::MethodParameters::kMaxK, options.k))
+        if (auto e = parseIntegerOption("k", parser.value("k"), 1, render::MethodParameters::kMaxK, options.k))
             return e;
     if (parser.isSet("repeat"))
-        if (auto e = parseIntOption("repeat", parser.value("repeat"), 1, 1000, options.repeat))
+        if (auto e = parseIntegerOption("repeat", parser.value("repeat"), 1, 1000, options.repeat))
             return e;
     if (parser.isSet("threads")) {
         int threads = 0;
-        if (auto e = parseIntOption("threads", parser.value("threads"), 0, 1024, threads))
+        if (auto e = parseIntegerOption("threads", parser.value("threads"), 0, 1024, threads))
             return e;
         options.threads = unsigned(threads);
     }
@@ -112,6 +113,36 @@ std::optional<QString> parseBackendOptions(const QCommandLineParser& parser, Ren
 }
 
 } // namespace
+
+std::optional<QString> parseIntegerOption(const QString& name, const QString& text, int lo, int hi, int& out)
+{
+    bool ok = false;
+    out = text.toInt(&ok);
+    if (!ok || out < lo || out > hi)
+        return QStringLiteral("--%1 must be an integer from %2 to %3, got '%4'").arg(name).arg(lo).arg(hi).arg(text);
+    return std::nullopt;
+}
+
+std::optional<QString> parseImageSize(const QString& text, int& width, int& height)
+{
+    static const QRegularExpression pattern(QStringLiteral(R"(^(\d{1,5})x(\d{1,5})$)"));
+    const QRegularExpressionMatch m = pattern.match(text);
+    if (!m.hasMatch())
+        return QStringLiteral("--size must look like 1024x768, got '%1'").arg(text);
+    width = m.captured(1).toInt();
+    height = m.captured(2).toInt();
+    if (width < 1 || height < 1 || width > 16384 || height > 16384)
+        return QStringLiteral("--size must be between 1x1 and 16384x16384, got '%1'").arg(text);
+    return std::nullopt;
+}
+
+QStringList fragmentMethodIds()
+{
+    QStringList ids;
+    for (const render::MethodInfo& info : render::fragmentMethods())
+        ids << QString::fromLatin1(info.id.data(), qsizetype(info.id.size()));
+    return ids;
+}
 
 std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& arguments, QString* helpText)
 {
@@ -140,6 +171,8 @@ std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& argum
     if (auto e = parseGeometryOptions(parser, options))
         return *e;
     if (auto e = parseBackendOptions(parser, options))
+        return *e;
+    if (auto e = parseMethodOptions(parser, options))
         return *e;
     return options;
 }

@@ -3,6 +3,7 @@
 /// The options of `trimlab render`, parsed without touching the scene or OpenGL so that
 /// bad arguments fail fast with one line.
 
+#include "mfr/fragment_method.h"
 #include "trim/trim_settings.h"
 #include "view/camera.h"
 
@@ -25,6 +26,9 @@ struct RenderOptions {
     int width = 1024;
     int height = 768;
     int k = 16;
+    /// --method: the multi-fragment method of the OpenGL backend (an id of fragmentMethods()).
+    render::FragmentMethodKind method = render::FragmentMethodKind::KPlusArray;
+    int sharedCounters = render::MethodParameters{}.sharedCounters; ///< --shared-counters (S-buffer's S)
     Backend backend = Backend::KPlus;
     unsigned threads = 0;       ///< reference backend; 0 = all cores
     int repeat = 1;             ///< frames rendered; times reported as the median
@@ -32,6 +36,18 @@ struct RenderOptions {
     QString depthOutput;        ///< --depth, PFM
     QString idsOutput;          ///< --ids, 16-bit PNG
 };
+
+/// Parses an integer option --`name` from `text` into `out`, which must lie in [lo, hi];
+/// returns the one-line error text otherwise.
+[[nodiscard]] std::optional<QString> parseIntegerOption(const QString& name, const QString& text, int lo, int hi,
+                                                        int& out);
+
+/// Parses "WxH" (1..16384 each) into `width` and `height`; returns the --size error text
+/// on bad input.
+[[nodiscard]] std::optional<QString> parseImageSize(const QString& text, int& width, int& height);
+
+/// The ids of every multi-fragment method in this build, in menu order ("kplus-array", ...).
+[[nodiscard]] QStringList fragmentMethodIds();
 
 /// Parses the arguments after the verb ("render"). Returns the options or a one-line
 /// error message. `helpText` receives the usage text when --help was given (then the

@@ -8,6 +8,7 @@
 #include "gl/offscreen_gl_context.h"
 #include "scene/scene_source.h"
 #include "trim/reference_renderer.h"
+#include "frame_times.h"
 #include "trim_renderer.h"
 
 #include <QCoreApplication>
@@ -29,48 +30,68 @@ struct RenderOutcome {
     QString statistics;
 };
 
-double median(std::vector<double> values)
+QString framesText(int frames)
 {
-    std::sort(values.begin(), values.end());
-    return values.empty() ? 0.0 : values[values.size() / 2];
+    return frames == 1 ? QStringLiteral("1 frame") : QStringLiteral("median of %1 frames").arg(frames);
 }
 
-// GPU times the driver flagged as implausible (negative) are left out of the median.
-QString timingText(std::vector<double> gpuMs, const std::vector<double>& wallMs)
+// GPU times the driver flagged as implausible are left out of the GPU median.
+QString timingText(const render::FrameTimes& times)
 {
-    std::erase_if(gpuMs, [](double v) { return v < 0.0; });
-    const QString frames = wallMs.size() == 1 ? QStringLiteral("1 frame") : QStringLiteral("median of %1 frames").arg(wallMs.size());
+    const double gpuMs = times.medianGpuMilliseconds();
     return QStringLiteral("%1 ms GPU, %2 ms wall (%3)")
-        .arg(gpuMs.empty() ? QStringLiteral("n/a") : QString::number(median(gpuMs), 'f', 2))
-        .arg(median(wallMs), 0, 'f', 2)
-        .arg(frames);
+        .arg(gpuMs < 0.0 ? QStringLiteral("n/a") : QString::number(gpuMs, 'f', 2))
+        .arg(times.medianWallMilliseconds(), 0, 'f', 2)
+        .arg(framesText(times.frames()));
 }
 
-RenderOutcome renderWithKPlus(const LoadedScene& loaded, const RenderOptions& options, const Camera& camera)
+// "k+-buffer (max-array) (k = 16)": the method and the parameters it uses.
+QString methodText(const render::MethodInfo& info, const render::MethodParameters& parameters)
+{
+    QStringList used;
+    if (info.usesK)
+        used << QStringLiteral("k = %1").arg(parameters.k);
+    if (info.usesSharedCounters)
+        used << QStringLiteral("S = %1").arg(parameters.sharedCounters);
+    const QString name = QString::fromUtf8(info.displayName.data(), qsizetype(info.displayName.size()));
+    return used.isEmpty() ? name : QStringLiteral("%1 (%2)").arg(name, used.join(QStringLiteral(", ")));
+}
+
+QString gpuStatistics(const render::FrameStats& s, const render::MethodParameters& parameters, const QString& renderer,
+                      const render::FrameTimes& times)
+{
+    QString text = QStringLiteral("%1 on %2: %3, %4 geometry passes, %5 fragments, %6 stored, %7 lost, "
+                                  "%8 overflowed pixels (%9 unresolved), %10 MB")
+                       .arg(methodText(render::methodInfo(s.method), parameters), renderer, timingText(times))
+                       .arg(s.methodStats.geometryPasses)
+                       .arg(s.counts.fragmentsInSpan)
+                       .arg(s.counts.fragmentsStored)
+                       .arg(s.counts.fragmentsLost)
+                       .arg(s.counts.overflowPixels)
+                       .arg(s.counts.unresolvedPixels)
+                       .arg(s.bufferMegabytes, 0, 'f', 1);
+    if (s.counts.spinGiveUps > 0)
+        text += QStringLiteral(", %1 fragments gave up on the spin-lock").arg(s.counts.spinGiveUps);
+    return text;
+}
+
+RenderOutcome renderWithGpu(const LoadedScene& loaded, const RenderOptions& options, const Camera& camera)
 {
     render::OffscreenGlContext gl;
     render::TrimRenderer renderer(gl.context());
     renderer.setScene(loaded.scene);
-    renderer.setK(options.k);
-    std::vector<double> gpuMs;
-    std::vector<double> wallMs;
+    render::MethodParameters parameters = renderer.parameters();
+    parameters.k = options.k;
+    parameters.sharedCounters = options.sharedCounters;
+    renderer.setMethod(options.method);
+    renderer.setParameters(parameters);
+    render::FrameTimes times;
     for (int i = 0; i < options.repeat; ++i) {
         renderer.render(camera, options.trim, options.width, options.height);
-        gpuMs.push_back(renderer.lastStats().gpuMilliseconds);
-        wallMs.push_back(renderer.lastStats().wallMilliseconds);
+        times.add(renderer.lastStats());
     }
     RenderOutcome outcome{renderer.readColor(), renderer.readTrimImage(), {}};
-    const render::FrameStats& s = renderer.lastStats();
-    outcome.statistics = QStringLiteral("k+-buffer (k = %1) on %2: %3, %4 fragments, %5 overflowed pixels "
-                                        "(%6 unresolved), %7 MB")
-                             .arg(s.k)
-                             .arg(gl.capabilities().renderer, timingText(gpuMs, wallMs))
-                             .arg(s.counts.fragmentsInSpan)
-                             .arg(s.counts.overflowPixels)
-                             .arg(s.counts.unresolvedPixels)
-                             .arg(s.bufferMegabytes, 0, 'f', 1);
-    if (s.counts.spinGiveUps > 0)
-        outcome.statistics += QStringLiteral(", %1 fragments gave up on the spin-lock").arg(s.counts.spinGiveUps);
+    outcome.statistics = gpuStatistics(renderer.lastStats(), parameters, gl.capabilities().renderer, times);
     return outcome;
 }
 
@@ -97,9 +118,8 @@ RenderOutcome renderWithReference(const LoadedScene& loaded, const RenderOptions
     RenderOutcome outcome{toQImage(result.color), std::move(result.trim), {}};
     outcome.statistics = QStringLiteral("reference ray caster: %1 ms wall (%2) on %3 threads (+ %4 ms BVH build), "
                                         "%5 hits, at most %6 per pixel")
-                             .arg(median(renderMs), 0, 'f', 2)
-                             .arg(renderMs.size() == 1 ? QStringLiteral("1 frame")
-                                                       : QStringLiteral("median of %1 frames").arg(renderMs.size()))
+                             .arg(render::medianOf(renderMs), 0, 'f', 2)
+                             .arg(framesText(int(renderMs.size())))
                              .arg(result.stats.threads)
                              .arg(buildMs, 0, 'f', 2)
                              .arg(result.stats.totalHits)
@@ -148,7 +168,7 @@ int renderLoaded(RenderOptions options)
     if (!resolveTrimAvailability(loaded, options))
         return 1;
     const Camera camera = chooseCamera(loaded, options);
-    const RenderOutcome outcome = options.backend == Backend::KPlus ? renderWithKPlus(loaded, options, camera)
+    const RenderOutcome outcome = options.backend == Backend::KPlus ? renderWithGpu(loaded, options, camera)
                                                                      : renderWithReference(loaded, options, camera);
     writeOutputs(outcome, options, camera);
     printLine(QStringLiteral("%1: %2x%3, %4, %5 -> %6")
@@ -162,6 +182,8 @@ int renderLoaded(RenderOptions options)
     return 0;
 }
 
+} // namespace
+
 bool hasDisplay()
 {
     const char* platform = std::getenv("QT_QPA_PLATFORM");
@@ -169,8 +191,6 @@ bool hasDisplay()
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     return (platform && *platform) || (display && *display) || (wayland && *wayland);
 }
-
-} // namespace
 
 int runRenderVerb(int argc, char** argv, const QStringList& arguments)
 {

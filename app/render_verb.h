@@ -1,12 +1,16 @@
 #pragma once
 /// \file
-/// `trimlab render`: one image of a file or demo, through the k⁺-buffer or the exact CPU
-/// reference, plus optional depth and id files. Shares the scene loading, camera fitting
-/// and renderer with the GUI.
+/// `trimlab render`: one image of a file or demo, through a multi-fragment method on OpenGL
+/// (--method, default the k⁺-buffer) or the exact CPU reference, plus optional depth and
+/// id files. Shares the scene loading, camera fitting and renderer with the GUI.
 
 #include <QStringList>
 
 namespace trimlab::app {
+
+/// True when Qt can reach a display (or a platform was chosen): the OpenGL verbs need one
+/// for their offscreen context (on Linux without a GPU, run them under xvfb-run -a).
+[[nodiscard]] bool hasDisplay();
 
 /// Runs the verb on the arguments after "render"; returns the process exit code
 /// (0 success, 1 failed load/render/write, 2 bad arguments). Creates the Qt application

@@ -20,17 +20,18 @@ QString countText(std::uint64_t count)
 
 FrameStatsLabels::FrameStatsLabels(QStatusBar* statusBar) : QObject(statusBar)
 {
+    m_method = addLabel(statusBar, QStringLiteral("methodLabel"), tr("The multi-fragment method of the last frame"));
     m_frameTime = addLabel(statusBar, QStringLiteral("frameTimeLabel"),
                            tr("GPU time of the last frame (clear, store and resolve passes)"));
     m_fragments = addLabel(statusBar, QStringLiteral("fragmentsLabel"),
                            tr("Fragments inside the kept span (after clipping) in the last frame"));
     m_overflow = addLabel(statusBar, QStringLiteral("overflowLabel"),
-                          tr("Pixels that received more than k fragments"));
+                          tr("Pixels that lost fragments to the method's capacity"));
     m_unresolved = addLabel(statusBar, QStringLiteral("unresolvedLabel"),
-                            tr("Overflowed pixels whose trim point lies beyond the k nearest fragments; they "
-                               "show magenta. Increase k in the Render panel."));
+                            tr("Overflowed pixels whose trim point may have been lost (they show magenta) and "
+                               "fragments lost. The Frame statistics panel offers a larger k or an unbounded method."));
     m_memory = addLabel(statusBar, QStringLiteral("memoryLabel"),
-                        tr("GPU memory held by the k⁺-buffer, the render target and the scene"));
+                        tr("GPU memory held by the multi-fragment method, the render target and the scene"));
     clear();
 }
 
@@ -46,6 +47,8 @@ QLabel* FrameStatsLabels::addLabel(QStatusBar* statusBar, const QString& objectN
 
 void FrameStatsLabels::showStats(const render::FrameStats& stats)
 {
+    const std::string_view name = render::methodInfo(stats.method).displayName;
+    m_method->setText(QString::fromUtf8(name.data(), qsizetype(name.size())));
     // The GPU timer can be unavailable (llvmpipe's first query); the wall time, which
     // includes waiting for the GPU, is then the honest number.
     m_frameTime->setText(stats.gpuMilliseconds >= 0.0 ? tr("GPU %1 ms").arg(stats.gpuMilliseconds, 0, 'f', 1)
@@ -53,18 +56,23 @@ void FrameStatsLabels::showStats(const render::FrameStats& stats)
     m_fragments->setText(tr("%1 fragments").arg(countText(stats.counts.fragmentsInSpan)));
     m_overflow->setText(tr("overflow %1 px").arg(countText(stats.counts.overflowPixels)));
     const std::uint64_t unresolved = stats.counts.unresolvedPixels;
+    const std::uint64_t lost = stats.counts.fragmentsLost;
     const std::uint64_t dropped = stats.counts.spinGiveUps;
     QString text = tr("unresolved %1 px").arg(countText(unresolved));
-    if (dropped > 0) // fragments lost to the bounded spin-lock: the image may be wrong
-        text += tr(", %1 fragments dropped").arg(countText(dropped));
+    if (lost > 0) // capacity or the bounded spin-lock: the image may be incomplete
+        text += tr(", %1 fragments lost").arg(countText(lost));
+    if (dropped > 0)
+        text += tr(" (%1 gave up on the spin-lock)").arg(countText(dropped));
     m_unresolved->setText(text);
-    m_unresolved->setStyleSheet(unresolved > 0 || dropped > 0 ? QStringLiteral("QLabel { background: #c0392b; color: white; }")
-                                               : QString());
+    const bool overflowing = unresolved > 0 || lost > 0 || dropped > 0;
+    m_unresolved->setStyleSheet(overflowing ? QStringLiteral("QLabel { background: #c0392b; color: white; }")
+                                            : QString());
     m_memory->setText(tr("%1 MB").arg(stats.bufferMegabytes, 0, 'f', 1));
 }
 
 void FrameStatsLabels::clear()
 {
+    m_method->setText(QString());
     m_frameTime->setText(tr("GPU – ms"));
     m_fragments->setText(tr("– fragments"));
     m_overflow->setText(tr("overflow – px"));

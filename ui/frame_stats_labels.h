@@ -1,9 +1,9 @@
 #pragma once
 /// \file
-/// The permanent labels of the main window's status bar that report each frame: GPU time
-/// (ms), fragments stored, overflowed and unresolved pixels (the latter highlighted when
-/// any exist: those pixels show magenta because k was too small), and the GPU memory
-/// the renderer holds (MB).
+/// The permanent labels of the main window's status bar that report each frame: the
+/// method, GPU time (ms), fragments in the span, overflowed pixels, unresolved pixels and
+/// lost fragments (highlighted when any exist: the method's capacity was too small; the
+/// Frame statistics panel offers remedies), and the GPU memory the renderer holds (MB).
 
 #include "frame_counters.h"
 #include "trim_renderer.h"
@@ -30,6 +30,7 @@ public:
 private:
     QLabel* addLabel(QStatusBar* statusBar, const QString& objectName, const QString& toolTip);
 
+    QLabel* m_method;
     QLabel* m_frameTime;
     QLabel* m_fragments;
     QLabel* m_overflow;

@@ -1,7 +1,10 @@
 #include "main_window.h"
 
 #include "frame_stats_labels.h"
+#include "frame_stats_panel.h"
 #include "mesh_file_filter.h"
+#include "method_group.h"
+#include "method_timing_panel.h"
 #include "render_panel.h"
 #include "render_settings_store.h"
 #include "scene/demo_scenes.h"
@@ -23,6 +26,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
+#include <QVBoxLayout>
 
 namespace trimlab::ui {
 
@@ -74,6 +78,7 @@ MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
     m_loader = new SceneLoader(this);
     m_statsLabels = new FrameStatsLabels(statusBar());
     createDock();
+    createStatsDock();
     createFileMenu();
     createViewMenu();
     createHelpMenu();
@@ -125,6 +130,27 @@ void MainWindow::createDock()
     m_dock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
     m_dock->setWidget(scroll);
     addDockWidget(Qt::RightDockWidgetArea, m_dock);
+}
+
+void MainWindow::createStatsDock()
+{
+    auto* content = new QWidget;
+    auto* layout = new QVBoxLayout(content);
+    m_statsPanel = new FrameStatsPanel(content);
+    m_timingPanel = new MethodTimingPanel(m_viewport, content);
+    layout->addWidget(m_statsPanel);
+    layout->addWidget(m_timingPanel);
+    layout->addStretch();
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(content);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    m_statsDock = new QDockWidget(tr("Frame statistics"), this);
+    m_statsDock->setObjectName(QStringLiteral("frameStatsDock"));
+    m_statsDock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
+    m_statsDock->setWidget(scroll);
+    addDockWidget(Qt::RightDockWidgetArea, m_statsDock);
+    splitDockWidget(m_dock, m_statsDock, Qt::Vertical);
 }
 
 void MainWindow::createFileMenu()
@@ -182,6 +208,9 @@ void MainWindow::createViewMenu()
     QAction* panel = m_dock->toggleViewAction();
     panel->setText(tr("Render &Panel"));
     m_viewMenu->addAction(panel);
+    QAction* statistics = m_statsDock->toggleViewAction();
+    statistics->setText(tr("Frame &Statistics"));
+    m_viewMenu->addAction(statistics);
 }
 
 void MainWindow::createHelpMenu()
@@ -204,7 +233,10 @@ void MainWindow::connectParts()
         m_panel->setClipNormal(camera.target - camera.eye);
     });
     connect(m_viewport, &ViewportWidget::frameRendered, m_statsLabels, &FrameStatsLabels::showStats);
-    connect(m_viewport, &ViewportWidget::framePixelSizeChanged, m_panel, &RenderPanel::setFramePixelSize);
+    connect(m_viewport, &ViewportWidget::frameRendered, this, &MainWindow::showFrameStatistics);
+    connect(m_viewport, &ViewportWidget::framePixelSizeChanged, this, &MainWindow::refreshMemoryEstimate);
+    connect(m_statsPanel, &FrameStatsPanel::methodRequested, this, &MainWindow::chooseMethod);
+    connect(m_statsPanel, &FrameStatsPanel::kRequested, this, &MainWindow::chooseK);
     // Queued: the viewport reports from inside paintGL, where no dialog may open.
     connect(m_viewport, &ViewportWidget::renderError, this, &MainWindow::onRenderError, Qt::QueuedConnection);
 }
@@ -217,7 +249,10 @@ void MainWindow::restoreSettings()
     applyRenderChoices();
     if (!restoreGeometry(m_settings->value(kGeometryKey).toByteArray()))
         resize(1100, 720);
-    restoreState(m_settings->value(kStateKey).toByteArray());
+    if (!restoreState(m_settings->value(kStateKey).toByteArray())) {
+        resizeDocks({m_dock}, {380}, Qt::Horizontal);
+        resizeDocks({m_dock, m_statsDock}, {440, 300}, Qt::Vertical); // the Render panel is the taller
+    }
 }
 
 void MainWindow::saveWindowState()
@@ -308,6 +343,7 @@ void MainWindow::onLoadFailed(const QString& source, const QString& message)
 void MainWindow::onRenderError(const QString& message)
 {
     m_statsLabels->clear();
+    m_statsPanel->clear();
     showMessage(QMessageBox::Critical, tr("OpenGL problem"), tr("The viewport cannot render."), message);
 }
 
@@ -319,7 +355,39 @@ void MainWindow::applyRenderChoices()
     // The winding index is undefined for open or inconsistently oriented surfaces.
     effective.trimEnabled = effective.trimEnabled && m_panel->sceneTrimmable();
     m_viewport->setTrimSettings(effective);
-    m_viewport->setK(choices.k);
+    m_viewport->setMethod(choices.method);
+    m_viewport->setMethodParameters(choices.methodParameters());
+    refreshMemoryEstimate();
+}
+
+void MainWindow::refreshMemoryEstimate()
+{
+    m_panel->setMemoryEstimate(m_viewport->memoryEstimate());
+}
+
+void MainWindow::showFrameStatistics()
+{
+    if (const auto& frame = m_viewport->lastFrame())
+        m_statsPanel->showFrame(*frame);
+    refreshMemoryEstimate();
+}
+
+void MainWindow::chooseMethod(render::FragmentMethodKind method)
+{
+    RenderChoices choices = m_panel->renderChoices();
+    choices.method = method;
+    m_panel->setRenderChoices(choices);
+    applyRenderChoices();
+    statusBar()->showMessage(tr("Switched to %1.").arg(methodDisplayName(render::methodInfo(method))), kStatusMessageMs);
+}
+
+void MainWindow::chooseK(int k)
+{
+    RenderChoices choices = m_panel->renderChoices();
+    choices.k = k;
+    m_panel->setRenderChoices(choices);
+    applyRenderChoices();
+    statusBar()->showMessage(tr("k raised to %1.").arg(k), kStatusMessageMs);
 }
 
 bool MainWindow::exportImage(const QString& path, QString* error)
@@ -361,7 +429,7 @@ void MainWindow::showAbout()
     QMessageBox::about(this, tr("About TrimLab"),
                        tr("<h3>TrimLab %1</h3>"
                           "<p>Self-trimmed rendering of self-crossing surfaces by their winding number, on the GPU "
-                          "with a k⁺-buffer, checked against an exact CPU ray caster.</p>"
+                          "with a choice of multi-fragment methods, checked against an exact CPU ray caster.</p>"
                           "<p><b>OpenGL:</b> %2<br><b>Qt:</b> %3</p>")
                            .arg(QStringLiteral(TRIMLAB_VERSION), gl, QString::fromLatin1(qVersion())));
 }

@@ -1,7 +1,9 @@
 #pragma once
 /// \file
 /// TrimLab's main window: the viewport in the centre, the Render panel in a dock, the
-/// frame statistics in the status bar, and the File / View / Help menus.
+/// frame statistics in a second dock ("Frame statistics": the last frame's numbers,
+/// overflow advice, and the per-method frame-time chart) and in the status bar, and the
+/// File / View / Help menus.
 ///
 /// Every way of opening a scene — File ▸ Open…, Open Demo, Open Recent, drag and drop,
 /// the command line — goes through openSource(), which loads off the UI thread
@@ -14,6 +16,7 @@
 /// or an INI file given to the constructor, so tests never touch the user's settings.
 /// Without saved settings the window starts with firstStartRenderChoices().
 
+#include "mfr/fragment_method.h"
 #include "recent_files.h"
 #include "scene/scene_source.h"
 
@@ -30,6 +33,8 @@ class QSettings;
 namespace trimlab::ui {
 
 class FrameStatsLabels;
+class FrameStatsPanel;
+class MethodTimingPanel;
 class RenderPanel;
 class SceneLoader;
 class ViewportWidget;
@@ -59,6 +64,8 @@ public:
     [[nodiscard]] std::shared_ptr<const LoadedScene> scene() const { return m_scene; }
     [[nodiscard]] ViewportWidget* viewport() const { return m_viewport; }
     [[nodiscard]] RenderPanel* renderPanel() const { return m_panel; }
+    [[nodiscard]] FrameStatsPanel* frameStatsPanel() const { return m_statsPanel; }
+    [[nodiscard]] MethodTimingPanel* methodTimingPanel() const { return m_timingPanel; }
     [[nodiscard]] SceneLoader* sceneLoader() const { return m_loader; }
     [[nodiscard]] QStringList recentFiles() const { return m_recent.paths(); }
 
@@ -78,6 +85,7 @@ private:
 
     void createCentralView();
     void createDock();
+    void createStatsDock();
     void createFileMenu();
     void createViewMenu();
     void createHelpMenu();
@@ -95,6 +103,10 @@ private:
     void onLoadFailed(const QString& source, const QString& message);
     void onRenderError(const QString& message);
     void applyRenderChoices();
+    void refreshMemoryEstimate();
+    void showFrameStatistics();
+    void chooseMethod(render::FragmentMethodKind method);
+    void chooseK(int k);
     void showMessage(QMessageBox::Icon icon, const QString& title, const QString& text, const QString& details);
     void updateTitle();
 
@@ -104,6 +116,9 @@ private:
     std::unique_ptr<ViewportWidget> m_detachedViewport;
     RenderPanel* m_panel = nullptr;
     QDockWidget* m_dock = nullptr;
+    FrameStatsPanel* m_statsPanel = nullptr;
+    MethodTimingPanel* m_timingPanel = nullptr;
+    QDockWidget* m_statsDock = nullptr;
     FrameStatsLabels* m_statsLabels = nullptr;
     SceneLoader* m_loader = nullptr;
     QMenu* m_recentMenu = nullptr;

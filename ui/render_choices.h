@@ -1,16 +1,34 @@
 #pragma once
 /// \file
-/// What the user chose in the Render panel: the trim settings shared with the renderers
-/// and the k⁺-buffer capacity. The GUI persists it (render_settings_store.h).
+/// What the user chose in the Render panel: the trim settings shared with the renderers,
+/// the multi-fragment method and its parameters. The GUI persists it
+/// (render_settings_store.h).
 
+#include "mfr/fragment_method.h"
 #include "trim/trim_settings.h"
 
 namespace trimlab::ui {
 
+/// The largest S the GUI and the command line accept.
+inline constexpr int kMaxSharedCounters = 1 << 20;
+
 struct RenderChoices {
     TrimSettings trim;
-    /// k⁺-buffer capacity per pixel, 1..MethodParameters::kMaxK (TrimRenderer's default).
-    int k = 16;
+    /// The multi-fragment method (one of render::fragmentMethods()).
+    render::FragmentMethodKind method = render::FragmentMethodKind::KPlusArray;
+    /// Capacity per pixel of the bounded methods, 1..MethodParameters::kMaxK (TrimRenderer's default).
+    int k = render::MethodParameters{}.k;
+    /// S, the shared counters of the S-buffer family, >= 1.
+    int sharedCounters = render::MethodParameters{}.sharedCounters;
+
+    /// The renderer's parameters for these choices (the others at their defaults).
+    [[nodiscard]] render::MethodParameters methodParameters() const
+    {
+        render::MethodParameters parameters;
+        parameters.k = k;
+        parameters.sharedCounters = sharedCounters;
+        return parameters;
+    }
 };
 
 /// What a new user sees first: the alternating border rule, and a clipping plane

@@ -1,17 +1,14 @@
 #include "render_panel.h"
 
 #include "clip_plane_editor.h"
-#include "mfr/kplus_buffer.h"
-#include "mfr/fragment_method.h"
+#include "method_group.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
-#include <QSpinBox>
 #include <QVBoxLayout>
 
 #include <array>
@@ -53,7 +50,9 @@ RenderPanel::RenderPanel(QWidget* parent) : QWidget(parent)
     connect(m_clip, &ClipPlaneEditor::planeChanged, this, &RenderPanel::renderChoicesChanged);
     connect(m_clip, &ClipPlaneEditor::viewDirectionRequested, this, &RenderPanel::viewDirectionRequested);
     layout->addWidget(m_clip);
-    layout->addWidget(createBufferGroup());
+    m_methodGroup = new MethodGroup(this);
+    connect(m_methodGroup, &MethodGroup::changed, this, &RenderPanel::renderChoicesChanged);
+    layout->addWidget(m_methodGroup);
     layout->addStretch();
     setRenderChoices(RenderChoices{});
 }
@@ -85,41 +84,14 @@ QWidget* RenderPanel::createTrimGroup()
     return group;
 }
 
-QWidget* RenderPanel::createBufferGroup()
-{
-    auto* group = new QGroupBox(tr("k⁺-buffer"), this);
-    auto* form = new QFormLayout(group);
-    auto* row = new QWidget(group);
-    auto* rowLayout = new QHBoxLayout(row);
-    rowLayout->setContentsMargins(0, 0, 0, 0);
-    m_k = new QSpinBox(row);
-    m_k->setObjectName(QStringLiteral("kSpinBox"));
-    m_k->setRange(1, render::MethodParameters::kMaxK);
-    m_k->setKeyboardTracking(false); // reallocate on Enter, not on every digit
-    m_k->setToolTip(tr("Fragments kept per pixel. Pixels with more fragments overflow; where the trim point lies "
-                       "beyond the k nearest they are unresolved (magenta)."));
-    m_memory = new QLabel(row);
-    m_memory->setObjectName(QStringLiteral("kMemoryLabel"));
-    rowLayout->addWidget(m_k);
-    rowLayout->addWidget(m_memory, 1);
-    form->addRow(tr("k"), row);
-    connect(m_k, &QSpinBox::valueChanged, this, [this] {
-        updateMemoryEstimate();
-        emit renderChoicesChanged();
-    });
-    return group;
-}
-
 void RenderPanel::setRenderChoices(const RenderChoices& choices)
 {
     const QSignalBlocker trimBlocker(m_trim);
     const QSignalBlocker ruleBlocker(m_rule);
-    const QSignalBlocker kBlocker(m_k);
     m_trim->setChecked(choices.trim.trimEnabled);
     m_rule->setCurrentIndex(m_rule->findData(ruleKey(choices.trim.rule)));
     m_clip->setPlane(choices.trim.clip);
-    m_k->setValue(choices.k);
-    updateMemoryEstimate();
+    m_methodGroup->setChoices(choices.method, choices.k, choices.sharedCounters);
 }
 
 RenderChoices RenderPanel::renderChoices() const
@@ -129,7 +101,9 @@ RenderChoices RenderPanel::renderChoices() const
     const auto rule = parseStaticRule(m_rule->currentData().toString().toStdString());
     choices.trim.rule = rule.value_or(StaticRule::AlternatingBorder);
     choices.trim.clip = m_clip->plane();
-    choices.k = m_k->value();
+    choices.method = m_methodGroup->method();
+    choices.k = m_methodGroup->k();
+    choices.sharedCounters = m_methodGroup->sharedCounters();
     return choices;
 }
 
@@ -143,29 +117,14 @@ void RenderPanel::setSceneInfo(const Bounds& bounds, bool trimmable, const QStri
     m_trimUnavailable->setVisible(!trimmable);
 }
 
-void RenderPanel::setFramePixelSize(QSize size)
+void RenderPanel::setMemoryEstimate(const MemoryEstimate& estimate)
 {
-    m_framePixelSize = size;
-    updateMemoryEstimate();
+    m_methodGroup->setMemoryEstimate(estimate);
 }
 
 void RenderPanel::setClipNormal(const glm::dvec3& viewDirection)
 {
     m_clip->setNormalThroughCenter(viewDirection);
-}
-
-void RenderPanel::updateMemoryEstimate()
-{
-    if (m_framePixelSize.isEmpty()) {
-        m_memory->setText(QString());
-        return;
-    }
-    const std::size_t bytes =
-        render::KPlusBuffer::requiredBytes(m_framePixelSize.width(), m_framePixelSize.height(), m_k->value());
-    m_memory->setText(tr("≈ %1 MB at %2×%3")
-                          .arg(double(bytes) / (1024.0 * 1024.0), 0, 'f', 1)
-                          .arg(m_framePixelSize.width())
-                          .arg(m_framePixelSize.height()));
 }
 
 } // namespace trimlab::ui

@@ -1,24 +1,25 @@
 #pragma once
 /// \file
 /// The Render panel (the content of the main window's "Render" dock): trim on/off, the
-/// static rule, the clipping plane (clip_plane_editor.h) and the k⁺-buffer capacity with
-/// the GPU memory it needs at the current frame size. When the scene is not trimmable
+/// static rule, the clipping plane (clip_plane_editor.h) and the multi-fragment method
+/// with its parameters and the GPU memory it needs at the current frame size
+/// (method_group.h). When the scene is not trimmable
 /// the trim controls are disabled and a label says why; the user's choice is kept and
 /// applies again to the next trimmable scene.
 
+#include "memory_estimate.h"
 #include "render_choices.h"
 
-#include <QSize>
 #include <QWidget>
 
 class QCheckBox;
 class QComboBox;
 class QLabel;
-class QSpinBox;
 
 namespace trimlab::ui {
 
 class ClipPlaneEditor;
+class MethodGroup;
 
 class RenderPanel : public QWidget {
     Q_OBJECT
@@ -34,13 +35,14 @@ public:
     /// modes apply; `reason` is LoadedScene::trimUnavailableReason().
     void setSceneInfo(const Bounds& bounds, bool trimmable, const QString& reason);
     [[nodiscard]] bool sceneTrimmable() const { return m_trimmable; }
-    /// The frame size the k⁺-buffer memory estimate is computed for (device pixels).
-    void setFramePixelSize(QSize size);
+    /// Shows the chosen method's GPU memory estimate (from the viewport's renderer).
+    void setMemoryEstimate(const MemoryEstimate& estimate);
     /// Answers viewDirectionRequested(): clip normal along `viewDirection`, through the
     /// scene centre.
     void setClipNormal(const glm::dvec3& viewDirection);
 
     [[nodiscard]] ClipPlaneEditor* clipEditor() const { return m_clip; }
+    [[nodiscard]] MethodGroup* methodGroup() const { return m_methodGroup; }
 
 signals:
     /// Any user edit of the render choices.
@@ -50,16 +52,12 @@ signals:
 
 private:
     QWidget* createTrimGroup();
-    QWidget* createBufferGroup();
-    void updateMemoryEstimate();
 
     QCheckBox* m_trim = nullptr;
     QComboBox* m_rule = nullptr;
     QLabel* m_trimUnavailable = nullptr;
     ClipPlaneEditor* m_clip = nullptr;
-    QSpinBox* m_k = nullptr;
-    QLabel* m_memory = nullptr;
-    QSize m_framePixelSize;
+    MethodGroup* m_methodGroup = nullptr;
     bool m_trimmable = true;
 };
 

@@ -1,6 +1,5 @@
 #include "render_settings_store.h"
 
-#include "mfr/kplus_buffer.h"
 #include "mfr/fragment_method.h"
 
 #include <QDir>
@@ -20,6 +19,8 @@ const QString kClipNormalY = QStringLiteral("render/clipNormalY");
 const QString kClipNormalZ = QStringLiteral("render/clipNormalZ");
 const QString kClipOffset = QStringLiteral("render/clipOffset");
 const QString kK = QStringLiteral("render/k");
+const QString kMethod = QStringLiteral("render/method");
+const QString kSharedCounters = QStringLiteral("render/sharedCounters");
 const QString kLastDirectory = QStringLiteral("paths/lastDirectory");
 
 /// The stored number at `key`, or `fallback` when missing, unparsable or not finite.
@@ -43,6 +44,20 @@ ClipPlane loadClipPlane(const QSettings& settings, const ClipPlane& fallback)
     return plane;
 }
 
+/// The stored integer at `key` when it lies in [lo, hi], else `fallback`.
+int boundedInt(const QSettings& settings, const QString& key, int lo, int hi, int fallback)
+{
+    bool ok = false;
+    const int value = settings.value(key).toInt(&ok);
+    return ok && value >= lo && value <= hi ? value : fallback;
+}
+
+/// The stored method id when this build has that method, else `fallback`.
+render::FragmentMethodKind loadMethod(const QSettings& settings, render::FragmentMethodKind fallback)
+{
+    return render::parseFragmentMethod(settings.value(kMethod).toString().toStdString()).value_or(fallback);
+}
+
 } // namespace
 
 RenderChoices loadRenderChoices(const QSettings& settings)
@@ -53,9 +68,9 @@ RenderChoices loadRenderChoices(const QSettings& settings)
     const std::string ruleText = settings.value(kRule).toString().toStdString();
     choices.trim.rule = parseStaticRule(ruleText).value_or(fallback.trim.rule);
     choices.trim.clip = loadClipPlane(settings, fallback.trim.clip);
-    bool ok = false;
-    const int k = settings.value(kK).toInt(&ok);
-    choices.k = ok && k >= 1 && k <= render::MethodParameters::kMaxK ? k : fallback.k;
+    choices.k = boundedInt(settings, kK, 1, render::MethodParameters::kMaxK, fallback.k);
+    choices.method = loadMethod(settings, fallback.method);
+    choices.sharedCounters = boundedInt(settings, kSharedCounters, 1, kMaxSharedCounters, fallback.sharedCounters);
     return choices;
 }
 
@@ -70,6 +85,9 @@ void saveRenderChoices(QSettings& settings, const RenderChoices& choices)
     settings.setValue(kClipNormalZ, choices.trim.clip.normal.z);
     settings.setValue(kClipOffset, choices.trim.clip.offset);
     settings.setValue(kK, choices.k);
+    const std::string_view method = render::methodInfo(choices.method).id;
+    settings.setValue(kMethod, QString::fromLatin1(method.data(), qsizetype(method.size())));
+    settings.setValue(kSharedCounters, choices.sharedCounters);
 }
 
 QString loadLastDirectory(const QSettings& settings)

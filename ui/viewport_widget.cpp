@@ -2,7 +2,6 @@
 
 #include "gl/gl_error.h"
 #include "gl/offscreen_gl_context.h"
-#include "mfr/kplus_buffer.h"
 #include "mfr/fragment_method.h"
 #include "trim/trim_shading.h"
 
@@ -15,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace trimlab::ui {
 
@@ -57,10 +57,92 @@ void ViewportWidget::setTrimSettings(const TrimSettings& settings)
     update();
 }
 
+void ViewportWidget::setMethod(render::FragmentMethodKind method)
+{
+    m_method = method;
+    applyMethod();
+    update();
+}
+
+void ViewportWidget::setMethodParameters(const render::MethodParameters& parameters)
+{
+    m_parameters = parameters;
+    m_parameters.k = std::clamp(parameters.k, 1, render::MethodParameters::kMaxK);
+    m_parameters.sharedCounters = std::max(parameters.sharedCounters, 1);
+    applyMethod();
+    update();
+}
+
 void ViewportWidget::setK(int k)
 {
-    m_k = std::clamp(k, 1, render::MethodParameters::kMaxK);
+    render::MethodParameters parameters = m_parameters;
+    parameters.k = k;
+    setMethodParameters(parameters);
+}
+
+// Hands the choice to the renderer at once (its storage follows on the next frame), so
+// memoryEstimate() answers for it before anything is allocated.
+void ViewportWidget::applyMethod()
+{
+    if (!m_renderer)
+        return;
+    makeCurrent(); // replacing the method object releases its GL storage
+    try {
+        m_renderer->setMethod(m_method);
+        m_renderer->setParameters(m_parameters);
+    } catch (const std::exception& e) {
+        setError(tr("The method could not be set up: %1").arg(QString::fromStdString(e.what())));
+    }
+    doneCurrent();
+}
+
+MemoryEstimate ViewportWidget::memoryEstimate() const
+{
+    if (!m_renderer)
+        return {};
+    const QSize size = framePixelSize();
+    return {true, m_renderer->estimateMethodBytes(size.width(), size.height()), size};
+}
+
+MethodMeasurement ViewportWidget::measureMethod(render::FragmentMethodKind method, int frames)
+{
+    if (!m_renderer)
+        throw std::runtime_error(m_error.isEmpty() ? "OpenGL is not available." : m_error.toStdString());
+    if (!m_scene || m_scene->empty())
+        throw std::runtime_error("There is no scene to render.");
+    MethodMeasurement result;
+    makeCurrent();
+    try {
+        runMeasurement(method, frames, result);
+    } catch (...) {
+        m_renderer->setMethod(m_method);
+        doneCurrent();
+        update();
+        throw;
+    }
+    m_renderer->setMethod(m_method);
+    doneCurrent();
     update();
+    return result;
+}
+
+void ViewportWidget::runMeasurement(render::FragmentMethodKind method, int frames, MethodMeasurement& result)
+{
+    if (!m_sceneUploaded) {
+        m_renderer->setScene(*m_scene);
+        m_sceneUploaded = true;
+    }
+    applyPendingReset();
+    const QSize size = framePixelSize();
+    const Camera camera = m_orbit.camera();
+    m_renderer->setMethod(method);
+    m_renderer->setParameters(m_parameters);
+    m_renderer->render(camera, m_settings, size.width(), size.height()); // warm-up: shaders, storage
+    for (int i = 0; i < frames; ++i) {
+        m_renderer->render(camera, m_settings, size.width(), size.height());
+        result.times.add(m_renderer->lastStats());
+    }
+    result.lastStats = m_renderer->lastStats();
 }
 
 Camera ViewportWidget::camera() const
@@ -163,6 +245,8 @@ void ViewportWidget::initializeGL()
     m_sceneUploaded = false;
     try {
         m_renderer = std::make_unique<render::TrimRenderer>(*context());
+        m_renderer->setMethod(m_method);
+        m_renderer->setParameters(m_parameters);
         setError({});
     } catch (const render::GlError& e) {
         setError(QString::fromStdString(e.what()));
@@ -222,12 +306,26 @@ void ViewportWidget::renderFrame()
         m_sceneUploaded = true;
     }
     applyPendingReset();
-    m_renderer->setK(m_k);
+    m_renderer->setMethod(m_method);
+    m_renderer->setParameters(m_parameters);
     const Camera camera = m_orbit.camera();
     m_renderer->render(camera, m_settings, size.width(), size.height());
     m_renderer->blitTo(defaultFramebufferObject());
-    m_lastFrame = ViewportFrame{camera, m_settings, m_k, size, m_renderer->lastStats()};
+    recordFrame(camera, size);
     setError({});
+}
+
+void ViewportWidget::recordFrame(const Camera& camera, QSize size)
+{
+    const render::FrameStats& stats = m_renderer->lastStats();
+    ViewportFrame frame{camera, m_settings, m_parameters.k, m_parameters, size, stats, std::nullopt};
+    const render::FrameCounts& counts = stats.counts;
+    if (counts.overflowPixels > 0 || counts.unresolvedPixels > 0 || counts.fragmentsLost > 0) {
+        const std::optional<render::PixelOccupancy> occupancy = m_renderer->readOccupancy();
+        if (occupancy && !occupancy->held.empty())
+            frame.largestPixelCount = *std::max_element(occupancy->held.begin(), occupancy->held.end());
+    }
+    m_lastFrame = std::move(frame);
 }
 
 void ViewportWidget::clearToBackground()

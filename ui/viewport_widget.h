@@ -12,6 +12,8 @@
 /// never crash and never leave a silent black view: the message is painted into the view
 /// and emitted once through renderError().
 
+#include "frame_times.h"
+#include "memory_estimate.h"
 #include "trim_renderer.h"
 #include "view/orbit_controller.h"
 
@@ -19,6 +21,7 @@
 #include <QOpenGLWidget>
 #include <QPointF>
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -29,8 +32,19 @@ struct ViewportFrame {
     Camera camera;
     TrimSettings settings;
     int k = 0;
+    render::MethodParameters parameters; ///< the method is stats.method
     QSize pixelSize; ///< device pixels, as passed to TrimRenderer::render
     render::FrameStats stats;
+    /// When the frame lost fragments (overflowed or lost > 0) and the method keeps
+    /// per-pixel counts: the largest count (capped at k by methods that count only what
+    /// they hold). nullopt otherwise.
+    std::optional<std::uint32_t> largestPixelCount;
+};
+
+/// What ViewportWidget::measureMethod found.
+struct MethodMeasurement {
+    render::FrameTimes times;
+    render::FrameStats lastStats;
 };
 
 class ViewportWidget : public QOpenGLWidget {
@@ -45,10 +59,26 @@ public:
     /// The settings to render with. The caller passes trimEnabled = false for scenes that
     /// are not trimmable.
     void setTrimSettings(const TrimSettings& settings);
-    /// k⁺-buffer capacity, 1..MethodParameters::kMaxK (clamped).
+    /// The multi-fragment method to render with (one of render::fragmentMethods()).
+    void setMethod(render::FragmentMethodKind method);
+    /// Its parameters; k is clamped to 1..MethodParameters::kMaxK and S to >= 1.
+    void setMethodParameters(const render::MethodParameters& parameters);
+    /// Shorthand: the k of the parameters.
     void setK(int k);
     [[nodiscard]] const TrimSettings& trimSettings() const { return m_settings; }
-    [[nodiscard]] int k() const { return m_k; }
+    [[nodiscard]] render::FragmentMethodKind method() const { return m_method; }
+    [[nodiscard]] const render::MethodParameters& methodParameters() const { return m_parameters; }
+    [[nodiscard]] int k() const { return m_parameters.k; }
+    /// The GPU memory the chosen method would hold at framePixelSize()
+    /// (TrimRenderer::estimateMethodBytes); not available before the renderer exists.
+    [[nodiscard]] MemoryEstimate memoryEstimate() const;
+
+    /// Renders the current view with `method` (and the chosen parameters) off-screen: one
+    /// untimed warm-up frame, then `frames` timed ones, without showing them — to compare
+    /// methods on this view. Afterwards the renderer is back on the chosen method and the
+    /// view re-renders. Throws what TrimRenderer throws, or std::runtime_error when the
+    /// view has nothing to render.
+    MethodMeasurement measureMethod(render::FragmentMethodKind method, int frames);
 
     /// The camera the next frame uses (depth range enclosing the scene).
     [[nodiscard]] Camera camera() const;
@@ -108,6 +138,9 @@ private:
     void releaseGl();
     void applyPendingReset();
     void renderFrame();
+    void applyMethod();
+    void recordFrame(const Camera& camera, QSize size);
+    void runMeasurement(render::FragmentMethodKind method, int frames, MethodMeasurement& result);
     void clearToBackground();
     void paintMessage(const QString& text);
     void setError(const QString& message);
@@ -118,7 +151,8 @@ private:
     std::unique_ptr<render::TrimRenderer> m_renderer;
     std::shared_ptr<const Scene> m_scene;
     TrimSettings m_settings;
-    int m_k = 16;
+    render::FragmentMethodKind m_method = render::FragmentMethodKind::KPlusArray;
+    render::MethodParameters m_parameters;
     bool m_sceneUploaded = false;
     bool m_resetPending = false;
     std::optional<ViewportFrame> m_lastFrame;

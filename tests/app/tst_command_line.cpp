@@ -6,10 +6,12 @@
 #include "trim_comparison.h"
 
 #include "io/pfm_image.h"
+#include "mfr/fragment_method.h"
 #include "scene/scene_source.h"
 #include "trim/reference_renderer.h"
 
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -85,6 +87,7 @@ private slots:
     void openMeshRendersUntrimmedByDefault();
     void referenceBackendMatchesInProcessReference();
     void kplusBackendAgreesWithReference();
+    void everyMethodRendersAndReportsItsStatistics();
 
 private:
     QTemporaryDir m_dir;
@@ -104,6 +107,10 @@ void TestCommandLine::badArgumentsExitWithTwo_data()
     QTest::newRow("bad k") << QStringList{"render", "demo:sphere", "--k", "0", "-o", "x.png"} << "--k";
     QTest::newRow("bad camera") << QStringList{"render", "demo:sphere", "--camera", "0,0,3", "-o", "x.png"}
                                 << "--camera";
+    QTest::newRow("bad method") << QStringList{"render", "demo:sphere", "--method", "z-buffer", "-o", "x.png"}
+                                << "--method 'z-buffer'";
+    QTest::newRow("bad shared counters")
+        << QStringList{"render", "demo:sphere", "--shared-counters", "0", "-o", "x.png"} << "--shared-counters";
     QTest::newRow("bad backend") << QStringList{"render", "demo:sphere", "--backend", "vulkan", "-o", "x.png"}
                                  << "--backend";
     QTest::newRow("unknown option") << QStringList{"render", "demo:sphere", "--frobnicate", "-o", "x.png"}
@@ -222,6 +229,30 @@ void TestCommandLine::kplusBackendAgreesWithReference()
         test::compareTrimImages(decodeIds(QImage(gpuIds)), idsOnly(reference.trim), reference.diagnostics);
     qInfo("%s", qPrintable(comparison.summary()));
     QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05, qPrintable(comparison.summary()));
+}
+
+// --method picks any method of the build; the statistics line names it and reports its
+// geometry passes and stored and lost fragments.
+void TestCommandLine::everyMethodRendersAndReportsItsStatistics()
+{
+    QString why;
+    if (!test::tryCreateGlContext(&why)) {
+        if (test::glRequired())
+            QFAIL(qPrintable("TRIMLAB_REQUIRE_GL=1 but no OpenGL 4.3 context: " + why));
+        QSKIP(qPrintable("no OpenGL 4.3 context: " + why));
+    }
+    for (const render::MethodInfo& info : render::fragmentMethods()) {
+        const QString id = QString::fromLatin1(info.id.data(), qsizetype(info.id.size()));
+        const QString out = m_dir.filePath(id + ".png");
+        const Run run = runTrimlab(kPushedSphereView + QStringList{"--method", id, "--shared-counters", "64", "-o", out});
+        QVERIFY2(run.exitCode == 0, qPrintable(id + ": " + run.err));
+        QVERIFY2(run.out.contains(QString::fromUtf8(info.displayName.data(), qsizetype(info.displayName.size()))),
+                 qPrintable(run.out));
+        QVERIFY2(run.out.contains(QRegularExpression(QStringLiteral("[1-9]\\d* geometry passes"))), qPrintable(run.out));
+        QVERIFY2(run.out.contains(QRegularExpression(QStringLiteral("\\d+ stored, \\d+ lost"))), qPrintable(run.out));
+        QCOMPARE(run.out.contains(QStringLiteral("S = 64")), info.usesSharedCounters);
+        QVERIFY(!QImage(out).isNull());
+    }
 }
 
 QTEST_MAIN(TestCommandLine)

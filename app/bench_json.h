@@ -1,0 +1,33 @@
+#pragma once
+/// \file
+/// `trimlab bench --json FILE`: the same data as the table, as JSON.
+///
+/// { "header": { "version", "openGl", "cpuThreads", "date", "sizes": ["1024x768"], "views",
+///               "repeat", "k", "sharedCounters", "methods": ["kplus-array", ...],
+///               "scenes": [...] },
+///   "skipped": [ { "scene", "reason" } ],
+///   "results": [ { "scene", "size", "width", "height", "method", "methodName", "bounded",
+///                  "status": "ok" | "disagrees" | "out-of-memory" | "failed", "error",
+///                  "msPerFrame", "timeSource": "GPU" | "wall", "gpuMsMedian" (null when
+///                  not every frame had one), "wallMsMedian", "frames", "views",
+///                  "geometryPasses", "fullscreenPasses", "megabytes", "interlock",
+///                  "fragmentsInSpan", "fragmentsStored", "fragmentsLost", "overflowPixels",
+///                  "unresolvedPixels", "spinGiveUps", "agreementPercent",
+///                  "worstViewAgreementPercent", "comparedPixels", "excludedPercent",
+///                  "overflowedPixelsNotCompared", "violation", "ratioToF2B", "ratioToABLL"
+///                  (null: n/a) } ] }
+/// Cells that did not render carry only the identity fields, status and error.
+
+#include "bench_results.h"
+
+#include <QByteArray>
+#include <QString>
+
+namespace trimlab::app {
+
+/// The report as indented JSON.
+[[nodiscard]] QByteArray benchJson(const BenchReport& report);
+/// Writes benchJson(report) to `path`; throws std::runtime_error naming the file on failure.
+void writeBenchJson(const BenchReport& report, const QString& path);
+
+} // namespace trimlab::app

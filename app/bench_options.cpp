@@ -1,0 +1,165 @@
+#include "bench_options.h"
+
+#include "bench_scenes.h"
+#include "render_choices.h"
+#include "render_options.h"
+
+#include <QCommandLineParser>
+#include <QFileInfo>
+
+#include <algorithm>
+#include <optional>
+
+namespace trimlab::app {
+
+namespace {
+
+QString catalogText()
+{
+    QStringList names;
+    for (const std::string& name : benchSceneNames())
+        names << QString::fromStdString(name);
+    return names.join(QStringLiteral(", "));
+}
+
+void addBenchOptions(QCommandLineParser& parser)
+{
+    parser.setApplicationDescription(
+        "Measures every multi-fragment method on a fixed camera path over named scenes and checks each frame "
+        "against the exact CPU reference. Prints a table (and --json); exits 1 if a method disagrees with the "
+        "reference beyond the render tests' threshold, never because of speed.");
+    parser.addOptions({
+        {"scenes", QStringLiteral("Comma-separated scenes. Default: %1. Also any demo:NAME or mesh file.").arg(catalogText()),
+         "a,b"},
+        {"size", "Comma-separated frame sizes. Default: 1024x768.", "WxH[,WxH]"},
+        {"methods", QStringLiteral("Comma-separated methods. Default: all of %1.").arg(fragmentMethodIds().join(", ")),
+         "a,b"},
+        {"k", "Fragments kept per pixel by the capacity-bounded methods (1-128). Default: 16.", "N"},
+        {"shared-counters", "S, the S-buffer's shared counters (1-1048576). Default: 1024.", "S"},
+        {"repeat", "Timed frames per view (after one untimed warm-up frame per method). Default: 5.", "N"},
+        {"views", "Cameras on the orbit around each scene. Default: 8.", "N"},
+        {"threads", "Worker threads of the CPU reference (0 = all cores).", "N"},
+        {"json", "Also write the results as JSON.", "file.json"},
+        {"data", "The shared data folder with the catalog's meshes. Default: $TRIMLAB_DATA_DIR or ../shared/data "
+                 "beside the source tree.",
+         "dir"},
+    });
+    parser.addHelpOption();
+}
+
+std::optional<QString> parseSizes(const QString& text, BenchOptions& options)
+{
+    options.sizes.clear();
+    for (const QString& item : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        int width = 0;
+        int height = 0;
+        if (auto e = parseImageSize(item.trimmed(), width, height))
+            return e;
+        options.sizes.emplace_back(width, height);
+    }
+    if (options.sizes.empty())
+        return QStringLiteral("--size needs at least one WxH");
+    return std::nullopt;
+}
+
+std::optional<QString> parseMethods(const QString& text, BenchOptions& options)
+{
+    std::vector<render::FragmentMethodKind> chosen;
+    for (const QString& item : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const auto kind = render::parseFragmentMethod(item.trimmed().toStdString());
+        if (!kind)
+            return QStringLiteral("unknown method '%1' in --methods (this build has: %2)")
+                .arg(item.trimmed(), fragmentMethodIds().join(QStringLiteral(", ")));
+        chosen.push_back(*kind);
+    }
+    options.methods.clear();
+    for (const render::MethodInfo& info : render::fragmentMethods()) // menu order, no duplicates
+        if (std::find(chosen.begin(), chosen.end(), info.kind) != chosen.end())
+            options.methods.push_back(info.kind);
+    if (options.methods.empty())
+        return QStringLiteral("--methods needs at least one method");
+    return std::nullopt;
+}
+
+std::optional<QString> parseScenes(const QString& text, BenchOptions& options)
+{
+    for (const QString& item : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const QString name = item.trimmed();
+        const bool known = isBenchSceneName(name.toStdString()) || name.startsWith(QStringLiteral("demo:")) ||
+                           QFileInfo::exists(name);
+        if (!known)
+            return QStringLiteral("unknown scene '%1' in --scenes (use %2, demo:NAME or a mesh file)")
+                .arg(name, catalogText());
+        options.scenes << name;
+    }
+    if (options.scenes.isEmpty())
+        return QStringLiteral("--scenes needs at least one scene");
+    return std::nullopt;
+}
+
+std::optional<QString> parseNumbers(const QCommandLineParser& parser, BenchOptions& options)
+{
+    if (parser.isSet("k"))
+        if (auto e = parseIntegerOption("k", parser.value("k"), 1, render::MethodParameters::kMaxK, options.parameters.k))
+            return e;
+    if (parser.isSet("shared-counters"))
+        if (auto e = parseIntegerOption("shared-counters", parser.value("shared-counters"), 1, ui::kMaxSharedCounters,
+                                        options.parameters.sharedCounters))
+            return e;
+    if (parser.isSet("repeat"))
+        if (auto e = parseIntegerOption("repeat", parser.value("repeat"), 1, 1000, options.repeat))
+            return e;
+    if (parser.isSet("views"))
+        if (auto e = parseIntegerOption("views", parser.value("views"), 1, 360, options.views))
+            return e;
+    if (parser.isSet("threads")) {
+        int threads = 0;
+        if (auto e = parseIntegerOption("threads", parser.value("threads"), 0, 1024, threads))
+            return e;
+        options.threads = unsigned(threads);
+    }
+    return std::nullopt;
+}
+
+std::optional<QString> parseLists(const QCommandLineParser& parser, BenchOptions& options)
+{
+    if (parser.isSet("scenes"))
+        if (auto e = parseScenes(parser.value("scenes"), options))
+            return e;
+    if (parser.isSet("size"))
+        if (auto e = parseSizes(parser.value("size"), options))
+            return e;
+    for (const render::MethodInfo& info : render::fragmentMethods())
+        options.methods.push_back(info.kind);
+    if (parser.isSet("methods"))
+        return parseMethods(parser.value("methods"), options);
+    return std::nullopt;
+}
+
+} // namespace
+
+std::variant<BenchOptions, QString> parseBenchOptions(const QStringList& arguments, QString* helpText)
+{
+    QCommandLineParser parser;
+    addBenchOptions(parser);
+    if (!parser.parse(QStringList{QStringLiteral("trimlab bench")} + arguments))
+        return parser.errorText();
+    if (parser.isSet("help")) {
+        if (helpText)
+            *helpText = parser.helpText();
+        return QString();
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return QStringLiteral("bench takes no positional arguments (got '%1'); use --scenes")
+            .arg(parser.positionalArguments().first());
+    BenchOptions options;
+    options.jsonOutput = parser.value("json");
+    options.dataDirectory = parser.value("data");
+    if (auto e = parseLists(parser, options))
+        return *e;
+    if (auto e = parseNumbers(parser, options))
+        return *e;
+    return options;
+}
+
+} // namespace trimlab::app

@@ -1,0 +1,31 @@
+#include "bench_results.h"
+
+namespace trimlab::app {
+
+const BenchCell* findCell(const BenchReport& report, const BenchCell& cell, render::FragmentMethodKind method)
+{
+    for (const BenchCell& other : report.cells)
+        if (other.method == method && other.scene == cell.scene && other.size == cell.size)
+            return &other;
+    return nullptr;
+}
+
+std::optional<double> timeRatio(const BenchCell& cell, const BenchCell* base)
+{
+    if (!base || !cell.rendered() || !base->rendered() || cell.times.frames() == 0 || base->times.frames() == 0)
+        return std::nullopt;
+    const bool gpu = cell.times.gpuTimed() && base->times.gpuTimed();
+    const double numerator = gpu ? cell.times.medianGpuMilliseconds() : cell.times.medianWallMilliseconds();
+    const double denominator = gpu ? base->times.medianGpuMilliseconds() : base->times.medianWallMilliseconds();
+    if (denominator <= 0.0)
+        return std::nullopt;
+    return numerator / denominator;
+}
+
+QString methodId(render::FragmentMethodKind method)
+{
+    const std::string_view id = render::methodInfo(method).id;
+    return QString::fromLatin1(id.data(), qsizetype(id.size()));
+}
+
+} // namespace trimlab::app

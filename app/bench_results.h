@@ -1,0 +1,85 @@
+#pragma once
+/// \file
+/// What `trimlab bench` measured: one cell per (scene, frame size, method), plus the run's
+/// header (OpenGL, CPU, date, parameters) and the scenes it had to skip. Shared by the
+/// text table (bench_table.h) and the JSON file (bench_json.h).
+
+#include "frame_times.h"
+#include "mfr/fragment_method.h"
+#include "trim/trim_agreement.h"
+
+#include <QSize>
+#include <QString>
+#include <QStringList>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace trimlab::app {
+
+/// One method on one scene at one size, over the whole camera path.
+struct BenchCell {
+    QString scene;
+    QSize size;
+    render::FragmentMethodKind method = render::FragmentMethodKind::KPlusArray;
+    /// Set when the method could not render (e.g. out of GPU memory); nothing else is then
+    /// meaningful.
+    QString error;
+    bool outOfMemory = false;      ///< the error was a GpuMemoryError (reported, not a failure)
+    render::FrameTimes times;      ///< every timed frame of every view
+    int views = 0;
+    int geometryPasses = 0;        ///< most over the views
+    int fullscreenPasses = 0;      ///< most over the views
+    double megabytes = 0.0;        ///< most over the views (method + target + scene)
+    bool interlock = false;        ///< the last frame used fragment shader interlock
+    /// Frame counters of the last frame of each view, summed over the views.
+    std::uint64_t fragmentsInSpan = 0;
+    std::uint64_t fragmentsStored = 0;
+    std::uint64_t fragmentsLost = 0;
+    std::uint64_t overflowPixels = 0;
+    std::uint64_t unresolvedPixels = 0;
+    std::uint64_t spinGiveUps = 0;
+    TrimAgreement agreement;       ///< summed over the views (counts only)
+    double worstViewAgreement = 1.0;
+    /// The first view that fails the test criteria and why ("view 3: agreement below ...").
+    QString violation;
+
+    [[nodiscard]] bool rendered() const { return error.isEmpty(); }
+    [[nodiscard]] bool failed() const { return !violation.isEmpty() || (!rendered() && !outOfMemory); }
+};
+
+struct BenchHeader {
+    QString version;
+    QString openGl;           ///< GlCapabilities::summary()
+    unsigned cpuThreads = 0;  ///< std::thread::hardware_concurrency()
+    QString date;             ///< ISO 8601, local time with offset
+    std::vector<QSize> sizes;
+    int views = 0;
+    int repeat = 0;
+    render::MethodParameters parameters;
+    std::vector<render::FragmentMethodKind> methods;
+    QStringList scenes;       ///< the scenes measured, in order
+};
+
+struct BenchSkip {
+    QString scene;
+    QString reason;
+};
+
+struct BenchReport {
+    BenchHeader header;
+    std::vector<BenchCell> cells;
+    std::vector<BenchSkip> skipped;
+};
+
+/// The cell of `method` for the same scene and size as `cell`, or nullptr.
+[[nodiscard]] const BenchCell* findCell(const BenchReport& report, const BenchCell& cell,
+                                        render::FragmentMethodKind method);
+/// Time of `cell` divided by the time of `base` (both rendered): GPU medians when both
+/// are GPU-timed, else wall medians. nullopt when either is missing or did not render.
+[[nodiscard]] std::optional<double> timeRatio(const BenchCell& cell, const BenchCell* base);
+/// "kplus-array": the method's stable id.
+[[nodiscard]] QString methodId(render::FragmentMethodKind method);
+
+} // namespace trimlab::app

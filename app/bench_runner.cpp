@@ -1,0 +1,126 @@
+#include "bench_runner.h"
+
+#include "bench_views.h"
+#include "cli_messages.h"
+
+#include "gl/gl_error.h"
+#include "trim/reference_renderer.h"
+
+#include <QElapsedTimer>
+
+#include <algorithm>
+
+namespace trimlab::app {
+
+struct BenchRunner::ViewReference {
+    Camera camera;
+    TrimImage trim;
+    ReferenceDiagnostics diagnostics;
+};
+
+namespace {
+
+void addFrame(BenchCell& cell, const render::FrameStats& stats)
+{
+    cell.geometryPasses = std::max(cell.geometryPasses, stats.methodStats.geometryPasses);
+    cell.fullscreenPasses = std::max(cell.fullscreenPasses, stats.methodStats.fullscreenPasses);
+    cell.megabytes = std::max(cell.megabytes, stats.bufferMegabytes);
+    cell.interlock = stats.methodStats.interlock;
+    cell.fragmentsInSpan += stats.counts.fragmentsInSpan;
+    cell.fragmentsStored += stats.counts.fragmentsStored;
+    cell.fragmentsLost += stats.counts.fragmentsLost;
+    cell.overflowPixels += stats.counts.overflowPixels;
+    cell.unresolvedPixels += stats.counts.unresolvedPixels;
+    cell.spinGiveUps += stats.counts.spinGiveUps;
+}
+
+QString sizeText(QSize size)
+{
+    return QStringLiteral("%1x%2").arg(size.width()).arg(size.height());
+}
+
+} // namespace
+
+BenchRunner::BenchRunner(render::TrimRenderer& renderer, const BenchOptions& options)
+    : m_renderer(renderer), m_options(options)
+{
+}
+
+void BenchRunner::measureScene(const BenchScene& scene, BenchReport& report)
+{
+    m_renderer.setScene(scene.loaded.scene);
+    const ReferenceRenderer reference(scene.loaded.scene);
+    for (const QSize size : m_options.sizes) {
+        QElapsedTimer clock;
+        clock.start();
+        const std::vector<ViewReference> views = referenceViews(reference, scene, size);
+        printNote(QStringLiteral("%1 at %2: %3 views, CPU reference %4 s; measuring %5 methods")
+                      .arg(QString::fromStdString(scene.name), sizeText(size))
+                      .arg(views.size())
+                      .arg(double(clock.elapsed()) / 1000.0, 0, 'f', 1)
+                      .arg(m_options.methods.size()));
+        for (const render::FragmentMethodKind method : m_options.methods)
+            report.cells.push_back(measureMethod(method, scene, size, reference, views));
+    }
+}
+
+std::vector<BenchRunner::ViewReference> BenchRunner::referenceViews(const ReferenceRenderer& reference,
+                                                                    const BenchScene& scene, QSize size) const
+{
+    std::vector<ViewReference> views;
+    const double aspect = double(size.width()) / double(size.height());
+    for (const Camera& camera : benchViews(scene.loaded.scene.worldBounds(), aspect, m_options.views)) {
+        ReferenceResult result = reference.render(camera, size.width(), size.height(), scene.settings, m_options.threads);
+        views.push_back({camera, std::move(result.trim), std::move(result.diagnostics)});
+    }
+    return views;
+}
+
+BenchCell BenchRunner::measureMethod(render::FragmentMethodKind method, const BenchScene& scene, QSize size,
+                                     const ReferenceRenderer& reference, const std::vector<ViewReference>& views)
+{
+    BenchCell cell;
+    cell.scene = QString::fromStdString(scene.name);
+    cell.size = size;
+    cell.method = method;
+    try {
+        m_renderer.setMethod(method);
+        m_renderer.setParameters(m_options.parameters);
+        if (!views.empty()) // warm-up: shader build and storage allocation are not timed
+            m_renderer.render(views.front().camera, scene.settings, size.width(), size.height());
+        for (std::size_t i = 0; i < views.size(); ++i)
+            measureView(cell, scene, reference, views[i], int(i));
+    } catch (const render::GpuMemoryError& e) {
+        cell.error = QString::fromUtf8(e.what());
+        cell.outOfMemory = true;
+    } catch (const std::exception& e) {
+        cell.error = QString::fromUtf8(e.what());
+    }
+    return cell;
+}
+
+void BenchRunner::measureView(BenchCell& cell, const BenchScene& scene, const ReferenceRenderer& reference,
+                              const ViewReference& view, int index)
+{
+    const QSize size = cell.size;
+    for (int frame = 0; frame < m_options.repeat; ++frame) {
+        m_renderer.render(view.camera, scene.settings, size.width(), size.height());
+        cell.times.add(m_renderer.lastStats());
+    }
+    const render::FrameStats& stats = m_renderer.lastStats();
+    addFrame(cell, stats);
+    ++cell.views;
+    const TrimAgreement agreement =
+        measureTrimAgreement(m_renderer.readTrimImage(), view.trim, view.diagnostics, {},
+                             referenceTieCheck(reference, view.camera, size.width(), size.height(), scene.settings));
+    cell.agreement.add(agreement);
+    cell.worstViewAgreement = std::min(cell.worstViewAgreement, agreement.agreement());
+    const bool bounded = render::methodInfo(cell.method).bounded;
+    const auto violation = agreementViolation(agreement, {}, bounded, stats.counts.fragmentsLost);
+    if (violation && cell.violation.isEmpty())
+        cell.violation = QStringLiteral("view %1: %2 (%3)")
+                             .arg(index)
+                             .arg(QString::fromStdString(*violation), QString::fromStdString(agreement.summary()));
+}
+
+} // namespace trimlab::app

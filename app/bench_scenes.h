@@ -1,0 +1,48 @@
+#pragma once
+/// \file
+/// The named scenes of `trimlab bench`, from sparse to dense fragment lists:
+/// - the built-in demos (no files needed): demo:pushed-sphere (cut open by z <= 0, the
+///   GUI's first view), demo:crossing-loop, demo:nested-spheres (cut open, parity);
+/// - bunny-cube-25/-50/-75/-100: the Stanford bunny inside a cube (the thesis's S-buffer
+///   test, Figure 5.3), parity rule, with a horizontal clipping plane keeping the lower
+///   25 %, 50 %, 75 % or all of the cube: from few pixels with deep fragment lists to many;
+/// - bunny-hr (60k triangles), elephant-gallop (85k) and dragon (quartet's 100k-triangle
+///   dragon), alternating border rule, unclipped: the densest models.
+/// The file scenes read third-party meshes from the shared data folder (../shared/data
+/// next to the source tree, or --data DIR); the app itself never needs it, so a missing
+/// file only skips its scene. Any other demo:NAME or mesh file is accepted too and drawn
+/// with the alternating border rule (untrimmed when the mesh is not a closed surface).
+
+#include "scene/scene_source.h"
+#include "trim/trim_settings.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace trimlab::app {
+
+/// A scene ready to render: the loaded geometry and the settings it is drawn with.
+struct BenchScene {
+    std::string name;
+    LoadedScene loaded;
+    TrimSettings settings;
+};
+
+/// The catalog's names in run order.
+[[nodiscard]] std::vector<std::string> benchSceneNames();
+/// True for a catalog name.
+[[nodiscard]] bool isBenchSceneName(const std::string& name);
+/// The shared data folder: $TRIMLAB_DATA_DIR when set, else ../shared/data beside the
+/// source tree this binary was built from.
+[[nodiscard]] std::filesystem::path defaultBenchDataDirectory();
+
+/// Loads `name` (a catalog name, demo:NAME or a mesh file path). Returns nullopt with the
+/// reason in `skipReason` when a catalog scene's file is missing from `dataDirectory`.
+/// Throws what loadScene throws for unreadable or malformed files and unknown demos.
+[[nodiscard]] std::optional<BenchScene> loadBenchScene(const std::string& name,
+                                                       const std::filesystem::path& dataDirectory,
+                                                       std::string* skipReason);
+
+} // namespace trimlab::app

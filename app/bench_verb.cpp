@@ -1,0 +1,122 @@
+#include "bench_verb.h"
+
+#include "bench_json.h"
+#include "bench_options.h"
+#include "bench_runner.h"
+#include "bench_table.h"
+#include "cli_messages.h"
+#include "render_verb.h"
+
+#include "gl/offscreen_gl_context.h"
+#include "trim_renderer.h"
+
+#include <QDateTime>
+#include <QGuiApplication>
+
+#include <thread>
+
+namespace trimlab::app {
+
+namespace {
+
+BenchHeader makeHeader(const BenchOptions& options, const render::TrimRenderer& renderer)
+{
+    BenchHeader header;
+    header.version = QStringLiteral(TRIMLAB_VERSION);
+    header.openGl = renderer.capabilities().summary();
+    header.cpuThreads = std::thread::hardware_concurrency();
+    const QDateTime now = QDateTime::currentDateTime();
+    header.date = now.toOffsetFromUtc(now.offsetFromUtc()).toString(Qt::ISODate);
+    header.sizes = options.sizes;
+    header.views = options.views;
+    header.repeat = options.repeat;
+    header.parameters = options.parameters;
+    header.methods = options.methods;
+    return header;
+}
+
+QStringList sceneNames(const BenchOptions& options)
+{
+    if (!options.scenes.isEmpty())
+        return options.scenes;
+    QStringList names;
+    for (const std::string& name : benchSceneNames())
+        names << QString::fromStdString(name);
+    return names;
+}
+
+/// Loads and measures one scene; false when it could not be loaded (a missing catalog
+/// file is a skip, not a failure).
+bool measureNamedScene(const QString& name, const std::filesystem::path& data, BenchRunner& runner,
+                       BenchReport& report)
+{
+    std::string skipReason;
+    std::optional<BenchScene> scene;
+    try {
+        scene = loadBenchScene(name.toStdString(), data, &skipReason);
+    } catch (const std::exception& e) {
+        printError(QStringLiteral("%1: %2").arg(name, QString::fromUtf8(e.what())));
+        report.skipped.push_back({name, QStringLiteral("could not be loaded: %1").arg(QString::fromUtf8(e.what()))});
+        return false;
+    }
+    if (!scene) {
+        printNote(QStringLiteral("skipping %1: %2").arg(name, QString::fromStdString(skipReason)));
+        report.skipped.push_back({name, QString::fromStdString(skipReason)});
+        return true;
+    }
+    if (!scene->settings.trimEnabled)
+        printNote(QStringLiteral("%1 renders untrimmed: %2").arg(name, QString::fromStdString(scene->loaded.trimUnavailableReason())));
+    report.header.scenes << name;
+    runner.measureScene(*scene, report);
+    return true;
+}
+
+int runBench(const BenchOptions& options)
+{
+    render::OffscreenGlContext gl;
+    render::TrimRenderer renderer(gl.context());
+    BenchReport report;
+    report.header = makeHeader(options, renderer);
+    for (const QString& line : benchHeaderLines(report.header))
+        printLine(line);
+    const std::filesystem::path data = options.dataDirectory.isEmpty() ? defaultBenchDataDirectory()
+                                                                       : std::filesystem::path(options.dataDirectory.toStdString());
+    BenchRunner runner(renderer, options);
+    bool allLoaded = true;
+    for (const QString& name : sceneNames(options))
+        allLoaded = measureNamedScene(name, data, runner, report) && allLoaded;
+    printLine(QString());
+    for (const QString& line : benchTableLines(report))
+        printLine(line);
+    if (!options.jsonOutput.isEmpty())
+        writeBenchJson(report, options.jsonOutput);
+    const QStringList failures = benchFailureLines(report);
+    for (const QString& failure : failures)
+        printError(failure);
+    return failures.isEmpty() && allLoaded ? 0 : 1;
+}
+
+} // namespace
+
+int runBenchVerb(int argc, char** argv, const QStringList& arguments)
+{
+    QString help;
+    auto parsed = parseBenchOptions(arguments, &help);
+    if (auto* error = std::get_if<QString>(&parsed)) {
+        if (!help.isEmpty()) {
+            printLine(help);
+            return 0;
+        }
+        printError(*error);
+        return 2;
+    }
+    if (!hasDisplay()) {
+        printError("bench needs OpenGL and therefore a display; run it under 'xvfb-run -a'");
+        return 1;
+    }
+    QGuiApplication application(argc, argv);
+    const BenchOptions& options = std::get<BenchOptions>(parsed);
+    return runGuarded([&] { return runBench(options); });
+}
+
+} // namespace trimlab::app

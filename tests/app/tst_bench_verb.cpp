@@ -1,0 +1,180 @@
+// `trimlab bench` as a developer runs it: on the pushed-sphere demo at a small size, the
+// table has one row per method of this build, the JSON file holds the same fields, every
+// method agrees with the CPU reference (>= 99.9 %), ratios are numbers or "n/a", and bad
+// arguments or missing shared data are reported as documented.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QtTest>
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+Run runTrimlab(const QStringList& arguments)
+{
+    QProcess process;
+    process.start(QStringLiteral(TRIMLAB_EXECUTABLE), arguments);
+    if (!process.waitForFinished(300000))
+        return {};
+    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
+            QString::fromUtf8(process.readAllStandardOutput()), QString::fromUtf8(process.readAllStandardError())};
+}
+
+bool glRequired()
+{
+    return qEnvironmentVariable("TRIMLAB_REQUIRE_GL") == QLatin1String("1");
+}
+
+/// The table's data rows (those that start with the scene name).
+QStringList tableRows(const QString& out, const QString& scene)
+{
+    QStringList rows;
+    for (const QString& line : out.split(QLatin1Char('\n')))
+        if (line.startsWith(scene + QLatin1Char(' ')))
+            rows << line;
+    return rows;
+}
+
+const QStringList kMeasuredFields = {"msPerFrame",     "timeSource",       "wallMsMedian",     "geometryPasses",
+                                     "megabytes",      "fragmentsInSpan",  "fragmentsStored",  "fragmentsLost",
+                                     "overflowPixels", "unresolvedPixels", "agreementPercent", "worstViewAgreementPercent",
+                                     "comparedPixels", "excludedPercent",  "ratioToF2B",       "ratioToABLL"};
+
+} // namespace
+
+class TestBenchVerb : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void demoSceneAgreesForEveryMethod();
+    void restrictedMethodsGiveNotAvailableRatios();
+    void badArgumentsExitWithTwo_data();
+    void badArgumentsExitWithTwo();
+    void missingSharedDataSkipsTheScene();
+
+private:
+    QTemporaryDir m_dir;
+    QJsonObject m_report;
+    QString m_out;
+};
+
+void TestBenchVerb::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    const QString json = m_dir.filePath(QStringLiteral("bench.json"));
+    const Run run = runTrimlab({"bench", "--scenes", "demo:pushed-sphere", "--size", "160x120", "--repeat", "1",
+                                "--json", json});
+    if (run.exitCode != 0 && run.err.contains(QStringLiteral("OpenGL")) && !glRequired())
+        QSKIP(qPrintable("no OpenGL for the bench: " + run.err));
+    QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
+    m_out = run.out;
+    QFile file(json);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QJsonParseError error;
+    m_report = QJsonDocument::fromJson(file.readAll(), &error).object();
+    QVERIFY2(error.error == QJsonParseError::NoError, qPrintable(error.errorString()));
+}
+
+void TestBenchVerb::demoSceneAgreesForEveryMethod()
+{
+    QVERIFY2(m_out.contains(QStringLiteral("OpenGL: ")) && m_out.contains(QStringLiteral("CPU threads: ")),
+             qPrintable(m_out));
+    const QJsonObject header = m_report.value("header").toObject();
+    QCOMPARE(header.value("sizes").toArray(), QJsonArray{QStringLiteral("160x120")});
+    QCOMPARE(header.value("repeat").toInt(), 1);
+    QVERIFY(!header.value("openGl").toString().isEmpty());
+    const QJsonArray methods = header.value("methods").toArray();
+    QVERIFY(!methods.isEmpty());
+    const QJsonArray results = m_report.value("results").toArray();
+    QCOMPARE(results.size(), methods.size());
+    const QStringList rows = tableRows(m_out, QStringLiteral("demo:pushed-sphere"));
+    QCOMPARE(rows.size(), methods.size());
+    for (qsizetype i = 0; i < results.size(); ++i) {
+        const QJsonObject result = results[i].toObject();
+        const QString method = result.value("method").toString();
+        QCOMPARE(method, methods[i].toString());
+        QVERIFY2(rows[i].contains(method), qPrintable(rows[i]));
+        QCOMPARE(result.value("status").toString(), QStringLiteral("ok"));
+        for (const QString& field : kMeasuredFields)
+            QVERIFY2(result.contains(field), qPrintable(method + ": no " + field));
+        QVERIFY2(result.value("agreementPercent").toDouble() >= 99.9, qPrintable(method));
+        QVERIFY2(result.value("worstViewAgreementPercent").toDouble() >= 99.9, qPrintable(method));
+        QVERIFY2(result.value("comparedPixels").toInt() > 1000, qPrintable(method)); // not vacuous
+        QVERIFY(result.value("excludedPercent").toDouble() <= 5.0);
+        QVERIFY(result.value("geometryPasses").toInt() >= 1);
+        QVERIFY(result.value("fragmentsInSpan").toDouble() > 0.0);
+        QCOMPARE(result.value("views").toInt(), 8);
+        const QString source = result.value("timeSource").toString();
+        QVERIFY(source == QLatin1String("GPU") || source == QLatin1String("wall"));
+    }
+}
+
+// Without F2B and AB_LL in the run there is nothing to compare against: "n/a" and null.
+void TestBenchVerb::restrictedMethodsGiveNotAvailableRatios()
+{
+    const QString json = m_dir.filePath(QStringLiteral("one.json"));
+    const Run run = runTrimlab({"bench", "--scenes", "demo:sphere", "--size", "96x64", "--repeat", "1", "--views", "2",
+                                "--methods", "kplus-array", "--k", "8", "--json", json});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
+    const QStringList rows = tableRows(run.out, QStringLiteral("demo:sphere"));
+    QCOMPARE(rows.size(), 1);
+    QVERIFY2(rows[0].contains(QStringLiteral("kplus-array")) && rows[0].contains(QRegularExpression(QStringLiteral("n/a\\s+n/a$"))),
+             qPrintable(rows[0]));
+    QFile file(json);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonObject report = QJsonDocument::fromJson(file.readAll()).object();
+    QCOMPARE(report.value("header").toObject().value("k").toInt(), 8);
+    const QJsonObject result = report.value("results").toArray().first().toObject();
+    QVERIFY(result.value("ratioToF2B").isNull());
+    QVERIFY(result.value("ratioToABLL").isNull());
+    QCOMPARE(result.value("views").toInt(), 2);
+}
+
+void TestBenchVerb::badArgumentsExitWithTwo_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("unknown method") << QStringList{"bench", "--methods", "z-buffer"} << "z-buffer";
+    QTest::newRow("unknown scene") << QStringList{"bench", "--scenes", "teapot"} << "teapot";
+    QTest::newRow("bad size") << QStringList{"bench", "--size", "160x"} << "--size";
+    QTest::newRow("bad repeat") << QStringList{"bench", "--repeat", "0"} << "--repeat";
+    QTest::newRow("bad shared counters") << QStringList{"bench", "--shared-counters", "0"} << "--shared-counters";
+}
+
+void TestBenchVerb::badArgumentsExitWithTwo()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    const Run run = runTrimlab(arguments);
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.contains(QStringLiteral("trimlab: error: ")) && run.err.contains(message), qPrintable(run.err));
+}
+
+// The catalog's file scenes need the shared data folder; without it they are skipped
+// with a note, and a run with nothing left to measure still succeeds.
+void TestBenchVerb::missingSharedDataSkipsTheScene()
+{
+    const QString json = m_dir.filePath(QStringLiteral("skipped.json"));
+    const Run run = runTrimlab({"bench", "--scenes", "bunny-cube-50", "--data", m_dir.filePath("no-such-folder"),
+                                "--size", "64x48", "--repeat", "1", "--json", json});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
+    QVERIFY2(run.err.contains(QStringLiteral("skipping bunny-cube-50")) && run.err.contains(QStringLiteral("missing")),
+             qPrintable(run.err));
+    QFile file(json);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonObject report = QJsonDocument::fromJson(file.readAll()).object();
+    QCOMPARE(report.value("results").toArray().size(), 0);
+    QCOMPARE(report.value("skipped").toArray().first().toObject().value("scene").toString(),
+             QStringLiteral("bunny-cube-50"));
+}
+
+QTEST_GUILESS_MAIN(TestBenchVerb)
+#include "tst_bench_verb.moc"
