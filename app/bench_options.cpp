@@ -1,5 +1,7 @@
 #include "bench_options.h"
 
+#include "cli_messages.h"
+
 #include "bench_scenes.h"
 #include "render_choices.h"
 #include "render_options.h"
@@ -146,7 +148,7 @@ std::variant<BenchOptions, QString> parseBenchOptions(const QStringList& argumen
         return parser.errorText();
     if (parser.isSet("help")) {
         if (helpText)
-            *helpText = parser.helpText();
+            *helpText = verbHelpText(parser, QStringLiteral("bench"));
         return QString();
     }
     if (!parser.positionalArguments().isEmpty())

@@ -1,5 +1,8 @@
 #include "cli_messages.h"
 
+#include <QCommandLineParser>
+#include <QRegularExpression>
+
 #include <cstdio>
 #include <exception>
 
@@ -32,6 +35,14 @@ void printError(const QString& text)
 void printNote(const QString& text)
 {
     std::fprintf(stderr, "trimlab: note: %s\n", indentContinuationLines(text).toLocal8Bit().constData());
+}
+
+QString verbHelpText(const QCommandLineParser& parser, const QString& verb)
+{
+    QString text = parser.helpText();
+    static const QRegularExpression usage(QStringLiteral("^Usage: \\S+"));
+    text.replace(usage, QStringLiteral("Usage: trimlab ") + verb);
+    return text;
 }
 
 int runGuarded(const std::function<int()>& body)

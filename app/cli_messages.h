@@ -5,6 +5,8 @@
 
 #include <QString>
 
+class QCommandLineParser;
+
 #include <functional>
 
 namespace trimlab::app {
@@ -14,6 +16,10 @@ void printLine(const QString& text);
 void printError(const QString& text);
 /// "trimlab: note: <text>" on stderr.
 void printNote(const QString& text);
+
+/// The parser's help text with its usage line naming the verb ("Usage: trimlab render
+/// [options] source") instead of whatever argv[0] was.
+[[nodiscard]] QString verbHelpText(const QCommandLineParser& parser, const QString& verb);
 
 /// Runs `body`; an exception becomes a one-line error and exit code 1.
 int runGuarded(const std::function<int()>& body);

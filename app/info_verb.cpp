@@ -33,7 +33,7 @@ int runInfoVerb(int argc, char** argv, const QStringList& arguments)
         return 2;
     }
     if (parser.isSet("help")) {
-        printLine(parser.helpText());
+        printLine(verbHelpText(parser, QStringLiteral("info")));
         return 0;
     }
     if (parser.positionalArguments().size() != 1) {

@@ -1,5 +1,7 @@
 #include "render_options.h"
 
+#include "cli_messages.h"
+
 #include "mfr/fragment_method.h"
 #include "render_choices.h"
 #include "trim/clip_plane.h"
@@ -152,7 +154,7 @@ std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& argum
         return parser.errorText();
     if (parser.isSet("help")) {
         if (helpText)
-            *helpText = parser.helpText();
+            *helpText = verbHelpText(parser, QStringLiteral("render"));
         return QString();
     }
     RenderOptions options;

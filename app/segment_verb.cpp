@@ -154,7 +154,7 @@ std::variant<SegmentOptions, QString> parseSegmentOptions(const QStringList& arg
     if (!parser.parse(QStringList{QStringLiteral("trimlab segment")} + arguments))
         return parser.errorText();
     if (parser.isSet("help")) {
-        printLine(parser.helpText());
+        printLine(verbHelpText(parser, QStringLiteral("segment")));
         helpShown = true;
         return QString();
     }
