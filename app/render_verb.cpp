@@ -70,6 +70,8 @@ QString gpuStatistics(const render::FrameStats& s, const render::MethodParameter
                        .arg(s.counts.overflowPixels)
                        .arg(s.counts.unresolvedPixels)
                        .arg(s.bufferMegabytes, 0, 'f', 1);
+    if (s.methodStats.usesLock)
+        text += QStringLiteral(", lock: %1").arg(QString::fromLatin1(render::lockDescription(s.methodStats)));
     if (s.counts.spinGiveUps > 0)
         text += QStringLiteral(", %1 fragments gave up on the spin-lock").arg(s.counts.spinGiveUps);
     return text;

@@ -34,7 +34,7 @@ QString frameTimeText(const render::FrameStats& stats)
 
 QString lockText(const render::FrameStats& stats)
 {
-    QString text = stats.methodStats.interlock ? FrameStatsPanel::tr("interlock") : FrameStatsPanel::tr("spin-lock");
+    QString text = FrameStatsPanel::tr(render::lockDescription(stats.methodStats));
     if (stats.counts.spinGiveUps > 0)
         text += FrameStatsPanel::tr(", %1 fragments gave up").arg(countText(stats.counts.spinGiveUps));
     return text;

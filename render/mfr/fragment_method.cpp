@@ -30,6 +30,13 @@ const MethodInfo& methodInfo(FragmentMethodKind kind)
     throw std::invalid_argument("multi-fragment method not available in this build");
 }
 
+const char* lockDescription(const MethodStats& stats)
+{
+    if (!stats.usesLock)
+        return "none";
+    return stats.interlock ? "fragment shader interlock" : "spin-lock";
+}
+
 std::optional<FragmentMethodKind> parseFragmentMethod(std::string_view id)
 {
     for (const MethodInfo& info : fragmentMethods())

@@ -62,7 +62,11 @@ struct MethodStats {
     std::size_t bytes = 0;      ///< GPU memory the method holds
     bool interlock = false;     ///< the critical section used fragment shader interlock
     int regrowths = 0;          ///< times the storage grew and the frame was rendered again (AB_LL)
+    bool usesLock = false;      ///< the method has a per-pixel critical section (k⁺-buffer family)
 };
+
+/// "spin-lock", "fragment shader interlock" or "none" for a frame's stats.
+[[nodiscard]] const char* lockDescription(const MethodStats& stats);
 
 class FragmentMethod {
 public:

@@ -105,8 +105,11 @@ void KPlusBuffer::render(TrimFrame& frame)
     storePass(frame, lock);
     m_gl.glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT);
     resolvePass(frame);
-    m_stats = {1, 2, m_state.memoryBytes() + std::size_t(m_width) * m_height * kBytesPerSlot * std::size_t(m_k),
-               lock != KPlusLock::SpinLock};
+    m_stats = {.geometryPasses = 1,
+               .fullscreenPasses = 2,
+               .bytes = m_state.memoryBytes() + std::size_t(m_width) * m_height * kBytesPerSlot * std::size_t(m_k),
+               .interlock = lock != KPlusLock::SpinLock,
+               .usesLock = true};
 }
 
 void KPlusBuffer::storePass(TrimFrame& frame, KPlusLock lock)

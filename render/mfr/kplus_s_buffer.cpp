@@ -49,8 +49,11 @@ void KPlusSBuffer::render(TrimFrame& frame)
                          GL_ATOMIC_COUNTER_BARRIER_BIT);
     resolvePass(frame);
     // Per-pixel passes: clear, two referencing passes (addresses, regions), resolve.
-    m_stats = {2, 4, m_state.memoryBytes() + m_head.memoryBytes() + m_referencing.memoryBytes() + m_nodes.bytes(),
-               lock != KPlusLock::SpinLock};
+    m_stats = {.geometryPasses = 2,
+               .fullscreenPasses = 4,
+               .bytes = m_state.memoryBytes() + m_head.memoryBytes() + m_referencing.memoryBytes() + m_nodes.bytes(),
+               .interlock = lock != KPlusLock::SpinLock,
+               .usesLock = true};
 }
 
 void KPlusSBuffer::storePass(TrimFrame& frame, KPlusLock lock)

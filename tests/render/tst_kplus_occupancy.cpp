@@ -3,6 +3,7 @@
 // fragment-dropping trap of PLATFORM.md): 64 full-screen layers at known depths, submitted
 // in a shuffled order, checked pixel by pixel.
 #include "gl_test_context.h"
+#include "mfr/kplus_buffer.h"
 #include "trim_renderer.h"
 
 #include <QtTest>
@@ -70,6 +71,7 @@ private slots:
     void trimBeyondKIsReportedUnresolved();
     void largeKHoldsEveryLayer();
     void clipPlaneStartsTheSpanBetweenLayers();
+    void lockChoiceIsMadeAndReported();
 
 private:
     void renderLayers(int k, const TrimSettings& settings);
@@ -181,6 +183,30 @@ void TestKPlusOccupancy::clipPlaneStartsTheSpanBetweenLayers()
     }
     QCOMPARE(wrong, 0);
     QCOMPARE(m_renderer->lastStats().counts.fragmentsInSpan, std::uint64_t(kLayers - 4) * kWidth * kHeight);
+}
+
+// The critical section is chosen at run time from the context's extensions and reported
+// with the frame; on llvmpipe (no GL_ARB_fragment_shader_interlock) the spin-lock runs.
+void TestKPlusOccupancy::lockChoiceIsMadeAndReported()
+{
+    GlCapabilities withInterlock = m_context->capabilities();
+    withInterlock.extensions.insert("GL_ARB_fragment_shader_interlock");
+    GlCapabilities without = m_context->capabilities();
+    without.extensions.remove("GL_ARB_fragment_shader_interlock");
+    QCOMPARE(chooseKPlusLock(withInterlock, true), KPlusLock::InterlockArb);
+    QCOMPARE(chooseKPlusLock(withInterlock, false), KPlusLock::SpinLock);
+    QCOMPARE(chooseKPlusLock(without, true), KPlusLock::SpinLock);
+    QVERIFY(kplusStoreDefines(KPlusLock::InterlockArb, true).contains("KPLUS_INTERLOCK_ARB"));
+    QVERIFY(!kplusStoreDefines(KPlusLock::SpinLock, false).contains("KPLUS_INTERLOCK_ARB"));
+
+    TrimSettings settings;
+    renderLayers(8, settings);
+    const bool driverHasInterlock = m_context->capabilities().hasExtension("GL_ARB_fragment_shader_interlock");
+    const MethodStats& stats = m_renderer->lastStats().methodStats;
+    QVERIFY(stats.usesLock);
+    QCOMPARE(stats.interlock, driverHasInterlock);
+    QCOMPARE(QString(lockDescription(stats)), driverHasInterlock ? QString("fragment shader interlock") : QString("spin-lock"));
+    qInfo("lock on this driver: %s", lockDescription(stats));
 }
 
 QTEST_MAIN(TestKPlusOccupancy)
