@@ -4,15 +4,11 @@
 
 #include "animation/animation_loader.h"
 #include "animation/animation_segmenter.h"
-#include "animation/segment_coloring.h"
-#include "animation/segmentation_export.h"
-#include "animation/segmentation_gltf.h"
-#include "animation/vertex_areas.h"
+#include "animation/segmentation_record.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QElapsedTimer>
-#include <QFileInfo>
 
 #include <cmath>
 #include <optional>
@@ -22,12 +18,10 @@ namespace trimlab::app {
 
 namespace {
 
-enum class OutputFormat { Json, Csv, Gltf };
-
 struct SegmentOptions {
     std::string source;
     QString output;
-    OutputFormat format = OutputFormat::Json;
+    SegmentationFileFormat format = SegmentationFileFormat::Json;
     SegmenterSettings settings;
     AnimationLoadOptions load;
     double h = 0.0;
@@ -110,15 +104,10 @@ std::optional<QString> parseOutput(const QCommandLineParser& parser, SegmentOpti
     options.output = parser.value("output");
     if (options.output.isEmpty())
         return QStringLiteral("segment needs an output file: -o labels.json (or .csv, .gltf)");
-    const QString suffix = QFileInfo(options.output).suffix().toLower();
-    if (suffix == "json")
-        options.format = OutputFormat::Json;
-    else if (suffix == "csv")
-        options.format = OutputFormat::Csv;
-    else if (suffix == "gltf")
-        options.format = OutputFormat::Gltf;
-    else
+    const std::optional<SegmentationFileFormat> format = segmentationFileFormat(options.output.toStdString());
+    if (!format)
         return QStringLiteral("-o must name a .json, .csv or .gltf file, got '%1'").arg(options.output);
+    options.format = *format;
     return std::nullopt;
 }
 
@@ -187,50 +176,6 @@ void requireFeaturePoses(const AnimationSegmenter& segmenter, const SegmentOptio
                              std::to_string(needed));
 }
 
-SegmentationRecord makeRecord(const AnimationSegmenter& segmenter, const SegmentOptions& options, VertexLabeling segmentation)
-{
-    const MeshAnimation& animation = segmenter.animation();
-    SegmentationRecord record;
-    record.source = options.source;
-    record.vertexCount = animation.vertexCount();
-    record.faceCount = animation.triangleCount();
-    record.poseCount = animation.poseCount();
-    record.restPose = animation.restPose;
-    record.feature = options.settings.feature;
-    record.partition = options.settings.partition;
-    record.variableMode = options.variableMode;
-    record.h = options.h;
-    record.partitionedPoses = segmenter.partitionedPoses();
-    for (std::size_t i = 0; i < segmenter.join().partitionCount(); ++i)
-        record.clustersPerPose.push_back(segmenter.join().partition(i).count);
-    record.overSegmentCount = segmenter.overSegmentation().count;
-    record.colors = colorSegments(segmenter.graph(), segmentation, segmenter.vertexAreas());
-    record.segmentAreas = labelAreas(segmentation.labels, segmentation.count, segmenter.vertexAreas());
-    record.segmentation = std::move(segmentation);
-    if (options.variableMode) {
-        record.variable = segmenter.variableSegmentation();
-        record.variableColors = colorSequence(segmenter.graph(), segmenter.vertexAreas(), record.variable);
-    }
-    const SegmentationTimes& t = segmenter.times();
-    record.times.features = t.featuresMs;
-    record.times.partitions = t.partitionsMs;
-    record.times.overSegmentation = t.overSegmentationMs;
-    return record;
-}
-
-void writeOutput(const SegmentationRecord& record, const AnimationSegmenter& segmenter, const SegmentOptions& options)
-{
-    const std::filesystem::path path = options.output.toStdString();
-    switch (options.format) {
-    case OutputFormat::Json: writeTextFile(path, segmentationJson(record)); break;
-    case OutputFormat::Csv: writeTextFile(path, segmentationCsv(record)); break;
-    case OutputFormat::Gltf:
-        writeSegmentationGltf(path, segmenter.animation().poseMesh(segmenter.animation().restPose), record.segmentation,
-                              record.colors);
-        break;
-    }
-}
-
 void printSummary(const SegmentationRecord& r)
 {
     printLine(QStringLiteral("%1: %2 poses, %3 vertices, %4 faces; %5 (%6), %7, %8 clusters per pose")
@@ -266,10 +211,11 @@ int segmentAnimation(const SegmentOptions& options)
     timer.restart();
     VertexLabeling segmentation = segmenter.segment(options.h);
     const double cleaningMs = elapsedMs(timer);
-    SegmentationRecord record = makeRecord(segmenter, options, std::move(segmentation));
+    SegmentationRecord record =
+        makeSegmentationRecord(segmenter, options.source, options.h, std::move(segmentation), {}, options.variableMode);
     record.times.load = loadMs;
     record.times.cleaning = cleaningMs;
-    writeOutput(record, segmenter, options);
+    writeSegmentationFile(options.output.toStdString(), options.format, record, segmenter.animation());
     printSummary(record);
     printLine(QStringLiteral("wrote %1").arg(options.output));
     return 0;

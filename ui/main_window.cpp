@@ -1,20 +1,26 @@
 #include "main_window.h"
 
+#include "animation_opener.h"
+#include "animation_settings_store.h"
 #include "frame_stats_labels.h"
 #include "frame_stats_panel.h"
 #include "mesh_file_filter.h"
 #include "method_group.h"
 #include "method_timing_panel.h"
+#include "open_animation_dialog.h"
 #include "render_panel.h"
 #include "render_settings_store.h"
 #include "scene/demo_scenes.h"
 #include "scene_loader.h"
+#include "segmentation_panel.h"
+#include "timeline_panel.h"
 #include "viewport_widget.h"
 
 #include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QDragEnterEvent>
+#include <QDir>
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -22,6 +28,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -76,13 +83,16 @@ MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
     setAcceptDrops(true);
     createCentralView();
     m_loader = new SceneLoader(this);
+    m_animationOpener = new AnimationOpener(this);
     m_statsLabels = new FrameStatsLabels(statusBar());
     createDock();
     createStatsDock();
+    createAnimationDocks();
     createFileMenu();
     createViewMenu();
     createHelpMenu();
     connectParts();
+    connectAnimationParts();
     restoreSettings();
     updateTitle();
     QTimer::singleShot(0, this, &MainWindow::openDefaultIfNothingRequested);
@@ -153,6 +163,30 @@ void MainWindow::createStatsDock()
     splitDockWidget(m_dock, m_statsDock, Qt::Vertical);
 }
 
+void MainWindow::createAnimationDocks()
+{
+    m_timeline = new TimelinePanel;
+    m_timelineDock = new QDockWidget(tr("Timeline"), this);
+    m_timelineDock->setObjectName(QStringLiteral("timelineDock"));
+    m_timelineDock->setAllowedAreas(Qt::BottomDockWidgetArea | Qt::TopDockWidgetArea);
+    m_timelineDock->setWidget(m_timeline);
+    addDockWidget(Qt::BottomDockWidgetArea, m_timelineDock);
+    m_timelineDock->hide(); // shown while an animation is open
+
+    m_segmentation = new SegmentationPanel;
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(m_segmentation);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    m_segmentationDock = new QDockWidget(tr("Segmentation"), this);
+    m_segmentationDock->setObjectName(QStringLiteral("segmentationDock"));
+    m_segmentationDock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
+    m_segmentationDock->setWidget(scroll);
+    addDockWidget(Qt::RightDockWidgetArea, m_segmentationDock);
+    tabifyDockWidget(m_dock, m_segmentationDock);
+    m_dock->raise();
+}
+
 void MainWindow::createFileMenu()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -165,6 +199,10 @@ void MainWindow::createFileMenu()
         action->setStatusTip(QString::fromStdString(std::string(demoSceneDescription(name))));
     }
     m_recentMenu = file->addMenu(tr("Open &Recent"));
+    file->addSeparator();
+    QAction* openAnimation = file->addAction(tr("Open &Animation…"), this, &MainWindow::showOpenAnimationDialog);
+    openAnimation->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
+    m_recentAnimationMenu = file->addMenu(tr("Open Recent A&nimation"));
     file->addSeparator();
     QAction* exportImage = file->addAction(tr("&Export Image…"), this, &MainWindow::showExportDialog);
     exportImage->setShortcut(QKeySequence(tr("Ctrl+E")));
@@ -192,6 +230,24 @@ void MainWindow::rebuildRecentMenu()
     });
 }
 
+void MainWindow::rebuildRecentAnimationMenu()
+{
+    m_recentAnimationMenu->clear();
+    for (const QString& path : m_recentAnimations.paths())
+        m_recentAnimationMenu->addAction(path, this, [this, path] { openRecentAnimation(path); });
+    if (m_recentAnimations.paths().isEmpty()) {
+        m_recentAnimationMenu->addAction(tr("(none)"))->setEnabled(false);
+        return;
+    }
+    m_recentAnimationMenu->addSeparator();
+    m_recentAnimationMenu->addAction(tr("Clear List"), this, [this] {
+        for (const QString& path : m_recentAnimations.paths())
+            m_recentAnimations.remove(path);
+        m_recentAnimations.save(*m_settings);
+        rebuildRecentAnimationMenu();
+    });
+}
+
 void MainWindow::createViewMenu()
 {
     m_viewMenu = menuBar()->addMenu(tr("&View"));
@@ -211,6 +267,12 @@ void MainWindow::createViewMenu()
     QAction* statistics = m_statsDock->toggleViewAction();
     statistics->setText(tr("Frame &Statistics"));
     m_viewMenu->addAction(statistics);
+    QAction* segmentation = m_segmentationDock->toggleViewAction();
+    segmentation->setText(tr("Se&gmentation Panel"));
+    m_viewMenu->addAction(segmentation);
+    QAction* timeline = m_timelineDock->toggleViewAction();
+    timeline->setText(tr("&Timeline"));
+    m_viewMenu->addAction(timeline);
 }
 
 void MainWindow::createHelpMenu()
@@ -241,10 +303,36 @@ void MainWindow::connectParts()
     connect(m_viewport, &ViewportWidget::renderError, this, &MainWindow::onRenderError, Qt::QueuedConnection);
 }
 
+void MainWindow::connectAnimationParts()
+{
+    connect(m_animationOpener, &AnimationOpener::loaded, this, &MainWindow::onAnimationLoaded);
+    connect(m_animationOpener, &AnimationOpener::failed, this, &MainWindow::onLoadFailed);
+    connect(m_animationOpener, &AnimationOpener::canceled, this, [this](const QString& source) {
+        statusBar()->showMessage(tr("Opening %1 canceled.").arg(sceneLabel(source)), kStatusMessageMs);
+    });
+    connect(m_timeline, &TimelinePanel::poseChanged, this, &MainWindow::showPose);
+    connect(m_timeline, &TimelinePanel::playbackChoicesChanged, this, [this] {
+        savePlaybackChoices(*m_settings, {m_timeline->fps(), m_timeline->loops()});
+    });
+    connect(m_segmentation, &SegmentationPanel::displayColorsChanged, this, &MainWindow::showSegmentColors);
+    connect(m_segmentation, &SegmentationPanel::choicesChanged, this,
+            [this] { saveSegmentationChoices(*m_settings, m_segmentation->choices()); });
+    connect(m_segmentation, &SegmentationPanel::streamStarted, this, [this] {
+        m_timeline->setPose(0);
+        m_timeline->play();
+    });
+    connect(m_segmentation, &SegmentationPanel::exportRequested, this, &MainWindow::showExportSegmentationDialog);
+}
+
 void MainWindow::restoreSettings()
 {
     m_recent.load(*m_settings);
     rebuildRecentMenu();
+    m_recentAnimations.load(*m_settings);
+    rebuildRecentAnimationMenu();
+    m_segmentation->setChoices(loadSegmentationChoices(*m_settings));
+    const PlaybackChoices playback = loadPlaybackChoices(*m_settings);
+    m_timeline->setPlaybackChoices(playback.fps, playback.loop);
     m_panel->setRenderChoices(loadRenderChoices(*m_settings));
     applyRenderChoices();
     if (!restoreGeometry(m_settings->value(kGeometryKey).toByteArray()))
@@ -253,6 +341,7 @@ void MainWindow::restoreSettings()
         resizeDocks({m_dock}, {380}, Qt::Horizontal);
         resizeDocks({m_dock, m_statsDock}, {440, 300}, Qt::Vertical); // the Render panel is the taller
     }
+    m_timelineDock->hide(); // until an animation is opened
 }
 
 void MainWindow::saveWindowState()
@@ -271,8 +360,17 @@ void MainWindow::closeEvent(QCloseEvent* event)
 void MainWindow::openSource(const QString& source)
 {
     m_openRequested = true;
+    m_animationOpener->cancel(); // the newest request wins
     statusBar()->showMessage(tr("Opening %1…").arg(sceneLabel(source)));
     m_loader->load(source);
+}
+
+void MainWindow::openAnimation(const QString& source)
+{
+    m_openRequested = true;
+    m_loader->cancel(); // the newest request wins
+    statusBar()->showMessage(tr("Opening animation %1…").arg(sceneLabel(source)));
+    m_animationOpener->open(source);
 }
 
 void MainWindow::openDefaultIfNothingRequested()
@@ -283,7 +381,7 @@ void MainWindow::openDefaultIfNothingRequested()
 
 bool MainWindow::isLoading() const
 {
-    return m_loader->isLoading();
+    return m_loader->isLoading() || m_animationOpener->isLoading();
 }
 
 void MainWindow::openRecent(const QString& path)
@@ -299,6 +397,32 @@ void MainWindow::openRecent(const QString& path)
                 tr("It was removed from the recent files."));
 }
 
+void MainWindow::openRecentAnimation(const QString& path)
+{
+    // A pattern (dir/mesh_*.obj, dir/mesh_%04d.obj) is not a file; its folder must exist.
+    const QFileInfo info(path);
+    const bool pattern = path.contains(QRegularExpression(QStringLiteral("[*?%]")));
+    if (info.exists() || (pattern && info.dir().exists())) {
+        openAnimation(path);
+        return;
+    }
+    m_recentAnimations.remove(path);
+    m_recentAnimations.save(*m_settings);
+    rebuildRecentAnimationMenu();
+    showMessage(QMessageBox::Warning, tr("Animation not found"), tr("“%1” no longer exists.").arg(path),
+                tr("It was removed from the recent animations."));
+}
+
+void MainWindow::showOpenAnimationDialog()
+{
+    const QString source = OpenAnimationDialog::getSource(this, loadLastDirectory(*m_settings));
+    if (source.isEmpty())
+        return;
+    const QFileInfo info(source);
+    saveLastDirectory(*m_settings, info.isDir() ? info.absoluteFilePath() : info.absolutePath());
+    openAnimation(source);
+}
+
 void MainWindow::showOpenDialog()
 {
     const QString path =
@@ -311,25 +435,85 @@ void MainWindow::showOpenDialog()
 
 void MainWindow::onSceneLoaded(std::shared_ptr<const LoadedScene> loaded)
 {
-    m_scene = std::move(loaded);
+    clearAnimation();
+    const Bounds bounds = loaded->scene.worldBounds();
+    showScene(std::move(loaded), bounds);
     const QString source = QString::fromStdString(m_scene->source);
-    const bool trimmable = m_scene->trimmable();
-    m_panel->setSceneInfo(m_scene->scene.worldBounds(), trimmable,
-                          QString::fromStdString(m_scene->trimUnavailableReason()));
-    m_viewport->setScene(std::shared_ptr<const Scene>(m_scene, &m_scene->scene));
-    applyRenderChoices();
     if (!isDemoSource(m_scene->source)) {
         m_recent.add(source);
         m_recent.save(*m_settings);
         rebuildRecentMenu();
     }
-    updateTitle();
     statusBar()->showMessage(tr("%1: %2 triangles%3")
                                  .arg(QString::fromStdString(m_scene->displayName))
                                  .arg(m_scene->scene.triangleCount())
-                                 .arg(trimmable ? QString() : tr(" — trim modes unavailable")),
+                                 .arg(m_scene->trimmable() ? QString() : tr(" — trim modes unavailable")),
                              kStatusMessageMs);
     emit sceneLoaded(source);
+}
+
+void MainWindow::onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loaded)
+{
+    m_animation = std::move(loaded);
+    showScene(m_animation->restScene, m_animation->bounds);
+    m_viewport->setViewBounds(m_animation->bounds); // no pose may cross the far plane
+    const MeshAnimation& animation = *m_animation->animation;
+    QStringList names;
+    for (std::size_t pose = 0; pose < animation.poseCount(); ++pose)
+        names << (pose < animation.poseNames.size() ? QString::fromStdString(animation.poseNames[pose])
+                                                    : tr("pose %1").arg(pose));
+    m_timeline->setPoses(names);
+    m_segmentation->setAnimation(m_animation);
+    m_timelineDock->show();
+    m_segmentationDock->show();
+    m_segmentationDock->raise();
+    const QString source = QString::fromStdString(m_scene->source);
+    m_recentAnimations.add(source);
+    m_recentAnimations.save(*m_settings);
+    rebuildRecentAnimationMenu();
+    statusBar()->showMessage(tr("%1: %2 poses, %3 vertices, %4 triangles%5")
+                                 .arg(QString::fromStdString(m_scene->displayName))
+                                 .arg(animation.poseCount())
+                                 .arg(animation.vertexCount())
+                                 .arg(animation.triangleCount())
+                                 .arg(m_scene->trimmable() ? QString() : tr(" — trim modes unavailable")),
+                             kStatusMessageMs);
+    emit animationLoaded(source);
+}
+
+// What a mesh and an animation's rest pose share: the scene, the trim controls (with
+// `bounds` for the clip offset) and the title.
+void MainWindow::showScene(std::shared_ptr<const LoadedScene> loaded, const Bounds& bounds)
+{
+    m_scene = std::move(loaded);
+    m_panel->setSceneInfo(bounds, m_scene->trimmable(), QString::fromStdString(m_scene->trimUnavailableReason()));
+    m_viewport->setScene(std::shared_ptr<const Scene>(m_scene, &m_scene->scene));
+    applyRenderChoices();
+    updateTitle();
+}
+
+void MainWindow::clearAnimation()
+{
+    if (!m_animation)
+        return;
+    m_animation.reset();
+    m_timeline->setPoses({});
+    m_segmentation->setAnimation(nullptr);
+    m_timelineDock->hide();
+}
+
+void MainWindow::showPose(int pose)
+{
+    if (!m_animation || pose < 0 || std::size_t(pose) >= m_animation->animation->poseCount())
+        return;
+    m_viewport->showPose(m_animation->animation->poses[std::size_t(pose)]);
+    m_segmentation->setCurrentPose(pose);
+}
+
+void MainWindow::showSegmentColors()
+{
+    if (m_animation)
+        m_viewport->setVertexColors(m_segmentation->displayColors());
 }
 
 void MainWindow::onLoadFailed(const QString& source, const QString& message)
@@ -421,6 +605,29 @@ void MainWindow::showExportDialog()
         showMessage(QMessageBox::Warning, tr("Export Image"), tr("The image was not saved."), error);
 }
 
+void MainWindow::showExportSegmentationDialog()
+{
+    const QStringList filters{tr("Segmentation JSON (*.json)"), tr("Per-vertex labels CSV (*.csv)"),
+                              tr("glTF with segment colors (*.gltf)")};
+    const QString name = m_scene ? QFileInfo(QString::fromStdString(m_scene->displayName)).completeBaseName()
+                                 : QStringLiteral("animation");
+    const QString suggested = loadLastDirectory(*m_settings) + QLatin1Char('/') + name + QStringLiteral("-segments.json");
+    QString filter = filters.front();
+    QString path = QFileDialog::getSaveFileName(this, tr("Export Segmentation"), suggested,
+                                                filters.join(QStringLiteral(";;")), &filter);
+    if (path.isEmpty())
+        return;
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix != QStringLiteral("json") && suffix != QStringLiteral("csv") && suffix != QStringLiteral("gltf"))
+        path += QRegularExpression(QStringLiteral("\\*(\\.\\w+)")).match(filter).captured(1);
+    saveLastDirectory(*m_settings, QFileInfo(path).absolutePath());
+    QString error;
+    if (m_segmentation->exportSegmentation(path, &error))
+        statusBar()->showMessage(tr("Saved %1").arg(path), kStatusMessageMs);
+    else
+        showMessage(QMessageBox::Warning, tr("Export Segmentation"), tr("The segmentation was not saved."), error);
+}
+
 void MainWindow::showAbout()
 {
     const auto caps = m_viewport->capabilities();
@@ -455,13 +662,17 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* event)
         event->acceptProposedAction();
 }
 
+// A dropped folder is a mesh animation (a sequence of pose files); a dropped file a mesh.
 void MainWindow::dropEvent(QDropEvent* event)
 {
     const QString path = firstLocalFile(event->mimeData());
     if (path.isEmpty())
         return;
     event->acceptProposedAction();
-    openSource(path);
+    if (QFileInfo(path).isDir())
+        openAnimation(path);
+    else
+        openSource(path);
 }
 
 } // namespace trimlab::ui

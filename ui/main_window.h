@@ -2,19 +2,27 @@
 /// \file
 /// TrimLab's main window: the viewport in the centre, the Render panel in a dock, the
 /// frame statistics in a second dock ("Frame statistics": the last frame's numbers,
-/// overflow advice, and the per-method frame-time chart) and in the status bar, and the
-/// File / View / Help menus.
+/// overflow advice, and the per-method frame-time chart) and in the status bar, the
+/// Segmentation panel (tabbed with the Render panel) and the Timeline (at the bottom,
+/// shown while an animation is open), and the File / View / Help menus.
 ///
-/// Every way of opening a scene — File ▸ Open…, Open Demo, Open Recent, drag and drop,
-/// the command line — goes through openSource(), which loads off the UI thread
-/// (SceneLoader). A failed load shows a dialog naming the file and the reason and keeps
-/// the current scene. If nothing was opened by the time the event loop first runs, the
-/// window opens defaultSource().
+/// Every way of opening a scene — File ▸ Open…, Open Demo, Open Recent, drag and drop of
+/// a file, the command line — goes through openSource(), which loads off the UI thread
+/// (SceneLoader). Every way of opening a mesh animation — File ▸ Open Animation…, Open
+/// Recent Animation, drag and drop of a folder — goes through openAnimation()
+/// (AnimationOpener: progress and cancel). The animation's rest pose then is the scene
+/// (one object; the trim controls apply as for a mesh), the Timeline plays its poses in
+/// the viewport and the Segmentation panel segments it and colors it by segment. A
+/// failed load shows a dialog naming the file and the reason and keeps the current scene
+/// or animation. If nothing was opened by the time the event loop first runs, the window
+/// opens defaultSource().
 ///
-/// Settings (render choices, recent files, last directory, window geometry and dock
-/// state) persist in a QSettings: the user's (organization and application "TrimLab"),
-/// or an INI file given to the constructor, so tests never touch the user's settings.
-/// Without saved settings the window starts with firstStartRenderChoices().
+/// Settings (render choices, segmentation choices, playback, recent files and recent
+/// animations — two lists, since an animation is a folder or pattern as often as a
+/// file —, last directory, window geometry and dock state) persist in a QSettings: the
+/// user's (organization and application "TrimLab"), or an INI file given to the
+/// constructor, so tests never touch the user's settings. Without saved settings the
+/// window starts with firstStartRenderChoices().
 
 #include "mfr/fragment_method.h"
 #include "recent_files.h"
@@ -32,12 +40,16 @@ class QSettings;
 
 namespace trimlab::ui {
 
+class AnimationOpener;
 class FrameStatsLabels;
 class FrameStatsPanel;
 class MethodTimingPanel;
 class RenderPanel;
 class SceneLoader;
+class SegmentationPanel;
+class TimelinePanel;
 class ViewportWidget;
+struct LoadedAnimation;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -55,10 +67,16 @@ public:
     /// arrives as sceneLoaded() or sceneLoadFailed() (with its dialog); a newer call or
     /// Cancel in the progress dialog discards a pending load.
     void openSource(const QString& source);
+    /// Opens the mesh animation `source` — a folder, a pattern (dir/mesh_*.obj,
+    /// dir/mesh_%04d.obj.gz) or a .gltf/.glb file — asynchronously, with progress and
+    /// cancel. The result arrives as animationLoaded() or sceneLoadFailed() (with its
+    /// dialog); a newer openSource()/openAnimation() or Cancel discards a pending one.
+    void openAnimation(const QString& source);
     /// Writes the viewport's last frame (color, at the frame's pixel size) as a PNG file.
     /// Returns false with the reason in `error` when there is no frame or writing fails.
     bool exportImage(const QString& path, QString* error = nullptr);
 
+    /// True while a scene or an animation is being opened.
     [[nodiscard]] bool isLoading() const;
     /// The scene shown (nullptr before the first successful load).
     [[nodiscard]] std::shared_ptr<const LoadedScene> scene() const { return m_scene; }
@@ -68,11 +86,21 @@ public:
     [[nodiscard]] MethodTimingPanel* methodTimingPanel() const { return m_timingPanel; }
     [[nodiscard]] SceneLoader* sceneLoader() const { return m_loader; }
     [[nodiscard]] QStringList recentFiles() const { return m_recent.paths(); }
+    /// The open animation (nullptr while a mesh or demo is shown).
+    [[nodiscard]] std::shared_ptr<const LoadedAnimation> animation() const { return m_animation; }
+    [[nodiscard]] AnimationOpener* animationOpener() const { return m_animationOpener; }
+    [[nodiscard]] TimelinePanel* timelinePanel() const { return m_timeline; }
+    [[nodiscard]] SegmentationPanel* segmentationPanel() const { return m_segmentation; }
+    [[nodiscard]] QStringList recentAnimations() const { return m_recentAnimations.paths(); }
 
 signals:
     /// A scene is shown; `source` as given to openSource().
     void sceneLoaded(const QString& source);
-    /// Loading `source` failed with `message`; the previous scene is still shown.
+    /// An animation is shown (its rest pose as the scene); `source` as given to
+    /// openAnimation().
+    void animationLoaded(const QString& source);
+    /// Loading `source` (a scene or an animation) failed with `message`; the previous
+    /// scene or animation is still shown.
     void sceneLoadFailed(const QString& source, const QString& message);
 
 protected:
@@ -86,11 +114,14 @@ private:
     void createCentralView();
     void createDock();
     void createStatsDock();
+    void createAnimationDocks();
     void createFileMenu();
     void createViewMenu();
     void createHelpMenu();
     void rebuildRecentMenu();
+    void rebuildRecentAnimationMenu();
     void connectParts();
+    void connectAnimationParts();
     void restoreSettings();
     void saveWindowState();
 
@@ -98,8 +129,16 @@ private:
     void showExportDialog();
     void showAbout();
     void openRecent(const QString& path);
+    void showOpenAnimationDialog();
+    void openRecentAnimation(const QString& path);
+    void showExportSegmentationDialog();
     void openDefaultIfNothingRequested();
     void onSceneLoaded(std::shared_ptr<const LoadedScene> loaded);
+    void onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loaded);
+    void showScene(std::shared_ptr<const LoadedScene> loaded, const Bounds& bounds);
+    void clearAnimation();
+    void showPose(int pose);
+    void showSegmentColors();
     void onLoadFailed(const QString& source, const QString& message);
     void onRenderError(const QString& message);
     void applyRenderChoices();
@@ -121,10 +160,18 @@ private:
     QDockWidget* m_statsDock = nullptr;
     FrameStatsLabels* m_statsLabels = nullptr;
     SceneLoader* m_loader = nullptr;
+    AnimationOpener* m_animationOpener = nullptr;
+    TimelinePanel* m_timeline = nullptr;
+    QDockWidget* m_timelineDock = nullptr;
+    SegmentationPanel* m_segmentation = nullptr;
+    QDockWidget* m_segmentationDock = nullptr;
     QMenu* m_recentMenu = nullptr;
+    QMenu* m_recentAnimationMenu = nullptr;
     QMenu* m_viewMenu = nullptr;
     RecentFiles m_recent;
+    RecentFiles m_recentAnimations{QStringLiteral("recentAnimations")};
     std::shared_ptr<const LoadedScene> m_scene;
+    std::shared_ptr<const LoadedAnimation> m_animation;
     bool m_openRequested = false;
 };
 

@@ -10,8 +10,6 @@ namespace trimlab::ui {
 
 namespace {
 
-const QString kRecentFilesKey = QStringLiteral("recentFiles");
-
 QString normalised(const QString& path)
 {
     return QDir::cleanPath(QFileInfo(path).absoluteFilePath());
@@ -26,7 +24,7 @@ bool listable(const QString& path)
 
 void RecentFiles::load(const QSettings& settings)
 {
-    const QStringList stored = settings.value(kRecentFilesKey).toStringList();
+    const QStringList stored = settings.value(m_key).toStringList();
     m_paths.clear();
     // Oldest first, so that the newest ends up in front.
     for (auto it = stored.crbegin(); it != stored.crend(); ++it)
@@ -35,7 +33,7 @@ void RecentFiles::load(const QSettings& settings)
 
 void RecentFiles::save(QSettings& settings) const
 {
-    settings.setValue(kRecentFilesKey, m_paths);
+    settings.setValue(m_key, m_paths);
 }
 
 void RecentFiles::add(const QString& path)

@@ -2,9 +2,13 @@
 /// \file
 /// The list behind File ▸ Open Recent: the most recently opened mesh files, newest first,
 /// as absolute clean paths, without duplicates, at most kMaxEntries. Demo scenes are not
-/// files and are never listed.
+/// files and are never listed. The same class keeps File ▸ Open Recent Animation under
+/// another settings key (animations are folders and patterns as well as files).
 
+#include <QString>
 #include <QStringList>
+
+#include <utility>
 
 class QSettings;
 
@@ -13,6 +17,9 @@ namespace trimlab::ui {
 class RecentFiles {
 public:
     static constexpr int kMaxEntries = 10;
+
+    /// `settingsKey`: where load() and save() keep the list.
+    explicit RecentFiles(QString settingsKey = QStringLiteral("recentFiles")) : m_key(std::move(settingsKey)) {}
 
     /// Replaces the list with the one stored in `settings` (normalised as add() would).
     void load(const QSettings& settings);
@@ -27,6 +34,7 @@ public:
     [[nodiscard]] const QStringList& paths() const { return m_paths; }
 
 private:
+    QString m_key;
     QStringList m_paths;
 };
 

@@ -2,6 +2,7 @@
 
 #include "gl/gl_error.h"
 #include "gl/offscreen_gl_context.h"
+#include "gpu_scene.h"
 #include "mfr/fragment_method.h"
 #include "trim/trim_shading.h"
 
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace trimlab::ui {
 
@@ -48,7 +50,61 @@ void ViewportWidget::setScene(std::shared_ptr<const Scene> scene)
     m_sceneUploaded = false;
     m_resetPending = true;
     m_lastFrame.reset();
+    m_pose.clear();
+    m_vertexColors.clear();
     update();
+}
+
+void ViewportWidget::setViewBounds(const Bounds& bounds)
+{
+    m_orbit.setSceneBounds(bounds);
+    update();
+}
+
+void ViewportWidget::showPose(const std::vector<glm::vec3>& positions)
+{
+    const std::size_t expected = m_scene && !m_scene->objects.empty() ? m_scene->objects.front().mesh.vertexCount() : 0;
+    if (positions.size() != expected || expected == 0)
+        throw std::invalid_argument("showPose: the scene's first object has " + std::to_string(expected) +
+                                    " vertices, the pose " + std::to_string(positions.size()) + ".");
+    m_pose = positions;
+    m_poseDirty = true;
+    update();
+}
+
+void ViewportWidget::setVertexColors(std::vector<std::uint32_t> rgba8)
+{
+    std::size_t vertices = 0;
+    if (m_scene)
+        for (const SceneObject& object : m_scene->objects)
+            vertices += object.mesh.vertexCount();
+    if (!rgba8.empty() && rgba8.size() != vertices)
+        throw std::invalid_argument("setVertexColors: the scene has " + std::to_string(vertices) + " vertices, got " +
+                                    std::to_string(rgba8.size()) + " colors.");
+    m_vertexColors = std::move(rgba8);
+    m_colorsDirty = true;
+    update();
+}
+
+// Brings the renderer's scene buffers up to date: the scene itself after setScene() or a
+// new context, then the pose and colors when they changed or the scene was re-uploaded.
+// The context must be current.
+void ViewportWidget::syncGpuScene()
+{
+    if (!m_sceneUploaded) {
+        m_renderer->setScene(*m_scene);
+        m_sceneUploaded = true;
+        m_poseDirty = !m_pose.empty();
+        m_colorsDirty = !m_vertexColors.empty();
+    }
+    if (m_poseDirty) {
+        m_renderer->gpuScene().updatePositions(0, m_pose);
+        m_poseDirty = false;
+    }
+    if (m_colorsDirty) {
+        m_renderer->gpuScene().setVertexColors(m_vertexColors);
+        m_colorsDirty = false;
+    }
 }
 
 void ViewportWidget::setTrimSettings(const TrimSettings& settings)
@@ -128,10 +184,7 @@ MethodMeasurement ViewportWidget::measureMethod(render::FragmentMethodKind metho
 
 void ViewportWidget::runMeasurement(render::FragmentMethodKind method, int frames, MethodMeasurement& result)
 {
-    if (!m_sceneUploaded) {
-        m_renderer->setScene(*m_scene);
-        m_sceneUploaded = true;
-    }
+    syncGpuScene();
     applyPendingReset();
     const QSize size = framePixelSize();
     const Camera camera = m_orbit.camera();
@@ -301,10 +354,7 @@ void ViewportWidget::paintGL()
 void ViewportWidget::renderFrame()
 {
     const QSize size = framePixelSize();
-    if (!m_sceneUploaded) {
-        m_renderer->setScene(*m_scene);
-        m_sceneUploaded = true;
-    }
+    syncGpuScene();
     applyPendingReset();
     m_renderer->setMethod(m_method);
     m_renderer->setParameters(m_parameters);

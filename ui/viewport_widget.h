@@ -8,6 +8,10 @@
 /// dollies toward the target (Ctrl + wheel toward the point under the cursor), a double
 /// click fits the scene. Keys: F fits the scene.
 ///
+/// For mesh animations the window passes the pose to show (showPose: object 0's positions,
+/// uploaded at the next frame), per-vertex colors such as a segmentation's
+/// (setVertexColors) and the bounds of all poses (setViewBounds).
+///
 /// OpenGL failures (no 4.3 context, a shader that does not build, too little GPU memory)
 /// never crash and never leave a silent black view: the message is painted into the view
 /// and emitted once through renderError().
@@ -24,6 +28,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace trimlab::ui {
 
@@ -54,8 +59,25 @@ public:
     ~ViewportWidget() override;
 
     /// Shows `scene` (nullptr: an empty view). The view is reset (reset view) on the next
-    /// frame, when the widget's final size is known.
+    /// frame, when the widget's final size is known. Clears the pose and vertex colors
+    /// below, and the view bounds become the scene's bounds.
     void setScene(std::shared_ptr<const Scene> scene);
+    /// The box the camera's depth range must enclose and Fit frames (default: the
+    /// scene's world bounds). An animation passes the bounds of all its poses, so that no
+    /// pose reaches past the far plane. Re-renders; the camera itself is not moved.
+    void setViewBounds(const Bounds& bounds);
+    /// Shows object 0 of the scene at `positions` (an animation pose: #V positions in
+    /// object space, same vertex count and triangles as the scene's object 0) from the
+    /// next frame on, with normals recomputed (GpuScene::updatePositions); the Scene
+    /// itself is not changed. Kept across GL context re-creation until setScene().
+    /// Throws std::invalid_argument on a vertex count mismatch or without a scene.
+    void showPose(const std::vector<glm::vec3>& positions);
+    /// Per-vertex colors (one per vertex of the scene, objects in order; RGBA8 with red in
+    /// the lowest byte, as GLSL's unpackUnorm4x8 reads them) shown instead of the trim
+    /// palette from the next frame on; empty: back to the trim palette. Kept until
+    /// setScene(). Throws std::invalid_argument on a count mismatch.
+    void setVertexColors(std::vector<std::uint32_t> rgba8);
+    [[nodiscard]] bool showsVertexColors() const { return !m_vertexColors.empty(); }
     /// The settings to render with. The caller passes trimEnabled = false for scenes that
     /// are not trimmable.
     void setTrimSettings(const TrimSettings& settings);
@@ -136,6 +158,7 @@ private:
     enum class Drag { None, Orbit, Pan };
 
     void releaseGl();
+    void syncGpuScene();
     void applyPendingReset();
     void renderFrame();
     void applyMethod();
@@ -154,6 +177,10 @@ private:
     render::FragmentMethodKind m_method = render::FragmentMethodKind::KPlusArray;
     render::MethodParameters m_parameters;
     bool m_sceneUploaded = false;
+    std::vector<glm::vec3> m_pose;              ///< object 0's positions; empty: the scene's
+    std::vector<std::uint32_t> m_vertexColors; ///< empty: the trim palette
+    bool m_poseDirty = false;
+    bool m_colorsDirty = false;
     bool m_resetPending = false;
     std::optional<ViewportFrame> m_lastFrame;
     QString m_error;

@@ -28,6 +28,7 @@ target_sources(trimlab_core PRIVATE
   animation/segmentation_combination.cpp
   animation/segmentation_export.cpp
   animation/segmentation_gltf.cpp
+  animation/segmentation_record.cpp
   animation/sequence_files.cpp
   animation/sequence_loader.cpp
   animation/task_control.cpp
