@@ -15,6 +15,7 @@
 #include "gl/gl_objects.h"
 #include "mfr/fragment_method.h"
 #include "mfr/pixel_state.h"
+#include "mfr/slot_array.h"
 
 namespace trimlab::render {
 
@@ -30,19 +31,13 @@ public:
     /// Fragments held per pixel, min(f(p), k), and the pixels that lost fragments.
     [[nodiscard]] std::optional<PixelOccupancy> readOccupancy() override;
 
-    [[nodiscard]] static std::size_t requiredBytes(int width, int height, int k);
-
 private:
-    void allocate(int width, int height, int k);
     void storePass(TrimFrame& frame);
     void resolvePass(TrimFrame& frame);
 
     GlFunctions& m_gl;
     PixelState m_state;
-    GlTexture m_fragments;
-    int m_width = 0;
-    int m_height = 0;
-    int m_k = 0;
+    SlotArray m_slots;
     MethodStats m_stats;
 };
 

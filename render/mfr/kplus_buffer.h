@@ -11,6 +11,7 @@
 #include "gl/gl_objects.h"
 #include "mfr/fragment_method.h"
 #include "mfr/pixel_state.h"
+#include "mfr/slot_array.h"
 
 #include <QStringList>
 
@@ -43,21 +44,14 @@ public:
 
     /// Per-pixel fragments held (≤ k) and overflow flags of the last frame.
     [[nodiscard]] std::optional<PixelOccupancy> readOccupancy() override { return m_state.readOccupancy(); }
-    [[nodiscard]] static std::size_t requiredBytes(int width, int height, int k);
-
 private:
-    void allocate(int width, int height, int k);
-    void bindFragments();
     void storePass(TrimFrame& frame, KPlusLock lock);
     void resolvePass(TrimFrame& frame);
 
     GlFunctions& m_gl;
     bool m_heap;
     PixelState m_state;
-    GlTexture m_fragments;
-    int m_width = 0;
-    int m_height = 0;
-    int m_k = 0;
+    SlotArray m_slots;
     MethodStats m_stats;
 };
 

@@ -35,9 +35,9 @@ std::vector<std::uint32_t> readImageTopDown(GlFunctions& gl, GLuint texture, int
 
 PixelState::PixelState(GlFunctions& gl) : m_gl(gl) {}
 
-std::size_t PixelState::memoryBytes() const
+std::size_t PixelState::bytesFor(int width, int height)
 {
-    return std::size_t(m_width) * std::size_t(m_height) * kBytesPerPixel;
+    return std::size_t(width) * std::size_t(height) * kBytesPerPixel;
 }
 
 void PixelState::allocate(int width, int height)

@@ -37,7 +37,8 @@ public:
     [[nodiscard]] PixelOccupancy readOccupancy();
 
     [[nodiscard]] GLuint counterTexture() const { return m_counter.id(); }
-    [[nodiscard]] std::size_t memoryBytes() const;
+    [[nodiscard]] std::size_t memoryBytes() const { return bytesFor(m_width, m_height); }
+    [[nodiscard]] static std::size_t bytesFor(int width, int height);
     [[nodiscard]] int width() const { return m_width; }
     [[nodiscard]] int height() const { return m_height; }
 

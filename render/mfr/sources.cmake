@@ -3,6 +3,7 @@ target_sources(trimlab_render PRIVATE
   mfr/fragment_method.cpp
   mfr/method_factory.cpp
   mfr/pixel_state.cpp
+  mfr/slot_array.cpp
   mfr/kplus_buffer.cpp
   # buffer methods (S-buffer, K+B-SB, AB_FP, AB_LL)
   mfr/node_buffer.cpp
