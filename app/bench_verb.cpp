@@ -5,7 +5,7 @@
 #include "bench_runner.h"
 #include "bench_table.h"
 #include "cli_messages.h"
-#include "render_verb.h"
+#include "display_available.h"
 
 #include "gl/offscreen_gl_context.h"
 #include "trim_renderer.h"
@@ -102,15 +102,9 @@ int runBenchVerb(int argc, char** argv, const QStringList& arguments)
 {
     QString help;
     auto parsed = parseBenchOptions(arguments, &help);
-    if (auto* error = std::get_if<QString>(&parsed)) {
-        if (!help.isEmpty()) {
-            printLine(help);
-            return 0;
-        }
-        printError(*error);
-        return 2;
-    }
-    if (!hasDisplay()) {
+    if (const std::optional<int> exitCode = exitIfNotParsed(parsed, help))
+        return *exitCode;
+    if (!displayAvailable()) {
         printError("bench needs OpenGL and therefore a display; run it under 'xvfb-run -a'");
         return 1;
     }

@@ -8,6 +8,8 @@
 class QCommandLineParser;
 
 #include <functional>
+#include <optional>
+#include <variant>
 
 namespace trimlab::app {
 
@@ -20,6 +22,22 @@ void printNote(const QString& text);
 /// The parser's help text with its usage line naming the verb ("Usage: trimlab render
 /// [options] source") instead of whatever argv[0] was.
 [[nodiscard]] QString verbHelpText(const QCommandLineParser& parser, const QString& verb);
+
+/// For a verb's parsed arguments: prints the help (exit code 0) or the one-line error
+/// (exit code 2) when the arguments gave no options; nullopt when they did.
+template <class Options>
+[[nodiscard]] std::optional<int> exitIfNotParsed(const std::variant<Options, QString>& parsed, const QString& help)
+{
+    const QString* error = std::get_if<QString>(&parsed);
+    if (!error)
+        return std::nullopt;
+    if (!help.isEmpty()) {
+        printLine(help);
+        return 0;
+    }
+    printError(*error);
+    return 2;
+}
 
 /// Runs `body`; an exception becomes a one-line error and exit code 1.
 int runGuarded(const std::function<int()>& body);

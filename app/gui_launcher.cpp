@@ -1,6 +1,7 @@
 #include "gui_launcher.h"
 
 #include "cli_messages.h"
+#include "display_available.h"
 
 #include "gl/offscreen_gl_context.h"
 #include "main_window.h"
@@ -8,13 +9,12 @@
 #include <QApplication>
 #include <QSurfaceFormat>
 
-#include <cstdlib>
 
 namespace trimlab::app {
 
 int runGui(int argc, char** argv)
 {
-    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY") && !std::getenv("QT_QPA_PLATFORM")) {
+    if (!displayAvailable()) {
         printError("the GUI needs a display; for a headless image use: xvfb-run -a trimlab render demo:pushed-sphere -o out.png");
         return 1;
     }

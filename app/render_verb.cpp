@@ -1,6 +1,7 @@
 #include "render_verb.h"
 
 #include "cli_messages.h"
+#include "display_available.h"
 #include "render_options.h"
 #include "trim_exports.h"
 
@@ -186,30 +187,16 @@ int renderLoaded(RenderOptions options)
 
 } // namespace
 
-bool hasDisplay()
-{
-    const char* platform = std::getenv("QT_QPA_PLATFORM");
-    const char* display = std::getenv("DISPLAY");
-    const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    return (platform && *platform) || (display && *display) || (wayland && *wayland);
-}
-
 int runRenderVerb(int argc, char** argv, const QStringList& arguments)
 {
     QString help;
     auto parsed = parseRenderOptions(arguments, &help);
-    if (auto* error = std::get_if<QString>(&parsed)) {
-        if (!help.isEmpty()) {
-            printLine(help);
-            return 0;
-        }
-        printError(*error);
-        return 2;
-    }
+    if (const std::optional<int> exitCode = exitIfNotParsed(parsed, help))
+        return *exitCode;
     const RenderOptions& options = std::get<RenderOptions>(parsed);
     std::unique_ptr<QCoreApplication> application;
     if (options.backend == Backend::KPlus) {
-        if (!hasDisplay()) {
+        if (!displayAvailable()) {
             printError("the OpenGL backend needs a display; run under 'xvfb-run -a' or use --backend reference");
             return 1;
         }

@@ -8,10 +8,6 @@
 
 namespace trimlab::app {
 
-/// True when Qt can reach a display (or a platform was chosen): the OpenGL verbs need one
-/// for their offscreen context (on Linux without a GPU, run them under xvfb-run -a).
-[[nodiscard]] bool hasDisplay();
-
 /// Runs the verb on the arguments after "render"; returns the process exit code
 /// (0 success, 1 failed load/render/write, 2 bad arguments). Creates the Qt application
 /// object it needs itself (a GUI one only for the OpenGL backend).
