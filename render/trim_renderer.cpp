@@ -10,6 +10,7 @@
 #include <QElapsedTimer>
 #include <QOpenGLContext>
 
+#include <stdexcept>
 #include <string>
 
 namespace trimlab::render {
@@ -84,14 +85,31 @@ std::optional<std::size_t> TrimRenderer::estimateMethodBytes(int width, int heig
 
 void TrimRenderer::render(const Camera& camera, const TrimSettings& settings, int width, int height)
 {
+    render(*m_scene, TrimMode{}, camera, settings, width, height);
+}
+
+void TrimRenderer::render(GpuScene& scene, const TrimMode& mode, const Camera& camera, const TrimSettings& settings,
+                          int width, int height)
+{
+    const MethodInfo& info = methodInfo(m_method->kind());
+    if (mode.dynamic && !info.dynamicRules)
+        throw std::invalid_argument(std::string(info.displayName) +
+                                    " cannot run the dynamic rules: it never holds a pixel's reference and current "
+                                    "fragments together. Pick a buffer method (k+-buffer, S-buffer, AB_FP or AB_LL).");
     QElapsedTimer wall;
     wall.start();
     m_target->resize(width, height);
     const glm::dmat4 view = viewMatrix(camera);
-    m_scene->setView(view);
-    TrimFrame frame{m_gl,     *m_shaders,   m_capabilities, *m_scene, *m_target,
-                    *m_counters, camera,    settings,       m_parameters, view,
-                    projectionMatrix(camera, double(width) / double(height)), width, height};
+    scene.setView(view);
+    QStringList modeDefines;
+    if (mode.dynamic)
+        modeDefines << QStringLiteral("DYNAMIC_RULES");
+    if (mode.dynamic && mode.characterize)
+        modeDefines << QStringLiteral("DYNAMIC_CHARACTERIZE");
+    TrimFrame frame{m_gl,        *m_shaders, m_capabilities, scene,          *m_target,
+                    *m_counters, camera,     settings,       m_parameters,   view,
+                    projectionMatrix(camera, double(width) / double(height)), width, height, modeDefines,
+                    mode.dynamicRule, mode.referenceIsBase};
 
     m_gl.glBeginQuery(GL_TIME_ELAPSED, m_timer.id());
     m_counters->reset();
@@ -106,7 +124,7 @@ void TrimRenderer::render(const Camera& camera, const TrimSettings& settings, in
     m_stats.wallMilliseconds = double(wall.nsecsElapsed()) * 1e-6;
     m_stats.gpuMilliseconds = plausibleGpuMilliseconds(elapsedNs, m_stats.wallMilliseconds);
     m_stats.bufferMegabytes =
-        double(m_stats.methodStats.bytes + m_target->memoryBytes() + m_scene->memoryBytes()) / (1024.0 * 1024.0);
+        double(m_stats.methodStats.bytes + m_target->memoryBytes() + scene.memoryBytes()) / (1024.0 * 1024.0);
     m_stats.width = width;
     m_stats.height = height;
     m_stats.k = m_parameters.k;

@@ -42,6 +42,16 @@ struct FrameStats {
     int k = 0;
 };
 
+/// How a frame classifies its fragments: the static rule of TrimSettings (default), or
+/// one level of the dynamic rules' chain (render/dynamic_trim_renderer.h binds the
+/// per-pixel state those need).
+struct TrimMode {
+    bool dynamic = false;
+    bool characterize = false;  ///< write the characterization instead of stopping at the trim
+    int dynamicRule = 3;        ///< DynamicRule as int
+    bool referenceIsBase = true;
+};
+
 class TrimRenderer {
 public:
     /// `context` must be current. Throws GlUnavailableError if it lacks OpenGL 4.3
@@ -76,6 +86,11 @@ public:
     /// `settings.trimEnabled` must be false for scenes that are not closed oriented
     /// surfaces (the caller knows from the validation report). Throws GpuMemoryError.
     void render(const Camera& camera, const TrimSettings& settings, int width, int height);
+    /// The same with another uploaded scene and a classification mode. Throws
+    /// std::invalid_argument when the mode is dynamic and the method cannot run it.
+    void render(GpuScene& scene, const TrimMode& mode, const Camera& camera, const TrimSettings& settings, int width,
+                int height);
+    [[nodiscard]] GlFunctions& gl() { return m_gl; }
 
     /// Copies the last frame's colors into `framebuffer` (e.g. a QOpenGLWidget's).
     void blitTo(GLuint framebuffer);

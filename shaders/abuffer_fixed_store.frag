@@ -18,7 +18,6 @@ layout(binding = IMAGE_COUNTER, r32ui) uniform coherent uimage2D u_counter;
 layout(binding = IMAGE_OVERFLOW, r32ui) uniform coherent uimage2D u_overflow;
 layout(binding = IMAGE_FRAGMENTS, rg32ui) uniform writeonly uimage2DArray u_fragments;
 
-uniform uint u_objectId;
 uniform int u_k;
 
 in vec3 v_viewPos;

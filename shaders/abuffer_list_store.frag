@@ -19,7 +19,6 @@ layout(binding = IMAGE_COUNTER, r32ui) uniform coherent uimage2D u_counter;
 layout(binding = IMAGE_OVERFLOW, r32ui) uniform writeonly uimage2D u_overflow;
 layout(std430, binding = STORAGE_SHARED_COUNTERS) coherent buffer NodeCounter { uint nodeCounter; };
 
-uniform uint u_objectId;
 uniform uint u_nodeCapacity;
 
 in vec3 v_viewPos;

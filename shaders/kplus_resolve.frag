@@ -15,6 +15,7 @@
 #include "common/trim_shading.glsl"
 #include "common/scene_data.glsl"
 #include "common/trim_output.glsl"
+#include "common/pixel_result.glsl"
 
 layout(binding = IMAGE_WINDING, r32i) uniform readonly iimage2D u_winding;
 
@@ -38,13 +39,6 @@ void main()
     TrimWalk walk = beginTrimWalk(windingAtStart);
     for (int i = 0; i < count && !trimWalkStep(walk, g_fragments[i]); ++i) {
     }
-    if (overflowed)
-        atomicCounterIncrement(u_overflowPixels);
-    if (walk.found) {
-        emitShownPixel(walk.shown, windingAtStart, overflowed);
-    } else {
-        if (overflowed)
-            atomicCounterIncrement(u_unresolvedPixels);
-        emitEmptyPixel(windingAtStart, overflowed, overflowed);
-    }
+    // Found among the k nearest: exact even if farther fragments were lost.
+    emitWalkResult(walk, walk.found || !overflowed, windingAtStart, overflowed);
 }

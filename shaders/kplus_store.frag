@@ -28,7 +28,6 @@ layout(pixel_interlock_ordered) in;
 #include "common/winding_count.glsl"
 #include "common/kplus_insert.glsl"
 
-uniform uint u_objectId;
 uniform int u_maxSpin; // bounded spin: a GPU can livelock lanes of one warp on one lock
 
 in vec3 v_viewPos;

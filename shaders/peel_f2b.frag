@@ -18,7 +18,6 @@
 #include "common/peel_state.glsl"
 #include "common/peel_offer.glsl"
 
-uniform uint u_objectId;
 uniform bool u_firstPass;
 
 in vec3 v_viewPos;

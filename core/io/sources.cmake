@@ -1,3 +1,4 @@
 target_sources(trimlab_core PRIVATE
   io/pfm_image.cpp
+  io/gltf_builder.cpp
 )

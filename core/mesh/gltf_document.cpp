@@ -1,5 +1,7 @@
 #include "mesh/gltf_document.h"
 
+#include "util/json_nesting.h"
+
 #include "mesh/byte_cursor.h"
 #include "mesh/mesh_load_error.h"
 
@@ -102,31 +104,6 @@ void checkGlbHeader(std::string_view bytes, const std::string& name)
                                       " bytes, but the file has only " + std::to_string(bytes.size()));
 }
 
-// Deepest nesting of JSON arrays and objects in `json` (strings skipped). tinygltf and
-// nlohmann::json recurse per level, so absurd nesting would overflow the stack.
-std::size_t jsonNestingDepth(std::string_view json)
-{
-    std::size_t depth = 0;
-    std::size_t deepest = 0;
-    bool inString = false;
-    for (std::size_t i = 0; i < json.size(); ++i) {
-        const char c = json[i];
-        if (inString) {
-            if (c == '\\')
-                ++i;
-            else if (c == '"')
-                inString = false;
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '[' || c == '{') {
-            deepest = std::max(deepest, ++depth);
-        } else if ((c == ']' || c == '}') && depth > 0) {
-            --depth;
-        }
-    }
-    return deepest;
-}
-
 // The JSON text of a glTF asset: the whole input, or a GLB's first chunk (clamped).
 std::string_view jsonPart(std::string_view bytes, bool binary)
 {
@@ -155,7 +132,7 @@ tinygltf::Model parseModel(std::string_view bytes, const std::string& name, cons
         checkGlbHeader(bytes, name);
     else if (bytes.find_first_not_of(" \t\r\n") == std::string_view::npos || bytes[bytes.find_first_not_of(" \t\r\n")] != '{')
         throw MeshLoadError(name, "not a glTF file: neither JSON (starting with '{') nor binary glTF (starting with 'glTF')");
-    if (jsonNestingDepth(jsonPart(bytes, binary)) > kMaxJsonNesting)
+    if (jsonTooDeepAt(jsonPart(bytes, binary), kMaxJsonNesting) != std::string_view::npos)
         throw MeshLoadError(name, "invalid glTF: the JSON is nested more than " + std::to_string(kMaxJsonNesting) +
                                       " levels deep");
     FileAccess access{!baseDir.empty()};

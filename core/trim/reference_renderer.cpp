@@ -30,6 +30,7 @@ struct ReferenceRenderer::RowContext {
     int width;
     int height;
     const TrimSettings& settings;
+    const RayWalker* walker;
     ReferenceResult& result;
     std::vector<RayHit> hits;
     std::vector<double> scratch;
@@ -80,8 +81,11 @@ void ReferenceRenderer::renderRow(RowContext& context, int y) const
         m_bvh.intersectAll(ray, camera.zNear, camera.zFar, context.hits);
         std::sort(context.hits.begin(), context.hits.end(), walkOrder);
         const KeptSpan span = keptSpan(context.settings.clip, ray, camera.zNear, camera.zFar);
-        const TrimWalk walk = walkTrimRay(context.hits, span, context.settings);
-        const TrimPixel pixel = trimPixelFromWalk(context.hits, walk);
+        bool unresolved = false;
+        const TrimWalk walk = context.walker ? (*context.walker)(x, y, context.hits, span, unresolved)
+                                             : walkTrimRay(context.hits, span, context.settings);
+        TrimPixel pixel = trimPixelFromWalk(context.hits, walk);
+        pixel.unresolved = unresolved;
         context.result.trim.at(x, y) = pixel;
 
         ReferenceDiagnostics& diagnostics = context.result.diagnostics;
@@ -114,6 +118,12 @@ void ReferenceRenderer::renderRow(RowContext& context, int y) const
 ReferenceResult ReferenceRenderer::render(const Camera& camera, int width, int height, const TrimSettings& settings,
                                           unsigned threads) const
 {
+    return render(camera, width, height, settings, threads, RayWalker{});
+}
+
+ReferenceResult ReferenceRenderer::render(const Camera& camera, int width, int height, const TrimSettings& settings,
+                                          unsigned threads, const RayWalker& walker) const
+{
     const auto start = std::chrono::steady_clock::now();
     ReferenceResult result;
     if (width < 1 || height < 1)
@@ -129,7 +139,7 @@ ReferenceResult ReferenceRenderer::render(const Camera& camera, int width, int h
     std::atomic<int> nextBlock{0};
     std::vector<ReferenceStats> partial(threads);
     auto work = [&](unsigned worker) {
-        RowContext context{camera, width, height, settings, result, {}, {}, {}};
+        RowContext context{camera, width, height, settings, walker ? &walker : nullptr, result, {}, {}, {}};
         for (int block = nextBlock++; block < blockCount; block = nextBlock++) {
             const int rowEnd = std::min(height, (block + 1) * kRowsPerBlock);
             for (int y = block * kRowsPerBlock; y < rowEnd; ++y)

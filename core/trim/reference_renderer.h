@@ -19,6 +19,8 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <vector>
 
 namespace trimlab {
@@ -51,6 +53,12 @@ struct PixelTrace {
     TrimPixel pixel;
 };
 
+/// Decides one pixel from its sorted hits and kept span, in place of walkTrimRay (the
+/// dynamic rules supply one). Sets `unresolved` when the pixel cannot be decided. Called
+/// concurrently from several threads.
+using RayWalker = std::function<TrimWalk(int x, int y, std::span<const RayHit> sortedHits, const KeptSpan& span,
+                                         bool& unresolved)>;
+
 class ReferenceRenderer {
 public:
     /// Copies what it needs (world geometry, normals, the BVH); `scene` may die afterwards.
@@ -62,6 +70,10 @@ public:
     /// < 1 gives an empty (0×0) result.
     [[nodiscard]] ReferenceResult render(const Camera& camera, int width, int height, const TrimSettings& settings,
                                          unsigned threads = 0) const;
+    /// The same with `walker` deciding every pixel (an unresolved pixel is empty with
+    /// TrimPixel::unresolved set).
+    [[nodiscard]] ReferenceResult render(const Camera& camera, int width, int height, const TrimSettings& settings,
+                                         unsigned threads, const RayWalker& walker) const;
 
     /// The full decision for one pixel, as render() makes it.
     [[nodiscard]] PixelTrace tracePixel(const Camera& camera, int width, int height, int x, int y,

@@ -7,6 +7,11 @@ target_sources(trimlab_core PRIVATE
   trim/reference_renderer.cpp
   trim/trim_agreement.cpp
   trim/winding_number.cpp
+  trim/dynamic_frame_scene.cpp
+  trim/dynamic_walk.cpp
+  trim/dynamic_chain.cpp
+  trim/dynamic_reference_renderer.cpp
+  trim/trim_membership.cpp
 )
 # The watertight ray-triangle test relies on every vertex being sheared by identical
 # rounded operations in every triangle, and its exact-sign code on plain IEEE products

@@ -23,8 +23,8 @@ struct TrimPixel {
     /// GPU methods with a capacity: the pixel lost fragments (more than it could hold).
     bool overflowed = false;
     /// The pixel lost fragments and its trim point may have been among them, so it shows
-    /// nothing (painted as unresolved) rather than something wrong. Never set by the
-    /// CPU reference.
+    /// nothing (painted as unresolved) rather than something wrong. Set by the CPU
+    /// reference only where a dynamic rule's reference characterization overflowed.
     bool unresolved = false;
 
     [[nodiscard]] bool covered() const { return primitiveId >= 0; }

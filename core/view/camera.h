@@ -24,6 +24,8 @@ struct Camera {
     double fovyDegrees = 45.0;
     double zNear = 0.01;
     double zFar = 100.0;
+
+    friend bool operator==(const Camera&, const Camera&) = default;
 };
 
 /// World → view (right-handed, camera looks down −z).

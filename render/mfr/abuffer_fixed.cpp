@@ -35,7 +35,7 @@ void ABufferFixed::render(TrimFrame& frame)
 
 void ABufferFixed::storePass(TrimFrame& frame)
 {
-    const GLuint program = frame.shaders.program(QStringLiteral("abuffer_fixed_store"));
+    const GLuint program = trimProgram(frame, QStringLiteral("abuffer_fixed_store"));
     m_gl.glUseProgram(program);
     setClipUniforms(frame, program);
     m_gl.glUniform1i(m_gl.glGetUniformLocation(program, "u_k"), m_slots.k());
@@ -50,7 +50,7 @@ void ABufferFixed::storePass(TrimFrame& frame)
 void ABufferFixed::resolvePass(TrimFrame& frame)
 {
     const GLuint program =
-        frame.shaders.program(QStringLiteral("abuffer_fixed_resolve"), {QStringLiteral("K_MAX %1").arg(m_slots.k())});
+        trimProgram(frame, QStringLiteral("abuffer_fixed_resolve"), {QStringLiteral("K_MAX %1").arg(m_slots.k())});
     m_gl.glUseProgram(program);
     setTrimWalkUniforms(frame, program);
     setOutputUniforms(frame, program);

@@ -81,7 +81,7 @@ std::uint64_t ABufferLinkedList::storePass(TrimFrame& frame)
     m_gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_nodeCounter.id());
     m_gl.glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(zero), &zero);
 
-    const GLuint program = frame.shaders.program(QStringLiteral("abuffer_list_store"));
+    const GLuint program = trimProgram(frame, QStringLiteral("abuffer_list_store"));
     m_gl.glUseProgram(program);
     setClipUniforms(frame, program);
     m_gl.glUniform1ui(m_gl.glGetUniformLocation(program, "u_nodeCapacity"), GLuint(m_nodes.capacity()));
@@ -106,7 +106,7 @@ std::uint64_t ABufferLinkedList::storePass(TrimFrame& frame)
 
 void ABufferLinkedList::resolvePass(TrimFrame& frame)
 {
-    const GLuint program = frame.shaders.program(QStringLiteral("abuffer_list_resolve"),
+    const GLuint program = trimProgram(frame, QStringLiteral("abuffer_list_resolve"),
                                                  {QStringLiteral("LIST_MAX %1").arg(kRegisterList)});
     m_gl.glUseProgram(program);
     setTrimWalkUniforms(frame, program);

@@ -21,5 +21,8 @@ inline constexpr GLuint kWalkImage = 7;
 inline constexpr GLuint kNodesStorage = 5;
 inline constexpr GLuint kLinksStorage = 6;
 inline constexpr GLuint kSharedCountersStorage = 7;
+inline constexpr GLuint kDynamicStateStorage = 8;
+inline constexpr GLuint kReferenceBitsStorage = 9;
+inline constexpr GLuint kCharacterizationBitsStorage = 10;
 
 } // namespace trimlab::render::binding

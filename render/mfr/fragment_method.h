@@ -38,6 +38,10 @@ struct MethodInfo {
     bool bounded;                 ///< capacity-limited: may overflow and report unresolved pixels
     bool usesK;
     bool usesSharedCounters;
+    /// Stores fragments and walks them in one resolve, so it can run the dynamic rules'
+    /// walk (the peeling methods and the two-pass method cannot: they never hold a
+    /// pixel's reference and current fragments together).
+    bool dynamicRules;
 };
 
 /// Every method, in menu order. Only those with an implementation are listed.

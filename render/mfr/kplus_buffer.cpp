@@ -76,7 +76,7 @@ void KPlusBuffer::render(TrimFrame& frame)
 
 void KPlusBuffer::storePass(TrimFrame& frame, KPlusLock lock)
 {
-    const GLuint program = frame.shaders.program(QStringLiteral("kplus_store"), kplusStoreDefines(lock, m_heap));
+    const GLuint program = trimProgram(frame, QStringLiteral("kplus_store"), kplusStoreDefines(lock, m_heap));
     m_gl.glUseProgram(program);
     setClipUniforms(frame, program);
     m_gl.glUniform1i(m_gl.glGetUniformLocation(program, "u_k"), m_slots.k());
@@ -91,7 +91,7 @@ void KPlusBuffer::storePass(TrimFrame& frame, KPlusLock lock)
 
 void KPlusBuffer::resolvePass(TrimFrame& frame)
 {
-    const GLuint program = frame.shaders.program(QStringLiteral("kplus_resolve"), {QStringLiteral("K_MAX %1").arg(m_slots.k())});
+    const GLuint program = trimProgram(frame, QStringLiteral("kplus_resolve"), {QStringLiteral("K_MAX %1").arg(m_slots.k())});
     m_gl.glUseProgram(program);
     setTrimWalkUniforms(frame, program);
     setOutputUniforms(frame, program);

@@ -60,7 +60,7 @@ void KPlusSBuffer::storePass(TrimFrame& frame, KPlusLock lock)
 {
     QStringList defines = kplusStoreDefines(lock, false);
     defines << QStringLiteral("KPLUS_NODE_REGION");
-    const GLuint program = frame.shaders.program(QStringLiteral("kplus_sbuffer_store"), defines);
+    const GLuint program = trimProgram(frame, QStringLiteral("kplus_sbuffer_store"), defines);
     m_gl.glUseProgram(program);
     setClipUniforms(frame, program);
     m_gl.glUniform1i(m_gl.glGetUniformLocation(program, "u_k"), m_k);
@@ -76,7 +76,7 @@ void KPlusSBuffer::storePass(TrimFrame& frame, KPlusLock lock)
 
 void KPlusSBuffer::resolvePass(TrimFrame& frame)
 {
-    const GLuint program = frame.shaders.program(QStringLiteral("kplus_sbuffer_resolve"),
+    const GLuint program = trimProgram(frame, QStringLiteral("kplus_sbuffer_resolve"),
                                                  {QStringLiteral("KPLUS_NODE_REGION"), QStringLiteral("K_MAX %1").arg(m_k)});
     m_gl.glUseProgram(program);
     setTrimWalkUniforms(frame, program);

@@ -19,7 +19,7 @@ MemoryReferencing::MemoryReferencing(GlFunctions& gl) : m_gl(gl) {}
 
 void MemoryReferencing::countPass(TrimFrame& frame, PixelState& state)
 {
-    const GLuint program = frame.shaders.program(QStringLiteral("fragment_count"));
+    const GLuint program = trimProgram(frame, QStringLiteral("fragment_count"));
     m_gl.glUseProgram(program);
     setClipUniforms(frame, program);
     state.bind();
@@ -49,7 +49,7 @@ void MemoryReferencing::allocateCounters(int sharedCounters)
 
 GLuint MemoryReferencing::useReferencingProgram(TrimFrame& frame, const char* name, std::uint32_t regionLimit)
 {
-    const GLuint program = frame.shaders.program(QString::fromLatin1(name));
+    const GLuint program = trimProgram(frame, QString::fromLatin1(name));
     m_gl.glUseProgram(program);
     m_gl.glUniform1ui(m_gl.glGetUniformLocation(program, "u_sharedCounterCount"), GLuint(m_sharedCounters));
     m_gl.glUniform2i(m_gl.glGetUniformLocation(program, "u_size"), frame.width, frame.height);

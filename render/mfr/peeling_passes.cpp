@@ -44,8 +44,8 @@ MethodStats PeelingPasses::render(TrimFrame& frame, PeelingState& state, const P
 
 int PeelingPasses::peel(TrimFrame& frame, PeelingState& state, const PeelingPrograms& programs)
 {
-    const GLuint geometry = frame.shaders.program(QString::fromLatin1(programs.geometry));
-    const GLuint walk = frame.shaders.program(QString::fromLatin1(programs.walk));
+    const GLuint geometry = trimProgram(frame, QString::fromLatin1(programs.geometry));
+    const GLuint walk = trimProgram(frame, QString::fromLatin1(programs.walk));
     int issued = 0;
     for (int iteration = 0; iteration < frame.parameters.maxPeelingPasses; ++iteration) {
         const bool first = iteration == 0;
@@ -93,7 +93,7 @@ void PeelingPasses::walkPass(TrimFrame& frame, PeelingState& state, GLuint progr
 
 void PeelingPasses::resolvePass(TrimFrame& frame, PeelingState& state)
 {
-    const GLuint program = frame.shaders.program(QStringLiteral("peeling_resolve"));
+    const GLuint program = trimProgram(frame, QStringLiteral("peeling_resolve"));
     m_gl.glUseProgram(program);
     setOutputUniforms(frame, program);
     state.bind();

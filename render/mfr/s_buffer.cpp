@@ -42,7 +42,7 @@ void SBuffer::render(TrimFrame& frame)
 
 void SBuffer::storePass(TrimFrame& frame)
 {
-    const GLuint program = frame.shaders.program(QStringLiteral("sbuffer_store"));
+    const GLuint program = trimProgram(frame, QStringLiteral("sbuffer_store"));
     m_gl.glUseProgram(program);
     setClipUniforms(frame, program);
     m_gl.glUniform1ui(m_gl.glGetUniformLocation(program, "u_nodeCapacity"), GLuint(m_countedTotal));
@@ -58,7 +58,7 @@ void SBuffer::storePass(TrimFrame& frame)
 void SBuffer::resolvePass(TrimFrame& frame)
 {
     const GLuint program =
-        frame.shaders.program(QStringLiteral("sbuffer_resolve"), {QStringLiteral("LIST_MAX %1").arg(kRegisterList)});
+        trimProgram(frame, QStringLiteral("sbuffer_resolve"), {QStringLiteral("LIST_MAX %1").arg(kRegisterList)});
     m_gl.glUseProgram(program);
     setTrimWalkUniforms(frame, program);
     setOutputUniforms(frame, program);

@@ -1,6 +1,7 @@
 # render/mfr: the multi-fragment methods behind one interface (fragment_method.h).
 target_sources(trimlab_render PRIVATE
   mfr/fragment_method.cpp
+  mfr/trim_frame.cpp
   mfr/method_factory.cpp
   mfr/pixel_state.cpp
   mfr/slot_array.cpp

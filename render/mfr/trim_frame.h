@@ -10,6 +10,8 @@
 
 #include <glm/mat4x4.hpp>
 
+#include <QStringList>
+
 namespace trimlab::render {
 
 class FrameCounters;
@@ -32,6 +34,16 @@ struct TrimFrame {
     glm::dmat4 projection;
     int width;
     int height;
+    /// Defines every program of the frame is built with on top of the method's own: the
+    /// trim mode (e.g. DYNAMIC_RULES, DYNAMIC_CHARACTERIZE for the dynamic rules).
+    QStringList modeDefines;
+    /// Dynamic rules only (shaders/common/dynamic_walk.glsl): the set's rule and whether
+    /// its reference is the base mesh (classified by settings.rule) or a characterization.
+    int dynamicRule = 3;
+    bool referenceIsBase = true;
 };
+
+/// The program `name` with `defines` and the frame's mode defines.
+[[nodiscard]] GLuint trimProgram(TrimFrame& frame, const QString& name, QStringList defines = {});
 
 } // namespace trimlab::render

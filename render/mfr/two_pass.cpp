@@ -84,7 +84,7 @@ void TwoPassTrim::render(TrimFrame& frame)
 
 void TwoPassTrim::countPass(TrimFrame& frame)
 {
-    const GLuint program = frame.shaders.program(QStringLiteral("two_pass_count"));
+    const GLuint program = trimProgram(frame, QStringLiteral("two_pass_count"));
     m_gl.glUseProgram(program);
     setClipUniforms(frame, program);
     m_state.bind();
@@ -96,7 +96,7 @@ void TwoPassTrim::countPass(TrimFrame& frame)
 
 void TwoPassTrim::closestPass(TrimFrame& frame)
 {
-    const GLuint program = frame.shaders.program(QStringLiteral("two_pass_closest"));
+    const GLuint program = trimProgram(frame, QStringLiteral("two_pass_closest"));
     m_gl.glUseProgram(program);
     setClipUniforms(frame, program);
     m_gl.glUniform1f(m_gl.glGetUniformLocation(program, "u_depthScale"), depthScale(frame.camera.zFar));
@@ -117,7 +117,7 @@ void TwoPassTrim::closestPass(TrimFrame& frame)
 
 void TwoPassTrim::resolvePass(TrimFrame& frame)
 {
-    const GLuint program = frame.shaders.program(QStringLiteral("two_pass_resolve"));
+    const GLuint program = trimProgram(frame, QStringLiteral("two_pass_resolve"));
     m_gl.glUseProgram(program);
     setTrimWalkUniforms(frame, program);
     setOutputUniforms(frame, program);

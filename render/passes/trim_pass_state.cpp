@@ -24,6 +24,8 @@ void setTrimWalkUniforms(const TrimFrame& frame, GLuint program)
 {
     frame.gl.glUniform1i(frame.gl.glGetUniformLocation(program, "u_trimEnabled"), frame.settings.trimEnabled ? 1 : 0);
     frame.gl.glUniform1i(frame.gl.glGetUniformLocation(program, "u_rule"), static_cast<int>(frame.settings.rule));
+    frame.gl.glUniform1i(frame.gl.glGetUniformLocation(program, "u_dynamicRule"), frame.dynamicRule);
+    frame.gl.glUniform1i(frame.gl.glGetUniformLocation(program, "u_referenceIsBase"), frame.referenceIsBase ? 1 : 0);
 }
 
 void setOutputUniforms(const TrimFrame& frame, GLuint program)

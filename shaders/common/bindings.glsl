@@ -12,3 +12,6 @@
 #define STORAGE_NODES 5    // uvec2 nodes[] of node-buffer methods
 #define STORAGE_LINKS 6    // uint next[] of linked lists
 #define STORAGE_SHARED_COUNTERS 7 // uint counters[] of the S-buffer's memory referencing; AB_LL's one node counter
+#define STORAGE_DYNAMIC_STATE 8          // dynamic rules: per-pixel reference index and fragments behind
+#define STORAGE_REFERENCE_BITS 9         // dynamic rules: the reference frame's characterization bit vectors
+#define STORAGE_CHARACTERIZATION_BITS 10 // dynamic rules: the bit vectors a chain level writes

@@ -8,6 +8,8 @@
 
 void emitWalkResult(TrimWalk walk, bool certain, int windingAtStart, bool overflowed)
 {
+    finishTrimWalk(walk, certain && !overflowed);
+    certain = certain && trimWalkCertain(walk);
     if (overflowed)
         atomicCounterIncrement(u_overflowPixels);
     if (!certain) {

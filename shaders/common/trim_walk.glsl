@@ -8,6 +8,10 @@
 uniform bool u_trimEnabled;
 uniform int u_rule;
 
+#ifdef DYNAMIC_RULES
+#include "common/dynamic_walk.glsl"
+#else
+
 struct TrimWalk {
     int winding;  // index of the space in front of the next fragment
     bool found;   // the shown fragment is known
@@ -35,3 +39,9 @@ bool trimWalkStep(inout TrimWalk walk, uvec2 fragment)
     walk.winding = after;
     return false;
 }
+
+// Static walks are always decidable and leave nothing behind (the dynamic walk's
+// versions of these record the characterization and report an overflowed reference).
+bool trimWalkCertain(TrimWalk walk) { return true; }
+void finishTrimWalk(TrimWalk walk, bool complete) {}
+#endif

@@ -6,12 +6,29 @@
 
 layout(binding = IMAGE_WINDING, r32i) uniform coherent iimage2D u_winding;
 
+uniform uint u_objectId; // the object being drawn (GpuScene::draw sets it)
+
+#ifdef DYNAMIC_RULES
+#include "common/dynamic_state.glsl"
+#endif
+
 // Adds this fragment's facing when it lies behind the span start; returns whether the
-// fragment is inside the kept span (the ones a method stores).
+// fragment is inside the kept span (the ones a method stores). With the dynamic rules
+// the object id is the frame class (core/trim/dynamic_frame_scene.h): u_winding counts
+// the current frame, the dynamic state the reference frame and both frames' fragments
+// behind the span start (the interval indices of the characterization bit vectors).
 bool countWinding(ivec2 pixel, vec3 viewPos)
 {
     bool kept = clipKeeps(viewPos);
-    if (kept || rayStartsAtNear(viewPos))
-        imageAtomicAdd(u_winding, pixel, gl_FrontFacing ? -1 : 1);
+    if (kept || rayStartsAtNear(viewPos)) {
+        int behind = gl_FrontFacing ? -1 : 1;
+#ifdef DYNAMIC_RULES
+        if (objectInCurrentFrame(u_objectId))
+            imageAtomicAdd(u_winding, pixel, behind);
+        countDynamicBehind(pixel, u_objectId, behind);
+#else
+        imageAtomicAdd(u_winding, pixel, behind);
+#endif
+    }
     return kept;
 }

@@ -37,11 +37,19 @@ std::optional<QString> checkMethodAgainstReference(render::TrimRenderer& rendere
     renderer.setMethod(method);
     renderer.setParameters(testCase.parameters);
     renderer.render(testCase.camera, testCase.settings, testCase.width, testCase.height);
+    return checkFrameAgainstReference(renderer, testCase, reference,
+                                      referenceTieCheck(referenceRenderer, testCase.camera, testCase.width,
+                                                        testCase.height, testCase.settings),
+                                      summary, criteria);
+}
+
+std::optional<QString> checkFrameAgainstReference(render::TrimRenderer& renderer, const MethodCase& testCase,
+                                                  const ReferenceResult& reference, const TieCheck& ties,
+                                                  QString* summary, const MethodCriteria& criteria)
+{
+    const render::FragmentMethodKind method = renderer.method();
     const TrimImage gpu = renderer.readTrimImage();
-    const TrimComparison comparison =
-        compareTrimImages(gpu, reference.trim, reference.diagnostics, {},
-                          referenceTieCheck(referenceRenderer, testCase.camera, testCase.width, testCase.height,
-                                            testCase.settings));
+    const TrimComparison comparison = compareTrimImages(gpu, reference.trim, reference.diagnostics, {}, ties);
     const render::FrameStats& stats = renderer.lastStats();
     const QString text = comparison.summary() +
                          QStringLiteral("; %1 geometry passes, %2 fragments stored, %3 lost, %4 ms wall")

@@ -45,4 +45,12 @@ struct MethodCriteria {
                                                                  QString* summary = nullptr,
                                                                  const MethodCriteria& criteria = {});
 
+/// The comparison half of checkMethodAgainstReference, for a frame already rendered into
+/// `renderer`'s target by other means (e.g. the dynamic rules' renderer).
+[[nodiscard]] std::optional<QString> checkFrameAgainstReference(render::TrimRenderer& renderer,
+                                                                const MethodCase& testCase,
+                                                                const ReferenceResult& reference, const TieCheck& ties,
+                                                                QString* summary = nullptr,
+                                                                const MethodCriteria& criteria = {});
+
 } // namespace trimlab::test

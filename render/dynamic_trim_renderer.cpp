@@ -1,0 +1,152 @@
+#include "dynamic_trim_renderer.h"
+
+#include "gl/gl_error.h"
+#include "gpu_scene.h"
+#include "mfr/bindings.h"
+
+#include <QElapsedTimer>
+
+#include <stdexcept>
+
+namespace trimlab::render {
+
+namespace {
+
+// shaders/common/dynamic_state.glsl: a two-word header, then ivec2 per pixel; a bit
+// vector is 8 words plus a flag word per pixel.
+constexpr std::size_t kStateHeaderBytes = 2 * sizeof(GLuint);
+constexpr std::size_t kBitsWordsPerPixel = 9;
+
+void allocate(GlFunctions& gl, GlBuffer& buffer, std::size_t bytes, const char* what)
+{
+    buffer = GlBuffer(gl);
+    gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());
+    gl.glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_COPY);
+    checkAllocation(gl, what, double(bytes));
+}
+
+void clearWords(GlFunctions& gl, const GlBuffer& buffer, std::size_t offset, std::size_t bytes)
+{
+    const GLuint zero = 0;
+    gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());
+    gl.glClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GLintptr(offset), GLsizeiptr(bytes), GL_RED_INTEGER,
+                            GL_UNSIGNED_INT, &zero);
+}
+
+} // namespace
+
+DynamicTrimRenderer::DynamicTrimRenderer(TrimRenderer& renderer) : m_renderer(renderer), m_gl(renderer.gl()) {}
+
+DynamicTrimRenderer::~DynamicTrimRenderer() = default;
+
+void DynamicTrimRenderer::setChain(const DynamicChain& chain)
+{
+    if (chain.levels.empty())
+        throw std::invalid_argument("a dynamic chain needs at least one level.");
+    std::vector<std::unique_ptr<GpuScene>> levels;
+    for (const DynamicChainLevel& level : chain.levels) {
+        levels.push_back(std::make_unique<GpuScene>(m_gl));
+        levels.back()->upload(level.frame.scene);
+    }
+    m_levels = std::move(levels);
+    m_rules.clear();
+    for (const DynamicChainLevel& level : chain.levels)
+        m_rules.push_back(level.rule);
+    m_baseRule = chain.baseRule;
+    m_cacheValid = false;
+}
+
+void DynamicTrimRenderer::setShownLevel(const DynamicChainLevel& level)
+{
+    if (m_levels.empty())
+        throw std::invalid_argument("set a dynamic chain before replacing its shown level.");
+    m_levels.back()->upload(level.frame.scene);
+    m_rules.back() = level.rule;
+}
+
+void DynamicTrimRenderer::resizeState(int width, int height)
+{
+    if (width == m_stateWidth && height == m_stateHeight)
+        return;
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    m_stateWidth = 0;
+    m_stateHeight = 0;
+    m_bytes = 0;
+    allocate(m_gl, m_state, kStateHeaderBytes + pixels * 2 * sizeof(GLint), "dynamic-rule pixel state");
+    for (GlBuffer& bits : m_bits)
+        allocate(m_gl, bits, pixels * kBitsWordsPerPixel * sizeof(GLuint), "characterization bit vectors");
+    m_stateWidth = width;
+    m_stateHeight = height;
+    m_bytes = kStateHeaderBytes + pixels * (2 * sizeof(GLint) + 2 * kBitsWordsPerPixel * sizeof(GLuint));
+    m_cacheValid = false;
+}
+
+// Zeroes the per-pixel counts of Algorithm 8.12 before a level's geometry pass.
+void DynamicTrimRenderer::clearState(int width, int height)
+{
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    const GLuint header[2] = {GLuint(width), 0u};
+    m_gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_state.id());
+    m_gl.glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(header), header);
+    clearWords(m_gl, m_state, kStateHeaderBytes, pixels * 2 * sizeof(GLint));
+    m_gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kDynamicStateStorage, m_state.id());
+    m_gl.glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+// Levels 0 .. n−2, each in characterize mode reading the previous level's bit vectors
+// (level 0: the base mesh's static rule) and writing its own.
+void DynamicTrimRenderer::characterizeLevels(const Camera& camera, const TrimSettings& settings, int width, int height)
+{
+    TrimSettings whole = settings;
+    whole.clip.enabled = false; // a characterization covers the whole ray
+    whole.trimEnabled = true;
+    int written = 0;
+    for (std::size_t level = 0; level + 1 < m_levels.size(); ++level) {
+        const int read = 1 - written;
+        clearState(width, height);
+        clearWords(m_gl, m_bits[written], 0, std::size_t(width) * std::size_t(height) * kBitsWordsPerPixel * sizeof(GLuint));
+        m_gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kReferenceBitsStorage, m_bits[read].id());
+        m_gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCharacterizationBitsStorage, m_bits[written].id());
+        m_gl.glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+        const TrimMode mode{true, true, int(m_rules[level]), level == 0};
+        m_renderer.render(*m_levels[level], mode, camera, whole, width, height);
+        m_gl.glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        ++m_stats.characterizedLevels;
+        written = read;
+    }
+    m_shownReference = 1 - written; // the buffer the last characterization wrote
+}
+
+void DynamicTrimRenderer::render(const Camera& camera, const TrimSettings& settings, int width, int height)
+{
+    if (m_levels.empty())
+        throw std::invalid_argument("no dynamic chain to render.");
+    m_stats = DynamicFrameStats{};
+    m_stats.levels = int(m_levels.size());
+    resizeState(width, height);
+    const int method = int(m_renderer.method());
+    if (!m_cacheValid || !(camera == m_cachedCamera) || settings.rule != m_cachedBaseRule || method != m_cachedMethod ||
+        m_renderer.k() != m_cachedK) {
+        QElapsedTimer timer;
+        timer.start();
+        characterizeLevels(camera, settings, width, height);
+        m_stats.characterizeMilliseconds = double(timer.nsecsElapsed()) * 1e-6;
+        m_cacheValid = true;
+        m_cachedCamera = camera;
+        m_cachedBaseRule = settings.rule;
+        m_cachedMethod = method;
+        m_cachedK = m_renderer.k();
+    }
+    QElapsedTimer timer;
+    timer.start();
+    clearState(width, height);
+    m_gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kReferenceBitsStorage, m_bits[m_shownReference].id());
+    // Nothing is written in display mode, but the binding must name a buffer.
+    m_gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCharacterizationBitsStorage,
+                          m_bits[1 - m_shownReference].id());
+    const TrimMode mode{true, false, int(m_rules.back()), m_levels.size() == 1};
+    m_renderer.render(*m_levels.back(), mode, camera, settings, width, height);
+    m_stats.frameMilliseconds = double(timer.nsecsElapsed()) * 1e-6;
+}
+
+} // namespace trimlab::render
