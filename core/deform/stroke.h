@@ -36,6 +36,8 @@ struct BrushSettings {
     int smoothingIterations = 2;     ///< Laplacian iterations restricted to the influenced region (>= 0)
     SmoothingWeights smoothingWeights = SmoothingWeights::Uniform;
     double smoothingStep = 0.5;      ///< λ of p ← p + λ·L(p), in (0, 1]
+
+    friend bool operator==(const BrushSettings&, const BrushSettings&) = default;
 };
 
 /// A committed stroke: where it grabbed the surface and how far it was dragged.
@@ -48,6 +50,8 @@ struct Stroke {
     /// Displacement of the anchor (object space) before `strength` scales it.
     glm::dvec3 drag{0.0};
     BrushSettings brush;
+
+    friend bool operator==(const Stroke&, const Stroke&) = default;
 };
 
 [[nodiscard]] std::string_view falloffProfileName(FalloffProfile profile);   ///< "smooth", "linear", "sharp"
