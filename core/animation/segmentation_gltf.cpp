@@ -1,5 +1,7 @@
 #include "animation/segmentation_gltf.h"
 
+#include "io/gltf_builder.h"
+
 #include <tiny_gltf.h>
 
 #include <glm/common.hpp>
@@ -15,38 +17,11 @@ namespace trimlab {
 
 namespace {
 
-// Appends `bytes` to buffer 0 (4-byte aligned) as a new buffer view; returns its index.
-int addView(tinygltf::Model& model, const void* bytes, std::size_t size, int target)
-{
-    std::vector<unsigned char>& data = model.buffers[0].data;
-    data.resize((data.size() + 3) / 4 * 4, 0);
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = data.size();
-    view.byteLength = size;
-    view.target = target;
-    const auto* begin = static_cast<const unsigned char*>(bytes);
-    data.insert(data.end(), begin, begin + size);
-    model.bufferViews.push_back(view);
-    return int(model.bufferViews.size() - 1);
-}
-
-int addAccessor(tinygltf::Model& model, int view, int componentType, int type, std::size_t count)
-{
-    tinygltf::Accessor accessor;
-    accessor.bufferView = view;
-    accessor.componentType = componentType;
-    accessor.type = type;
-    accessor.count = count;
-    model.accessors.push_back(accessor);
-    return int(model.accessors.size() - 1);
-}
-
 int addPositions(tinygltf::Model& model, const TriangleMesh& mesh)
 {
-    const int view = addView(model, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3),
+    const int view = addGltfBufferView(model, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3),
                              TINYGLTF_TARGET_ARRAY_BUFFER);
-    const int accessor = addAccessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, mesh.positions.size());
+    const int accessor = addGltfAccessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, mesh.positions.size());
     glm::vec3 low = mesh.positions.front();
     glm::vec3 high = low;
     for (const glm::vec3& p : mesh.positions) {
@@ -73,14 +48,14 @@ tinygltf::Model buildModel(const TriangleMesh& mesh, const VertexLabeling& segme
         rgb.push_back(colors[label].rgb());
         labels.push_back(float(label));
     }
-    const int colorView = addView(model, rgb.data(), rgb.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
-    primitive.attributes["COLOR_0"] = addAccessor(model, colorView, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, rgb.size());
-    const int labelView = addView(model, labels.data(), labels.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+    const int colorView = addGltfBufferView(model, rgb.data(), rgb.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
+    primitive.attributes["COLOR_0"] = addGltfAccessor(model, colorView, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, rgb.size());
+    const int labelView = addGltfBufferView(model, labels.data(), labels.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
     primitive.attributes["_SEGMENT"] =
-        addAccessor(model, labelView, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, labels.size());
-    const int indexView = addView(model, mesh.triangles.data(), mesh.triangles.size() * sizeof(glm::uvec3),
+        addGltfAccessor(model, labelView, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, labels.size());
+    const int indexView = addGltfBufferView(model, mesh.triangles.data(), mesh.triangles.size() * sizeof(glm::uvec3),
                                   TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    primitive.indices = addAccessor(model, indexView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
+    primitive.indices = addGltfAccessor(model, indexView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
                                     3 * mesh.triangles.size());
     tinygltf::Mesh gltfMesh;
     gltfMesh.name = "segmentation";

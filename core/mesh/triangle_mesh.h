@@ -25,6 +25,9 @@ struct TriangleMesh {
     [[nodiscard]] std::size_t vertexCount() const { return positions.size(); }
     [[nodiscard]] std::size_t triangleCount() const { return triangles.size(); }
     [[nodiscard]] bool empty() const { return triangles.empty(); }
+
+    /// Element-wise equality (floats compare by value: -0.0f == 0.0f, NaN != NaN).
+    friend bool operator==(const TriangleMesh&, const TriangleMesh&) = default;
 };
 
 /// Axis-aligned bounding box. `valid()` is false for an empty box.

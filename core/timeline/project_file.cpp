@@ -1,0 +1,250 @@
+#include "timeline/project_file.h"
+
+#include "timeline/atomic_write.h"
+#include "timeline/binary_array.h"
+#include "timeline/file_bytes.h"
+#include "timeline/json_fields.h"
+#include "timeline/stroke_json.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace trimlab::timeline {
+
+namespace {
+
+using nlohmann::json;
+
+// ---- writing --------------------------------------------------------------------------
+
+json meshJson(const TriangleMesh& mesh)
+{
+    std::vector<std::uint32_t> indices;
+    indices.reserve(mesh.triangles.size() * 3);
+    for (const glm::uvec3& t : mesh.triangles)
+        indices.insert(indices.end(), {t.x, t.y, t.z});
+    return json{{"positions", positionArrayJson(mesh.positions)}, {"triangles", uint32ArrayJson(indices)}};
+}
+
+json framesJson(const Timeline& timeline)
+{
+    json frames = json::array();
+    for (int f = 1; f < timeline.frameCount(); ++f) {
+        const Frame& frame = timeline.frame(f);
+        frames.push_back(json{{"stroke", strokeJson(frame.stroke)},
+                              {"vertices", uint32ArrayJson(frame.vertices)},
+                              {"before", positionArrayJson(frame.before)},
+                              {"after", positionArrayJson(frame.after)}});
+    }
+    return frames;
+}
+
+json setsJson(const Timeline& timeline)
+{
+    json sets = json::array();
+    for (const DeformationSet& set : timeline.sets())
+        sets.push_back(json{{"rule", std::string(dynamicRuleName(set.rule))},
+                            {"first_frame", set.firstFrame},
+                            {"frame_count", set.frameCount}});
+    return sets;
+}
+
+json viewJson(const ProjectView& view)
+{
+    for (const glm::dvec3& v : {view.eye, view.target, view.up}) {
+        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+            throw std::invalid_argument("projectJson: the view has a non-finite vector");
+    }
+    if (!(view.fovyDegrees > 0.0 && view.fovyDegrees < 180.0))
+        throw std::invalid_argument("projectJson: the view's fovyDegrees must be in (0, 180)");
+    return json{{"eye", dvec3Json(view.eye)},
+                {"target", dvec3Json(view.target)},
+                {"up", dvec3Json(view.up)},
+                {"fovy_degrees", view.fovyDegrees}};
+}
+
+// ---- reading --------------------------------------------------------------------------
+
+void checkFormat(const json& document)
+{
+    if (!document.is_object())
+        throw JsonPathError("", "not a TrimLab project (the document is " + jsonTypeText(document) +
+                                    ", not an object)");
+    const json* format = optionalField(document, "format");
+    if (!format || !format->is_string() || format->get<std::string>() != kProjectFormatName)
+        throw JsonPathError("", "not a TrimLab project (\"format\" is not \"" + std::string(kProjectFormatName) + "\")");
+    const std::int64_t version =
+        integerInRange(requiredField(document, "version", ""), 1, std::numeric_limits<std::int32_t>::max(), "version");
+    if (version > kProjectFormatVersion)
+        throw JsonPathError("", "version " + std::to_string(version) + " is newer than this TrimLab (" +
+                                    std::to_string(kProjectFormatVersion) + "); update TrimLab to open it");
+}
+
+TriangleMesh readMesh(const json& value, const std::string& path)
+{
+    requireObject(value, path);
+    TriangleMesh mesh;
+    mesh.positions = readPositionArray(requiredField(value, "positions", path), fieldPath(path, "positions"));
+    const std::string trianglesPath = fieldPath(path, "triangles");
+    const std::vector<std::uint32_t> indices = readUint32Array(requiredField(value, "triangles", path), trianglesPath);
+    if (indices.size() % 3 != 0)
+        throw JsonPathError(fieldPath(trianglesPath, "count"), "must be a multiple of 3, not " +
+                                                                   std::to_string(indices.size()));
+    mesh.triangles.resize(indices.size() / 3);
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        mesh.triangles[t] = {indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]};
+    return mesh;
+}
+
+DynamicRule readRule(const json& value, const std::string& path)
+{
+    const std::string name = stringValue(value, path);
+    if (const auto rule = parseDynamicRule(name))
+        return *rule;
+    throw JsonPathError(path, "unknown rule '" + name +
+                                  "' (known: additive, subtractive, intersection, confluent, homogeneous-confluent)");
+}
+
+std::vector<DeformationSet> readSets(const json& value, const std::string& path)
+{
+    requireArray(value, path);
+    std::vector<DeformationSet> sets;
+    for (std::size_t s = 0; s < value.size(); ++s) {
+        const std::string setPath = indexPath(path, s);
+        const json& item = value[s];
+        requireObject(item, setPath);
+        DeformationSet set;
+        set.rule = readRule(requiredField(item, "rule", setPath), fieldPath(setPath, "rule"));
+        const std::int64_t maxInt = std::numeric_limits<std::int32_t>::max();
+        set.firstFrame = int(integerInRange(requiredField(item, "first_frame", setPath), 1, maxInt,
+                                            fieldPath(setPath, "first_frame")));
+        set.frameCount = int(integerInRange(requiredField(item, "frame_count", setPath), 0, maxInt,
+                                            fieldPath(setPath, "frame_count")));
+        sets.push_back(set);
+    }
+    return sets;
+}
+
+std::vector<Frame> readFrames(const json& value, const std::string& path)
+{
+    requireArray(value, path);
+    std::vector<Frame> frames;
+    frames.reserve(value.size());
+    for (std::size_t f = 0; f < value.size(); ++f) {
+        const std::string framePath = indexPath(path, f);
+        const json& item = value[f];
+        requireObject(item, framePath);
+        Frame frame;
+        frame.stroke = readStrokeJson(requiredField(item, "stroke", framePath), fieldPath(framePath, "stroke"), false);
+        frame.vertices = readUint32Array(requiredField(item, "vertices", framePath), fieldPath(framePath, "vertices"));
+        frame.before = readPositionArray(requiredField(item, "before", framePath), fieldPath(framePath, "before"));
+        frame.after = readPositionArray(requiredField(item, "after", framePath), fieldPath(framePath, "after"));
+        frames.push_back(std::move(frame));
+    }
+    return frames;
+}
+
+ProjectView readView(const json& value, const std::string& path)
+{
+    requireObject(value, path);
+    ProjectView view;
+    view.eye = dvec3Value(requiredField(value, "eye", path), fieldPath(path, "eye"));
+    view.target = dvec3Value(requiredField(value, "target", path), fieldPath(path, "target"));
+    view.up = dvec3Value(requiredField(value, "up", path), fieldPath(path, "up"));
+    view.fovyDegrees = finiteNumber(requiredField(value, "fovy_degrees", path), fieldPath(path, "fovy_degrees"));
+    if (!(view.fovyDegrees > 0.0 && view.fovyDegrees < 180.0))
+        throw JsonPathError(fieldPath(path, "fovy_degrees"), "must be in (0, 180)");
+    return view;
+}
+
+ProjectExtras readExtras(const json& document)
+{
+    ProjectExtras extras;
+    if (const json* view = optionalField(document, "view"))
+        extras.view = readView(*view, "view");
+    if (const json* rule = optionalField(document, "static_rule")) {
+        const std::string name = stringValue(*rule, "static_rule");
+        extras.staticRule = parseStaticRule(name);
+        if (!extras.staticRule)
+            throw JsonPathError("static_rule", "unknown static rule '" + name +
+                                                   "' (known: parity, positive-index, alternating-border)");
+    }
+    return extras;
+}
+
+Project readDocument(const json& document)
+{
+    checkFormat(document);
+    TriangleMesh base = readMesh(requiredField(document, "base_mesh", ""), "base_mesh");
+    std::vector<DeformationSet> sets = readSets(requiredField(document, "sets", ""), "sets");
+    std::vector<Frame> frames = readFrames(requiredField(document, "frames", ""), "frames");
+    ProjectExtras extras = readExtras(document);
+    try {
+        return Project{Timeline::restore(std::move(base), std::move(frames), std::move(sets)), std::move(extras)};
+    } catch (const std::invalid_argument& error) {
+        throw JsonPathError("", std::string("inconsistent history: ") + error.what());
+    }
+}
+
+} // namespace
+
+std::string projectJson(const Timeline& timeline, const ProjectExtras& extras)
+{
+    json document = json::object();
+    document["format"] = std::string(kProjectFormatName);
+    document["version"] = kProjectFormatVersion;
+    document["generator"] = "TrimLab";
+    document["base_mesh"] = meshJson(timeline.base());
+    document["sets"] = setsJson(timeline);
+    document["frames"] = framesJson(timeline);
+    if (extras.view)
+        document["view"] = viewJson(*extras.view);
+    if (extras.staticRule)
+        document["static_rule"] = std::string(ruleName(*extras.staticRule));
+    return document.dump(1) + "\n";
+}
+
+Project parseProject(std::string_view bytes, const std::string& displayName)
+{
+    json document;
+    try {
+        document = parseJsonText(bytes);
+    } catch (const JsonSyntaxError& error) {
+        const std::string at = "line " + std::to_string(error.position().line) + ", column " +
+                               std::to_string(error.position().column);
+        if (error.truncated())
+            throw ProjectFileError(displayName, "", "truncated: the JSON document ends early (" + at + ", byte " +
+                                                        std::to_string(bytes.size()) + "): " + error.reason());
+        throw ProjectFileError(displayName, "", "not a TrimLab project: invalid JSON at " + at + ": " + error.reason());
+    }
+    try {
+        return readDocument(document);
+    } catch (const JsonPathError& error) {
+        throw ProjectFileError(displayName, error.path(), error.reason());
+    }
+}
+
+void saveProject(const Timeline& timeline, const std::filesystem::path& path, const ProjectExtras& extras)
+{
+    writeFileAtomically(path, projectJson(timeline, extras));
+}
+
+Project readProject(const std::filesystem::path& path)
+{
+    std::string bytes;
+    try {
+        bytes = readFileBytes(path, kMaxProjectBytes);
+    } catch (const std::runtime_error& error) {
+        throw ProjectFileError(path.string(), "", error.what());
+    }
+    return parseProject(bytes, path.string());
+}
+
+Timeline loadProject(const std::filesystem::path& path)
+{
+    return readProject(path).timeline;
+}
+
+} // namespace trimlab::timeline

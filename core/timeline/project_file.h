@@ -1,0 +1,76 @@
+#pragma once
+/// \file
+/// The `.trimlab` project file: the base mesh, every frame (stroke and exact positions)
+/// and the sets of the deformation history, plus optional view settings. Loading
+/// restores the Timeline exactly — bit for bit — and saving replaces the file atomically.
+/// The format is documented in docs/project-format.md.
+
+#include "timeline/project_file_error.h"
+#include "timeline/timeline.h"
+#include "trim/static_rule.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace trimlab::timeline {
+
+/// The value of the "format" field.
+inline constexpr std::string_view kProjectFormatName = "trimlab-project";
+/// The newest format version this TrimLab reads and the one it writes.
+inline constexpr int kProjectFormatVersion = 1;
+/// The largest project file accepted: 4 GiB.
+inline constexpr std::size_t kMaxProjectBytes = std::size_t(4) << 30;
+
+/// The camera the GUI showed when the project was saved (object space; as view/camera.h).
+struct ProjectView {
+    glm::dvec3 eye{0.0, 0.0, 3.0};
+    glm::dvec3 target{0.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    double fovyDegrees = 45.0; ///< vertical field of view, in (0, 180)
+
+    friend bool operator==(const ProjectView&, const ProjectView&) = default;
+};
+
+/// Optional settings stored next to the history; absent ones are simply not written.
+struct ProjectExtras {
+    std::optional<ProjectView> view;
+    std::optional<StaticRule> staticRule;
+
+    friend bool operator==(const ProjectExtras&, const ProjectExtras&) = default;
+};
+
+/// Everything a project file holds.
+struct Project {
+    Timeline timeline;
+    ProjectExtras extras;
+};
+
+/// The project document as UTF-8 JSON text (what saveProject writes).
+/// Throws std::invalid_argument for extras that cannot be stored (a non-finite view).
+[[nodiscard]] std::string projectJson(const Timeline& timeline, const ProjectExtras& extras = {});
+
+/// Parses a project document. `displayName` names it in errors. Throws ProjectFileError
+/// for every problem: not JSON or not a TrimLab project, truncated, a newer version,
+/// missing or mistyped fields, damaged binary arrays (bad base64, wrong length, CRC
+/// mismatch), unknown rule names, and histories that are inconsistent (sets that do not
+/// cover the frames, 'before' positions that disagree with the previous frame, indices
+/// out of range). Nothing is returned unless the whole document is valid.
+[[nodiscard]] Project parseProject(std::string_view bytes, const std::string& displayName);
+
+/// Writes projectJson(timeline, extras) to `path` atomically (atomic_write.h): on failure
+/// an existing file at `path` is untouched. Throws std::runtime_error naming the file.
+void saveProject(const Timeline& timeline, const std::filesystem::path& path, const ProjectExtras& extras = {});
+
+/// Reads and parses the project at `path` (errors name it as `path.string()`); also
+/// ProjectFileError when it cannot be read, is not a regular file, is empty or is larger
+/// than kMaxProjectBytes.
+[[nodiscard]] Project readProject(const std::filesystem::path& path);
+/// readProject(path).timeline.
+[[nodiscard]] Timeline loadProject(const std::filesystem::path& path);
+
+} // namespace trimlab::timeline

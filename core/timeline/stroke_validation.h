@@ -1,0 +1,22 @@
+#pragma once
+/// \file
+/// What makes a stroke storable and replayable, checked where strokes enter the
+/// timeline so that every saved project loads again.
+
+#include "deform/stroke.h"
+
+#include <cstdint>
+#include <string>
+
+namespace trimlab::timeline {
+
+/// Upper bound on smoothing iterations: far above any useful value, low enough that a
+/// typo in a hand-written script cannot stall a replay for hours.
+inline constexpr std::int64_t kMaxSmoothingIterations = 10000;
+
+/// "" when `stroke` is valid, otherwise the first problem ("radius must be > 0",
+/// "drag is not finite", "smoothing step must be in (0, 1]", "smoothing iterations must
+/// be in [0, 10000]", ...).
+[[nodiscard]] std::string strokeProblem(const deform::Stroke& stroke);
+
+} // namespace trimlab::timeline
