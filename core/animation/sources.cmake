@@ -35,3 +35,20 @@ target_sources(trimlab_core PRIVATE
   animation/vertex_areas.cpp
   animation/vertex_graph.cpp
 )
+
+# Skinning of mesh animations (core/animation/skinning_*; thesis 2.3 and chapter 4).
+target_sources(trimlab_core PRIVATE
+  animation/dual_quaternion.cpp
+  animation/nnls.cpp
+  animation/skinning_corrections.cpp
+  animation/skinning_dqs_fit.cpp
+  animation/skinning_error.cpp
+  animation/skinning_fitter.cpp
+  animation/skinning_lbs_fit.cpp
+  animation/skinning_model.cpp
+  animation/skinning_normal_equations.cpp
+  animation/skinning_pose_fit.cpp
+  animation/skinning_propagation.cpp
+  animation/skinning_reconstruction.cpp
+  animation/skinning_weights.cpp
+)
