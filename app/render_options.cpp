@@ -16,8 +16,10 @@ namespace {
 void addRenderOptions(QCommandLineParser& parser)
 {
     parser.setApplicationDescription(
-        "Renders a mesh file or a built-in demo (demo:pushed-sphere, demo:crossing-loop, ...) trimmed by a static rule.");
-    parser.addPositionalArgument("source", "A mesh file (.obj .ply .stl .off .gltf .glb, optionally .gz) or demo:NAME.");
+        "Renders a mesh file or a built-in demo (demo:pushed-sphere, demo:crossing-loop, ...) trimmed by a static rule, "
+        "or a frame of a design (a stroke script replayed on the mesh, or a .trimlab project) under the dynamic rules.");
+    parser.addPositionalArgument("source", "A mesh file (.obj .ply .stl .off .gltf .glb, optionally .gz), demo:NAME or a "
+                                           ".trimlab project.");
     parser.addOptions({
         {"rule", "parity | positive-index | alternating-border | none (no trimming). Default: alternating-border.", "rule"},
         {"clip", "Clipping plane a,b,c,d keeping a*x+b*y+c*z+d >= 0 (world space).", "a,b,c,d"},
@@ -38,6 +40,12 @@ void addRenderOptions(QCommandLineParser& parser)
         {{"o", "output"}, "Output PNG (required).", "file.png"},
         {"depth", "Also write the shown surface's distance along each view ray as a PFM (empty pixels +inf).", "file.pfm"},
         {"ids", "Also write object and primitive ids as a 16-bit RGBA PNG (see docs/file-formats.md).", "file.png"},
+        {"script", "Replay this stroke script (docs/project-format.md) on the source mesh and render one of its "
+                   "frames.", "strokes.json"},
+        {"frame", "Frame of the replayed script or of a .trimlab project source (0 = the base mesh). Default: the "
+                  "last.", "N"},
+        {"classification", "For a script or project: dynamic (each set's rule, the base mesh classified by --rule) "
+                           "or static (--rule on the frame alone). Default: dynamic.", "name"},
     });
     parser.addHelpOption();
 }
@@ -86,6 +94,28 @@ std::optional<QString> parseMethodOptions(const QCommandLineParser& parser, Rend
     if (parser.isSet("shared-counters"))
         return parseIntegerOption("shared-counters", parser.value("shared-counters"), 1, ui::kMaxSharedCounters,
                               options.sharedCounters);
+    return std::nullopt;
+}
+
+std::optional<QString> parseDesignOptions(const QCommandLineParser& parser, RenderOptions& options)
+{
+    options.script = parser.value("script");
+    if (parser.isSet("frame")) {
+        int frame = 0;
+        if (auto e = parseIntegerOption("frame", parser.value("frame"), 0, 1000000, frame))
+            return e;
+        options.frame = frame;
+    }
+    const QString classification = parser.value("classification");
+    if (classification == QLatin1String("static"))
+        options.classification = Classification::Static;
+    else if (!classification.isEmpty() && classification != QLatin1String("dynamic"))
+        return QStringLiteral("unknown --classification '%1' (use dynamic or static)").arg(classification);
+    if ((options.frame || parser.isSet("classification")) && !options.designed())
+        return QStringLiteral("--frame and --classification need --script or a .trimlab project source");
+    if (options.designed() && !options.trim.trimEnabled && options.classification == Classification::Dynamic)
+        return QStringLiteral("--rule none cannot classify the base mesh of the dynamic rules; use --classification "
+                              "static to render without trimming");
     return std::nullopt;
 }
 
@@ -176,7 +206,14 @@ std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& argum
         return *e;
     if (auto e = parseMethodOptions(parser, options))
         return *e;
+    if (auto e = parseDesignOptions(parser, options))
+        return *e;
     return options;
+}
+
+bool RenderOptions::designed() const
+{
+    return !script.isEmpty() || QString::fromStdString(source).endsWith(QLatin1String(".trimlab"), Qt::CaseInsensitive);
 }
 
 } // namespace trimlab::app

@@ -18,6 +18,9 @@ namespace trimlab::app {
 
 enum class Backend { KPlus, Reference };
 
+/// How a designed frame (--script, or a .trimlab project) is classified.
+enum class Classification { Dynamic, Static };
+
 struct RenderOptions {
     std::string source;         ///< a mesh file or "demo:NAME"
     TrimSettings trim;          ///< rule (or trimming off) and clip plane
@@ -35,6 +38,14 @@ struct RenderOptions {
     QString output;             ///< -o, PNG
     QString depthOutput;        ///< --depth, PFM
     QString idsOutput;          ///< --ids, 16-bit PNG
+    QString script;             ///< --script: stroke script replayed on the source mesh
+    std::optional<int> frame;   ///< --frame of the replayed script or project; default: the last
+    /// --classification: with a script or project, the sets' dynamic rules (the base mesh
+    /// classified by --rule) or --rule applied statically to the frame.
+    Classification classification = Classification::Dynamic;
+
+    /// The source is a design: a stroke script was given or the source is a project.
+    [[nodiscard]] bool designed() const;
 };
 
 /// Parses an integer option --`name` from `text` into `out`, which must lie in [lo, hi];

@@ -4,13 +4,17 @@
 #include "display_available.h"
 #include "render_options.h"
 #include "trim_exports.h"
+#include "designed_frame.h"
 
 #include "gl/gl_error.h"
 #include "gl/offscreen_gl_context.h"
 #include "scene/scene_source.h"
+#include "timeline/frame_chain.h"
+#include "trim/dynamic_reference_renderer.h"
 #include "trim/reference_renderer.h"
 #include "frame_times.h"
 #include "trim_renderer.h"
+#include "dynamic_trim_renderer.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -78,16 +82,22 @@ QString gpuStatistics(const render::FrameStats& s, const render::MethodParameter
     return text;
 }
 
-RenderOutcome renderWithGpu(const LoadedScene& loaded, const RenderOptions& options, const Camera& camera)
+void configure(render::TrimRenderer& renderer, const RenderOptions& options)
 {
-    render::OffscreenGlContext gl;
-    render::TrimRenderer renderer(gl.context());
-    renderer.setScene(loaded.scene);
     render::MethodParameters parameters = renderer.parameters();
     parameters.k = options.k;
     parameters.sharedCounters = options.sharedCounters;
     renderer.setMethod(options.method);
     renderer.setParameters(parameters);
+}
+
+RenderOutcome renderWithGpu(const Scene& scene, const RenderOptions& options, const Camera& camera)
+{
+    render::OffscreenGlContext gl;
+    render::TrimRenderer renderer(gl.context());
+    renderer.setScene(scene);
+    configure(renderer, options);
+    const render::MethodParameters parameters = renderer.parameters();
     render::FrameTimes times;
     for (int i = 0; i < options.repeat; ++i) {
         renderer.render(camera, options.trim, options.width, options.height);
@@ -106,11 +116,11 @@ QImage toQImage(const RgbaImage& image)
     return result;
 }
 
-RenderOutcome renderWithReference(const LoadedScene& loaded, const RenderOptions& options, const Camera& camera)
+RenderOutcome renderWithReference(const Scene& scene, const RenderOptions& options, const Camera& camera)
 {
     QElapsedTimer wall;
     wall.start();
-    const ReferenceRenderer reference(loaded.scene);
+    const ReferenceRenderer reference(scene);
     const double buildMs = double(wall.nsecsElapsed()) * 1e-6;
     std::vector<double> renderMs;
     ReferenceResult result;
@@ -127,6 +137,47 @@ RenderOutcome renderWithReference(const LoadedScene& loaded, const RenderOptions
                              .arg(buildMs, 0, 'f', 2)
                              .arg(result.stats.totalHits)
                              .arg(result.stats.maxHitsPerPixel);
+    return outcome;
+}
+
+RenderOutcome renderDynamicWithGpu(const DynamicChain& chain, const RenderOptions& options, const Camera& camera)
+{
+    render::OffscreenGlContext gl;
+    render::TrimRenderer renderer(gl.context());
+    configure(renderer, options);
+    render::DynamicTrimRenderer dynamic(renderer);
+    dynamic.setChain(chain);
+    render::FrameTimes times;
+    double characterizeMs = 0.0;
+    for (int i = 0; i < options.repeat; ++i) {
+        dynamic.render(camera, options.trim, options.width, options.height);
+        characterizeMs = std::max(characterizeMs, dynamic.lastStats().characterizeMilliseconds);
+        times.add(renderer.lastStats());
+    }
+    RenderOutcome outcome{renderer.readColor(), withMeshIds(renderer.readTrimImage(), chain.levels.back().frame), {}};
+    outcome.statistics = gpuStatistics(renderer.lastStats(), renderer.parameters(), gl.capabilities().renderer, times) +
+                         QStringLiteral("; dynamic rules: %1 sets, %2 ms to characterize the reference frames once, "
+                                        "%3 moved triangles in the shown set")
+                             .arg(chain.levels.size())
+                             .arg(characterizeMs, 0, 'f', 2)
+                             .arg(chain.levels.back().frame.movedTriangles);
+    return outcome;
+}
+
+RenderOutcome renderDynamicWithReference(const DynamicChain& chain, const RenderOptions& options, const Camera& camera)
+{
+    const DynamicReferenceRenderer reference(chain);
+    ReferenceResult result;
+    std::vector<double> renderMs;
+    for (int i = 0; i < options.repeat; ++i) {
+        result = reference.render(camera, options.width, options.height, options.trim, options.threads);
+        renderMs.push_back(result.stats.wallMs);
+    }
+    RenderOutcome outcome{toQImage(result.color), withMeshIds(std::move(result.trim), chain.levels.back().frame), {}};
+    outcome.statistics = QStringLiteral("reference ray caster, dynamic rules over %1 sets: %2 ms wall (%3)")
+                             .arg(chain.levels.size())
+                             .arg(render::medianOf(renderMs), 0, 'f', 2)
+                             .arg(framesText(int(renderMs.size())));
     return outcome;
 }
 
@@ -148,9 +199,8 @@ bool resolveTrimAvailability(const LoadedScene& loaded, RenderOptions& options)
     return true;
 }
 
-Camera chooseCamera(const LoadedScene& loaded, const RenderOptions& options)
+Camera cameraFor(const Bounds& bounds, const RenderOptions& options)
 {
-    const Bounds bounds = loaded.scene.worldBounds();
     if (options.camera)
         return withDepthRange(*options.camera, bounds);
     return fitCamera(bounds, double(options.width) / double(options.height));
@@ -165,14 +215,56 @@ void writeOutputs(const RenderOutcome& outcome, const RenderOptions& options, co
         saveImage(idImage(outcome.trim), options.idsOutput);
 }
 
+QString classificationText(const RenderOptions& options, const timeline::Timeline& timeline, int frame)
+{
+    const QString base = QString::fromLatin1(ruleName(options.trim.rule).data());
+    if (options.classification == Classification::Static)
+        return options.trim.trimEnabled ? base + QStringLiteral(" (static)") : QStringLiteral("no trimming");
+    QStringList rules;
+    for (const timeline::Timeline::ChainLink& link : timeline.chainTo(frame))
+        rules << QString::fromLatin1(dynamicRuleName(link.rule).data());
+    return QStringLiteral("dynamic: %1 on the base mesh, then %2").arg(base, rules.join(QStringLiteral(", ")));
+}
+
+// A frame of a design: the sets' dynamic rules over the chain of reference frames, or
+// the static rule on the frame alone.
+int renderDesigned(const RenderOptions& options)
+{
+    const DesignedFrame design = loadDesignedFrame(options);
+    const bool gpu = options.backend == Backend::KPlus;
+    RenderOutcome outcome;
+    Camera camera;
+    if (options.classification == Classification::Static) {
+        const Scene scene = timeline::frameScene(design.timeline, design.frame, design.model, design.displayName);
+        camera = cameraFor(scene.worldBounds(), options);
+        outcome = gpu ? renderWithGpu(scene, options, camera) : renderWithReference(scene, options, camera);
+    } else {
+        const DynamicChain chain = timeline::frameChain(design.timeline, design.frame, options.trim.rule, design.model);
+        camera = cameraFor(timeline::chainBounds(chain), options);
+        outcome = gpu ? renderDynamicWithGpu(chain, options, camera) : renderDynamicWithReference(chain, options, camera);
+    }
+    writeOutputs(outcome, options, camera);
+    printLine(QStringLiteral("%1, frame %2 of %3: %4x%5, %6, %7 -> %8")
+                  .arg(QString::fromStdString(design.displayName))
+                  .arg(design.frame)
+                  .arg(design.timeline.frameCount() - 1)
+                  .arg(options.width)
+                  .arg(options.height)
+                  .arg(classificationText(options, design.timeline, design.frame), outcome.statistics, options.output));
+    printLine(QStringLiteral("camera: %1").arg(QString::fromStdString(formatCamera(camera))));
+    return 0;
+}
+
 int renderLoaded(RenderOptions options)
 {
+    if (options.designed())
+        return renderDesigned(options);
     const LoadedScene loaded = loadScene(options.source);
     if (!resolveTrimAvailability(loaded, options))
         return 1;
-    const Camera camera = chooseCamera(loaded, options);
-    const RenderOutcome outcome = options.backend == Backend::KPlus ? renderWithGpu(loaded, options, camera)
-                                                                     : renderWithReference(loaded, options, camera);
+    const Camera camera = cameraFor(loaded.scene.worldBounds(), options);
+    const RenderOutcome outcome = options.backend == Backend::KPlus ? renderWithGpu(loaded.scene, options, camera)
+                                                                     : renderWithReference(loaded.scene, options, camera);
     writeOutputs(outcome, options, camera);
     printLine(QStringLiteral("%1: %2x%3, %4, %5 -> %6")
                   .arg(QString::fromStdString(loaded.displayName))

@@ -6,6 +6,7 @@ target_sources(trimlab_core PRIVATE
   timeline/base64.cpp
   timeline/binary_array.cpp
   timeline/file_bytes.cpp
+  timeline/frame_chain.cpp
   timeline/frame_export.cpp
   timeline/json_fields.cpp
   timeline/morph_gltf.cpp

@@ -65,4 +65,17 @@ DynamicFrameScene makeDynamicFrameScene(const std::vector<glm::uvec3>& triangles
     return result;
 }
 
+TrimImage withMeshIds(TrimImage image, const DynamicFrameScene& frame)
+{
+    for (TrimPixel& pixel : image.pixels) {
+        if (!pixel.covered() || pixel.objectId < 0 || pixel.objectId > 2)
+            continue;
+        const std::vector<std::uint32_t>& map = frame.meshTriangle[std::size_t(pixel.objectId)];
+        if (std::size_t(pixel.primitiveId) < map.size())
+            pixel.primitiveId = std::int32_t(map[std::size_t(pixel.primitiveId)]);
+        pixel.objectId = 0;
+    }
+    return image;
+}
+
 } // namespace trimlab

@@ -11,6 +11,7 @@
 
 #include "mesh/triangle_mesh.h"
 #include "scene/scene.h"
+#include "trim/trim_image.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -54,5 +55,10 @@ struct DynamicFrameScene {
                                                       const std::vector<glm::vec3>& reference,
                                                       const std::vector<glm::vec3>& current,
                                                       const glm::dmat4& modelMatrix = glm::dmat4(1.0));
+
+/// `image` (ids of a DynamicFrameScene's objects, as its renderers give them) with the
+/// ids of the original mesh: object 0, primitive = the mesh triangle. For exports and
+/// picking, so that dynamic and static renders of one mesh read the same.
+[[nodiscard]] TrimImage withMeshIds(TrimImage image, const DynamicFrameScene& frame);
 
 } // namespace trimlab

@@ -8,6 +8,10 @@
 #include "io/pfm_image.h"
 #include "mfr/fragment_method.h"
 #include "scene/scene_source.h"
+#include "timeline/frame_chain.h"
+#include "timeline/stroke_replay.h"
+#include "timeline/stroke_script.h"
+#include "trim/dynamic_reference_renderer.h"
 #include "trim/reference_renderer.h"
 
 #include <QProcess>
@@ -88,6 +92,7 @@ private slots:
     void referenceBackendMatchesInProcessReference();
     void kplusBackendAgreesWithReference();
     void everyMethodRendersAndReportsItsStatistics();
+    void scriptReplayRendersTheDynamicRulesLikeTheReference();
 
 private:
     QTemporaryDir m_dir;
@@ -116,6 +121,14 @@ void TestCommandLine::badArgumentsExitWithTwo_data()
     QTest::newRow("unknown option") << QStringList{"render", "demo:sphere", "--frobnicate", "-o", "x.png"}
                                     << "frobnicate";
     QTest::newRow("info without source") << QStringList{"info"} << "exactly one source";
+    QTest::newRow("frame without a design") << QStringList{"render", "demo:sphere", "--frame", "1", "-o", "x.png"}
+                                            << "--frame and --classification need --script";
+    QTest::newRow("bad classification")
+        << QStringList{"render", "demo:sphere", "--script", "s.json", "--classification", "winding", "-o", "x.png"}
+        << "--classification 'winding'";
+    QTest::newRow("dynamic rules without a base rule")
+        << QStringList{"render", "demo:sphere", "--script", "s.json", "--rule", "none", "-o", "x.png"}
+        << "--rule none cannot classify";
 }
 
 void TestCommandLine::badArgumentsExitWithTwo()
@@ -136,6 +149,14 @@ void TestCommandLine::badInputsExitWithOne_data()
                                   << "Unknown demo scene 'teapot'";
     QTest::newRow("missing file") << QStringList{"info", "/nonexistent/mesh.obj"} << "/nonexistent/mesh.obj";
     QTest::newRow("broken file") << QStringList{"info", data("broken/nan.obj")} << "nan.obj";
+    QTest::newRow("missing stroke script")
+        << QStringList{"render", "demo:sphere", "--script", "/nonexistent/strokes.json", "--backend", "reference", "-o",
+                       "x.png"}
+        << "/nonexistent/strokes.json";
+    QTest::newRow("frame beyond the last")
+        << QStringList{"render", "demo:sphere", "--script", data("scripts/fig8_7_extended_tip.json"), "--frame", "9",
+                       "--backend", "reference", "-o", "x.png"}
+        << "beyond the last frame";
     QTest::newRow("trim asked on an open mesh")
         << QStringList{"render", data("meshes/open_square.obj"), "--rule", "parity", "--backend", "reference", "-o",
                        "x.png"}
@@ -253,6 +274,42 @@ void TestCommandLine::everyMethodRendersAndReportsItsStatistics()
         QCOMPARE(run.out.contains(QStringLiteral("S = 64")), info.usesSharedCounters);
         QVERIFY(!QImage(out).isNull());
     }
+}
+
+// `render --script --frame`: the replayed design's last frame under the dynamic rules,
+// rendered by the GPU and written as ids, agrees with the in-process dynamic reference.
+void TestCommandLine::scriptReplayRendersTheDynamicRulesLikeTheReference()
+{
+    QString why;
+    if (!test::tryCreateGlContext(&why)) {
+        if (test::glRequired())
+            QFAIL(qPrintable("TRIMLAB_REQUIRE_GL=1 but no OpenGL 4.3 context: " + why));
+        QSKIP(qPrintable("no OpenGL 4.3 context: " + why));
+    }
+    const QString script = data("scripts/fig8_7_extended_tip.json");
+    const QString ids = m_dir.filePath("design-ids.png");
+    const Run run = runTrimlab({"render", "demo:sphere", "--script", script, "--frame", "2", "--clip", "0,0,-1,0",
+                                "--size", "200x150", "--method", "abuffer-linked-list", "--ids", ids, "-o",
+                                m_dir.filePath("design.png")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains("frame 2 of 2") && run.out.contains("dynamic: alternating-border on the base mesh, then "
+                                                                  "confluent, confluent"),
+             qPrintable(run.out));
+
+    const LoadedScene loaded = loadScene("demo:sphere");
+    const timeline::Timeline design = timeline::replayStrokeScript(
+        loaded.scene.objects.front().mesh, timeline::loadStrokeScript(script.toStdString()));
+    const DynamicChain chain = timeline::frameChain(design, 2, StaticRule::AlternatingBorder);
+    const Camera camera = fitCamera(timeline::chainBounds(chain), 200.0 / 150.0);
+    TrimSettings settings;
+    settings.clip = ClipPlane{true, {0.0, 0.0, -1.0}, 0.0};
+    const ReferenceResult reference = DynamicReferenceRenderer(chain).render(camera, 200, 150, settings);
+    const TrimImage expected = withMeshIds(reference.trim, chain.levels.back().frame);
+    const test::TrimComparison comparison =
+        test::compareTrimImages(decodeIds(QImage(ids)), idsOnly(expected), reference.diagnostics);
+    qInfo("%s", qPrintable(comparison.summary()));
+    QVERIFY(comparison.coveredPixels > 2000);
+    QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05, qPrintable(comparison.summary()));
 }
 
 QTEST_MAIN(TestCommandLine)

@@ -1,0 +1,71 @@
+#include "designed_frame.h"
+
+#include "cli_messages.h"
+
+#include "scene/scene_source.h"
+#include "timeline/project_file.h"
+#include "timeline/stroke_replay.h"
+#include "timeline/stroke_script.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace trimlab::app {
+
+namespace {
+
+// The brush deforms one closed mesh; a scene of several objects has no single base.
+const SceneObject& designedObject(const LoadedScene& loaded)
+{
+    if (loaded.scene.objects.size() != 1)
+        throw std::invalid_argument(loaded.displayName + " has " + std::to_string(loaded.scene.objects.size()) +
+                                    " objects; a stroke script deforms a single mesh.");
+    if (!loaded.trimmable())
+        throw std::invalid_argument(loaded.displayName + " cannot be designed: " + loaded.trimUnavailableReason());
+    return loaded.scene.objects.front();
+}
+
+// Frame f of a design with `lastFrame` frames after the base, or why not.
+int chosenFrame(const RenderOptions& options, int lastFrame, const std::string& displayName)
+{
+    const int frame = options.frame.value_or(lastFrame);
+    if (frame > lastFrame)
+        throw std::invalid_argument("--frame " + std::to_string(frame) + " is beyond the last frame of " + displayName +
+                                    " (" + std::to_string(lastFrame) + ").");
+    return frame;
+}
+
+DesignedFrame replayScript(const RenderOptions& options)
+{
+    const LoadedScene loaded = loadScene(options.source);
+    const SceneObject& object = designedObject(loaded);
+    const std::filesystem::path scriptPath = options.script.toStdString();
+    const timeline::StrokeScript script = timeline::loadStrokeScript(scriptPath);
+    const std::string name = loaded.displayName + " + " + scriptPath.filename().string();
+    // Checked before the replay, which may take a while.
+    const int frame = chosenFrame(options, int(script.strokeCount()), name);
+    TaskControl control;
+    control.progress = [](const TaskProgress& progress) {
+        if (progress.done == progress.total)
+            printNote(QStringLiteral("replayed %1 strokes").arg(progress.total));
+    };
+    return DesignedFrame{timeline::replayStrokeScript(object.mesh, script, control, scriptPath.filename().string()),
+                         frame, object.modelMatrix, name};
+}
+
+DesignedFrame loadProjectFile(const RenderOptions& options)
+{
+    const std::filesystem::path path = options.source;
+    DesignedFrame design{timeline::loadProject(path), 0, glm::dmat4(1.0), path.filename().string()};
+    design.frame = chosenFrame(options, design.timeline.frameCount() - 1, design.displayName);
+    return design;
+}
+
+} // namespace
+
+DesignedFrame loadDesignedFrame(const RenderOptions& options)
+{
+    return options.script.isEmpty() ? loadProjectFile(options) : replayScript(options);
+}
+
+} // namespace trimlab::app
