@@ -53,7 +53,11 @@ void DynamicTrimRenderer::setChain(const DynamicChain& chain)
     for (const DynamicChainLevel& level : chain.levels)
         m_rules.push_back(level.rule);
     m_baseRule = chain.baseRule;
+    m_meshVertices = chain.levels.back().frame.scene.objects.front().mesh.positions.size();
     m_cacheValid = false;
+    if (m_shownColors.size() != m_meshVertices)
+        m_shownColors.clear();
+    applyShownColors();
 }
 
 void DynamicTrimRenderer::setShownLevel(const DynamicChainLevel& level)
@@ -62,6 +66,31 @@ void DynamicTrimRenderer::setShownLevel(const DynamicChainLevel& level)
         throw std::invalid_argument("set a dynamic chain before replacing its shown level.");
     m_levels.back()->upload(level.frame.scene);
     m_rules.back() = level.rule;
+    applyShownColors();
+}
+
+void DynamicTrimRenderer::setShownVertexColors(std::vector<std::uint32_t> rgba8)
+{
+    if (!rgba8.empty() && rgba8.size() != m_meshVertices)
+        throw std::invalid_argument("setShownVertexColors: the designed mesh has " + std::to_string(m_meshVertices) +
+                                    " vertices, got " + std::to_string(rgba8.size()) + " colors.");
+    m_shownColors = std::move(rgba8);
+    applyShownColors();
+}
+
+// The shown level holds the mesh's vertex array once per frame-class object
+// (dynamic_frame_scene.h), so the colors are repeated for each.
+void DynamicTrimRenderer::applyShownColors()
+{
+    if (m_levels.empty())
+        return;
+    std::vector<std::uint32_t> perObject;
+    if (!m_shownColors.empty()) {
+        perObject.reserve(3 * m_shownColors.size());
+        for (int object = 0; object < 3; ++object)
+            perObject.insert(perObject.end(), m_shownColors.begin(), m_shownColors.end());
+    }
+    m_levels.back()->setVertexColors(perObject);
 }
 
 void DynamicTrimRenderer::resizeState(int width, int height)

@@ -40,6 +40,12 @@ public:
     /// Replaces only the shown (last) level, keeping the cached characterizations: the
     /// brush moved the current frame within the same set.
     void setShownLevel(const DynamicChainLevel& level);
+    /// Per-vertex colors of the designed mesh (one per mesh vertex, RGBA8 as
+    /// GpuScene::setVertexColors takes them) shown instead of the trim palette on the shown
+    /// level, e.g. the brush's region; empty: back to the palette. Kept across
+    /// setShownLevel and setChain until changed. Throws std::invalid_argument on a count
+    /// mismatch.
+    void setShownVertexColors(std::vector<std::uint32_t> rgba8);
 
     /// Renders the last level into the TrimRenderer's target (read it back there).
     /// Throws std::invalid_argument when the method cannot run dynamic rules or no chain
@@ -54,11 +60,14 @@ private:
     void resizeState(int width, int height);
     void clearState(int width, int height);
     void characterizeLevels(const Camera& camera, const TrimSettings& settings, int width, int height);
+    void applyShownColors();
 
     TrimRenderer& m_renderer;
     GlFunctions& m_gl;
     std::vector<std::unique_ptr<GpuScene>> m_levels;
     std::vector<DynamicRule> m_rules;
+    std::vector<std::uint32_t> m_shownColors; ///< per mesh vertex; empty: the trim palette
+    std::size_t m_meshVertices = 0;
     StaticRule m_baseRule = StaticRule::AlternatingBorder;
     GlBuffer m_state;
     GlBuffer m_bits[2];

@@ -113,6 +113,7 @@ private slots:
     void dynamicDiffersFromStaticWhereTheSweptRegionIsKept();
     void peelingMethodsRefuseWithAReason();
     void characterizationIsCachedWhileTheViewStays();
+    void shownVertexColorsReplaceThePalette();
 
 private:
     const ReferenceResult& referenceFor(const ChainCase& c);
@@ -245,6 +246,32 @@ void TestDynamicRulesGpu::characterizationIsCachedWhileTheViewStays()
     moved.eye.x += 0.1;
     m_dynamic->render(moved, TrimSettings{}, kWidth, kHeight);
     QCOMPARE(m_dynamic->lastStats().characterizedLevels, 1);
+}
+
+void TestDynamicRulesGpu::shownVertexColorsReplaceThePalette()
+{
+    // The brush's hover tint under the dynamic rules: per mesh vertex colors reach every
+    // frame-class object of the shown level, and survive replacing the shown level.
+    m_renderer->setMethod(FragmentMethodKind::ABufferLinkedList);
+    const DynamicChain chain = makeChain(m_sphere, {});
+    m_dynamic->setChain(chain);
+    const std::vector<std::uint32_t> green(m_sphere.positions.size(), 0xFF00FF00u);
+    m_dynamic->setShownVertexColors(green);
+    m_dynamic->setShownLevel(chain.levels.back());
+    m_dynamic->render(chainCamera(), TrimSettings{}, kWidth, kHeight);
+    const QImage image = m_renderer->readColor();
+    const TrimImage ids = m_renderer->readTrimImage();
+    int covered = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x)
+            if (ids.at(x, y).covered()) {
+                ++covered;
+                const QRgb c = image.pixel(x, y);
+                QVERIFY2(qGreen(c) > qRed(c) && qGreen(c) > qBlue(c), qPrintable(QString("pixel %1,%2").arg(x).arg(y)));
+            }
+    QVERIFY(covered > 1000);
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, m_dynamic->setShownVertexColors({1u, 2u}));
+    m_dynamic->setShownVertexColors({});
 }
 
 QTEST_MAIN(TestDynamicRulesGpu)
