@@ -4,12 +4,14 @@
 //   trimlab info SOURCE
 //   trimlab bench [--scenes a,b] [--methods a,b] [--size WxH] [--json out.json]
 //   trimlab segment ANIMATION --clusters N --h H -o labels.json
+//   trimlab skin ANIMATION --bones B --method lbs|dqs -o out.glb
 #include "bench_verb.h"
 #include "cli_messages.h"
 #include "gui_launcher.h"
 #include "info_verb.h"
 #include "render_verb.h"
 #include "segment_verb.h"
+#include "skin_verb.h"
 
 #include <QStringList>
 
@@ -35,6 +37,8 @@ void printUsage()
         "  trimlab bench [options]           time every multi-fragment method (see trimlab bench --help)\n"
         "  trimlab segment ANIMATION [options] -o labels.json\n"
         "                                    segment a mesh animation (see trimlab segment --help)\n"
+        "  trimlab skin ANIMATION --bones B --method lbs|dqs -o out.glb\n"
+        "                                    skin a mesh animation, export glTF (see trimlab skin --help)\n"
         "SOURCE is a mesh file (.obj .ply .stl .off .gltf .glb, optionally .gz) or a built-in demo:\n"
         "  demo:pushed-sphere, demo:crossing-loop, demo:nested-spheres, demo:sphere");
 }
@@ -50,6 +54,7 @@ constexpr BatchVerb kVerbs[] = {
     {"info", trimlab::app::runInfoVerb},
     {"bench", trimlab::app::runBenchVerb},
     {"segment", trimlab::app::runSegmentVerb},
+    {"skin", trimlab::app::runSkinVerb},
 };
 
 } // namespace

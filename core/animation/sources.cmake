@@ -52,3 +52,13 @@ target_sources(trimlab_core PRIVATE
   animation/skinning_reconstruction.cpp
   animation/skinning_weights.cpp
 )
+
+# Exporting skinned animations as glTF, and segmentations with a given segment (bone) count.
+target_sources(trimlab_core PRIVATE
+  animation/segment_count_search.cpp
+  animation/skinning_gltf.cpp
+  animation/skinning_gltf_joints.cpp
+  animation/skinning_gltf_morph.cpp
+  animation/skinning_gltf_skin.cpp
+  animation/skinning_rigid_joint_solver.cpp
+)

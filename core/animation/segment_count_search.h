@@ -1,0 +1,52 @@
+#pragma once
+/// \file
+/// A segmentation with exactly a requested number of segments — the bone count B of a
+/// skinning (thesis 4.1.1: one proxy bone per segment). The chapter 3 pipeline is steered
+/// by two parameters, the clusters per pose partition and the cleaning strength h, and
+/// neither gives a segment count directly; this searches them, then closes any remaining
+/// gap by merging the smallest segments.
+
+#include "animation/animation_segmenter.h"
+#include "animation/task_control.h"
+#include "animation/vertex_graph.h"
+
+#include <cstddef>
+#include <span>
+
+namespace trimlab {
+
+struct SegmentCountSearch {
+    VertexLabeling segmentation; ///< exactly the requested count of segments (canonical labels)
+    std::size_t clusters = 0;    ///< clusters per pose partition of the segmenter's last run
+    std::size_t overSegments = 0; ///< segments of that run's over-segmentation
+    double h = 0.0;              ///< the cleaning strength of the segmentation merged from
+    std::size_t cleanedCount = 0; ///< segments p2p-cleaning left at `h` (≥ the count)
+    std::size_t merged = 0;      ///< smallest-segment merges that closed the gap (0: h alone hit it)
+};
+
+/// Segments `segmenter`'s animation into exactly `count` segments:
+/// 1. Partitions with `count` clusters per pose, the segmenter's other settings kept:
+///    run() when it is not ready (construct it with `count` clusters and this is its only
+///    partitioning), then repartition() unless it already used `count`; and, while the
+///    over-segmentation has fewer than `count` segments, repartitions with twice the
+///    clusters (at most #V).
+/// 2. Bisects h ∈ [0, 1] on the cleaned segment count (falling with h, though not
+///    strictly: p2p_cleaning.h), keeping the largest h whose count is still ≥ `count`.
+/// 3. If that count is above `count`, merges segments (mergeSmallestSegments) until it is
+///    exact. Every result is therefore a p2p-cleaned segmentation, coarsened as little as
+///    needed. `count` == 1 gives one segment without running anything.
+/// Throws std::invalid_argument when `count` is 0 or above #V, std::runtime_error when the
+/// animation has too few poses to be partitioned or the over-segmentation cannot reach
+/// `count` segments; OperationCancelled from the segmenter's stages.
+[[nodiscard]] SegmentCountSearch segmentIntoCount(AnimationSegmenter& segmenter, std::size_t count,
+                                                  const TaskControl& control = {});
+
+/// Merges segments of `labeling` until `count` remain (no change when it has ≤ count):
+/// repeatedly the segment of smallest area (ties: smaller label) joins its neighbour
+/// (labelAdjacency) of largest area (ties: smaller label) — as p2p-cleaning absorbs a
+/// sliver into its largest neighbour; a segment without neighbours (a separate mesh
+/// component) joins the largest segment. `areas`: #V vertex areas. Returns canonical labels.
+[[nodiscard]] VertexLabeling mergeSmallestSegments(const VertexGraph& graph, std::span<const double> areas,
+                                                   const VertexLabeling& labeling, std::size_t count);
+
+} // namespace trimlab
