@@ -2,6 +2,16 @@
 
 #include "animation_opener.h"
 #include "animation_settings_store.h"
+#include "brush_panel.h"
+#include "brush_settings_store.h"
+#include "brush_tool.h"
+#include "deformation_timeline_panel.h"
+#include "design_session.h"
+#include "design_workspace.h"
+#include "history_exports.h"
+#include "mesh/mesh_validation.h"
+#include "project_files.h"
+#include "timeline/project_file.h"
 #include "frame_stats_labels.h"
 #include "frame_stats_panel.h"
 #include "mesh_file_filter.h"
@@ -13,6 +23,7 @@
 #include "scene/demo_scenes.h"
 #include "scene_loader.h"
 #include "segmentation_panel.h"
+#include "skinning_panel.h"
 #include "timeline_panel.h"
 #include "viewport_widget.h"
 
@@ -33,7 +44,11 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
+#include <QToolBar>
+#include <QUndoGroup>
 #include <QVBoxLayout>
+
+#include <glm/matrix.hpp>
 
 namespace trimlab::ui {
 
@@ -88,11 +103,14 @@ MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
     createDock();
     createStatsDock();
     createAnimationDocks();
+    createDesignDocks();
     createFileMenu();
+    createEditMenu();
     createViewMenu();
     createHelpMenu();
     connectParts();
     connectAnimationParts();
+    connectDesignParts();
     restoreSettings();
     updateTitle();
     QTimer::singleShot(0, this, &MainWindow::openDefaultIfNothingRequested);
@@ -185,6 +203,19 @@ void MainWindow::createAnimationDocks()
     addDockWidget(Qt::RightDockWidgetArea, m_segmentationDock);
     tabifyDockWidget(m_dock, m_segmentationDock);
     m_dock->raise();
+
+    m_skinning = new SkinningPanel;
+    auto* skinningScroll = new QScrollArea;
+    skinningScroll->setWidget(m_skinning);
+    skinningScroll->setWidgetResizable(true);
+    skinningScroll->setFrameShape(QFrame::NoFrame);
+    m_skinningDock = new QDockWidget(tr("Skinning"), this);
+    m_skinningDock->setObjectName(QStringLiteral("skinningDock"));
+    m_skinningDock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
+    m_skinningDock->setWidget(skinningScroll);
+    addDockWidget(Qt::RightDockWidgetArea, m_skinningDock);
+    tabifyDockWidget(m_segmentationDock, m_skinningDock);
+    m_skinningDock->hide(); // shown while an animation is open
 }
 
 void MainWindow::createFileMenu()
@@ -206,6 +237,8 @@ void MainWindow::createFileMenu()
     file->addSeparator();
     QAction* exportImage = file->addAction(tr("&Export Image…"), this, &MainWindow::showExportDialog);
     exportImage->setShortcut(QKeySequence(tr("Ctrl+E")));
+    file->addSeparator();
+    createDesignFileActions(file);
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
@@ -270,9 +303,18 @@ void MainWindow::createViewMenu()
     QAction* segmentation = m_segmentationDock->toggleViewAction();
     segmentation->setText(tr("Se&gmentation Panel"));
     m_viewMenu->addAction(segmentation);
+    QAction* skinning = m_skinningDock->toggleViewAction();
+    skinning->setText(tr("S&kinning Panel"));
+    m_viewMenu->addAction(skinning);
     QAction* timeline = m_timelineDock->toggleViewAction();
     timeline->setText(tr("&Timeline"));
     m_viewMenu->addAction(timeline);
+    QAction* brush = m_brushDock->toggleViewAction();
+    brush->setText(tr("&Brush Panel"));
+    m_viewMenu->addAction(brush);
+    QAction* deformation = m_deformationDock->toggleViewAction();
+    deformation->setText(tr("&Deformation Timeline"));
+    m_viewMenu->addAction(deformation);
 }
 
 void MainWindow::createHelpMenu()
@@ -322,6 +364,21 @@ void MainWindow::connectAnimationParts()
         m_timeline->play();
     });
     connect(m_segmentation, &SegmentationPanel::exportRequested, this, &MainWindow::showExportSegmentationDialog);
+    connect(m_segmentation, &SegmentationPanel::displayColorsChanged, this, &MainWindow::passSegmentationToSkinning);
+    connect(m_segmentation, &SegmentationPanel::choicesChanged, this, &MainWindow::passSegmentationToSkinning);
+    connect(m_skinning, &SkinningPanel::displayChanged, this, [this] {
+        showPose(m_timeline->pose());
+        showSegmentColors();
+    });
+    connect(m_skinning, &SkinningPanel::exportRequested, this, &MainWindow::showExportSkinningDialog);
+    connect(m_skinning, &SkinningPanel::exportFinished, this, [this](const QString& path, double eRms, const QString& kind) {
+        showMessage(QMessageBox::Information, tr("Export Skinning"), tr("Saved %1").arg(path),
+                    tr("E_RMS of the exported file against the original animation: %1 (%2)")
+                        .arg(SkinningPanel::formatERms(eRms), kind));
+    });
+    connect(m_skinning, &SkinningPanel::exportFailed, this, [this](const QString& path, const QString& message) {
+        showMessage(QMessageBox::Warning, tr("Export Skinning"), tr("%1 was not saved.").arg(path), message);
+    });
 }
 
 void MainWindow::restoreSettings()
@@ -335,6 +392,12 @@ void MainWindow::restoreSettings()
     m_timeline->setPlaybackChoices(playback.fps, playback.loop);
     m_panel->setRenderChoices(loadRenderChoices(*m_settings));
     applyRenderChoices();
+    const BrushChoices brush = loadBrushChoices(*m_settings);
+    m_brushPanel->setChoices(brush);
+    m_design->setBrushSettings(m_brushPanel->settings());
+    m_brushAction->setChecked(brush.toolEnabled);
+    m_deformationPanel->setFps(m_settings->value(QStringLiteral("design/fps"), 12).toInt());
+    m_exports->setFps(m_deformationPanel->fps());
     if (!restoreGeometry(m_settings->value(kGeometryKey).toByteArray()))
         resize(1100, 720);
     if (!restoreState(m_settings->value(kStateKey).toByteArray())) {
@@ -342,6 +405,8 @@ void MainWindow::restoreSettings()
         resizeDocks({m_dock, m_statsDock}, {440, 300}, Qt::Vertical); // the Render panel is the taller
     }
     m_timelineDock->hide(); // until an animation is opened
+    m_skinningDock->hide();
+    m_deformationDock->hide(); // until a deformation history starts
 }
 
 void MainWindow::saveWindowState()
@@ -353,13 +418,26 @@ void MainWindow::saveWindowState()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
+    if (!m_projectFiles->maybeSave()) {
+        event->ignore();
+        return;
+    }
     saveWindowState();
     QMainWindow::closeEvent(event);
 }
 
 void MainWindow::openSource(const QString& source)
 {
+    if (!m_projectFiles->maybeSave())
+        return;
     m_openRequested = true;
+    if (ProjectFiles::isProjectPath(source)) {
+        m_loader->cancel();
+        m_animationOpener->cancel();
+        statusBar()->showMessage(tr("Opening project %1…").arg(sceneLabel(source)));
+        m_projectFiles->open(source);
+        return;
+    }
     m_animationOpener->cancel(); // the newest request wins
     statusBar()->showMessage(tr("Opening %1…").arg(sceneLabel(source)));
     m_loader->load(source);
@@ -367,6 +445,8 @@ void MainWindow::openSource(const QString& source)
 
 void MainWindow::openAnimation(const QString& source)
 {
+    if (!m_projectFiles->maybeSave())
+        return;
     m_openRequested = true;
     m_loader->cancel(); // the newest request wins
     statusBar()->showMessage(tr("Opening animation %1…").arg(sceneLabel(source)));
@@ -381,7 +461,8 @@ void MainWindow::openDefaultIfNothingRequested()
 
 bool MainWindow::isLoading() const
 {
-    return m_loader->isLoading() || m_animationOpener->isLoading();
+    return m_loader->isLoading() || m_animationOpener->isLoading() || m_projectFiles->isOpening() ||
+           m_exports->isReplaying();
 }
 
 void MainWindow::openRecent(const QString& path)
@@ -425,8 +506,14 @@ void MainWindow::showOpenAnimationDialog()
 
 void MainWindow::showOpenDialog()
 {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open Mesh"), loadLastDirectory(*m_settings), meshFileDialogFilter());
+    // The first filter offers meshes and projects together; the project filter follows it.
+    QString filter = meshFileDialogFilter();
+    const qsizetype paren = filter.indexOf(QLatin1Char('('));
+    filter.insert(paren + 1, QStringLiteral("*.%1 ").arg(QLatin1String(ProjectFiles::kSuffix)));
+    filter.replace(0, paren, tr("Meshes and projects "));
+    filter.insert(filter.indexOf(QStringLiteral(";;")) + 2, ProjectFiles::dialogFilter() + QStringLiteral(";;"));
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Mesh or Project"), loadLastDirectory(*m_settings),
+                                                      filter);
     if (path.isEmpty())
         return;
     saveLastDirectory(*m_settings, QFileInfo(path).absolutePath());
@@ -436,8 +523,10 @@ void MainWindow::showOpenDialog()
 void MainWindow::onSceneLoaded(std::shared_ptr<const LoadedScene> loaded)
 {
     clearAnimation();
+    m_design->endSession(); // before the viewport takes the new scene
     const Bounds bounds = loaded->scene.worldBounds();
     showScene(std::move(loaded), bounds);
+    startDesignSession();
     const QString source = QString::fromStdString(m_scene->source);
     if (!isDemoSource(m_scene->source)) {
         m_recent.add(source);
@@ -454,6 +543,7 @@ void MainWindow::onSceneLoaded(std::shared_ptr<const LoadedScene> loaded)
 
 void MainWindow::onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loaded)
 {
+    m_design->endSession(); // an animation's poses are not a deformation history
     m_animation = std::move(loaded);
     showScene(m_animation->restScene, m_animation->bounds);
     m_viewport->setViewBounds(m_animation->bounds); // no pose may cross the far plane
@@ -464,7 +554,10 @@ void MainWindow::onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loaded
                                                     : tr("pose %1").arg(pose));
     m_timeline->setPoses(names);
     m_segmentation->setAnimation(m_animation);
+    m_skinning->setAnimation(m_animation);
+    passSegmentationToSkinning();
     m_timelineDock->show();
+    m_skinningDock->show();
     m_segmentationDock->show();
     m_segmentationDock->raise();
     const QString source = QString::fromStdString(m_scene->source);
@@ -499,21 +592,40 @@ void MainWindow::clearAnimation()
     m_animation.reset();
     m_timeline->setPoses({});
     m_segmentation->setAnimation(nullptr);
+    m_skinning->setAnimation(nullptr);
     m_timelineDock->hide();
+    m_skinningDock->hide();
 }
 
 void MainWindow::showPose(int pose)
 {
     if (!m_animation || pose < 0 || std::size_t(pose) >= m_animation->animation->poseCount())
         return;
-    m_viewport->showPose(m_animation->animation->poses[std::size_t(pose)]);
+    if (const std::optional<std::vector<glm::vec3>> skinned = m_skinning->shownPose(pose))
+        m_viewport->showPose(*skinned);
+    else
+        m_viewport->showPose(m_animation->animation->poses[std::size_t(pose)]);
     m_segmentation->setCurrentPose(pose);
+    m_skinning->setCurrentPose(pose);
 }
 
+// The skinning error heat map, while shown, takes the place of the segment colors.
 void MainWindow::showSegmentColors()
 {
-    if (m_animation)
-        m_viewport->setVertexColors(m_segmentation->displayColors());
+    if (!m_animation)
+        return;
+    const std::vector<std::uint32_t>& heatMap = m_skinning->displayColors();
+    m_viewport->setVertexColors(heatMap.empty() ? m_segmentation->displayColors() : heatMap);
+}
+
+// The Skinning panel's bones: the segmentation shown, unless it changes per pose
+// (variable mode); a given bone count segments with the Segmentation panel's settings.
+void MainWindow::passSegmentationToSkinning()
+{
+    const bool variable = m_segmentation->choices().mode == SegmentationMode::Variable;
+    m_skinning->setSegmentation(variable ? nullptr : m_segmentation->shownLabeling(),
+                                variable ? nullptr : m_segmentation->shownColors());
+    m_skinning->setSegmenterSettings(m_segmentation->choices().segmenterSettings());
 }
 
 void MainWindow::onLoadFailed(const QString& source, const QString& message)
@@ -539,6 +651,7 @@ void MainWindow::applyRenderChoices()
     // The winding index is undefined for open or inconsistently oriented surfaces.
     effective.trimEnabled = effective.trimEnabled && m_panel->sceneTrimmable();
     m_viewport->setTrimSettings(effective);
+    m_design->setRenderMode(choices.dynamicRules, choices.trim.rule, effective.trimEnabled);
     m_viewport->setMethod(choices.method);
     m_viewport->setMethodParameters(choices.methodParameters());
     refreshMemoryEstimate();
@@ -628,6 +741,24 @@ void MainWindow::showExportSegmentationDialog()
         showMessage(QMessageBox::Warning, tr("Export Segmentation"), tr("The segmentation was not saved."), error);
 }
 
+void MainWindow::showExportSkinningDialog()
+{
+    const QStringList filters{tr("glTF (*.gltf)"), tr("Binary glTF (*.glb)")};
+    const QString name = m_scene ? QFileInfo(QString::fromStdString(m_scene->displayName)).completeBaseName()
+                                 : QStringLiteral("animation");
+    const QString suggested = loadLastDirectory(*m_settings) + QLatin1Char('/') + name + QStringLiteral("-skinned.gltf");
+    QString filter = filters.front();
+    QString path = QFileDialog::getSaveFileName(this, tr("Export Skinning"), suggested,
+                                                filters.join(QStringLiteral(";;")), &filter);
+    if (path.isEmpty())
+        return;
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix != QStringLiteral("gltf") && suffix != QStringLiteral("glb"))
+        path += QRegularExpression(QStringLiteral("\\*(\\.\\w+)")).match(filter).captured(1);
+    saveLastDirectory(*m_settings, QFileInfo(path).absolutePath());
+    m_skinning->exportGltf(path, double(m_timeline->fps()));
+}
+
 void MainWindow::showAbout()
 {
     const auto caps = m_viewport->capabilities();
@@ -652,8 +783,13 @@ void MainWindow::showMessage(QMessageBox::Icon icon, const QString& title, const
 
 void MainWindow::updateTitle()
 {
-    setWindowTitle(m_scene ? tr("%1 — TrimLab").arg(QString::fromStdString(m_scene->displayName))
-                           : QStringLiteral("TrimLab"));
+    QString name = m_scene ? QString::fromStdString(m_scene->displayName) : QString();
+    const DesignSession* session = m_design->session();
+    if (session && !session->projectPath().isEmpty())
+        name = QFileInfo(session->projectPath()).fileName();
+    // "[*]" is where Qt puts the modified mark (setWindowModified).
+    setWindowTitle(name.isEmpty() ? QStringLiteral("TrimLab[*]") : tr("%1[*] — TrimLab").arg(name));
+    setWindowModified(m_design->isModified());
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event)

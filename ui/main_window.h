@@ -12,10 +12,22 @@
 /// Recent Animation, drag and drop of a folder — goes through openAnimation()
 /// (AnimationOpener: progress and cancel). The animation's rest pose then is the scene
 /// (one object; the trim controls apply as for a mesh), the Timeline plays its poses in
-/// the viewport and the Segmentation panel segments it and colors it by segment. A
+/// the viewport and the Segmentation panel segments it and colors it by segment; the
+/// Skinning panel (a dock tabbed with it, shown while an animation is open) fits a
+/// skinning with the segments as bones, and what it shows — the approximation's poses or
+/// the error heat map — takes the place of the original poses and segment colors. A
 /// failed load shows a dialog naming the file and the reason and keeps the current scene
 /// or animation. If nothing was opened by the time the event loop first runs, the window
 /// opens defaultSource().
+///
+/// The designer workflow (docs/designer-workflow.md): a trimmable single-object mesh
+/// shown starts a deformation history (DesignWorkspace); the Brush dock and the brush tool
+/// (Edit ▸ Brush, B) deform it, the Deformation timeline dock scrubs and plays it and
+/// starts sets (N), Edit ▸ Undo/Redo undo strokes, sets and rules, and File ▸ Save Project
+/// (Ctrl+S) / Save Project As… write .trimlab projects, which Open, Open Recent and drag
+/// and drop open again. File ▸ Export ▸ writes the frames (OBJ sequence, glTF morph
+/// targets); File ▸ Save/Replay Stroke Script record and replay strokes. Unsaved changes
+/// are asked about before they would be lost, and the title marks them with a *.
 ///
 /// Settings (render choices, segmentation choices, playback, recent files and recent
 /// animations — two lists, since an animation is a folder or pattern as often as a
@@ -34,6 +46,12 @@
 
 #include <memory>
 
+namespace trimlab::timeline {
+struct Project;
+struct ProjectExtras;
+}
+
+class QAction;
 class QDockWidget;
 class QMenu;
 class QSettings;
@@ -41,12 +59,18 @@ class QSettings;
 namespace trimlab::ui {
 
 class AnimationOpener;
+class BrushPanel;
+class DeformationTimelinePanel;
+class DesignWorkspace;
+class HistoryExports;
+class ProjectFiles;
 class FrameStatsLabels;
 class FrameStatsPanel;
 class MethodTimingPanel;
 class RenderPanel;
 class SceneLoader;
 class SegmentationPanel;
+class SkinningPanel;
 class TimelinePanel;
 class ViewportWidget;
 struct LoadedAnimation;
@@ -63,9 +87,10 @@ public:
     /// "demo:pushed-sphere": what a new window shows.
     [[nodiscard]] static QString defaultSource();
 
-    /// Opens `source` — a mesh file path or "demo:NAME" — asynchronously. The result
-    /// arrives as sceneLoaded() or sceneLoadFailed() (with its dialog); a newer call or
-    /// Cancel in the progress dialog discards a pending load.
+    /// Opens `source` — a mesh file path, a .trimlab project or "demo:NAME" —
+    /// asynchronously, after asking about unsaved changes (nothing happens when the user
+    /// cancels). The result arrives as sceneLoaded() or sceneLoadFailed() (with its
+    /// dialog); a newer call or Cancel in the progress dialog discards a pending load.
     void openSource(const QString& source);
     /// Opens the mesh animation `source` — a folder, a pattern (dir/mesh_*.obj,
     /// dir/mesh_%04d.obj.gz) or a .gltf/.glb file — asynchronously, with progress and
@@ -91,7 +116,16 @@ public:
     [[nodiscard]] AnimationOpener* animationOpener() const { return m_animationOpener; }
     [[nodiscard]] TimelinePanel* timelinePanel() const { return m_timeline; }
     [[nodiscard]] SegmentationPanel* segmentationPanel() const { return m_segmentation; }
+    [[nodiscard]] SkinningPanel* skinningPanel() const { return m_skinning; }
     [[nodiscard]] QStringList recentAnimations() const { return m_recentAnimations.paths(); }
+    [[nodiscard]] DesignWorkspace* designWorkspace() const { return m_design; }
+    [[nodiscard]] BrushPanel* brushPanel() const { return m_brushPanel; }
+    [[nodiscard]] DeformationTimelinePanel* deformationTimelinePanel() const { return m_deformationPanel; }
+    [[nodiscard]] ProjectFiles* projectFiles() const { return m_projectFiles; }
+    [[nodiscard]] HistoryExports* historyExports() const { return m_exports; }
+    /// Edit ▸ Brush (B, checkable) and Edit ▸ New Set (N).
+    [[nodiscard]] QAction* brushAction() const { return m_brushAction; }
+    [[nodiscard]] QAction* newSetAction() const { return m_newSetAction; }
 
 signals:
     /// A scene is shown; `source` as given to openSource().
@@ -115,6 +149,13 @@ private:
     void createDock();
     void createStatsDock();
     void createAnimationDocks();
+    void createDesignDocks();
+    void createDesignFileActions(QMenu* file);
+    void createEditMenu();
+    void connectDesignParts();
+    void startDesignSession();
+    void onProjectOpened(std::shared_ptr<const timeline::Project> project, const QString& path);
+    [[nodiscard]] timeline::ProjectExtras projectExtras() const;
     void createFileMenu();
     void createViewMenu();
     void createHelpMenu();
@@ -132,6 +173,8 @@ private:
     void showOpenAnimationDialog();
     void openRecentAnimation(const QString& path);
     void showExportSegmentationDialog();
+    void showExportSkinningDialog();
+    void passSegmentationToSkinning();
     void openDefaultIfNothingRequested();
     void onSceneLoaded(std::shared_ptr<const LoadedScene> loaded);
     void onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loaded);
@@ -165,9 +208,20 @@ private:
     QDockWidget* m_timelineDock = nullptr;
     SegmentationPanel* m_segmentation = nullptr;
     QDockWidget* m_segmentationDock = nullptr;
+    SkinningPanel* m_skinning = nullptr;
+    QDockWidget* m_skinningDock = nullptr;
     QMenu* m_recentMenu = nullptr;
     QMenu* m_recentAnimationMenu = nullptr;
     QMenu* m_viewMenu = nullptr;
+    DesignWorkspace* m_design = nullptr;
+    BrushPanel* m_brushPanel = nullptr;
+    QDockWidget* m_brushDock = nullptr;
+    DeformationTimelinePanel* m_deformationPanel = nullptr;
+    QDockWidget* m_deformationDock = nullptr;
+    ProjectFiles* m_projectFiles = nullptr;
+    HistoryExports* m_exports = nullptr;
+    QAction* m_brushAction = nullptr;
+    QAction* m_newSetAction = nullptr;
     RecentFiles m_recent;
     RecentFiles m_recentAnimations{QStringLiteral("recentAnimations")};
     std::shared_ptr<const LoadedScene> m_scene;

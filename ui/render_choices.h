@@ -20,6 +20,10 @@ struct RenderChoices {
     int k = render::MethodParameters{}.k;
     /// S, the shared counters of the S-buffer family, >= 1.
     int sharedCounters = render::MethodParameters{}.sharedCounters;
+    /// Classification of a designer session's frames: false, the static rule of `trim`
+    /// alone; true, the dynamic rules of the history's sets (thesis 8.1.1), with the
+    /// static rule classifying the base mesh.
+    bool dynamicRules = false;
 
     /// The renderer's parameters for these choices (the others at their defaults).
     [[nodiscard]] render::MethodParameters methodParameters() const

@@ -73,6 +73,14 @@ QWidget* RenderPanel::createTrimGroup()
         m_rule->setItemData(m_rule->count() - 1, tr(entry.toolTip), Qt::ToolTipRole);
     }
     form->addRow(tr("Rule"), m_rule);
+    m_classification = new QComboBox(group);
+    m_classification->setObjectName(QStringLiteral("classificationComboBox"));
+    m_classification->addItem(tr("Static rule"), false);
+    m_classification->addItem(tr("Dynamic rules (per set)"), true);
+    m_classification->setToolTip(tr("For a deformation history: classify every frame by the static rule alone, or "
+                                    "by the dynamic rules of its sets (thesis 8.1.1), the static rule classifying "
+                                    "the base mesh. Needs a buffer method (not peeling or two-pass)."));
+    form->addRow(tr("Classification"), m_classification);
     m_trimUnavailable = new QLabel(group);
     m_trimUnavailable->setObjectName(QStringLiteral("trimUnavailableLabel"));
     m_trimUnavailable->setWordWrap(true);
@@ -81,6 +89,7 @@ QWidget* RenderPanel::createTrimGroup()
     form->addRow(m_trimUnavailable);
     connect(m_trim, &QCheckBox::toggled, this, &RenderPanel::renderChoicesChanged);
     connect(m_rule, &QComboBox::currentIndexChanged, this, &RenderPanel::renderChoicesChanged);
+    connect(m_classification, &QComboBox::currentIndexChanged, this, &RenderPanel::renderChoicesChanged);
     return group;
 }
 
@@ -88,6 +97,8 @@ void RenderPanel::setRenderChoices(const RenderChoices& choices)
 {
     const QSignalBlocker trimBlocker(m_trim);
     const QSignalBlocker ruleBlocker(m_rule);
+    const QSignalBlocker classificationBlocker(m_classification);
+    m_classification->setCurrentIndex(choices.dynamicRules ? 1 : 0);
     m_trim->setChecked(choices.trim.trimEnabled);
     m_rule->setCurrentIndex(m_rule->findData(ruleKey(choices.trim.rule)));
     m_clip->setPlane(choices.trim.clip);
@@ -104,6 +115,7 @@ RenderChoices RenderPanel::renderChoices() const
     choices.method = m_methodGroup->method();
     choices.k = m_methodGroup->k();
     choices.sharedCounters = m_methodGroup->sharedCounters();
+    choices.dynamicRules = m_classification->currentData().toBool();
     return choices;
 }
 
@@ -113,6 +125,7 @@ void RenderPanel::setSceneInfo(const Bounds& bounds, bool trimmable, const QStri
     m_clip->setSceneBounds(bounds);
     m_trim->setEnabled(trimmable);
     m_rule->setEnabled(trimmable);
+    m_classification->setEnabled(trimmable);
     m_trimUnavailable->setText(trimmable ? QString() : tr("Trim modes unavailable: %1").arg(reason));
     m_trimUnavailable->setVisible(!trimmable);
 }

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// The Render panel (the content of the main window's "Render" dock): trim on/off, the
-/// static rule, the clipping plane (clip_plane_editor.h) and the multi-fragment method
+/// static rule, the classification of a designer session (the static rule alone, or the
+/// dynamic rules per set with the static rule classifying the base mesh), the clipping plane (clip_plane_editor.h) and the multi-fragment method
 /// with its parameters and the GPU memory it needs at the current frame size
 /// (method_group.h). When the scene is not trimmable
 /// the trim controls are disabled and a label says why; the user's choice is kept and
@@ -55,6 +56,7 @@ private:
 
     QCheckBox* m_trim = nullptr;
     QComboBox* m_rule = nullptr;
+    QComboBox* m_classification = nullptr;
     QLabel* m_trimUnavailable = nullptr;
     ClipPlaneEditor* m_clip = nullptr;
     MethodGroup* m_methodGroup = nullptr;

@@ -21,6 +21,7 @@ const QString kClipOffset = QStringLiteral("render/clipOffset");
 const QString kK = QStringLiteral("render/k");
 const QString kMethod = QStringLiteral("render/method");
 const QString kSharedCounters = QStringLiteral("render/sharedCounters");
+const QString kClassification = QStringLiteral("render/classification");
 const QString kLastDirectory = QStringLiteral("paths/lastDirectory");
 
 /// The stored number at `key`, or `fallback` when missing, unparsable or not finite.
@@ -71,6 +72,7 @@ RenderChoices loadRenderChoices(const QSettings& settings)
     choices.k = boundedInt(settings, kK, 1, render::MethodParameters::kMaxK, fallback.k);
     choices.method = loadMethod(settings, fallback.method);
     choices.sharedCounters = boundedInt(settings, kSharedCounters, 1, kMaxSharedCounters, fallback.sharedCounters);
+    choices.dynamicRules = settings.value(kClassification).toString() == QStringLiteral("dynamic");
     return choices;
 }
 
@@ -88,6 +90,7 @@ void saveRenderChoices(QSettings& settings, const RenderChoices& choices)
     const std::string_view method = render::methodInfo(choices.method).id;
     settings.setValue(kMethod, QString::fromLatin1(method.data(), qsizetype(method.size())));
     settings.setValue(kSharedCounters, choices.sharedCounters);
+    settings.setValue(kClassification, choices.dynamicRules ? QStringLiteral("dynamic") : QStringLiteral("static"));
 }
 
 QString loadLastDirectory(const QSettings& settings)

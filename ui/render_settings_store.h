@@ -3,7 +3,8 @@
 /// Reading and writing the render choices and the file dialogs' last directory in a
 /// QSettings (keys "render/…" and "paths/lastDirectory"; recent files: recent_files.h;
 /// window geometry and dock state: main_window.cpp). The method is stored by its stable
-/// id ("render/method"). Values that are missing or unusable (unknown rule name, a method
+/// id ("render/method"), the classification as "static" or "dynamic"
+/// ("render/classification"). Values that are missing or unusable (unknown rule name, a method
 /// this build lacks, k or S out of range, zero or non-finite normal) fall back to
 /// firstStartRenderChoices(), field by field — so no saved settings means first start.
 

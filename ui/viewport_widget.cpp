@@ -52,7 +52,56 @@ void ViewportWidget::setScene(std::shared_ptr<const Scene> scene)
     m_lastFrame.reset();
     m_pose.clear();
     m_vertexColors.clear();
+    m_chain.reset(); // a chain belongs to the previous scene's mesh
+    m_level.reset();
     update();
+}
+
+void ViewportWidget::setTool(ViewportTool* tool)
+{
+    m_tool = tool;
+    setMouseTracking(tool != nullptr); // hover feedback (the brush's region) needs moves without buttons
+    if (m_drag == Drag::Tool)
+        m_drag = Drag::None;
+}
+
+void ViewportWidget::setDynamicChain(std::shared_ptr<const DynamicChain> chain)
+{
+    m_chain = std::move(chain);
+    m_level.reset();
+    m_chainDirty = m_chain != nullptr;
+    m_levelDirty = false;
+    update();
+}
+
+void ViewportWidget::setDynamicShownLevel(std::shared_ptr<const DynamicChainLevel> level)
+{
+    if (!m_chain)
+        return;
+    m_level = std::move(level);
+    m_levelDirty = m_level != nullptr;
+    update();
+}
+
+const DynamicChainLevel* ViewportWidget::dynamicShownLevel() const
+{
+    if (m_level)
+        return m_level.get();
+    return m_chain && !m_chain->levels.empty() ? &m_chain->levels.back() : nullptr;
+}
+
+std::optional<TrimPixel> ViewportWidget::trimPixelAt(QPointF position)
+{
+    if (!m_lastFrame)
+        return std::nullopt;
+    if (m_trimCache.pixels.empty())
+        m_trimCache = readTrimImage();
+    const QPointF device = devicePosition(position);
+    const int x = int(std::floor(device.x()));
+    const int y = int(std::floor(device.y()));
+    if (x < 0 || y < 0 || x >= m_trimCache.width || y >= m_trimCache.height)
+        return std::nullopt;
+    return m_trimCache.at(x, y);
 }
 
 void ViewportWidget::setViewBounds(const Bounds& bounds)
@@ -83,6 +132,7 @@ void ViewportWidget::setVertexColors(std::vector<std::uint32_t> rgba8)
                                     std::to_string(rgba8.size()) + " colors.");
     m_vertexColors = std::move(rgba8);
     m_colorsDirty = true;
+    m_dynamicColorsDirty = true;
     update();
 }
 
@@ -313,9 +363,12 @@ void ViewportWidget::releaseGl()
     if (!m_renderer)
         return;
     makeCurrent();
+    m_dynamic.reset(); // its GL objects go first: it holds a reference to the renderer
     m_renderer.reset();
     doneCurrent();
     m_sceneUploaded = false;
+    m_chainDirty = m_chain != nullptr;
+    m_levelDirty = m_level != nullptr;
 }
 
 void ViewportWidget::resizeGL(int, int)
@@ -339,6 +392,9 @@ void ViewportWidget::paintGL()
         renderFrame();
     } catch (const render::GlError& e) {
         setError(QString::fromStdString(e.what()));
+    } catch (const std::invalid_argument& e) {
+        // E.g. a peeling method asked for the dynamic rules: the message says what to pick.
+        setError(QString::fromStdString(e.what()));
     } catch (const std::exception& e) {
         setError(tr("Rendering failed: %1").arg(QString::fromStdString(e.what())));
     }
@@ -359,15 +415,47 @@ void ViewportWidget::renderFrame()
     m_renderer->setMethod(m_method);
     m_renderer->setParameters(m_parameters);
     const Camera camera = m_orbit.camera();
-    m_renderer->render(camera, m_settings, size.width(), size.height());
+    if (m_chain && m_settings.trimEnabled) {
+        renderDynamicFrame(camera, size);
+    } else {
+        m_renderer->render(camera, m_settings, size.width(), size.height());
+        m_dynamicStats.reset();
+    }
     m_renderer->blitTo(defaultFramebufferObject());
     recordFrame(camera, size);
     setError({});
 }
 
+// The chain's levels are uploaded only when the chain changed; a drag replaces only the
+// shown level, so the earlier sets' characterizations stay cached.
+void ViewportWidget::renderDynamicFrame(const Camera& camera, QSize size)
+{
+    if (!m_dynamic) {
+        m_dynamic = std::make_unique<render::DynamicTrimRenderer>(*m_renderer);
+        m_dynamicColorsDirty = true;
+    }
+    if (m_chainDirty) {
+        m_dynamic->setChain(*m_chain);
+        m_chainDirty = false;
+        m_levelDirty = m_level != nullptr;
+    }
+    if (m_levelDirty) {
+        m_dynamic->setShownLevel(*m_level);
+        m_levelDirty = false;
+    }
+    if (m_dynamicColorsDirty) {
+        // The designed mesh is the scene's only object, so the scene's colors are per mesh vertex.
+        m_dynamic->setShownVertexColors(m_vertexColors);
+        m_dynamicColorsDirty = false;
+    }
+    m_dynamic->render(camera, m_settings, size.width(), size.height());
+    m_dynamicStats = m_dynamic->lastStats();
+}
+
 void ViewportWidget::recordFrame(const Camera& camera, QSize size)
 {
     const render::FrameStats& stats = m_renderer->lastStats();
+    m_trimCache = TrimImage(); // read again on demand: the frame changed
     ViewportFrame frame{camera, m_settings, m_parameters.k, m_parameters, size, stats, std::nullopt};
     const render::FrameCounts& counts = stats.counts;
     if (counts.overflowPixels > 0 || counts.unresolvedPixels > 0 || counts.fragmentsLost > 0) {
@@ -424,6 +512,15 @@ double ViewportWidget::depthUnderCursor(QPointF position)
 
 void ViewportWidget::mousePressEvent(QMouseEvent* event)
 {
+    if (m_drag == Drag::None && m_tool && m_tool->pressed(*event)) {
+        m_drag = Drag::Tool;
+        event->accept();
+        return;
+    }
+    if (m_drag == Drag::Tool) {
+        event->accept(); // a second button during a tool drag changes nothing
+        return;
+    }
     const bool shiftLeft = event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier);
     if (shiftLeft || event->button() == Qt::RightButton || event->button() == Qt::MiddleButton) {
         m_drag = Drag::Pan;
@@ -441,7 +538,14 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event)
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
 {
+    if (m_drag == Drag::Tool) {
+        m_tool->moved(*event);
+        event->accept();
+        return;
+    }
     if (m_drag == Drag::None) {
+        if (m_tool && event->buttons() == Qt::NoButton)
+            m_tool->hovered(event->position());
         QOpenGLWidget::mouseMoveEvent(event);
         return;
     }
@@ -457,14 +561,25 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
 {
-    if (event->buttons() == Qt::NoButton)
+    if (event->buttons() == Qt::NoButton) {
+        const bool tool = m_drag == Drag::Tool;
         m_drag = Drag::None;
+        if (tool && m_tool)
+            m_tool->released(*event);
+    }
     event->accept();
+}
+
+void ViewportWidget::leaveEvent(QEvent* event)
+{
+    if (m_tool && m_drag == Drag::None)
+        m_tool->left();
+    QOpenGLWidget::leaveEvent(event);
 }
 
 void ViewportWidget::mouseDoubleClickEvent(QMouseEvent* event)
 {
-    if (event->button() != Qt::LeftButton) {
+    if (event->button() != Qt::LeftButton || m_drag == Drag::Tool) {
         QOpenGLWidget::mouseDoubleClickEvent(event);
         return;
     }

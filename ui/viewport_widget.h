@@ -6,7 +6,14 @@
 ///
 /// Mouse: left drag orbits, right or middle drag (or Shift + left drag) pans, the wheel
 /// dollies toward the target (Ctrl + wheel toward the point under the cursor), a double
-/// click fits the scene. Keys: F fits the scene.
+/// click fits the scene. Keys: F fits the scene. A ViewportTool (setTool, e.g. the brush)
+/// is asked first on every press and takes the presses it wants; what it leaves (for the
+/// brush: Alt + left drag, right and middle drag) still moves the camera.
+///
+/// Under the dynamic rules (setDynamicChain) frames render through a DynamicTrimRenderer
+/// instead of the static rule: the chain's levels are uploaded once, and
+/// setDynamicShownLevel replaces only the shown frame (a brush drag), which keeps the
+/// cached characterizations of the earlier sets.
 ///
 /// For mesh animations the window passes the pose to show (showPose: object 0's positions,
 /// uploaded at the next frame), per-vertex colors such as a segmentation's
@@ -16,10 +23,13 @@
 /// never crash and never leave a silent black view: the message is painted into the view
 /// and emitted once through renderError().
 
+#include "dynamic_trim_renderer.h"
 #include "frame_times.h"
 #include "memory_estimate.h"
+#include "trim/dynamic_chain.h"
 #include "trim_renderer.h"
 #include "view/orbit_controller.h"
+#include "viewport_tool.h"
 
 #include <QImage>
 #include <QOpenGLWidget>
@@ -59,8 +69,8 @@ public:
     ~ViewportWidget() override;
 
     /// Shows `scene` (nullptr: an empty view). The view is reset (reset view) on the next
-    /// frame, when the widget's final size is known. Clears the pose and vertex colors
-    /// below, and the view bounds become the scene's bounds.
+    /// frame, when the widget's final size is known. Clears the pose, the vertex colors and
+    /// the dynamic chain below, and the view bounds become the scene's bounds.
     void setScene(std::shared_ptr<const Scene> scene);
     /// The box the camera's depth range must enclose and Fit frames (default: the
     /// scene's world bounds). An animation passes the bounds of all its poses, so that no
@@ -130,6 +140,30 @@ public:
     /// when openGlProblem() is not empty and the widget is therefore never shown.
     void setUnavailable(const QString& reason);
 
+    /// The mouse tool asked first on every press (nullptr: none). Not owned; the tool
+    /// must outlive the viewport or be reset first. Turns on hover tracking.
+    void setTool(ViewportTool* tool);
+
+    /// Renders with the dynamic rules of `chain` (its last level is the shown frame) from
+    /// the next frame on; nullptr: back to the static rule of the trim settings. The
+    /// settings' rule classifies the base mesh; set it equal to chain->baseRule.
+    void setDynamicChain(std::shared_ptr<const DynamicChain> chain);
+    /// Replaces only the chain's shown level (same set, new positions: a brush drag).
+    /// Ignored without a chain; the next setDynamicChain() drops it.
+    void setDynamicShownLevel(std::shared_ptr<const DynamicChainLevel> level);
+    [[nodiscard]] bool rendersDynamicRules() const { return m_chain != nullptr; }
+    /// The chain's shown level as last set (setDynamicShownLevel or the chain's last).
+    [[nodiscard]] const DynamicChainLevel* dynamicShownLevel() const;
+    /// The dynamic renderer's numbers of the last frame (nullopt for static frames).
+    [[nodiscard]] const std::optional<render::DynamicFrameStats>& lastDynamicStats() const { return m_dynamicStats; }
+
+    /// The last frame's answer at the pixel under the logical widget position `position`
+    /// (nullopt without a frame or outside it). The trim image is read back once per frame
+    /// and kept until the next one, so hovering costs no readback per mouse move.
+    [[nodiscard]] std::optional<TrimPixel> trimPixelAt(QPointF position);
+    /// `position` (logical widget coordinates) in the frame's device pixels.
+    [[nodiscard]] QPointF devicePosition(QPointF position) const { return position * devicePixelRatio(); }
+
     /// The OpenGL context's capabilities once the renderer exists.
     [[nodiscard]] std::optional<render::GlCapabilities> capabilities() const;
     /// Why the view cannot render ("" when it can).
@@ -153,14 +187,16 @@ protected:
     void mouseDoubleClickEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
+    void leaveEvent(QEvent* event) override;
 
 private:
-    enum class Drag { None, Orbit, Pan };
+    enum class Drag { None, Orbit, Pan, Tool };
 
     void releaseGl();
     void syncGpuScene();
     void applyPendingReset();
     void renderFrame();
+    void renderDynamicFrame(const Camera& camera, QSize size);
     void applyMethod();
     void recordFrame(const Camera& camera, QSize size);
     void runMeasurement(render::FragmentMethodKind method, int frames, MethodMeasurement& result);
@@ -185,6 +221,15 @@ private:
     std::optional<ViewportFrame> m_lastFrame;
     QString m_error;
     QString m_reportedError;
+    ViewportTool* m_tool = nullptr;
+    std::unique_ptr<render::DynamicTrimRenderer> m_dynamic;
+    std::shared_ptr<const DynamicChain> m_chain;      ///< nullptr: static rule
+    std::shared_ptr<const DynamicChainLevel> m_level; ///< replaces the chain's last level
+    bool m_chainDirty = false;
+    bool m_dynamicColorsDirty = false; ///< m_vertexColors not yet on the dynamic renderer
+    bool m_levelDirty = false;
+    std::optional<render::DynamicFrameStats> m_dynamicStats;
+    TrimImage m_trimCache; ///< the last frame's trim image once read (empty: not read)
     Drag m_drag = Drag::None;
     QPointF m_lastMouse;
     double m_grabDepth = 0.0;

@@ -1,0 +1,91 @@
+#pragma once
+/// \file
+/// The main window set up for the designer workflow, shared by the design tests
+/// (tst_design_workflow.cpp) and the drag benchmark (bench_design_drag.cpp).
+
+#include "design_workspace.h"
+#include "main_window.h"
+#include "viewport_widget.h"
+
+#include "mesh/triangle_mesh.h"
+
+#include <QSettings>
+#include <QSignalSpy>
+#include <QString>
+#include <QtTest>
+
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+namespace trimlab::test {
+
+inline constexpr int kWaitMs = 30000;
+
+/// Writes `mesh` as a plain OBJ (for opening it like a user would).
+inline void writeObj(const TriangleMesh& mesh, const QString& path)
+{
+    std::ofstream out(path.toStdString());
+    char line[128];
+    for (const glm::vec3& p : mesh.positions) {
+        std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", double(p.x), double(p.y), double(p.z));
+        out << line;
+    }
+    for (const glm::uvec3& t : mesh.triangles)
+        out << "f " << t.x + 1 << ' ' << t.y + 1 << ' ' << t.z + 1 << '\n';
+}
+
+/// The child of `parent` named `name`, with a warning when there is none.
+template <class T>
+T* child(QObject* parent, const char* name)
+{
+    T* found = parent->findChild<T*>(QString::fromLatin1(name));
+    if (!found)
+        qWarning("no child named %s", name);
+    return found;
+}
+
+/// A main window with its settings in the INI file `ini`, shown and active, its viewport
+/// fixed at `viewportSize`. No clipping plane (the brush grabs the outside of the mesh)
+/// and a brush radius of 0.4 bounding radii.
+inline std::unique_ptr<ui::MainWindow> showDesignWindow(const QString& ini, QSize viewportSize)
+{
+    {
+        QSettings settings(ini, QSettings::IniFormat);
+        settings.setValue(QStringLiteral("render/clipEnabled"), false);
+        settings.setValue(QStringLiteral("brush/radiusFraction"), 0.4);
+    }
+    auto window = std::make_unique<ui::MainWindow>(ini);
+    window->viewport()->setFixedSize(viewportSize);
+    window->show();
+    if (!QTest::qWaitForWindowExposed(window.get()))
+        qWarning("main window not exposed");
+    // Shortcuts (B, N, Ctrl+Z) go to the active window only.
+    window->activateWindow();
+    if (!QTest::qWaitForWindowActive(window.get()))
+        qWarning("main window not active");
+    return window;
+}
+
+/// Opens `source` and waits until its design session exists and a frame was shown.
+inline bool openDesignAndWait(ui::MainWindow& window, const QString& source)
+{
+    window.openSource(source);
+    return QTest::qWaitFor(
+        [&] {
+            return !window.isLoading() && window.scene() && window.scene()->source == source.toStdString() &&
+                   window.designWorkspace()->session() && window.viewport()->lastFrame().has_value();
+        },
+        kWaitMs);
+}
+
+/// Waits for the viewport's next frame; adds the frames seen to `seen`.
+inline bool waitForNewFrame(ui::MainWindow& window, int& seen)
+{
+    QSignalSpy spy(window.viewport(), &ui::ViewportWidget::frameRendered);
+    const bool ok = spy.wait(kWaitMs);
+    seen += int(spy.count());
+    return ok;
+}
+
+} // namespace trimlab::test
