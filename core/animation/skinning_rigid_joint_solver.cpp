@@ -54,7 +54,7 @@ glm::dmat3 closestRotation(const glm::dmat3& m)
 }
 
 RigidJointSolver::RigidJointSolver(const SkinningWeights& weights, std::span<const glm::dvec3> restPositions)
-    : m_weights(weights), m_rest(restPositions), m_boneVertices(weights.boneCount)
+    : m_rest(restPositions), m_boneVertices(weights.boneCount)
 {
     for (std::size_t j = 0; j < weights.vertices.size(); ++j) {
         const VertexInfluences& in = weights.vertices[j];

@@ -59,7 +59,6 @@ private:
     void solveBoneMotions(std::vector<RigidJointPose>& joints, std::span<const glm::dvec3> target) const;
     [[nodiscard]] std::vector<glm::dvec3> skinned(const std::vector<RigidJointPose>& joints) const;
 
-    const SkinningWeights& m_weights;
     std::span<const glm::dvec3> m_rest;
     std::vector<std::vector<std::pair<std::uint32_t, double>>> m_boneVertices; ///< per bone (vertex, weight)
     struct NormalMatrix; ///< the LDLᵀ factor of WᵀW + λI (Eigen, kept out of this header)

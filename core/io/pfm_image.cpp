@@ -66,6 +66,13 @@ FloatImage readPfm(const std::filesystem::path& path)
         throw pfmError(path, "bad PFM header");
     in.get(); // the single whitespace byte before the data
     const std::size_t count = std::size_t(image.width) * std::size_t(image.height);
+    // The header's size must not drive the allocation: check what the file holds first.
+    const std::streamoff dataStart = in.tellg();
+    in.seekg(0, std::ios::end);
+    const std::streamoff fileEnd = in.tellg();
+    in.seekg(dataStart);
+    if (!in || dataStart < 0 || fileEnd - dataStart < std::streamoff(count * 4))
+        throw pfmError(path, "truncated: expected " + std::to_string(count) + " floats");
     std::string data(count * 4, '\0');
     if (!in.read(data.data(), std::streamsize(data.size())))
         throw pfmError(path, "truncated: expected " + std::to_string(count) + " floats");

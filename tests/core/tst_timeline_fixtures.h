@@ -41,8 +41,11 @@ inline timeline::Frame frameTo(const timeline::Timeline& t, std::vector<std::uin
 {
     timeline::Frame frame;
     frame.vertices = std::move(vertices);
+    // Out-of-range vertices are what some tests hand to appendFrame on purpose; their
+    // "before" is a placeholder rather than a read past the positions.
+    const std::vector<glm::vec3>& current = t.currentPositions();
     for (const std::uint32_t v : frame.vertices)
-        frame.before.push_back(t.currentPositions()[v]);
+        frame.before.push_back(v < current.size() ? current[v] : glm::vec3(0.0f));
     frame.after = std::move(after);
     frame.stroke.anchor = {0.25, 0.5, 0.0};
     frame.stroke.drag = {0.0, 0.0, 0.1};

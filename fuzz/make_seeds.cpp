@@ -1,0 +1,80 @@
+// Writes the seed inputs that tests/data cannot provide, into the folder given as the
+// only argument: small valid .trimlab projects (project/) and PFM images (pfm/). Built in
+// the fuzz tree; scripts/fuzz runs it before fuzzing.
+#include "io/pfm_image.h"
+#include "timeline/project_file.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+
+namespace {
+
+using namespace trimlab;
+
+TriangleMesh grid(int n)
+{
+    TriangleMesh mesh;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            mesh.positions.emplace_back(float(i) / float(n - 1), float(j) / float(n - 1), 0.0f);
+    for (int j = 0; j + 1 < n; ++j) {
+        for (int i = 0; i + 1 < n; ++i) {
+            const auto v = std::uint32_t(j * n + i);
+            const auto un = std::uint32_t(n);
+            mesh.triangles.emplace_back(v, v + 1, v + un + 1);
+            mesh.triangles.emplace_back(v, v + un + 1, v + un);
+        }
+    }
+    return mesh;
+}
+
+timeline::Frame frameTo(const timeline::Timeline& t, std::vector<std::uint32_t> vertices, std::vector<glm::vec3> after)
+{
+    timeline::Frame frame;
+    frame.vertices = std::move(vertices);
+    for (const std::uint32_t v : frame.vertices)
+        frame.before.push_back(t.currentPositions()[v]);
+    frame.after = std::move(after);
+    frame.stroke.anchor = {0.25, 0.5, 0.0};
+    frame.stroke.anchorTriangle = 1;
+    frame.stroke.drag = {0.0, 0.0, 0.1};
+    return frame;
+}
+
+void writeText(const std::filesystem::path& path, const std::string& text)
+{
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: %s OUTPUT_FOLDER\n", argv[0]);
+        return 2;
+    }
+    const std::filesystem::path out = argv[1];
+    std::filesystem::create_directories(out / "project");
+    std::filesystem::create_directories(out / "pfm");
+
+    timeline::Timeline empty(grid(2));
+    writeText(out / "project" / "empty_history.trimlab", timeline::projectJson(empty));
+
+    timeline::Timeline t(grid(3), DynamicRule::ConstructiveAdditive);
+    t.appendFrame(frameTo(t, {1, 4}, {{0.5f, 0.0f, 0.25f}, {0.5f, 0.5f, -0.1f}}));
+    t.startSet(DynamicRule::Confluent);
+    t.appendFrame(frameTo(t, {4, 8}, {{0.5f, 0.5f, 0.3f}, {1.0f, 1.0f, 1e-7f}}));
+    t.appendFrame(frameTo(t, {}, {}));
+    timeline::ProjectExtras extras;
+    extras.view = timeline::ProjectView{};
+    extras.staticRule = StaticRule::AlternatingBorder;
+    writeText(out / "project" / "two_sets.trimlab", timeline::projectJson(t, extras));
+
+    FloatImage image{3, 2, {0.5f, 1.0f, 2.0f, -1.0f, 0.0f, std::numeric_limits<float>::infinity()}};
+    writePfm(out / "pfm" / "depth_3x2.pfm", image);
+    return 0;
+}
