@@ -8,25 +8,22 @@
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include "run_trimlab.h"
+
 #include <QtTest>
+
+using trimlab::test::Run;
+using trimlab::test::runTrimlab;
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-Run runTrimlab(const QStringList& arguments)
+// A bench run renders every method over several views: allow it 5 minutes.
+Run runBench(const QStringList& arguments)
 {
-    QProcess process;
-    process.start(QStringLiteral(TRIMLAB_EXECUTABLE), arguments);
-    if (!process.waitForFinished(300000))
-        return {};
-    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
-            QString::fromUtf8(process.readAllStandardOutput()), QString::fromUtf8(process.readAllStandardError())};
+    return runTrimlab(arguments, 300000);
 }
+
+
 
 bool glRequired()
 {
@@ -70,7 +67,7 @@ void TestBenchVerb::initTestCase()
 {
     QVERIFY(m_dir.isValid());
     const QString json = m_dir.filePath(QStringLiteral("bench.json"));
-    const Run run = runTrimlab({"bench", "--scenes", "demo:pushed-sphere", "--size", "160x120", "--repeat", "1",
+    const Run run = runBench({"bench", "--scenes", "demo:pushed-sphere", "--size", "160x120", "--repeat", "1",
                                 "--json", json});
     if (run.exitCode != 0 && run.err.contains(QStringLiteral("OpenGL")) && !glRequired())
         QSKIP(qPrintable("no OpenGL for the bench: " + run.err));
@@ -121,7 +118,7 @@ void TestBenchVerb::demoSceneAgreesForEveryMethod()
 void TestBenchVerb::restrictedMethodsGiveNotAvailableRatios()
 {
     const QString json = m_dir.filePath(QStringLiteral("one.json"));
-    const Run run = runTrimlab({"bench", "--scenes", "demo:sphere", "--size", "96x64", "--repeat", "1", "--views", "2",
+    const Run run = runBench({"bench", "--scenes", "demo:sphere", "--size", "96x64", "--repeat", "1", "--views", "2",
                                 "--methods", "kplus-array", "--k", "8", "--json", json});
     QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
     const QStringList rows = tableRows(run.out, QStringLiteral("demo:sphere"));
@@ -153,7 +150,7 @@ void TestBenchVerb::badArgumentsExitWithTwo()
 {
     QFETCH(QStringList, arguments);
     QFETCH(QString, message);
-    const Run run = runTrimlab(arguments);
+    const Run run = runBench(arguments);
     QCOMPARE(run.exitCode, 2);
     QVERIFY2(run.err.contains(QStringLiteral("trimlab: error: ")) && run.err.contains(message), qPrintable(run.err));
 }
@@ -163,7 +160,7 @@ void TestBenchVerb::badArgumentsExitWithTwo()
 void TestBenchVerb::missingSharedDataSkipsTheScene()
 {
     const QString json = m_dir.filePath(QStringLiteral("skipped.json"));
-    const Run run = runTrimlab({"bench", "--scenes", "bunny-cube-50", "--data", m_dir.filePath("no-such-folder"),
+    const Run run = runBench({"bench", "--scenes", "bunny-cube-50", "--data", m_dir.filePath("no-such-folder"),
                                 "--size", "64x48", "--repeat", "1", "--json", json});
     QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
     QVERIFY2(run.err.contains(QStringLiteral("skipping bunny-cube-50")) && run.err.contains(QStringLiteral("missing")),

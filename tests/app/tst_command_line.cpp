@@ -17,30 +17,20 @@
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include "run_trimlab.h"
+
 #include <QtTest>
 
 #include <cmath>
 
 using namespace trimlab;
 
+using trimlab::test::Run;
+using trimlab::test::runTrimlab;
+
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
 
-Run runTrimlab(const QStringList& arguments)
-{
-    QProcess process;
-    process.start(QStringLiteral(TRIMLAB_EXECUTABLE), arguments);
-    if (!process.waitForFinished(120000))
-        return {};
-    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
-            QString::fromLocal8Bit(process.readAllStandardOutput()),
-            QString::fromLocal8Bit(process.readAllStandardError())};
-}
 
 QString data(const QString& relative)
 {

@@ -8,28 +8,16 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
+#include "run_trimlab.h"
+
 #include <QtTest>
+
+using trimlab::test::Run;
+using trimlab::test::runTrimlab;
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
 
-// TRIMLAB_TEST_EXECUTABLE, when set, names another trimlab binary to test (an installed
-// one, say); by default the one this build made.
-Run runTrimlab(const QStringList& arguments)
-{
-    QProcess process;
-    process.start(qEnvironmentVariable("TRIMLAB_TEST_EXECUTABLE", QStringLiteral(TRIMLAB_EXECUTABLE)), arguments);
-    if (!process.waitForFinished(120000))
-        return {};
-    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
-            QString::fromLocal8Bit(process.readAllStandardOutput()),
-            QString::fromLocal8Bit(process.readAllStandardError())};
-}
 
 QString animation(const QString& relative)
 {

@@ -10,30 +10,20 @@
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include "gltf_validation.h"
+
+#include "run_trimlab.h"
+
 #include <QtTest>
 
 using namespace trimlab;
 
+using trimlab::test::Run;
+using trimlab::test::runTrimlab;
+
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
 
-// TRIMLAB_TEST_EXECUTABLE, when set, names another trimlab binary to test (an installed
-// one, say); by default the one this build made.
-Run runTrimlab(const QStringList& arguments)
-{
-    QProcess process;
-    process.start(qEnvironmentVariable("TRIMLAB_TEST_EXECUTABLE", QStringLiteral(TRIMLAB_EXECUTABLE)), arguments);
-    if (!process.waitForFinished(120000))
-        return {};
-    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
-            QString::fromLocal8Bit(process.readAllStandardOutput()),
-            QString::fromLocal8Bit(process.readAllStandardError())};
-}
 
 QString animation(const QString& relative)
 {
@@ -46,18 +36,6 @@ double printedNumber(const QString& out, const QString& label)
     const QRegularExpression number(QRegularExpression::escape(label) + QStringLiteral(R"(\s*([-+0-9.eE]+))"));
     const QRegularExpressionMatch match = number.match(out);
     return match.hasMatch() ? match.captured(1).toDouble() : std::nan("");
-}
-
-void requireValid(const QString& file)
-{
-    QProcess validator;
-    validator.setProcessChannelMode(QProcess::MergedChannels);
-    validator.start(QStringLiteral(TRIMLAB_SOURCE_DIR "/scripts/gltf-validator"), {file});
-    QVERIFY(validator.waitForStarted());
-    QVERIFY2(validator.waitForFinished(300000), "the glTF validator did not finish within 5 minutes");
-    const QString output = QString::fromUtf8(validator.readAll());
-    QVERIFY2(validator.exitCode() != 2, qPrintable("the glTF validator could not run:\n" + output));
-    QVERIFY2(validator.exitCode() == 0 && output.contains(": 0 errors,"), qPrintable(output));
 }
 
 // The printed exported E_RMS is that of the written file against the input animation.
@@ -181,7 +159,7 @@ void TestSkinVerb::writesValidRigidGlb()
     QFile file(out);
     QVERIFY(file.open(QIODevice::ReadOnly));
     QCOMPARE(file.read(4), QByteArray("glTF"));
-    requireValid(out);
+    test::requireValidGltf(out.toStdString());
     requireExportedErrorMatchesFile(source, out, run.out);
 }
 
@@ -196,7 +174,7 @@ void TestSkinVerb::writesMorphTargets()
              qPrintable(run.out));
     // Morph targets are exact: the file's error is the fit's.
     QVERIFY(std::abs(printedNumber(run.out, "E_RMS fit:") - printedNumber(run.out, "E_RMS exported:")) < 2e-3);
-    requireValid(out);
+    test::requireValidGltf(out.toStdString());
     requireExportedErrorMatchesFile(source, out, run.out);
 }
 
@@ -209,7 +187,7 @@ void TestSkinVerb::skinsGltfAnimation()
     QVERIFY2(run.out.contains("bones: 2 ") && run.out.contains("rigid approximation of an affine fit"),
              qPrintable(run.out));
     QVERIFY(printedNumber(run.out, "E_RMS exported:") >= printedNumber(run.out, "E_RMS fit:") - 1e-3);
-    requireValid(out);
+    test::requireValidGltf(out.toStdString());
     requireExportedErrorMatchesFile(source, out, run.out);
 }
 

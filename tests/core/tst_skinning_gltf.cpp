@@ -13,6 +13,8 @@
 #include "test_paths.h"
 
 #include <QProcess>
+#include "gltf_validation.h"
+
 #include <QtTest>
 
 using namespace trimlab;
@@ -22,25 +24,6 @@ namespace {
 
 constexpr unsigned kRings = 12, kSides = 10, kBones = 3;
 constexpr std::size_t kPoses = 6;
-
-// Runs scripts/gltf-validator on `file` (installing the validator on first use). A missing
-// Node.js or an unreachable npm registry fails the test: the export must be validated.
-void requireValid(const std::filesystem::path& file)
-{
-    const QString script = QStringLiteral(TRIMLAB_SOURCE_DIR "/scripts/gltf-validator");
-    QProcess validator;
-    validator.setProcessChannelMode(QProcess::MergedChannels);
-    validator.start(script, {QString::fromStdString(file.string())});
-    QVERIFY2(validator.waitForStarted(), qPrintable("cannot start " + script));
-    QVERIFY2(validator.waitForFinished(300000), "the glTF validator did not finish within 5 minutes");
-    const QString output = QString::fromUtf8(validator.readAll());
-    qInfo().noquote() << output.trimmed();
-    QVERIFY2(validator.exitStatus() == QProcess::NormalExit, qPrintable("the validator crashed:\n" + output));
-    QVERIFY2(validator.exitCode() != 2, qPrintable("the glTF validator could not run (exit 2); it needs Node.js, "
-                                                   "npm and a reachable npm registry on first use:\n" + output));
-    QVERIFY2(validator.exitCode() == 0, qPrintable("the glTF validator reports errors:\n" + output));
-    QVERIFY2(output.contains(": 0 errors,"), qPrintable(output));
-}
 
 // The file, loaded back, has the reported positions at the keyframe times t/fps (within
 // 1e-5 of the rest pose's bounding-box diagonal: the file holds floats).
@@ -124,7 +107,7 @@ void TestSkinningGltf::rigidDqsFitExportsExactly()
     const ExportedSkin report = exportSkinnedGltf(fitted.model, path, 24.0, options);
     QCOMPARE(report.kind, SkinExportKind::RigidTransforms);
     QCOMPARE(report.joints, std::size_t(kBones));
-    requireValid(path);
+    test::requireValidGltf(path);
     requireReproduced(path, report, 24.0, animation.triangles);
     // Exact up to the float rounding of the input and of the file: RMS distance < 1e-6 of
     // the diagonal (E_RMS ≈ 0), and no worse than the fit beyond that rounding.
@@ -152,7 +135,7 @@ void TestSkinningGltf::affineFitExportsItsRigidApproximation()
     options.target = &original;
     const ExportedSkin report = exportSkinnedGltf(fitted.model, path, 10.0, options);
     QCOMPARE(report.kind, SkinExportKind::RigidApproximation);
-    requireValid(path);
+    test::requireValidGltf(path);
     requireReproduced(path, report, 10.0, animation.triangles);
     const SkinningError exported = measureSkinningError(original, report.positions);
     qInfo("fit E_RMS %.4f, exported E_RMS %.4f", fitted.error.eRms, exported.eRms);
@@ -173,7 +156,7 @@ void TestSkinningGltf::morphTargetsReproduceTheFit()
     const ExportedSkin report = exportSkinnedGltf(fitted.model, path, 30.0, options);
     QCOMPARE(report.kind, SkinExportKind::MorphTargets);
     QCOMPARE(report.joints, std::size_t(0));
-    requireValid(path);
+    test::requireValidGltf(path);
     requireReproduced(path, report, 30.0, animation.triangles);
     const SkinningError exported = measureSkinningError(animationPositions(animation), report.positions);
     QVERIFY(std::abs(exported.eRms - fitted.error.eRms) < 1e-3 * fitted.error.eRms + 1e-4);

@@ -7,31 +7,14 @@
 #include "timeline/frame_export.h"
 
 #include <QProcess>
+#include "gltf_validation.h"
+
 #include <QtTest>
 
 using namespace trimlab;
 using namespace trimlab::timeline;
 
 namespace {
-
-// Runs scripts/gltf-validator on `file` (installing the validator on first use). A missing
-// Node.js or an unreachable npm registry fails the test: the export must be validated.
-void requireValid(const std::filesystem::path& file)
-{
-    const QString script = QStringLiteral(TRIMLAB_SOURCE_DIR "/scripts/gltf-validator");
-    QProcess validator;
-    validator.setProcessChannelMode(QProcess::MergedChannels);
-    validator.start(script, {QString::fromStdString(file.string())});
-    QVERIFY2(validator.waitForStarted(), qPrintable("cannot start " + script));
-    QVERIFY2(validator.waitForFinished(300000), "the glTF validator did not finish within 5 minutes");
-    const QString output = QString::fromUtf8(validator.readAll());
-    qInfo().noquote() << output.trimmed();
-    QVERIFY2(validator.exitStatus() == QProcess::NormalExit, qPrintable("the validator crashed:\n" + output));
-    QVERIFY2(validator.exitCode() != 2, qPrintable("the glTF validator could not run (exit 2); it needs Node.js, "
-                                                   "npm and a reachable npm registry on first use:\n" + output));
-    QVERIFY2(validator.exitCode() == 0, qPrintable("the glTF validator reports errors:\n" + output));
-    QVERIFY2(output.contains(": 0 errors,"), qPrintable(output));
-}
 
 void requireFramesReproduced(const std::filesystem::path& file, const Timeline& t, double fps)
 {
@@ -61,7 +44,7 @@ void TestTimelineGltf::glbPassesTheValidatorAndReloads()
     const Timeline t = test::exportTimeline();
     const std::filesystem::path file = test::outputDir() / "timeline.glb";
     exportMorphGltf(t, file, 24.0);
-    requireValid(file);
+    test::requireValidGltf(file);
     requireFramesReproduced(file, t, 24.0);
 }
 
@@ -71,7 +54,7 @@ void TestTimelineGltf::embeddedGltfPassesTheValidatorAndReloads()
     const std::filesystem::path file = test::outputDir() / "timeline.gltf";
     exportMorphGltf(t, file, 10.0);
     QVERIFY(morphGltf(t, 10.0, false).starts_with("{"));
-    requireValid(file);
+    test::requireValidGltf(file);
     requireFramesReproduced(file, t, 10.0);
 }
 
@@ -80,7 +63,7 @@ void TestTimelineGltf::timelineWithoutStrokesIsAStaticMesh()
     const Timeline t(test::gridMesh(4));
     const std::filesystem::path file = test::outputDir() / "static.glb";
     exportMorphGltf(t, file);
-    requireValid(file);
+    test::requireValidGltf(file);
 }
 
 void TestTimelineGltf::refusesBadFps()
