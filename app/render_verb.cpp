@@ -15,6 +15,7 @@
 #include "frame_times.h"
 #include "trim_renderer.h"
 #include "dynamic_trim_renderer.h"
+#include "rgba_qimage.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -108,14 +109,6 @@ RenderOutcome renderWithGpu(const Scene& scene, const RenderOptions& options, co
     return outcome;
 }
 
-QImage toQImage(const RgbaImage& image)
-{
-    QImage result(image.width, image.height, QImage::Format_RGBA8888);
-    for (int y = 0; y < image.height; ++y)
-        std::copy_n(&image.rgba[std::size_t(y) * image.width * 4], image.width * 4, result.scanLine(y));
-    return result;
-}
-
 RenderOutcome renderWithReference(const Scene& scene, const RenderOptions& options, const Camera& camera)
 {
     QElapsedTimer wall;
@@ -128,7 +121,7 @@ RenderOutcome renderWithReference(const Scene& scene, const RenderOptions& optio
         result = reference.render(camera, options.width, options.height, options.trim, options.threads);
         renderMs.push_back(result.stats.wallMs);
     }
-    RenderOutcome outcome{toQImage(result.color), std::move(result.trim), {}};
+    RenderOutcome outcome{render::toQImage(result.color), std::move(result.trim), {}};
     outcome.statistics = QStringLiteral("reference ray caster: %1 ms wall (%2) on %3 threads (+ %4 ms BVH build), "
                                         "%5 hits, at most %6 per pixel")
                              .arg(render::medianOf(renderMs), 0, 'f', 2)
@@ -173,7 +166,7 @@ RenderOutcome renderDynamicWithReference(const DynamicChain& chain, const Render
         result = reference.render(camera, options.width, options.height, options.trim, options.threads);
         renderMs.push_back(result.stats.wallMs);
     }
-    RenderOutcome outcome{toQImage(result.color), withMeshIds(std::move(result.trim), chain.levels.back().frame), {}};
+    RenderOutcome outcome{render::toQImage(result.color), withMeshIds(std::move(result.trim), chain.levels.back().frame), {}};
     outcome.statistics = QStringLiteral("reference ray caster, dynamic rules over %1 sets: %2 ms wall (%3)")
                              .arg(chain.levels.size())
                              .arg(render::medianOf(renderMs), 0, 'f', 2)

@@ -1,5 +1,7 @@
 #include "trim_renderer.h"
 
+#include "frame_limits.h"
+
 #include "gl/gl_error.h"
 #include "gl/shader_library.h"
 #include "gpu_scene.h"
@@ -96,6 +98,8 @@ void TrimRenderer::render(GpuScene& scene, const TrimMode& mode, const Camera& c
         throw std::invalid_argument(std::string(info.displayName) +
                                     " cannot run the dynamic rules: it never holds a pixel's reference and current "
                                     "fragments together. Pick a buffer method (k+-buffer, S-buffer, AB_FP or AB_LL).");
+    checkFrameLimits(m_method->kind(), m_capabilities, m_parameters,
+                     m_method->estimateBytes(width, height, m_parameters), width, height);
     QElapsedTimer wall;
     wall.start();
     m_target->resize(width, height);

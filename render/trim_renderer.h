@@ -84,7 +84,10 @@ public:
 
     /// Renders one frame at width×height into the internal render target.
     /// `settings.trimEnabled` must be false for scenes that are not closed oriented
-    /// surfaces (the caller knows from the validation report). Throws GpuMemoryError.
+    /// surfaces (the caller knows from the validation report). Throws GpuMemoryError —
+    /// before allocating anything when the frame is beyond the driver's texture limits or
+    /// the memory budget of the parameters (frame_limits.h); memory_fallback.h says what
+    /// to try next.
     void render(const Camera& camera, const TrimSettings& settings, int width, int height);
     /// The same with another uploaded scene and a classification mode. Throws
     /// std::invalid_argument when the mode is dynamic and the method cannot run it.

@@ -23,6 +23,7 @@
 #include "scene/demo_scenes.h"
 #include "scene_loader.h"
 #include "segmentation_panel.h"
+#include "session_recovery.h"
 #include "skinning_panel.h"
 #include "timeline_panel.h"
 #include "viewport_widget.h"
@@ -114,6 +115,7 @@ MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
     restoreSettings();
     updateTitle();
     QTimer::singleShot(0, this, &MainWindow::openDefaultIfNothingRequested);
+    QTimer::singleShot(0, m_recovery, &SessionRecovery::offer);
 }
 
 MainWindow::~MainWindow() = default;
@@ -343,6 +345,10 @@ void MainWindow::connectParts()
     connect(m_statsPanel, &FrameStatsPanel::kRequested, this, &MainWindow::chooseK);
     // Queued: the viewport reports from inside paintGL, where no dialog may open.
     connect(m_viewport, &ViewportWidget::renderError, this, &MainWindow::onRenderError, Qt::QueuedConnection);
+    // Not an error dialog: the view still shows a correct image, rendered another way.
+    connect(m_viewport, &ViewportWidget::memoryFallback, this,
+            [this](const QString& message) { statusBar()->showMessage(message, 4 * kStatusMessageMs); },
+            Qt::QueuedConnection);
 }
 
 void MainWindow::connectAnimationParts()

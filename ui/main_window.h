@@ -70,6 +70,7 @@ class MethodTimingPanel;
 class RenderPanel;
 class SceneLoader;
 class SegmentationPanel;
+class SessionRecovery;
 class SkinningPanel;
 class TimelinePanel;
 class ViewportWidget;
@@ -122,6 +123,8 @@ public:
     [[nodiscard]] BrushPanel* brushPanel() const { return m_brushPanel; }
     [[nodiscard]] DeformationTimelinePanel* deformationTimelinePanel() const { return m_deformationPanel; }
     [[nodiscard]] ProjectFiles* projectFiles() const { return m_projectFiles; }
+    /// Autosave of the design session and the offer to recover a crashed one.
+    [[nodiscard]] SessionRecovery* sessionRecovery() const { return m_recovery; }
     [[nodiscard]] HistoryExports* historyExports() const { return m_exports; }
     /// Edit ▸ Brush (B, checkable) and Edit ▸ New Set (N).
     [[nodiscard]] QAction* brushAction() const { return m_brushAction; }
@@ -219,6 +222,7 @@ private:
     DeformationTimelinePanel* m_deformationPanel = nullptr;
     QDockWidget* m_deformationDock = nullptr;
     ProjectFiles* m_projectFiles = nullptr;
+    SessionRecovery* m_recovery = nullptr;
     HistoryExports* m_exports = nullptr;
     QAction* m_brushAction = nullptr;
     QAction* m_newSetAction = nullptr;

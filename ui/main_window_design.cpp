@@ -14,6 +14,7 @@
 #include "mesh/mesh_validation.h"
 #include "project_files.h"
 #include "render_panel.h"
+#include "session_recovery.h"
 #include "timeline/project_file.h"
 #include "viewport_widget.h"
 
@@ -72,6 +73,7 @@ void MainWindow::createDesignDocks()
     addDockWidget(Qt::BottomDockWidgetArea, m_deformationDock);
     m_dock->raise();
     m_projectFiles = new ProjectFiles(this, *m_settings, *m_design, [this] { return projectExtras(); });
+    m_recovery = new SessionRecovery(this, *m_settings, *m_design, *m_projectFiles, [this] { return projectExtras(); });
     m_exports = new HistoryExports(this, *m_settings, *m_design);
 }
 
@@ -212,6 +214,14 @@ void MainWindow::onProjectOpened(std::shared_ptr<const timeline::Project> projec
     m_design->startSession(project->timeline, glm::dmat4(1.0), QFileInfo(path).absoluteFilePath());
     if (const auto& view = project->extras.view)
         m_viewport->setCamera(Camera{view->eye, view->target, view->up, view->fovyDegrees});
+    if (m_recovery->adoptRecovered(path)) {
+        updateTitle();
+        statusBar()->showMessage(tr("Recovered the unsaved deformation history (%1 frames). Save it to keep it.")
+                                     .arg(project->timeline.frameCount()),
+                                 2 * kStatusMessageMs);
+        emit sceneLoaded(path);
+        return;
+    }
     m_recent.add(path);
     m_recent.save(*m_settings);
     rebuildRecentMenu();

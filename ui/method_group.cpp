@@ -65,6 +65,16 @@ MethodGroup::MethodGroup(QWidget* parent) : QGroupBox(tr("Multi-fragment method"
     m_sharedCounters->setToolTip(tr("S: shared counters of the S-buffer's memory referencing. More counters mean "
                                     "less contention while counting but a longer prefix sum over them."));
     form->addRow(tr("Shared counters S"), m_sharedCounters);
+    m_budget = new QSpinBox(this);
+    m_budget->setObjectName(QStringLiteral("memoryBudgetSpinBox"));
+    m_budget->setRange(0, kMaxMemoryBudgetMegabytes);
+    m_budget->setSuffix(tr(" MB"));
+    m_budget->setSpecialValueText(tr("no limit"));
+    m_budget->setKeyboardTracking(false);
+    m_budget->setToolTip(tr("GPU memory the method's fragment storage may use. A method that would need more "
+                            "is not allocated: the view falls back to a leaner method (S-buffer, then peeling, "
+                            "then the CPU reference) and the status bar says so."));
+    form->addRow(tr("Memory budget"), m_budget);
     m_memory = new QLabel(this);
     m_memory->setObjectName(QStringLiteral("kMemoryLabel"));
     m_memory->setToolTip(tr("GPU memory the method would hold at the view's size (before the scene and the "
@@ -76,6 +86,7 @@ MethodGroup::MethodGroup(QWidget* parent) : QGroupBox(tr("Multi-fragment method"
     });
     connect(m_k, &QSpinBox::valueChanged, this, &MethodGroup::changed);
     connect(m_sharedCounters, &QSpinBox::valueChanged, this, &MethodGroup::changed);
+    connect(m_budget, &QSpinBox::valueChanged, this, &MethodGroup::changed);
     updateEnabledParameters();
 }
 
@@ -116,6 +127,17 @@ int MethodGroup::k() const
 int MethodGroup::sharedCounters() const
 {
     return m_sharedCounters->value();
+}
+
+void MethodGroup::setMemoryBudgetMegabytes(int megabytes)
+{
+    const QSignalBlocker blocker(m_budget);
+    m_budget->setValue(megabytes);
+}
+
+int MethodGroup::memoryBudgetMegabytes() const
+{
+    return m_budget->value();
 }
 
 void MethodGroup::setMemoryEstimate(const MemoryEstimate& estimate)

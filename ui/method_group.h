@@ -3,7 +3,9 @@
 /// The "Multi-fragment method" group of the Render panel: a combo box of every method of
 /// render::fragmentMethods() (tooltips say whether it is capacity-bounded and which
 /// parameters it uses), k (enabled when the method uses it), S shared counters (enabled
-/// when the method uses them) and the GPU memory estimate at the current frame size.
+/// when the method uses them), the user's GPU memory budget (0: none; a method that would
+/// exceed it makes the view fall back to a leaner one, render/memory_fallback.h) and the
+/// GPU memory estimate at the current frame size.
 /// Methods appear as the render layer lists them; nothing here names a method.
 
 #include "memory_estimate.h"
@@ -27,6 +29,9 @@ public:
     [[nodiscard]] render::FragmentMethodKind method() const;
     [[nodiscard]] int k() const;
     [[nodiscard]] int sharedCounters() const;
+    /// Shows the budget (MB, 0 = none) without emitting changed().
+    void setMemoryBudgetMegabytes(int megabytes);
+    [[nodiscard]] int memoryBudgetMegabytes() const;
     /// Shows `estimate` ("≈ 12.0 MB at 1024×768", "depends on the scene", or nothing).
     void setMemoryEstimate(const MemoryEstimate& estimate);
 
@@ -41,6 +46,7 @@ private:
     QComboBox* m_method = nullptr;
     QSpinBox* m_k = nullptr;
     QSpinBox* m_sharedCounters = nullptr;
+    QSpinBox* m_budget = nullptr;
     QLabel* m_memory = nullptr;
 };
 

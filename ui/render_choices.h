@@ -7,10 +7,14 @@
 #include "mfr/fragment_method.h"
 #include "trim/trim_settings.h"
 
+#include <cstddef>
+
 namespace trimlab::ui {
 
 /// The largest S the GUI and the command line accept.
 inline constexpr int kMaxSharedCounters = 1 << 20;
+/// The largest GPU memory budget the GUI accepts, in MB (1 TB: no real limit).
+inline constexpr int kMaxMemoryBudgetMegabytes = 1 << 20;
 
 struct RenderChoices {
     TrimSettings trim;
@@ -20,6 +24,8 @@ struct RenderChoices {
     int k = render::MethodParameters{}.k;
     /// S, the shared counters of the S-buffer family, >= 1.
     int sharedCounters = render::MethodParameters{}.sharedCounters;
+    /// GPU memory budget of the method's storage in MB; 0: none (the driver's limits only).
+    int memoryBudgetMegabytes = 0;
     /// Classification of a designer session's frames: false, the static rule of `trim`
     /// alone; true, the dynamic rules of the history's sets (thesis 8.1.1), with the
     /// static rule classifying the base mesh.
@@ -31,6 +37,7 @@ struct RenderChoices {
         render::MethodParameters parameters;
         parameters.k = k;
         parameters.sharedCounters = sharedCounters;
+        parameters.memoryBudgetBytes = std::size_t(memoryBudgetMegabytes) * 1024 * 1024;
         return parameters;
     }
 };

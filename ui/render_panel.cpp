@@ -103,6 +103,7 @@ void RenderPanel::setRenderChoices(const RenderChoices& choices)
     m_rule->setCurrentIndex(m_rule->findData(ruleKey(choices.trim.rule)));
     m_clip->setPlane(choices.trim.clip);
     m_methodGroup->setChoices(choices.method, choices.k, choices.sharedCounters);
+    m_methodGroup->setMemoryBudgetMegabytes(choices.memoryBudgetMegabytes);
 }
 
 RenderChoices RenderPanel::renderChoices() const
@@ -115,6 +116,7 @@ RenderChoices RenderPanel::renderChoices() const
     choices.method = m_methodGroup->method();
     choices.k = m_methodGroup->k();
     choices.sharedCounters = m_methodGroup->sharedCounters();
+    choices.memoryBudgetMegabytes = m_methodGroup->memoryBudgetMegabytes();
     choices.dynamicRules = m_classification->currentData().toBool();
     return choices;
 }

@@ -21,6 +21,7 @@ const QString kClipOffset = QStringLiteral("render/clipOffset");
 const QString kK = QStringLiteral("render/k");
 const QString kMethod = QStringLiteral("render/method");
 const QString kSharedCounters = QStringLiteral("render/sharedCounters");
+const QString kMemoryBudget = QStringLiteral("render/memoryBudgetMB");
 const QString kClassification = QStringLiteral("render/classification");
 const QString kLastDirectory = QStringLiteral("paths/lastDirectory");
 
@@ -72,6 +73,8 @@ RenderChoices loadRenderChoices(const QSettings& settings)
     choices.k = boundedInt(settings, kK, 1, render::MethodParameters::kMaxK, fallback.k);
     choices.method = loadMethod(settings, fallback.method);
     choices.sharedCounters = boundedInt(settings, kSharedCounters, 1, kMaxSharedCounters, fallback.sharedCounters);
+    choices.memoryBudgetMegabytes =
+        boundedInt(settings, kMemoryBudget, 0, kMaxMemoryBudgetMegabytes, fallback.memoryBudgetMegabytes);
     choices.dynamicRules = settings.value(kClassification).toString() == QStringLiteral("dynamic");
     return choices;
 }
@@ -90,6 +93,7 @@ void saveRenderChoices(QSettings& settings, const RenderChoices& choices)
     const std::string_view method = render::methodInfo(choices.method).id;
     settings.setValue(kMethod, QString::fromLatin1(method.data(), qsizetype(method.size())));
     settings.setValue(kSharedCounters, choices.sharedCounters);
+    settings.setValue(kMemoryBudget, choices.memoryBudgetMegabytes);
     settings.setValue(kClassification, choices.dynamicRules ? QStringLiteral("dynamic") : QStringLiteral("static"));
 }
 

@@ -3,6 +3,7 @@
 #include "gl/gl_error.h"
 #include "gl/offscreen_gl_context.h"
 #include "gpu_scene.h"
+#include "memory_fallback.h"
 #include "mfr/fragment_method.h"
 #include "trim/trim_shading.h"
 
@@ -29,8 +30,13 @@ constexpr double kAngleDeltaPerNotch = 120.0;
 
 } // namespace
 
-ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent)
+ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent), m_cpuStill(new CpuStillRender(this))
 {
+    connect(m_cpuStill, &CpuStillRender::ready, this, qOverload<>(&ViewportWidget::update));
+    connect(m_cpuStill, &CpuStillRender::failed, this, [this](const QString& message) {
+        setError(tr("Neither the GPU nor the CPU reference could render this view: %1").arg(message));
+        update();
+    });
     setFormat(render::OffscreenGlContext::requestedFormat());
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
@@ -46,6 +52,7 @@ ViewportWidget::~ViewportWidget()
 void ViewportWidget::setScene(std::shared_ptr<const Scene> scene)
 {
     m_scene = std::move(scene);
+    m_cpuScene.reset();
     m_orbit.setSceneBounds(m_scene ? m_scene->worldBounds() : Bounds{});
     m_sceneUploaded = false;
     m_resetPending = true;
@@ -54,6 +61,7 @@ void ViewportWidget::setScene(std::shared_ptr<const Scene> scene)
     m_vertexColors.clear();
     m_chain.reset(); // a chain belongs to the previous scene's mesh
     m_level.reset();
+    resetFallback();
     update();
 }
 
@@ -118,6 +126,7 @@ void ViewportWidget::showPose(const std::vector<glm::vec3>& positions)
                                     " vertices, the pose " + std::to_string(positions.size()) + ".");
     m_pose = positions;
     m_poseDirty = true;
+    m_cpuScene.reset();
     update();
 }
 
@@ -166,6 +175,7 @@ void ViewportWidget::setTrimSettings(const TrimSettings& settings)
 void ViewportWidget::setMethod(render::FragmentMethodKind method)
 {
     m_method = method;
+    resetFallback();
     applyMethod();
     update();
 }
@@ -175,6 +185,7 @@ void ViewportWidget::setMethodParameters(const render::MethodParameters& paramet
     m_parameters = parameters;
     m_parameters.k = std::clamp(parameters.k, 1, render::MethodParameters::kMaxK);
     m_parameters.sharedCounters = std::max(parameters.sharedCounters, 1);
+    resetFallback();
     applyMethod();
     update();
 }
@@ -194,7 +205,7 @@ void ViewportWidget::applyMethod()
         return;
     makeCurrent(); // replacing the method object releases its GL storage
     try {
-        m_renderer->setMethod(m_method);
+        m_renderer->setMethod(effectiveMethod());
         m_renderer->setParameters(m_parameters);
     } catch (const std::exception& e) {
         setError(tr("The method could not be set up: %1").arg(QString::fromStdString(e.what())));
@@ -221,12 +232,12 @@ MethodMeasurement ViewportWidget::measureMethod(render::FragmentMethodKind metho
     try {
         runMeasurement(method, frames, result);
     } catch (...) {
-        m_renderer->setMethod(m_method);
+        m_renderer->setMethod(effectiveMethod());
         doneCurrent();
         update();
         throw;
     }
-    m_renderer->setMethod(m_method);
+    m_renderer->setMethod(effectiveMethod());
     doneCurrent();
     update();
     return result;
@@ -348,7 +359,7 @@ void ViewportWidget::initializeGL()
     m_sceneUploaded = false;
     try {
         m_renderer = std::make_unique<render::TrimRenderer>(*context());
-        m_renderer->setMethod(m_method);
+        m_renderer->setMethod(effectiveMethod());
         m_renderer->setParameters(m_parameters);
         setError({});
     } catch (const render::GlError& e) {
@@ -373,6 +384,7 @@ void ViewportWidget::releaseGl()
 
 void ViewportWidget::resizeGL(int, int)
 {
+    resetFallback(); // the chosen method may fit the new size
     emit framePixelSizeChanged(framePixelSize());
 }
 
@@ -388,8 +400,16 @@ void ViewportWidget::paintGL()
         paintMessage(tr("No scene. Open a mesh with File ▸ Open… or drop a mesh file here."));
         return;
     }
+    if (m_cpuStillMode) {
+        paintCpuStill();
+        return;
+    }
     try {
-        renderFrame();
+        renderWithFallbacks();
+        if (m_cpuStillMode) {
+            paintCpuStill();
+            return;
+        }
     } catch (const render::GlError& e) {
         setError(QString::fromStdString(e.what()));
     } catch (const std::invalid_argument& e) {
@@ -412,7 +432,7 @@ void ViewportWidget::renderFrame()
     const QSize size = framePixelSize();
     syncGpuScene();
     applyPendingReset();
-    m_renderer->setMethod(m_method);
+    m_renderer->setMethod(effectiveMethod());
     m_renderer->setParameters(m_parameters);
     const Camera camera = m_orbit.camera();
     if (m_chain && m_settings.trimEnabled) {
@@ -424,6 +444,81 @@ void ViewportWidget::renderFrame()
     m_renderer->blitTo(defaultFramebufferObject());
     recordFrame(camera, size);
     setError({});
+}
+
+// Out of GPU memory (checked before allocating, or a failed allocation): the next method
+// of the fallback chain renders the frame; none left → the CPU still.
+void ViewportWidget::renderWithFallbacks()
+{
+    for (;;) {
+        try {
+            renderFrame();
+            return;
+        } catch (const render::GpuMemoryError& e) {
+            if (!fallBackFrom(QString::fromStdString(e.what())))
+                return;
+        }
+    }
+}
+
+bool ViewportWidget::fallBackFrom(const QString& reason)
+{
+    const bool dynamic = m_chain && m_settings.trimEnabled;
+    const std::optional<render::FragmentMethodKind> next = render::memoryFallbackAfter(effectiveMethod(), dynamic);
+    m_lastFrame.reset();
+    if (next) {
+        m_fallbackMethod = next;
+        emit memoryFallback(tr("%1 Showing %2 instead; choose another method or size to try again.")
+                                .arg(reason, QString::fromUtf8(render::methodInfo(*next).displayName.data(),
+                                                               qsizetype(render::methodInfo(*next).displayName.size()))));
+        return true;
+    }
+    if (dynamic) // the CPU still knows only the static rule
+        throw render::GpuMemoryError(reason.toStdString() + " No GPU method with the dynamic rules fits: lower the "
+                                                            "image size or raise the memory budget.");
+    m_cpuStillMode = true;
+    emit memoryFallback(tr("%1 No GPU method fits this view: showing the CPU reference as a still image (it "
+                           "re-renders after each change, which takes a moment).")
+                            .arg(reason));
+    return false;
+}
+
+void ViewportWidget::resetFallback()
+{
+    m_fallbackMethod.reset();
+    m_cpuStillMode = false;
+}
+
+QImage ViewportWidget::cpuStillImage() const
+{
+    return m_cpuStillMode && m_cpuStill->shown() ? m_cpuStill->image() : QImage();
+}
+
+// The CPU reference of the current view, drawn when ready; the previous still (or a note)
+// meanwhile.
+void ViewportWidget::paintCpuStill()
+{
+    applyPendingReset();
+    if (!m_cpuScene && m_scene) {
+        if (m_pose.empty()) {
+            m_cpuScene = m_scene;
+        } else {
+            auto posed = std::make_shared<Scene>(*m_scene);
+            posed->objects.front().mesh.positions = m_pose;
+            m_cpuScene = std::move(posed);
+        }
+    }
+    const CpuStillRender::Request request{m_cpuScene, m_orbit.camera(), m_settings, framePixelSize()};
+    m_cpuStill->request(request);
+    clearToBackground();
+    QPainter painter(this);
+    if (m_cpuStill->shown() && m_cpuStill->shown()->scene == m_cpuScene)
+        painter.drawImage(rect(), m_cpuStill->image());
+    painter.setPen(QColor(235, 235, 235));
+    const bool current = m_cpuStill->shown() && m_cpuStill->shown()->sameView(request);
+    painter.drawText(rect().adjusted(kMessageMargin, kMessageMargin, -kMessageMargin, -kMessageMargin),
+                     Qt::AlignTop | Qt::AlignLeft,
+                     current ? tr("CPU reference (no GPU method fits this view)") : tr("Rendering on the CPU…"));
 }
 
 // The chain's levels are uploaded only when the chain changed; a drag replaces only the

@@ -19,10 +19,16 @@
 /// uploaded at the next frame), per-vertex colors such as a segmentation's
 /// (setVertexColors) and the bounds of all poses (setViewBounds).
 ///
-/// OpenGL failures (no 4.3 context, a shader that does not build, too little GPU memory)
-/// never crash and never leave a silent black view: the message is painted into the view
-/// and emitted once through renderError().
+/// OpenGL failures (no 4.3 context, a shader that does not build) never crash and never
+/// leave a silent black view: the message is painted into the view and emitted once
+/// through renderError(). Too little GPU memory for the chosen method (the driver's
+/// limits, a failed allocation or the memory budget of the method parameters) is not an
+/// error: the view renders with the next method of render/memory_fallback.h and says so
+/// through memoryFallback(); when no GPU method is left it shows the CPU reference as a
+/// still image (cpu_still_render.h), rendered off the UI thread. Choosing a method,
+/// parameters or a scene tries the chosen method again.
 
+#include "cpu_still_render.h"
 #include "dynamic_trim_renderer.h"
 #include "frame_times.h"
 #include "memory_estimate.h"
@@ -168,6 +174,12 @@ public:
     [[nodiscard]] std::optional<render::GlCapabilities> capabilities() const;
     /// Why the view cannot render ("" when it can).
     [[nodiscard]] const QString& errorMessage() const { return m_error; }
+    /// The method frames actually use: the chosen one, or its memory fallback.
+    [[nodiscard]] render::FragmentMethodKind effectiveMethod() const { return m_fallbackMethod.value_or(m_method); }
+    /// True while the view shows the CPU reference because no GPU method fits.
+    [[nodiscard]] bool showsCpuStill() const { return m_cpuStillMode; }
+    /// The CPU reference image shown in that mode (null before it is ready).
+    [[nodiscard]] QImage cpuStillImage() const;
 
 signals:
     /// After every successful frame.
@@ -176,6 +188,9 @@ signals:
     void renderError(const QString& message);
     /// The frame size in device pixels changed.
     void framePixelSizeChanged(QSize size);
+    /// The chosen method ran out of GPU memory: `message` says why and what is shown
+    /// instead (another method, or the CPU reference).
+    void memoryFallback(const QString& message);
 
 protected:
     void initializeGL() override;
@@ -196,6 +211,10 @@ private:
     void syncGpuScene();
     void applyPendingReset();
     void renderFrame();
+    void renderWithFallbacks();
+    [[nodiscard]] bool fallBackFrom(const QString& reason);
+    void resetFallback();
+    void paintCpuStill();
     void renderDynamicFrame(const Camera& camera, QSize size);
     void applyMethod();
     void recordFrame(const Camera& camera, QSize size);
@@ -230,6 +249,10 @@ private:
     bool m_levelDirty = false;
     std::optional<render::DynamicFrameStats> m_dynamicStats;
     TrimImage m_trimCache; ///< the last frame's trim image once read (empty: not read)
+    std::optional<render::FragmentMethodKind> m_fallbackMethod; ///< used instead of m_method
+    bool m_cpuStillMode = false;
+    CpuStillRender* m_cpuStill = nullptr;
+    std::shared_ptr<const Scene> m_cpuScene; ///< m_scene with the pose applied, for the CPU still
     Drag m_drag = Drag::None;
     QPointF m_lastMouse;
     double m_grabDepth = 0.0;

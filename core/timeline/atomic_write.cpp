@@ -1,5 +1,7 @@
 #include "timeline/atomic_write.h"
 
+#include "timeline/stale_temporaries.h"
+
 #include <cerrno>
 #include <cstring>
 #include <random>
@@ -101,6 +103,8 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
         fail(path, step, error);
     }
     syncFolder(path.parent_path());
+    // Leftovers of earlier saves of this file that were killed before their rename.
+    removeStaleTemporaries(path, kStaleTemporaryAge);
 }
 
 } // namespace trimlab::timeline

@@ -12,7 +12,9 @@ namespace trimlab::timeline {
 /// the umask), flushes and fsyncs it, then renames it over `path` and fsyncs the folder
 /// (best effort). On any failure the temporary file is removed, `path` is left exactly
 /// as it was, and std::runtime_error is thrown naming the file, the step and the system's
-/// reason ("cannot write /a/b.trimlab: rename: Is a directory").
+/// reason ("cannot write /a/b.trimlab: rename: Is a directory"). After a successful
+/// rename, temporaries of `path` older than kStaleTemporaryAge (left by killed saves) are
+/// deleted (stale_temporaries.h).
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
 } // namespace trimlab::timeline

@@ -25,6 +25,7 @@ struct ClipPlane {
     [[nodiscard]] glm::dvec4 equation() const { return {normal, offset}; }
     /// The same plane keeping the other side.
     [[nodiscard]] ClipPlane flipped() const { return {enabled, -normal, -offset}; }
+    friend bool operator==(const ClipPlane&, const ClipPlane&) = default;
 };
 
 /// The interval [tStart, tEnd] (view depths, see PixelRay) of a ray that survives both

@@ -14,6 +14,7 @@ struct TrimSettings {
     bool trimEnabled = true;
     StaticRule rule = StaticRule::AlternatingBorder;
     ClipPlane clip;
+    friend bool operator==(const TrimSettings&, const TrimSettings&) = default;
 };
 
 } // namespace trimlab

@@ -33,4 +33,7 @@ public:
     using GlError::GlError;
 };
 
+/// "12.3 MB" (MiB, one decimal), as GpuMemoryError messages give sizes.
+[[nodiscard]] std::string megabytesText(double bytes);
+
 } // namespace trimlab::render

@@ -2,9 +2,17 @@
 
 #include "gl/gl_error.h"
 
+#include <cstdio>
 #include <string>
 
 namespace trimlab::render {
+
+std::string megabytesText(double bytes)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f MB", bytes / (1024.0 * 1024.0));
+    return text;
+}
 
 void checkAllocation(GlFunctions& gl, const char* what, double bytes)
 {

@@ -41,16 +41,19 @@ void ABufferLinkedList::allocate(const TrimFrame& frame)
     }
     if (m_nodes.capacity() == 0) {
         const std::uint64_t guess = std::uint64_t(frame.width) * std::uint64_t(frame.height) * kInitialFragmentsPerPixel;
-        setNodeCapacity(std::min(guess, m_nodes.maxNodes(frame.capabilities)), frame.capabilities);
+        // Links and nodes share the budget: half each.
+        const std::size_t budget = frame.parameters.memoryBudgetBytes / 2;
+        setNodeCapacity(std::min(guess, m_nodes.maxNodes(frame.capabilities, budget)), frame.capabilities);
     }
 }
 
 void ABufferLinkedList::grow(std::uint64_t needed, const TrimFrame& frame)
 {
-    const std::uint64_t limit = m_nodes.maxNodes(frame.capabilities);
+    const std::size_t budget = frame.parameters.memoryBudgetBytes / 2; // links and nodes share it
+    const std::uint64_t limit = m_nodes.maxNodes(frame.capabilities, budget);
     const std::uint64_t target = needed > limit ? needed : std::min(needed + needed / 8, limit);
-    m_nodes.reallocate(target, frame.capabilities, frame.width, frame.height); // throws above the limit
-    m_links.reallocate(target, frame.capabilities, frame.width, frame.height);
+    m_nodes.reallocate(target, frame.capabilities, frame.width, frame.height, budget); // throws above the limit
+    m_links.reallocate(target, frame.capabilities, frame.width, frame.height, budget);
     ++m_regrowthCount;
 }
 

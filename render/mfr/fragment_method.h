@@ -55,6 +55,12 @@ struct MethodParameters {
     int sharedCounters = 1024;   ///< S: shared counters of the S-buffer's memory referencing
     bool allowInterlock = true;  ///< use fragment shader interlock where the driver has it
     int maxPeelingPasses = 1024; ///< safety bound for the peeling methods
+    /// The user's GPU memory budget for the method's storage, in bytes (0: no budget, only
+    /// the driver's limits). A frame whose storage would exceed it throws GpuMemoryError
+    /// before allocating (TrimRenderer checks the methods with an estimate; the node
+    /// buffers of the counted methods check when they grow). The render target and the
+    /// scene buffers come on top (FrameStats::bufferMegabytes shows the total).
+    std::size_t memoryBudgetBytes = 0;
 
     static constexpr int kMaxK = 128;
 };

@@ -4,46 +4,45 @@
 #include "gl/gl_error.h"
 
 #include <algorithm>
-#include <cstdio>
 
 namespace trimlab::render {
-
-namespace {
-
-std::string megabytes(double bytes)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f MB", bytes / (1024.0 * 1024.0));
-    return text;
-}
-
-} // namespace
 
 NodeBuffer::NodeBuffer(GlFunctions& gl, std::size_t bytesPerNode, std::string what)
     : m_gl(gl), m_bytesPerNode(bytesPerNode), m_what(std::move(what))
 {
 }
 
-std::uint64_t NodeBuffer::maxNodes(const GlCapabilities& capabilities) const
+std::uint64_t NodeBuffer::maxNodes(const GlCapabilities& capabilities, std::size_t budgetBytes) const
 {
-    return std::uint64_t(std::max<qint64>(capabilities.maxShaderStorageBlockBytes, 0)) / m_bytesPerNode;
+    std::uint64_t bytes = std::uint64_t(std::max<qint64>(capabilities.maxShaderStorageBlockBytes, 0));
+    if (budgetBytes > 0)
+        bytes = std::min<std::uint64_t>(bytes, budgetBytes);
+    return bytes / m_bytesPerNode;
 }
 
-void NodeBuffer::reserve(std::uint64_t nodes, const GlCapabilities& capabilities, int width, int height)
+void NodeBuffer::reserve(std::uint64_t nodes, const GlCapabilities& capabilities, int width, int height,
+                         std::size_t budgetBytes)
 {
     if (nodes > m_capacity || !m_buffer)
-        reallocate(nodes, capabilities, width, height);
+        reallocate(nodes, capabilities, width, height, budgetBytes);
 }
 
-void NodeBuffer::reallocate(std::uint64_t nodes, const GlCapabilities& capabilities, int width, int height)
+void NodeBuffer::reallocate(std::uint64_t nodes, const GlCapabilities& capabilities, int width, int height,
+                            std::size_t budgetBytes)
 {
-    const std::uint64_t limit = maxNodes(capabilities);
+    const std::uint64_t limit = maxNodes(capabilities, budgetBytes);
     const double bytes = double(std::max<std::uint64_t>(nodes, 1)) * double(m_bytesPerNode);
+    const bool budgetBinds = budgetBytes > 0 && limit < maxNodes(capabilities);
+    const std::string needs = "The " + m_what + " needs " + std::to_string(nodes) + " fragments (" + megabytesText(bytes) +
+                              ")" +
+                              (width > 0 ? " at " + std::to_string(width) + "x" + std::to_string(height) : std::string());
+    if (nodes > limit && budgetBinds)
+        throw GpuMemoryError(needs + ", above the GPU memory budget of " + megabytesText(double(budgetBytes)) +
+                             ". Raise the budget, lower the image size or pick a bounded method (k+-buffer, K+B-SB, "
+                             "AB_FP).");
     if (nodes > limit)
-        throw GpuMemoryError("The " + m_what + " needs " + std::to_string(nodes) + " fragments (" + megabytes(bytes) +
-                             ")" + (width > 0 ? " at " + std::to_string(width) + "x" + std::to_string(height) : std::string()) +
-                             ", above this driver's " +
-                             megabytes(double(capabilities.maxShaderStorageBlockBytes)) +
+        throw GpuMemoryError(needs + ", above this driver's " +
+                             megabytesText(double(capabilities.maxShaderStorageBlockBytes)) +
                              " limit for one shader storage buffer (GL_MAX_SHADER_STORAGE_BLOCK_SIZE). Lower the "
                              "image size or pick a bounded method (k+-buffer, K+B-SB, AB_FP).");
     m_capacity = 0;

@@ -1,6 +1,7 @@
 # Reliability (docs/reliability.md): the fuzz regression corpus and the broken-document
 # table, and atomic saves under SIGKILL.
 trimlab_add_test(core fuzz_regressions LIBS trimlab::core)
+trimlab_add_test(core stale_temporaries LIBS trimlab::core)
 add_executable(save_kill_helper save_kill_helper.cpp)
 target_link_libraries(save_kill_helper PRIVATE trimlab::core)
 set_target_properties(save_kill_helper PROPERTIES AUTOMOC OFF)

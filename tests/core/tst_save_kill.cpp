@@ -5,11 +5,13 @@
 // each kill checks that the file loads and is byte for byte one of the two versions.
 // A kill between creating and renaming the temporary file leaves that file behind
 // (`<name>.tmp-XXXXXX`); the test checks that each kill leaves at most one, named by that
-// pattern, and removes them as docs/reliability.md tells users to.
+// pattern, and removes them (TrimLab's own saves remove such files once they are old:
+// core.stale_temporaries).
 #include "save_kill_project.h"
 
 #include "timeline/atomic_write.h"
 #include "timeline/file_bytes.h"
+#include "timeline/stale_temporaries.h"
 
 #include <QtTest>
 
@@ -25,19 +27,12 @@ namespace {
 // like a save's temporary file (`<name>.tmp-XXXXXX`).
 std::vector<std::filesystem::path> temporaries(const std::filesystem::path& target, std::string& unexpected)
 {
-    const std::string prefix = target.filename().string() + ".tmp-";
-    const auto isTemporary = [&](const std::string& name) {
-        return name.size() == prefix.size() + 6 && name.starts_with(prefix) &&
-               std::all_of(name.begin() + std::ptrdiff_t(prefix.size()), name.end(), [](char c) {
-                   return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
-               });
-    };
     std::vector<std::filesystem::path> found;
     for (const auto& entry : std::filesystem::directory_iterator(target.parent_path())) {
         if (entry.path() == target)
             continue;
         found.push_back(entry.path());
-        if (!isTemporary(entry.path().filename().string()))
+        if (!timeline::isAtomicWriteTemporaryOf(target, entry.path()))
             unexpected += entry.path().filename().string() + " ";
     }
     return found;

@@ -5,6 +5,7 @@
 
 #include "gl/offscreen_gl_context.h"
 
+#include <QStandardPaths>
 #include <QString>
 
 #include <memory>
@@ -29,4 +30,15 @@ namespace trimlab::test {
                 QFAIL(qPrintable("TRIMLAB_REQUIRE_GL=1 but no OpenGL 4.3 context: " + why_));              \
             QSKIP(qPrintable("No OpenGL 4.3 context: " + why_));                                           \
         }                                                                                                  \
+    } while (false)
+
+/// In initTestCase() of a widget test: standard paths in test mode (settings, recovery
+/// files and caches never touch the user's) and the OpenGL 4.3 check of
+/// TRIMLAB_INIT_GL_CONTEXT (skip, or fail under TRIMLAB_REQUIRE_GL=1), which the viewport
+/// needs.
+#define TRIMLAB_INIT_WIDGET_TEST()                                                                         \
+    do {                                                                                                   \
+        QStandardPaths::setTestModeEnabled(true);                                                          \
+        std::unique_ptr<trimlab::render::OffscreenGlContext> probe_;                                       \
+        TRIMLAB_INIT_GL_CONTEXT(probe_);                                                                   \
     } while (false)

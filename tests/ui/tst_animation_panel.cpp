@@ -150,10 +150,7 @@ private:
 
 void TestAnimationPanel::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    std::unique_ptr<render::OffscreenGlContext> probe;
-    TRIMLAB_INIT_GL_CONTEXT(probe);
-    probe.reset();
+    TRIMLAB_INIT_WIDGET_TEST();
     QVERIFY(m_dir.isValid());
 }
 

@@ -130,10 +130,7 @@ private:
 
 void TestDesignWorkflow::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    std::unique_ptr<render::OffscreenGlContext> probe;
-    TRIMLAB_INIT_GL_CONTEXT(probe);
-    probe.reset();
+    TRIMLAB_INIT_WIDGET_TEST();
     QVERIFY(m_dir.isValid());
     m_sphereObj = path(QStringLiteral("sphere.obj"));
     test::writeObj(makeIcosphere(glm::dvec3(0.0), 1.0, 3), m_sphereObj); // 642 vertices

@@ -108,10 +108,7 @@ private:
 
 void TestMainWindow::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    std::unique_ptr<render::OffscreenGlContext> probe;
-    TRIMLAB_INIT_GL_CONTEXT(probe);
-    probe.reset();
+    TRIMLAB_INIT_WIDGET_TEST();
     QVERIFY(m_dir.isValid());
     m_pushedSphereObj = path(QStringLiteral("pushed-sphere.obj"));
     writeObj(makeDemoScene("pushed-sphere")->objects.front().mesh, m_pushedSphereObj);

@@ -19,6 +19,8 @@
 #include "render_settings_store.h"
 #include "viewport_widget.h"
 
+#include "rgba_qimage.h"
+
 #include <QtTest>
 
 #include <QComboBox>
@@ -27,6 +29,7 @@
 #include <QSettings>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QToolButton>
 
@@ -67,6 +70,7 @@ private slots:
     void storedMethodFallsBack();
     void overflowAdviceRules();
     void frameTimesUseGpuOnlyWhenEveryFrameHasOne();
+    void memoryBudgetFallsBackToLeanerMethods();
 
 private:
     [[nodiscard]] std::unique_ptr<MainWindow> showWindow(const QString& settingsName);
@@ -78,10 +82,7 @@ private:
 
 void TestMethodPanel::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    std::unique_ptr<render::OffscreenGlContext> probe;
-    TRIMLAB_INIT_GL_CONTEXT(probe);
-    probe.reset();
+    TRIMLAB_INIT_WIDGET_TEST();
     QVERIFY(m_dir.isValid());
 }
 
@@ -414,6 +415,57 @@ void TestMethodPanel::frameTimesUseGpuOnlyWhenEveryFrameHasOne()
     QCOMPARE(times.medianGpuMilliseconds(), 2.0);
     QCOMPARE(times.source(), std::string_view("wall"));
     QCOMPARE(times.frames(), 4);
+}
+
+// A GPU memory budget below the chosen k⁺-buffer's storage: the view renders with the
+// S-buffer instead (and the frame agrees with the reference), the status bar says why;
+// a budget no GPU method fits shows the CPU reference as a still image (the same image
+// as the reference renders for that view); no budget: the chosen method again.
+void TestMethodPanel::memoryBudgetFallsBackToLeanerMethods()
+{
+    auto window = showWindow(QStringLiteral("budget"));
+    auto* budget = child<QSpinBox>(window.get(), "memoryBudgetSpinBox");
+    QVERIFY(budget);
+    ViewportWidget* viewport = window->viewport();
+    QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return f.stats.method == render::FragmentMethodKind::KPlusArray; }));
+    const std::size_t kplusBytes = *viewport->memoryEstimate().bytes;
+    const int megabytes = int(kplusBytes / (2 * 1024 * 1024)); // half of what it needs
+    QVERIFY(megabytes >= 2);
+    budget->setValue(megabytes);
+    QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return f.stats.method == render::FragmentMethodKind::SBuffer; }));
+    QCOMPARE(viewport->method(), render::FragmentMethodKind::KPlusArray); // the choice is kept
+    QCOMPARE(viewport->effectiveMethod(), render::FragmentMethodKind::SBuffer);
+    // The status bar hears of it through a queued signal.
+    QVERIFY2(QTest::qWaitFor(
+                 [&] {
+                     const QString message = window->statusBar()->currentMessage();
+                     return message.contains(QStringLiteral("budget")) && message.contains(QStringLiteral("S-buffer"));
+                 },
+                 kWaitMs),
+             qPrintable(window->statusBar()->currentMessage()));
+    const auto failure = disagreement(*window, QStringLiteral("budget-fallback"));
+    QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
+
+    // 1 MB at 1024×768 holds neither the S-buffer's fragments (about 2.7 MB) nor peeling's images.
+    viewport->setFixedSize(1024, 768);
+    budget->setValue(1);
+    QVERIFY(QTest::qWaitFor([&] { return viewport->showsCpuStill() && !viewport->cpuStillImage().isNull(); }, kWaitMs));
+    QVERIFY2(QTest::qWaitFor(
+                 [&] { return window->statusBar()->currentMessage().contains(QStringLiteral("CPU reference")); },
+                 kWaitMs),
+             qPrintable(window->statusBar()->currentMessage()));
+    const QImage still = viewport->cpuStillImage().convertToFormat(QImage::Format_RGBA8888);
+    const QSize size = viewport->framePixelSize();
+    const ReferenceRenderer reference(window->scene()->scene);
+    const ReferenceResult expected =
+        reference.render(viewport->camera(), size.width(), size.height(), window->renderPanel()->renderChoices().trim);
+    QCOMPARE(still.size(), size);
+    QVERIFY(still == render::toQImage(expected.color));
+    QVERIFY(expected.stats.coveredPixels > std::uint64_t(size.width() * size.height() / 10));
+
+    budget->setValue(0);
+    QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return f.stats.method == render::FragmentMethodKind::KPlusArray; }));
+    QVERIFY(!viewport->showsCpuStill());
 }
 
 QTEST_MAIN(TestMethodPanel)

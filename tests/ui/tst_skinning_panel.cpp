@@ -140,10 +140,7 @@ private:
 
 void TestSkinningPanel::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    std::unique_ptr<render::OffscreenGlContext> probe;
-    TRIMLAB_INIT_GL_CONTEXT(probe);
-    probe.reset();
+    TRIMLAB_INIT_WIDGET_TEST();
     QVERIFY(m_dir.isValid());
 }
 
