@@ -5,12 +5,14 @@
 //   trimlab bench [--scenes a,b] [--methods a,b] [--size WxH] [--json out.json]
 //   trimlab segment ANIMATION --clusters N --h H -o labels.json
 //   trimlab skin ANIMATION --bones B --method lbs|dqs -o out.glb
+//   trimlab skeleton MESH [--nodes N] -o rig.glb --json skeleton.json
 #include "bench_verb.h"
 #include "cli_messages.h"
 #include "gui_launcher.h"
 #include "info_verb.h"
 #include "render_verb.h"
 #include "segment_verb.h"
+#include "skeleton_verb.h"
 #include "skin_verb.h"
 
 #include <QStringList>
@@ -39,6 +41,9 @@ void printUsage()
         "                                    segment a mesh animation (see trimlab segment --help)\n"
         "  trimlab skin ANIMATION --bones B --method lbs|dqs -o out.glb\n"
         "                                    skin a mesh animation, export glTF (see trimlab skin --help)\n"
+        "  trimlab skeleton MESH [--nodes N] [-o rig.glb] [--json skeleton.json]\n"
+        "                                    extract a skeleton and skinning weights, export a rigged glTF\n"
+        "                                    (see trimlab skeleton --help)\n"
         "SOURCE is a mesh file (.obj .ply .stl .off .gltf .glb, optionally .gz) or a built-in demo:\n"
         "  demo:pushed-sphere, demo:crossing-loop, demo:nested-spheres, demo:sphere");
 }
@@ -55,6 +60,7 @@ constexpr BatchVerb kVerbs[] = {
     {"bench", trimlab::app::runBenchVerb},
     {"segment", trimlab::app::runSegmentVerb},
     {"skin", trimlab::app::runSkinVerb},
+    {"skeleton", trimlab::app::runSkeletonVerb},
 };
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "skin_verb.h"
 
 #include "cli_messages.h"
+#include "terminal_progress.h"
 
 #include "animation/animation_loader.h"
 #include "animation/animation_segmenter.h"
@@ -16,7 +17,6 @@
 #include <cstdio>
 #include <optional>
 #include <string>
-#include <unistd.h>
 #include <variant>
 
 namespace trimlab::app {
@@ -155,28 +155,6 @@ std::variant<SkinOptions, QString> parseSkinOptions(const QStringList& arguments
     return options;
 }
 
-// Progress lines on stderr, only for a person watching a terminal (scripts read one
-// error line there). One line per stage, rewritten in place.
-TaskControl terminalProgress()
-{
-    TaskControl control;
-    if (!isatty(fileno(stderr)))
-        return control;
-    control.progress = [](const TaskProgress& p) {
-        std::fprintf(stderr, "\r%.*s %zu/%zu\x1b[K", int(p.stage.size()), p.stage.data(), p.done, p.total);
-        if (p.done == p.total)
-            std::fputc('\n', stderr);
-    };
-    return control;
-}
-
-double elapsedMs(QElapsedTimer& timer)
-{
-    const double ms = double(timer.nsecsElapsed()) * 1e-6;
-    timer.restart();
-    return ms;
-}
-
 // Everything the summary prints.
 struct SkinRun {
     std::size_t poses = 0, vertices = 0, faces = 0;
@@ -249,13 +227,13 @@ int skinAnimation(const SkinOptions& o)
     QElapsedTimer timer;
     timer.start();
     MeshAnimation loaded = loadAnimation(o.source, o.load, control);
-    run.loadMs = elapsedMs(timer);
+    run.loadMs = lapMilliseconds(timer);
     SegmenterSettings settings;
     settings.partition.clusters = o.bones;
     settings.threads = o.fit.threads;
     AnimationSegmenter segmenter(std::move(loaded), settings);
     run.segmentation = segmentForBones(segmenter, o, control);
-    run.segmentationMs = elapsedMs(timer);
+    run.segmentationMs = lapMilliseconds(timer);
     const MeshAnimation& animation = segmenter.animation();
     run.poses = animation.poseCount();
     run.vertices = animation.vertexCount();
@@ -266,7 +244,7 @@ int skinAnimation(const SkinOptions& o)
     SkinExportOptions exportOptions = o.exported;
     exportOptions.target = &original;
     run.exported = exportSkinnedGltf(run.fit.model, o.output.toStdString(), o.fps, exportOptions);
-    run.exportMs = elapsedMs(timer);
+    run.exportMs = lapMilliseconds(timer);
     run.exportedError = measureSkinningError(original, run.exported.positions, animation.restPose);
     printSummary(o, run);
     printLine(QStringLiteral("wrote %1").arg(o.output));

@@ -24,6 +24,8 @@
 #include "scene_loader.h"
 #include "segmentation_panel.h"
 #include "session_recovery.h"
+#include "skeleton_panel.h"
+#include "skeleton_settings_store.h"
 #include "skinning_panel.h"
 #include "timeline_panel.h"
 #include "viewport_widget.h"
@@ -105,6 +107,7 @@ MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
     createStatsDock();
     createAnimationDocks();
     createDesignDocks();
+    createSkeletonDock();
     createFileMenu();
     createEditMenu();
     createViewMenu();
@@ -112,6 +115,7 @@ MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
     connectParts();
     connectAnimationParts();
     connectDesignParts();
+    connectSkeletonParts();
     restoreSettings();
     updateTitle();
     QTimer::singleShot(0, this, &MainWindow::openDefaultIfNothingRequested);
@@ -308,6 +312,9 @@ void MainWindow::createViewMenu()
     QAction* skinning = m_skinningDock->toggleViewAction();
     skinning->setText(tr("S&kinning Panel"));
     m_viewMenu->addAction(skinning);
+    QAction* skeleton = m_skeletonDock->toggleViewAction();
+    skeleton->setText(tr("Ske&leton Panel"));
+    m_viewMenu->addAction(skeleton);
     QAction* timeline = m_timelineDock->toggleViewAction();
     timeline->setText(tr("&Timeline"));
     m_viewMenu->addAction(timeline);
@@ -394,6 +401,7 @@ void MainWindow::restoreSettings()
     m_recentAnimations.load(*m_settings);
     rebuildRecentAnimationMenu();
     m_segmentation->setChoices(loadSegmentationChoices(*m_settings));
+    m_skeleton->setChoices(loadSkeletonChoices(*m_settings));
     const PlaybackChoices playback = loadPlaybackChoices(*m_settings);
     m_timeline->setPlaybackChoices(playback.fps, playback.loop);
     m_panel->setRenderChoices(loadRenderChoices(*m_settings));
@@ -552,6 +560,7 @@ void MainWindow::onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loaded
     m_design->endSession(); // an animation's poses are not a deformation history
     m_animation = std::move(loaded);
     showScene(m_animation->restScene, m_animation->bounds);
+    m_skeleton->setScene(nullptr); // the timeline drives the poses of an animation
     m_viewport->setViewBounds(m_animation->bounds); // no pose may cross the far plane
     const MeshAnimation& animation = *m_animation->animation;
     QStringList names;
@@ -587,6 +596,7 @@ void MainWindow::showScene(std::shared_ptr<const LoadedScene> loaded, const Boun
     m_scene = std::move(loaded);
     m_panel->setSceneInfo(bounds, m_scene->trimmable(), QString::fromStdString(m_scene->trimUnavailableReason()));
     m_viewport->setScene(std::shared_ptr<const Scene>(m_scene, &m_scene->scene));
+    m_skeleton->setScene(m_scene); // after the viewport: its result never meets another mesh
     applyRenderChoices();
     updateTitle();
 }

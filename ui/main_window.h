@@ -15,7 +15,9 @@
 /// the viewport and the Segmentation panel segments it and colors it by segment; the
 /// Skinning panel (a dock tabbed with it, shown while an animation is open) fits a
 /// skinning with the segments as bones, and what it shows — the approximation's poses or
-/// the error heat map — takes the place of the original poses and segment colors. A
+/// the error heat map — takes the place of the original poses and segment colors. The
+/// Skeleton dock (tabbed with the Render panel; main_window_skeleton.cpp) extracts the
+/// skeleton of a shown one-object mesh, shows its stages and poses it. A
 /// failed load shows a dialog naming the file and the reason and keeps the current scene
 /// or animation. If nothing was opened by the time the event loop first runs, the window
 /// opens defaultSource().
@@ -71,6 +73,7 @@ class RenderPanel;
 class SceneLoader;
 class SegmentationPanel;
 class SessionRecovery;
+class SkeletonPanel;
 class SkinningPanel;
 class TimelinePanel;
 class ViewportWidget;
@@ -118,6 +121,8 @@ public:
     [[nodiscard]] TimelinePanel* timelinePanel() const { return m_timeline; }
     [[nodiscard]] SegmentationPanel* segmentationPanel() const { return m_segmentation; }
     [[nodiscard]] SkinningPanel* skinningPanel() const { return m_skinning; }
+    /// The Skeleton dock's panel (skeleton extraction, posing and export on the mesh shown).
+    [[nodiscard]] SkeletonPanel* skeletonPanel() const { return m_skeleton; }
     [[nodiscard]] QStringList recentAnimations() const { return m_recentAnimations.paths(); }
     [[nodiscard]] DesignWorkspace* designWorkspace() const { return m_design; }
     [[nodiscard]] BrushPanel* brushPanel() const { return m_brushPanel; }
@@ -153,6 +158,11 @@ private:
     void createStatsDock();
     void createAnimationDocks();
     void createDesignDocks();
+    void createSkeletonDock();
+    void connectSkeletonParts();
+    [[nodiscard]] QString askSkeletonExportPath(const QString& title, const QStringList& filters, const QString& ending);
+    void showExportRiggedGltfDialog();
+    void showExportSkeletonJsonDialog();
     void createDesignFileActions(QMenu* file);
     void createEditMenu();
     void connectDesignParts();
@@ -213,6 +223,8 @@ private:
     QDockWidget* m_segmentationDock = nullptr;
     SkinningPanel* m_skinning = nullptr;
     QDockWidget* m_skinningDock = nullptr;
+    SkeletonPanel* m_skeleton = nullptr;
+    QDockWidget* m_skeletonDock = nullptr;
     QMenu* m_recentMenu = nullptr;
     QMenu* m_recentAnimationMenu = nullptr;
     QMenu* m_viewMenu = nullptr;

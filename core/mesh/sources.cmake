@@ -5,6 +5,7 @@ target_sources(trimlab_core PRIVATE
   mesh/gltf_document.cpp
   mesh/gltf_reader.cpp
   mesh/gzip_input.cpp
+  mesh/loop_subdivision.cpp
   mesh/mesh_io.cpp
   mesh/mesh_load_error.cpp
   mesh/mesh_validation.cpp
@@ -21,3 +22,5 @@ target_sources(trimlab_core PRIVATE
   mesh/text_scanner.cpp
   mesh/vertex_welding.cpp
 )
+# Loop subdivision (mesh/loop_subdivision.cpp) refines through OpenSubdiv's Far API.
+target_link_libraries(trimlab_core PRIVATE OpenSubdiv::osdCPU)

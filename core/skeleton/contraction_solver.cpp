@@ -1,0 +1,243 @@
+#include "skeleton/contraction_solver.h"
+
+#include "skeleton/cotangent_laplacian.h"
+#include "skeleton/normal_equations.h"
+#include "skeleton/sparse_cholesky.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace trimlab {
+
+namespace {
+
+double triangleArea(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
+{
+    return 0.5 * glm::length(glm::cross(b - a, c - a));
+}
+
+void checkOptions(const ContractionOptions& o)
+{
+    const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+    if (!positive(o.initialAttractionWeight) || !std::isfinite(o.initialContractionWeight) ||
+        !(o.contractionGrowth >= 1.0) || !std::isfinite(o.contractionGrowth) || !positive(o.maxContractionWeight) ||
+        !positive(o.maxAttractionWeight))
+        throw std::invalid_argument("contraction weights must be finite and positive, with s_L >= 1");
+    if (!(o.minAngleDegrees > 0.0 && o.minAngleDegrees < 60.0))
+        throw std::invalid_argument("minAngleDegrees must lie in (0, 60)");
+    if (!(o.minAreaRatio >= 0.0) || !(o.minAreaDecrease >= 0.0 && o.minAreaDecrease < 1.0))
+        throw std::invalid_argument("minAreaRatio must be >= 0 and minAreaDecrease in [0, 1)");
+    if (o.maxIterations < 1)
+        throw std::invalid_argument("maxIterations must be at least 1");
+}
+
+// Before the area has fallen by this fraction, W_L is still too small to move anything
+// and area changes are rounding noise, so a rise does not mean the contraction diverged.
+constexpr double kContractionUnderway = 0.99;
+
+} // namespace
+
+struct ContractionSolver::State {
+    ContractionOptions options;
+    std::vector<glm::uvec3> triangles;
+    std::vector<glm::dvec3> positions;
+    CotangentLaplacian laplacian;
+    NormalEquations normal;
+    SkeletonSparseMatrix colamdSource; // A's pattern, only for SparseOrdering::Colamd
+    std::unique_ptr<SparseCholesky> factor;
+    SparseBackend backend;
+    bool analyzed = false;
+
+    double maxCotangent = 0.0;
+    double contractionWeight = 0.0;
+    std::vector<double> contractionWeights; // W_L as the diagonal matrix of eq. (2)
+    std::vector<double> attractionWeights;  // W_H
+    std::vector<double> initialRingAreas;   // A_i⁰
+    double initialArea = 0.0;
+    double area = 0.0;
+    std::vector<double> laplacianMagnitude;
+    int iterations = 0, analyses = 0, factorizations = 0;
+    bool finished = false;
+    std::vector<std::string> warnings;
+
+    State(const TriangleMesh& mesh, const ContractionOptions& o)
+        : options(o), triangles(mesh.triangles), positions(mesh.positions.begin(), mesh.positions.end()),
+          laplacian(mesh.positions.size(), mesh.triangles), normal(laplacian.matrix()), backend(o.backend)
+    {
+    }
+
+    // A_i of `at` (the area of the triangles around each vertex); returns the total area.
+    double ringAreas(const std::vector<glm::dvec3>& at, std::vector<double>& areas) const
+    {
+        areas.assign(at.size(), 0.0);
+        double total = 0.0;
+        for (const glm::uvec3& t : triangles) {
+            const double a = triangleArea(at[t[0]], at[t[1]], at[t[2]]);
+            total += a;
+            for (int c = 0; c < 3; ++c)
+                areas[t[c]] += a;
+        }
+        return total;
+    }
+
+    void makeFactor()
+    {
+        factor = makeSparseCholesky(backend, options.ordering,
+                                    options.ordering == SparseOrdering::Colamd ? &colamdSource : nullptr);
+        analyzed = false;
+    }
+
+    // One attempt with the current factorization; false + error on failure.
+    bool trySolve(const Eigen::MatrixX3d& rhs, Eigen::MatrixX3d& x, std::string& error)
+    {
+        if (!analyzed) {
+            ++analyses;
+            if (!factor->analyze(normal.lower(), error))
+                return false;
+            analyzed = true;
+        }
+        ++factorizations;
+        return factor->factorize(normal.lower(), error) && factor->solve(rhs, x, error) && x.allFinite();
+    }
+
+    Eigen::MatrixX3d solve(const Eigen::MatrixX3d& rhs)
+    {
+        Eigen::MatrixX3d x;
+        std::string error;
+        if (trySolve(rhs, x, error))
+            return x;
+        if (error.empty())
+            error = factor->description() + " gave a non-finite solution.";
+        if (backend != SparseBackend::Cholmod)
+            throw std::runtime_error("Contraction failed in iteration " + std::to_string(iterations + 1) + ": " + error);
+        warnings.push_back(error + " Falling back to Eigen SimplicialLDLT with " + orderingName(options.ordering) +
+                           " ordering.");
+        backend = SparseBackend::EigenSimplicialLdlt;
+        makeFactor();
+        error.clear();
+        if (trySolve(rhs, x, error))
+            return x;
+        throw std::runtime_error("Contraction failed in iteration " + std::to_string(iterations + 1) + ": " +
+                                 (error.empty() ? std::string("non-finite solution") : error));
+    }
+
+    // W_L ← s_L·W_L and W_H,i ← W_H⁰·√(A_i⁰/A_i), both capped (III.A steps 2–3).
+    void updateWeights(const std::vector<double>& areas)
+    {
+        contractionWeight = std::min(contractionWeight * options.contractionGrowth, options.maxContractionWeight);
+        std::fill(contractionWeights.begin(), contractionWeights.end(), contractionWeight);
+        for (std::size_t i = 0; i < areas.size(); ++i) {
+            // A collapsed ring (A_i = 0) gets the cap (√∞ = ∞ > cap); a ring that had no
+            // area to begin with (degenerate input) keeps W_H⁰.
+            const double a0 = initialRingAreas[i];
+            attractionWeights[i] = a0 <= 0.0 ? options.initialAttractionWeight
+                                             : std::min(options.maxAttractionWeight,
+                                                        options.initialAttractionWeight * std::sqrt(a0 / areas[i]));
+        }
+    }
+
+    // Solves eq. (2) for the next positions and ‖L·V'‖ per vertex.
+    std::vector<glm::dvec3> contract(std::vector<double>& magnitude)
+    {
+        normal.update(laplacian.matrix(), contractionWeights, attractionWeights);
+        const Eigen::MatrixX3d x = solve(NormalEquations::rightHandSide(positions, attractionWeights));
+        const Eigen::MatrixX3d lx = laplacian.matrix() * x;
+        std::vector<glm::dvec3> next(positions.size());
+        magnitude.resize(positions.size());
+        for (std::size_t i = 0; i < positions.size(); ++i) {
+            const auto r = static_cast<Eigen::Index>(i);
+            next[i] = glm::dvec3(x(r, 0), x(r, 1), x(r, 2));
+            magnitude[i] = lx.row(r).norm();
+        }
+        return next;
+    }
+};
+
+ContractionSolver::ContractionSolver(const TriangleMesh& mesh, const ContractionOptions& options)
+{
+    if (mesh.triangles.empty())
+        throw std::invalid_argument("contraction needs a mesh with triangles");
+    checkOptions(options);
+    m = std::make_unique<State>(mesh, options);
+    State& s = *m;
+    // Angles clamped to [θmin, 180° − θmin], i.e. |cot| ≤ cot θmin (cot 1° ≈ 57.3): the
+    // cotangents stay finite as triangles collapse (paper III.A, detail 1).
+    s.maxCotangent = 1.0 / std::tan(options.minAngleDegrees * glm::pi<double>() / 180.0);
+    s.initialArea = s.ringAreas(s.positions, s.initialRingAreas);
+    s.area = s.initialArea;
+    // The paper's 10⁻³·√Ā with the mean face area Ā as the unit of area (see
+    // ContractionOptions::initialContractionWeight for why not in the mesh's units).
+    s.contractionWeight = options.initialContractionWeight > 0.0 ? options.initialContractionWeight : 1.0e-3;
+    s.contractionWeight = std::min(s.contractionWeight, options.maxContractionWeight);
+    s.contractionWeights.assign(s.positions.size(), s.contractionWeight);
+    s.attractionWeights.assign(s.positions.size(), options.initialAttractionWeight);
+    s.laplacianMagnitude.assign(s.positions.size(), 0.0);
+    s.laplacian.update(s.positions, s.maxCotangent);
+    if (options.ordering == SparseOrdering::Colamd)
+        s.colamdSource = s.normal.stackedPattern(s.laplacian.matrix());
+    s.makeFactor();
+}
+
+ContractionSolver::~ContractionSolver() = default;
+
+bool ContractionSolver::iterate()
+{
+    State& s = *m;
+    if (s.finished)
+        return false;
+    std::vector<double> magnitude;
+    std::vector<glm::dvec3> next = s.contract(magnitude);
+    std::vector<double> areas;
+    const double nextArea = s.ringAreas(next, areas);
+    const double previousArea = s.area;
+    // The area rose although the contraction was underway: the iteration diverged (with
+    // W_L large, near-degenerate triangles with negative cotangent weights let L·V' ≈ 0
+    // far from the surface). Keep the previous positions and stop.
+    if (nextArea > previousArea && previousArea < kContractionUnderway * s.initialArea) {
+        s.finished = true;
+        s.warnings.push_back("Contraction stopped after iteration " + std::to_string(s.iterations) +
+                             ": iteration " + std::to_string(s.iterations + 1) +
+                             " increased the surface area and was discarded.");
+        return true;
+    }
+    const bool contractionCapped = s.contractionWeight >= s.options.maxContractionWeight;
+    s.positions = std::move(next);
+    s.laplacianMagnitude = std::move(magnitude);
+    s.area = nextArea;
+    ++s.iterations;
+    s.updateWeights(areas);
+    s.laplacian.update(s.positions, s.maxCotangent);
+
+    const double ratio = s.initialArea > 0.0 ? s.area / s.initialArea : 0.0;
+    const bool stalled = contractionCapped && previousArea - s.area < s.options.minAreaDecrease * previousArea;
+    s.finished = s.iterations >= s.options.maxIterations || ratio < s.options.minAreaRatio || stalled;
+    return true;
+}
+
+void ContractionSolver::run(const TaskControl& control)
+{
+    const auto total = static_cast<std::size_t>(m->options.maxIterations);
+    control.report("contraction", 0, total);
+    while (!finished()) {
+        control.throwIfCancelled();
+        iterate();
+        control.report("contraction", static_cast<std::size_t>(m->iterations), total);
+    }
+}
+
+bool ContractionSolver::finished() const { return m->finished; }
+const std::vector<glm::dvec3>& ContractionSolver::positions() const { return m->positions; }
+const std::vector<double>& ContractionSolver::laplacianMagnitude() const { return m->laplacianMagnitude; }
+int ContractionSolver::iterations() const { return m->iterations; }
+int ContractionSolver::symbolicAnalyses() const { return m->analyses; }
+int ContractionSolver::numericFactorizations() const { return m->factorizations; }
+double ContractionSolver::areaRatio() const { return m->initialArea > 0.0 ? m->area / m->initialArea : 0.0; }
+double ContractionSolver::contractionWeight() const { return m->contractionWeight; }
+std::string ContractionSolver::solverDescription() const { return m->factor->description(); }
+const std::vector<std::string>& ContractionSolver::warnings() const { return m->warnings; }
+
+} // namespace trimlab

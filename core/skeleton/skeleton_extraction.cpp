@@ -1,0 +1,80 @@
+#include "skeleton/skeleton_extraction.h"
+
+#include "skeleton/contraction_solver.h"
+#include "skeleton/point_in_mesh.h"
+#include "skeleton/rig_hierarchy.h"
+#include "skeleton/skeleton_refinement.h"
+#include "skeleton/skeleton_selection.h"
+
+#include <glm/geometric.hpp>
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+namespace trimlab {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+} // namespace
+
+SkeletonRig selectRig(const CurveSkeleton& curve, const std::vector<glm::dvec3>& originalPositions, int targetNodes,
+                      int rootJoint)
+{
+    const NodeSelection selection = selectSkeletonNodes(curve, originalPositions, targetNodes);
+    return buildSkeletonRig(curve, selection, originalPositions, rootJoint);
+}
+
+SkeletonExtraction extractSkeleton(const TriangleMesh& mesh, const SkeletonOptions& options, const TaskControl& control)
+{
+    checkSkeletonInput(mesh);
+    if (options.targetNodes < 1)
+        throw std::invalid_argument("the skeleton needs a target of at least 1 node, not " +
+                                    std::to_string(options.targetNodes));
+    SkeletonExtraction result;
+
+    Clock::time_point start = Clock::now();
+    ContractionSolver contraction(mesh, options.contraction);
+    contraction.run(control);
+    result.contracted = contraction.positions();
+    result.laplacianMagnitude = contraction.laplacianMagnitude();
+    result.contractionIterations = contraction.iterations();
+    result.symbolicAnalyses = contraction.symbolicAnalyses();
+    result.numericFactorizations = contraction.numericFactorizations();
+    result.solver = contraction.solverDescription();
+    result.warnings = contraction.warnings();
+    result.times.contractionMs = millisecondsSince(start);
+
+    control.throwIfCancelled();
+    start = Clock::now();
+    const Bounds bounds = computeBounds(mesh);
+    const double delta = options.simplification.preCollapseFraction * glm::length(bounds.max - bounds.min);
+    result.curve = simplifyContractedMesh(result.contracted, mesh.triangles, delta, options.simplification, control);
+    result.times.simplificationMs = millisecondsSince(start);
+
+    control.throwIfCancelled();
+    start = Clock::now();
+    const std::vector<glm::dvec3> original(mesh.positions.begin(), mesh.positions.end());
+    control.report("refinement", 0, 1);
+    if (options.refine)
+        refineSkeleton(result.curve, original, PointInMesh(mesh));
+    control.report("refinement", 1, 1);
+    result.times.refinementMs = millisecondsSince(start);
+
+    control.throwIfCancelled();
+    start = Clock::now();
+    control.report("selection", 0, 1);
+    result.rig = selectRig(result.curve, original, options.targetNodes, options.rootJoint);
+    control.report("selection", 1, 1);
+    result.times.selectionMs = millisecondsSince(start);
+    return result;
+}
+
+} // namespace trimlab

@@ -1,0 +1,44 @@
+#pragma once
+// Generated closed meshes for the skeleton-extraction tests: a capsule whose axis is known,
+// and a 'star' of capsules fused at a central sphere, meshed watertight from an implicit
+// function by marching tetrahedra (written here; see skeleton_shapes.cpp).
+#include "mesh/triangle_mesh.h"
+
+#include <glm/vec3.hpp>
+
+#include <functional>
+#include <vector>
+
+namespace trimlab::test {
+
+// A capsule around the y axis: cylinder of `radius` over y ∈ [−halfLength, halfLength],
+// hemispherical caps of `capRings` bands, `bodyRings` bands along the cylinder, `segments`
+// vertices around. Closed, manifold, outward (a surface of revolution).
+[[nodiscard]] TriangleMesh axisCapsule(double radius, double halfLength, int capRings, int bodyRings, int segments);
+
+// The zero level set of `f` (negative inside) over the box [lower, upper], sampled on a grid
+// of cubes of edge `cell`, each split into 6 tetrahedra around its main diagonal (the same
+// split in every cube, so neighbouring tetrahedra share faces). Linear interpolation along
+// tetrahedron edges; vertices on a grid edge are shared by every tetrahedron around it, so
+// the surface is closed and manifold (values within 1e-3·cell of zero are moved to
+// +1e-3·cell so no node lies on it). Triangles face outward (towards increasing f). `f`
+// must be positive on the box's boundary.
+[[nodiscard]] TriangleMesh marchingTetrahedra(const std::function<double(const glm::dvec3&)>& f,
+                                              const glm::dvec3& lower, const glm::dvec3& upper, double cell);
+
+// A star in the plane y = 0: a sphere of `hubRadius` at the origin and one capsule
+// (radius `armRadius`) per entry of `armLengths`, from the origin to the tip at distance
+// armLengths[k] + armRadius in direction armDirection(k, #arms), blended by a smooth
+// minimum (blend radius armRadius/2). Negative inside; ≈ the signed distance away from the
+// blend.
+struct Star {
+    double hubRadius = 0.45;
+    double armRadius = 0.2;
+    std::vector<double> armLengths{1.4, 1.7, 1.5};
+
+    [[nodiscard]] glm::dvec3 armDirection(std::size_t k) const;
+    [[nodiscard]] double implicit(const glm::dvec3& p) const;
+    [[nodiscard]] TriangleMesh mesh(double cell) const;
+};
+
+} // namespace trimlab::test

@@ -1,0 +1,197 @@
+// Geometry contraction and simplification (core/skeleton/contraction_solver.h,
+// skeleton_simplification.h; Berenguer & Moreno III.A–B) on a generated capsule, whose
+// curve skeleton is known: the segment of its axis. Expected values come from the shape,
+// not from the code under test.
+#include "skeleton/contraction_solver.h"
+#include "skeleton/cotangent_laplacian.h"
+#include "skeleton/skeleton_simplification.h"
+#include "skeleton/sparse_cholesky.h"
+
+#include "skeleton_shapes.h"
+
+#include <QtTest>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <numeric>
+#include <stop_token>
+
+using namespace trimlab;
+using namespace trimlab::test;
+
+namespace {
+
+constexpr double kRadius = 0.5, kHalfLength = 1.5;
+
+TriangleMesh capsule() { return axisCapsule(kRadius, kHalfLength, 8, 24, 32); }
+
+double axisDistance(const glm::dvec3& p) { return std::hypot(p.x, p.z); }
+
+// Contracted positions after exactly `iterations` solves with W_L⁰ = 1 (contracting from
+// the first iteration), for comparing factorizations.
+std::vector<glm::dvec3> contractWith(SparseBackend backend, SparseOrdering ordering, int iterations,
+                                     std::string* description = nullptr)
+{
+    ContractionOptions options;
+    options.backend = backend;
+    options.ordering = ordering;
+    options.initialContractionWeight = 1.0;
+    options.maxIterations = iterations;
+    ContractionSolver solver(capsule(), options);
+    solver.run();
+    if (description)
+        *description = solver.solverDescription();
+    return solver.positions();
+}
+
+double maxDifference(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b)
+{
+    double worst = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        worst = std::max(worst, glm::length(a[i] - b[i]));
+    return worst;
+}
+
+} // namespace
+
+class TestSkeletonContraction : public QObject {
+    Q_OBJECT
+
+private slots:
+    void clampedCotangentStaysFinite()
+    {
+        const double maxCot = 1.0 / std::tan(M_PI / 180.0); // the default clamp: 1°
+        const glm::dvec3 o(0.0), x(1.0, 0.0, 0.0);
+        QCOMPARE(clampedCotangent(o, x, glm::dvec3(0.5, std::sqrt(3.0) / 2.0, 0.0), maxCot) * std::sqrt(3.0), 1.0);
+        QCOMPARE(clampedCotangent(o, x, glm::dvec3(1.0, 1e-9, 0.0), maxCot), maxCot);  // 1e-9 rad < 1°
+        QCOMPARE(clampedCotangent(o, x, glm::dvec3(2.0, 0.0, 0.0), maxCot), maxCot);   // collinear, 0°
+        QCOMPARE(clampedCotangent(o, x, glm::dvec3(-1.0, 0.0, 0.0), maxCot), -maxCot); // collinear, 180°
+        QCOMPARE(clampedCotangent(o, o, x, maxCot), maxCot);                           // no angle at all
+    }
+
+    void capsuleContractsToItsAxis()
+    {
+        const TriangleMesh mesh = capsule();
+        ContractionSolver solver(mesh, ContractionOptions{});
+        solver.run();
+        const std::vector<glm::dvec3>& p = solver.positions();
+        QCOMPARE(p.size(), mesh.vertexCount());
+        double sum = 0.0;
+        for (const glm::dvec3& q : p) {
+            QVERIFY(std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z));
+            sum += axisDistance(q);
+            QVERIFY(std::abs(q.y) <= kHalfLength + kRadius); // contraction never stretches the axis
+        }
+        const double mean = sum / static_cast<double>(p.size());
+        qInfo("%d iterations, area ratio %.3g, mean distance to the axis %.3g·r; %s", solver.iterations(),
+              solver.areaRatio(), mean / kRadius, solver.solverDescription().c_str());
+        QVERIFY2(mean < 0.01 * kRadius, qPrintable(QString("mean distance %1").arg(mean)));
+        // The pattern never changes: one symbolic analysis, one numeric factorization per solve.
+        QVERIFY(solver.iterations() >= 3);
+        QCOMPARE(solver.symbolicAnalyses(), 1);
+        QVERIFY(solver.numericFactorizations() >= solver.iterations());
+        QVERIFY(solver.numericFactorizations() <= solver.iterations() + 1); // + a discarded divergent solve
+        QCOMPARE(solver.laplacianMagnitude().size(), mesh.vertexCount());
+        for (double m : solver.laplacianMagnitude())
+            QVERIFY(std::isfinite(m) && m >= 0.0);
+    }
+
+    void orderingsAndBackendsAgree()
+    {
+        // 8 iterations (W_L from 1 to 128) take the capsule from its surface to within
+        // ~1e-3·r of its axis. The orderings only change the rounding: a solve's forward
+        // error is about κ(AᵀA)·ε, with κ ≈ (W_L·‖L‖/W_H)² ≤ (128·~500)² ≈ 4e9 in the last
+        // iteration (clamped cotangents reach 57), i.e. ~5e-7 relative — what is measured
+        // (2e-7 to 5e-7·r). 1e-5·r leaves room for the few iterations compounding it; an
+        // ordering applied wrongly (a permutation not undone) would be off by ~r.
+        std::string description;
+        const std::vector<glm::dvec3> reference = contractWith(SparseBackend::Cholmod, SparseOrdering::Metis, 8, &description);
+        if (cholmodHasMetis())
+            QVERIFY2(description.find("CHOLMOD") != std::string::npos && description.find("METIS") != std::string::npos,
+                     description.c_str());
+        else // the documented fallback: Eigen's SimplicialLDLT with Eigen's METIS ordering
+            QVERIFY2(description.find("SimplicialLDLT") != std::string::npos, description.c_str());
+        const struct {
+            SparseBackend backend;
+            SparseOrdering ordering;
+            const char* named;
+        } variants[] = {{SparseBackend::Cholmod, SparseOrdering::Amd, "AMD"},
+                        {SparseBackend::Cholmod, SparseOrdering::Colamd, "COLAMD"},
+                        {SparseBackend::EigenSimplicialLdlt, SparseOrdering::Amd, "AMD"},
+                        {SparseBackend::EigenSimplicialLdlt, SparseOrdering::Colamd, "COLAMD"},
+                        {SparseBackend::EigenSimplicialLdlt, SparseOrdering::Metis, "METIS"}};
+        for (const auto& v : variants) {
+            const std::vector<glm::dvec3> other = contractWith(v.backend, v.ordering, 8, &description);
+            const double difference = maxDifference(reference, other);
+            qInfo("%-60s max difference %.3g·r", description.c_str(), difference / kRadius);
+            QVERIFY2(description.find(v.named) != std::string::npos, description.c_str());
+            QVERIFY2(difference < 1e-5 * kRadius, qPrintable(QString::fromStdString(description)));
+        }
+    }
+
+    void stopRequestCancelsContraction()
+    {
+        std::stop_source stop;
+        int reports = 0;
+        TaskControl control;
+        control.stop = stop.get_token();
+        control.progress = [&](const TaskProgress& p) {
+            QCOMPARE(QString::fromUtf8(p.stage.data(), qsizetype(p.stage.size())), QString("contraction"));
+            ++reports;
+            if (p.done >= 1)
+                stop.request_stop();
+        };
+        ContractionSolver solver(capsule(), ContractionOptions{});
+        QVERIFY_THROWS_EXCEPTION(OperationCancelled, solver.run(control));
+        QCOMPARE(solver.iterations(), 1); // stopped before the second solve
+        QCOMPARE(reports, 2);             // the start and the first iteration
+    }
+
+    void contractedCapsuleSimplifiesToATreeOnTheAxis()
+    {
+        const TriangleMesh mesh = capsule();
+        ContractionSolver solver(mesh, ContractionOptions{});
+        solver.run();
+        const double diagonal = std::sqrt(2.0 * std::pow(2.0 * kRadius, 2) + std::pow(2.0 * (kHalfLength + kRadius), 2));
+        const CurveSkeleton curve = simplifyContractedMesh(solver.positions(), mesh.triangles, 1e-3 * diagonal, {});
+        // A tree (genus 0): connected, N − 1 edges, no triangles left to hold a cycle.
+        QVERIFY(curve.nodes.size() >= 3);
+        QCOMPARE(curve.edges.size(), curve.nodes.size() - 1);
+        std::vector<int> component(curve.nodes.size());
+        std::iota(component.begin(), component.end(), 0);
+        const auto root = [&](int k) {
+            while (component[static_cast<std::size_t>(k)] != k)
+                k = component[static_cast<std::size_t>(k)];
+            return k;
+        };
+        for (const auto& e : curve.edges) {
+            QVERIFY(e[0] < e[1]);
+            component[static_cast<std::size_t>(root(e[0]))] = root(e[1]);
+        }
+        for (std::size_t k = 0; k < curve.nodes.size(); ++k)
+            QCOMPARE(root(int(k)), root(0));
+        // On the axis, reaching both contracted ends.
+        double low = 0.0, high = 0.0;
+        for (const glm::dvec3& node : curve.nodes) {
+            QVERIFY(axisDistance(node) < 0.01 * kRadius);
+            low = std::min(low, node.y);
+            high = std::max(high, node.y);
+        }
+        double contractedLow = 0.0, contractedHigh = 0.0;
+        for (const glm::dvec3& p : solver.positions()) {
+            contractedLow = std::min(contractedLow, p.y);
+            contractedHigh = std::max(contractedHigh, p.y);
+        }
+        QCOMPARE(low, contractedLow); // the end vertices survive: skeleton edges never collapse
+        QCOMPARE(high, contractedHigh);
+        QVERIFY(high - low > 2.0 * kHalfLength);
+        // Every vertex belongs to a node.
+        QCOMPARE(curve.vertexNode.size(), mesh.vertexCount());
+        for (int k : curve.vertexNode)
+            QVERIFY(k >= 0 && k < int(curve.nodes.size()));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSkeletonContraction)
+#include "tst_skeleton_contraction.moc"
