@@ -5,6 +5,8 @@
 #include "mfr/fragment_method.h"
 #include "render_choices.h"
 #include "trim/clip_plane.h"
+#include "trim/clip_set.h"
+#include "trim/csg_expression.h"
 
 #include <QCommandLineParser>
 #include <QRegularExpression>
@@ -22,7 +24,19 @@ void addRenderOptions(QCommandLineParser& parser)
                                            ".trimlab project.");
     parser.addOptions({
         {"rule", "parity | positive-index | alternating-border | none (no trimming). Default: alternating-border.", "rule"},
-        {"clip", "Clipping plane a,b,c,d keeping a*x+b*y+c*z+d >= 0 (world space).", "a,b,c,d"},
+        {"clip", "Clipping plane a,b,c,d keeping a*x+b*y+c*z+d >= 0 (world space). Repeat for up to 6 planes "
+                 "(e.g. a clipping box); together they keep the points every plane keeps.", "a,b,c,d"},
+        {"cap", "Cap the cut: where a clipping plane cuts into the solid (under the rule, or the CSG result), show "
+                "the plane there, lit flat and cross-hatched in world space. Needs --clip."},
+        {"cap-pattern", "Pattern of the caps: hatched, striped or solid. Default: hatched.", "name"},
+        {"csg", "CSG of the scene's objects (ids 0-7 in file/demo order): | union, & intersection, - difference, "
+                "parentheses, e.g. \"0 | (1 & 2)\" or \"(0 | 1) - 2\". Each object is classified by its own rule "
+                "(--object-rule, else --rule). Buffer methods only.", "expression"},
+        {"object-rule", "Rule of one object for --csg and collision highlighting, e.g. 0=parity. Repeatable.",
+         "id=rule"},
+        {"highlight", "Tint shown fragments: collisions (inside another object, or where an object overlaps "
+                      "itself) and/or coplanar (groups of fragments at equal depth, by group size); comma-separated. "
+                      "Buffer methods only.", "what"},
         {"k", "Fragments kept per pixel by the capacity-bounded methods (k+-buffer, K+B-SB, AB_FP; 1-128). Default: 16.",
          "N"},
         {"method", QStringLiteral("Multi-fragment method of the OpenGL backend: %1. Default: kplus-array.")
@@ -68,10 +82,13 @@ std::optional<QString> parseGeometryOptions(const QCommandLineParser& parser, Re
 {
     std::string error;
     if (parser.isSet("clip")) {
-        const std::optional<ClipPlane> plane = parseClipPlane(parser.value("clip").toStdString(), &error);
-        if (!plane)
+        std::vector<std::string> texts;
+        for (const QString& text : parser.values("clip"))
+            texts.push_back(text.toStdString());
+        const std::optional<ClipSet> clips = parseClipSet(texts, &error);
+        if (!clips)
             return QStringLiteral("--clip: ") + QString::fromStdString(error);
-        options.trim.clip = *plane;
+        options.trim.setClipSet(*clips);
     }
     if (parser.isSet("camera")) {
         options.camera = parseCamera(parser.value("camera").toStdString(), &error);
@@ -113,9 +130,69 @@ std::optional<QString> parseDesignOptions(const QCommandLineParser& parser, Rend
         return QStringLiteral("unknown --classification '%1' (use dynamic or static)").arg(classification);
     if ((options.frame || parser.isSet("classification")) && !options.designed())
         return QStringLiteral("--frame and --classification need --script or a .trimlab project source");
+    const TrimSettings& trim = options.trim;
+    if (options.designed() && options.classification == Classification::Dynamic &&
+        (trim.cap.enabled || trim.csg.enabled() || trim.highlight.any()))
+        return QStringLiteral("--cap, --csg and --highlight need static classification of a design "
+                              "(--classification static)");
     if (options.designed() && !options.trim.trimEnabled && options.classification == Classification::Dynamic)
         return QStringLiteral("--rule none cannot classify the base mesh of the dynamic rules; use --classification "
                               "static to render without trimming");
+    return std::nullopt;
+}
+
+std::optional<QString> parseObjectRule(const QString& text, RenderOptions& options)
+{
+    const qsizetype equals = text.indexOf(QLatin1Char('='));
+    bool ok = false;
+    const int id = equals > 0 ? text.left(equals).toInt(&ok) : -1;
+    if (!ok || id < 0 || id >= kMaxCsgOperands)
+        return QStringLiteral("--object-rule must look like 0=parity with an object id from 0 to %1, got '%2'")
+            .arg(kMaxCsgOperands - 1)
+            .arg(text);
+    const std::optional<StaticRule> rule = parseStaticRule(text.mid(equals + 1).toStdString());
+    if (!rule)
+        return QStringLiteral("--object-rule %1: unknown rule '%2' (use parity, positive-index or alternating-border)")
+            .arg(text, text.mid(equals + 1));
+    options.trim.csg.objectRules[std::size_t(id)] = *rule;
+    return std::nullopt;
+}
+
+// --cap, --csg, --object-rule, --highlight (after --rule and --clip are known).
+std::optional<QString> parseInspectionOptions(const QCommandLineParser& parser, RenderOptions& options)
+{
+    options.trim.cap.enabled = parser.isSet("cap");
+    if (options.trim.cap.enabled && !options.trim.clipSet().anyEnabled())
+        return QStringLiteral("--cap needs at least one --clip plane to cut with");
+    if (parser.isSet("cap-pattern")) {
+        const std::optional<CapPattern> pattern = parseCapPattern(parser.value("cap-pattern").toStdString());
+        if (!pattern)
+            return QStringLiteral("unknown --cap-pattern '%1' (use hatched, striped or solid)").arg(parser.value("cap-pattern"));
+        options.trim.cap.pattern = *pattern;
+    }
+    if (parser.isSet("csg")) {
+        std::string error;
+        const std::optional<CsgExpression> expression = parseCsgExpression(parser.value("csg").toStdString(), &error);
+        if (!expression)
+            return QStringLiteral("--csg '%1': %2").arg(parser.value("csg"), QString::fromStdString(error));
+        options.trim.csg.expression = *expression;
+    }
+    for (const QString& text : parser.values("object-rule"))
+        if (auto e = parseObjectRule(text, options))
+            return e;
+    for (const QString& value : parser.values("highlight")) {
+        for (const QString& what : value.split(QLatin1Char(','))) {
+            if (what == QLatin1String("collisions"))
+                options.trim.highlight.collisions = true;
+            else if (what == QLatin1String("coplanar"))
+                options.trim.highlight.coplanar = true;
+            else
+                return QStringLiteral("unknown --highlight '%1' (use collisions or coplanar)").arg(what);
+        }
+    }
+    const bool needsRule = options.trim.cap.enabled || options.trim.csg.enabled() || options.trim.highlight.collisions;
+    if (needsRule && !options.trim.trimEnabled)
+        return QStringLiteral("--rule none has no interior: --cap, --csg and --highlight collisions need a rule");
     return std::nullopt;
 }
 
@@ -202,12 +279,20 @@ std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& argum
             return *e;
     if (auto e = parseGeometryOptions(parser, options))
         return *e;
+    if (auto e = parseInspectionOptions(parser, options))
+        return *e;
     if (auto e = parseBackendOptions(parser, options))
         return *e;
     if (auto e = parseMethodOptions(parser, options))
         return *e;
     if (auto e = parseDesignOptions(parser, options))
         return *e;
+    const render::MethodInfo& method = render::methodInfo(options.method);
+    const bool needsWalk = options.trim.perObjectWinding() || options.trim.highlight.coplanar;
+    if (options.backend == Backend::KPlus && needsWalk && !method.inspection)
+        return QStringLiteral("--method %1 cannot render --csg or --highlight (it never holds all of a pixel's "
+                              "fragments at once); use a buffer method such as kplus-array or abuffer-linked-list")
+            .arg(QString::fromLatin1(method.id.data(), qsizetype(method.id.size())));
     return options;
 }
 

@@ -23,7 +23,9 @@ enum class Classification { Dynamic, Static };
 
 struct RenderOptions {
     std::string source;         ///< a mesh file or "demo:NAME"
-    TrimSettings trim;          ///< rule (or trimming off) and clip plane
+    /// Rule (or trimming off), clip planes (--clip, repeated), capping (--cap), CSG
+    /// (--csg, --object-rule) and highlights (--highlight).
+    TrimSettings trim;
     bool ruleGiven = false;     ///< --rule was on the command line (not the default)
     std::optional<Camera> camera; ///< --camera; otherwise fitted to the scene like the GUI
     int width = 1024;

@@ -11,6 +11,7 @@
 #include "scene/scene_source.h"
 #include "timeline/frame_chain.h"
 #include "trim/dynamic_reference_renderer.h"
+#include "trim/csg_expression.h"
 #include "trim/reference_renderer.h"
 #include "frame_times.h"
 #include "trim_renderer.h"
@@ -248,6 +249,59 @@ int renderDesigned(const RenderOptions& options)
     return 0;
 }
 
+// The cap pattern's spacing from the scene's size (1/25 of its bounding radius), and the
+// CSG expression checked against the scene's objects. False (after printing why) when the
+// expression names an object the scene lacks.
+bool fitInspection(const Scene& scene, RenderOptions& options)
+{
+    const double radius = scene.worldBounds().radius();
+    if (radius > 0.0)
+        options.trim.cap.spacing = radius / 25.0;
+    if (options.trim.csg.enabled()) {
+        const int maxId = csgMaxObjectId(options.trim.csg.expression);
+        if (maxId >= int(scene.objects.size())) {
+            printError(QStringLiteral("--csg refers to object %1, but the scene has %2 object(s) (ids 0 to %3)")
+                           .arg(maxId)
+                           .arg(scene.objects.size())
+                           .arg(int(scene.objects.size()) - 1));
+            return false;
+        }
+    }
+    return true;
+}
+
+// "alternating-border, CSG 0 | 1, capped": the classification and inspection settings.
+QString settingsText(const TrimSettings& trim)
+{
+    QString text = trim.trimEnabled ? QString::fromLatin1(ruleName(trim.rule).data()) : QStringLiteral("no trimming");
+    if (trim.csg.enabled())
+        text += QStringLiteral(", CSG %1").arg(QString::fromStdString(formatCsgExpression(trim.csg.expression)));
+    if (trim.clipSet().enabledCount() > 1)
+        text += QStringLiteral(", %1 clipping planes").arg(trim.clipSet().enabledCount());
+    if (trim.capping())
+        text += QStringLiteral(", capped");
+    return text;
+}
+
+// Cap, collision and coplanar pixel counts of a rendered image (for the statistics line).
+QString inspectionText(const TrimSettings& trim, const TrimImage& image)
+{
+    std::uint64_t caps = 0, collisions = 0, coplanar = 0;
+    for (const TrimPixel& p : image.pixels) {
+        caps += p.isCap() ? 1 : 0;
+        collisions += p.collision ? 1 : 0;
+        coplanar += p.coplanarCount >= 2 ? 1 : 0;
+    }
+    QStringList parts;
+    if (trim.capping())
+        parts << QStringLiteral("%1 cap pixels").arg(caps);
+    if (trim.highlight.collisions)
+        parts << QStringLiteral("%1 colliding pixels").arg(collisions);
+    if (trim.highlight.coplanar)
+        parts << QStringLiteral("%1 coplanar pixels").arg(coplanar);
+    return parts.isEmpty() ? QString() : QStringLiteral("; ") + parts.join(QStringLiteral(", "));
+}
+
 int renderLoaded(RenderOptions options)
 {
     if (options.designed())
@@ -255,6 +309,8 @@ int renderLoaded(RenderOptions options)
     const LoadedScene loaded = loadScene(options.source);
     if (!resolveTrimAvailability(loaded, options))
         return 1;
+    if (!fitInspection(loaded.scene, options))
+        return 2;
     const Camera camera = cameraFor(loaded.scene.worldBounds(), options);
     const RenderOutcome outcome = options.backend == Backend::KPlus ? renderWithGpu(loaded.scene, options, camera)
                                                                      : renderWithReference(loaded.scene, options, camera);
@@ -263,9 +319,8 @@ int renderLoaded(RenderOptions options)
                   .arg(QString::fromStdString(loaded.displayName))
                   .arg(options.width)
                   .arg(options.height)
-                  .arg(options.trim.trimEnabled ? QString::fromLatin1(ruleName(options.trim.rule).data())
-                                                : QStringLiteral("no trimming"))
-                  .arg(outcome.statistics, options.output));
+                  .arg(settingsText(options.trim))
+                  .arg(outcome.statistics + inspectionText(options.trim, outcome.trim), options.output));
     printLine(QStringLiteral("camera: %1").arg(QString::fromStdString(formatCamera(camera))));
     return 0;
 }

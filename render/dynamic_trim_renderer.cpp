@@ -127,7 +127,7 @@ void DynamicTrimRenderer::clearState(int width, int height)
 void DynamicTrimRenderer::characterizeLevels(const Camera& camera, const TrimSettings& settings, int width, int height)
 {
     TrimSettings whole = settings;
-    whole.clip.enabled = false; // a characterization covers the whole ray
+    whole.setClipSet(ClipSet{}); // a characterization covers the whole ray
     whole.trimEnabled = true;
     int written = 0;
     for (std::size_t level = 0; level + 1 < m_levels.size(); ++level) {

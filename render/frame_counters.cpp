@@ -5,7 +5,7 @@
 namespace trimlab::render {
 
 namespace {
-constexpr std::size_t kCounterCount = 6;
+constexpr std::size_t kCounterCount = 9;
 }
 
 FrameCounters::FrameCounters(GlFunctions& gl) : m_gl(gl), m_buffer(gl)
@@ -34,7 +34,7 @@ FrameCounts FrameCounters::read()
     m_gl.glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     m_gl.glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, m_buffer.id());
     m_gl.glGetBufferSubData(GL_ATOMIC_COUNTER_BUFFER, 0, sizeof(values), values.data());
-    return {values[0], values[1], values[2], values[3], values[4], values[5]};
+    return {values[0], values[1], values[2], values[3], values[4], values[5], values[6], values[7], values[8]};
 }
 
 } // namespace trimlab::render

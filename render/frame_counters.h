@@ -19,6 +19,9 @@ struct FrameCounts {
     std::uint64_t spinGiveUps = 0;      ///< fragments dropped after the bounded spin-lock
     std::uint64_t fragmentsLost = 0;    ///< fragments not stored (capacity, spin give-ups)
     std::uint64_t fragmentsStored = 0;  ///< fragments written to the method's storage
+    std::uint64_t capPixels = 0;        ///< pixels showing a cap (CapSettings)
+    std::uint64_t collisionPixels = 0;  ///< shown fragments highlighted as colliding (the UI's status bar)
+    std::uint64_t coplanarPixels = 0;   ///< shown fragments in a coplanar group of 2 or more
 };
 
 class FrameCounters {

@@ -106,6 +106,14 @@ void GpuScene::updatePositions(std::size_t objectIndex, const std::vector<glm::v
     m_gl.glBufferSubData(GL_ARRAY_BUFFER, offset, bytes, normals.data());
 }
 
+void GpuScene::setModelMatrix(std::size_t objectIndex, const glm::dmat4& model)
+{
+    if (objectIndex >= m_objects.size())
+        throw std::invalid_argument("setModelMatrix: object " + std::to_string(objectIndex) + " does not exist; " +
+                                    "the scene has " + std::to_string(m_objects.size()) + " objects.");
+    m_objects[objectIndex].model = model;
+}
+
 void GpuScene::setVertexColors(const std::vector<std::uint32_t>& rgba8)
 {
     if (!rgba8.empty() && rgba8.size() != m_vertexCount)

@@ -39,6 +39,12 @@ public:
     /// Throws std::invalid_argument on a count mismatch.
     void updatePositions(std::size_t objectIndex, const std::vector<glm::vec3>& positions);
 
+    /// Replaces the model matrix of object `objectIndex` (e.g. the Scene panel moved it)
+    /// without re-uploading any geometry; takes effect with the next setView(). The matrix
+    /// must be orientation preserving (SceneObject's rule). Throws std::invalid_argument
+    /// for an index beyond the uploaded objects.
+    void setModelMatrix(std::size_t objectIndex, const glm::dmat4& model);
+
     /// Per-vertex colors for the whole scene (RGBA8, one per uploaded vertex in object
     /// order), shown instead of the trim palette; an empty vector switches them off.
     /// Throws std::invalid_argument on a count mismatch.

@@ -16,6 +16,9 @@ constexpr std::uint32_t kFrontFacingBit = 1u << 8;
 constexpr std::uint32_t kBackFacingBit = 1u << 9;
 constexpr std::uint32_t kOverflowedBit = 1u << 10;
 constexpr std::uint32_t kUnresolvedBit = 1u << 11;
+constexpr std::uint32_t kCollisionBit = 1u << 12;
+constexpr int kCapShift = 13;     // 3 bits: cap plane + 1
+constexpr int kCoplanarShift = 16; // 8 bits
 
 void allocateTexture(GlFunctions& gl, GLuint texture, GLenum internalFormat, int width, int height)
 {
@@ -31,8 +34,13 @@ TrimPixel decodeInfo(const std::uint32_t* texel)
     p.windingAtStart = std::bit_cast<std::int32_t>(texel[3]);
     p.overflowed = (texel[1] & kOverflowedBit) != 0;
     p.unresolved = (texel[1] & kUnresolvedBit) != 0;
+    p.capPlane = static_cast<std::int8_t>(int((texel[1] >> kCapShift) & 7u) - 1);
+    if (p.capPlane >= 0)
+        p.viewDepth = std::bit_cast<float>(texel[2]);
     if (texel[0] == 0)
         return p;
+    p.collision = (texel[1] & kCollisionBit) != 0;
+    p.coplanarCount = static_cast<std::uint8_t>((texel[1] >> kCoplanarShift) & 0xFFu);
     p.primitiveId = std::int32_t(texel[0] - 1);
     p.objectId = std::int32_t(texel[1] & kObjectMask);
     p.facing = (texel[1] & kFrontFacingBit) ? 1 : ((texel[1] & kBackFacingBit) ? -1 : 0);

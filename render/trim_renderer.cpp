@@ -7,11 +7,15 @@
 #include "gpu_scene.h"
 #include "mfr/method_factory.h"
 #include "mfr/trim_frame.h"
+#include "passes/object_windings.h"
 #include "render_target.h"
+
+#include "trim/csg_expression.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLContext>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -32,6 +36,46 @@ double plausibleGpuMilliseconds(GLuint64 elapsedNs, double wallMs)
 {
     const double gpuMs = double(elapsedNs) * 1e-6;
     return gpuMs <= wallMs * 1.01 + 0.5 ? gpuMs : -1.0;
+}
+
+std::string inspectionFeatures(const TrimSettings& settings)
+{
+    std::string features;
+    auto add = [&](const char* feature) { features += (features.empty() ? "" : ", ") + std::string(feature); };
+    if (settings.csg.enabled())
+        add("CSG");
+    if (settings.highlight.collisions)
+        add("collision highlighting");
+    if (settings.highlight.coplanar)
+        add("coplanar highlighting");
+    return features;
+}
+
+// Throws std::invalid_argument when `settings` ask for something the method, the mode or
+// the scene cannot do, naming what to pick instead.
+void checkInspection(const MethodInfo& info, const TrimMode& mode, const TrimSettings& settings,
+                     std::size_t objectCount)
+{
+    const bool needsWalk = settings.perObjectWinding() || settings.highlight.coplanar;
+    if (mode.dynamic && (needsWalk || settings.capping()))
+        throw std::invalid_argument("Capping, CSG and highlighting are not available with the dynamic rules; switch the "
+                                    "classification to static to use them.");
+    if (needsWalk && !info.inspection)
+        throw std::invalid_argument(std::string(info.displayName) + " cannot render " + inspectionFeatures(settings) +
+                                    ": it never holds all of a pixel's fragments in one pass. Pick a buffer method "
+                                    "(k+-buffer, S-buffer, K+B-SB, AB_FP or AB_LL); clipping and capping work with "
+                                    "every method.");
+    if (settings.csg.enabled() && settings.trimEnabled) {
+        const int maxId = csgMaxObjectId(settings.csg.expression);
+        if (maxId >= int(objectCount))
+            throw std::invalid_argument("The CSG expression '" + formatCsgExpression(settings.csg.expression) +
+                                        "' refers to object " + std::to_string(maxId) + ", but the scene has " +
+                                        std::to_string(objectCount) + " object(s) (ids 0 to " +
+                                        std::to_string(int(objectCount) - 1) + ").");
+    }
+    if (settings.perObjectWinding() && settings.highlight.collisions && objectCount > std::size_t(kMaxCsgOperands))
+        throw std::invalid_argument("Collision highlighting tracks at most " + std::to_string(kMaxCsgOperands) +
+                                    " objects; the scene has " + std::to_string(objectCount) + ".");
 }
 
 } // namespace
@@ -98,6 +142,7 @@ void TrimRenderer::render(GpuScene& scene, const TrimMode& mode, const Camera& c
         throw std::invalid_argument(std::string(info.displayName) +
                                     " cannot run the dynamic rules: it never holds a pixel's reference and current "
                                     "fragments together. Pick a buffer method (k+-buffer, S-buffer, AB_FP or AB_LL).");
+    checkInspection(info, mode, settings, scene.objectCount());
     checkFrameLimits(m_method->kind(), m_capabilities, m_parameters,
                      m_method->estimateBytes(width, height, m_parameters), width, height);
     QElapsedTimer wall;
@@ -110,10 +155,11 @@ void TrimRenderer::render(GpuScene& scene, const TrimMode& mode, const Camera& c
         modeDefines << QStringLiteral("DYNAMIC_RULES");
     if (mode.dynamic && mode.characterize)
         modeDefines << QStringLiteral("DYNAMIC_CHARACTERIZE");
+    ObjectWindingBuffer* objectWindings = prepareInspection(settings, scene.objectCount(), width, height, modeDefines);
     TrimFrame frame{m_gl,        *m_shaders, m_capabilities, scene,          *m_target,
                     *m_counters, camera,     settings,       m_parameters,   view,
                     projectionMatrix(camera, double(width) / double(height)), width, height, modeDefines,
-                    mode.dynamicRule, mode.referenceIsBase};
+                    mode.dynamicRule, mode.referenceIsBase, objectWindings};
 
     m_gl.glBeginQuery(GL_TIME_ELAPSED, m_timer.id());
     m_counters->reset();
@@ -127,11 +173,30 @@ void TrimRenderer::render(GpuScene& scene, const TrimMode& mode, const Camera& c
     m_stats.methodStats = m_method->stats();
     m_stats.wallMilliseconds = double(wall.nsecsElapsed()) * 1e-6;
     m_stats.gpuMilliseconds = plausibleGpuMilliseconds(elapsedNs, m_stats.wallMilliseconds);
+    const std::size_t inspectionBytes = objectWindings ? objectWindings->memoryBytes() : 0;
     m_stats.bufferMegabytes =
-        double(m_stats.methodStats.bytes + m_target->memoryBytes() + scene.memoryBytes()) / (1024.0 * 1024.0);
+        double(m_stats.methodStats.bytes + m_target->memoryBytes() + scene.memoryBytes() + inspectionBytes) /
+        (1024.0 * 1024.0);
     m_stats.width = width;
     m_stats.height = height;
     m_stats.k = m_parameters.k;
+}
+
+ObjectWindingBuffer* TrimRenderer::prepareInspection(const TrimSettings& settings, std::size_t objectCount, int width,
+                                                     int height, QStringList& defines)
+{
+    if (settings.capping())
+        defines << QStringLiteral("CAPPING");
+    if (settings.highlight.coplanar)
+        defines << QStringLiteral("COPLANAR_COUNT");
+    if (!settings.perObjectWinding())
+        return nullptr;
+    const int objects = int(std::clamp<std::size_t>(objectCount, 1, std::size_t(kMaxCsgOperands)));
+    if (!m_objectWindings)
+        m_objectWindings = std::make_unique<ObjectWindingBuffer>(m_gl);
+    m_objectWindings->allocate(width, height, objects);
+    defines << QStringLiteral("OBJECT_WINDINGS %1").arg(objects);
+    return m_objectWindings.get();
 }
 
 void TrimRenderer::blitTo(GLuint framebuffer)

@@ -15,6 +15,7 @@
 #include "view/camera.h"
 
 #include <QImage>
+#include <QStringList>
 
 #include <memory>
 
@@ -23,6 +24,7 @@ class QOpenGLContext;
 namespace trimlab::render {
 
 class GpuScene;
+class ObjectWindingBuffer;
 class RenderTarget;
 class ShaderLibrary;
 
@@ -87,10 +89,16 @@ public:
     /// surfaces (the caller knows from the validation report). Throws GpuMemoryError —
     /// before allocating anything when the frame is beyond the driver's texture limits or
     /// the memory budget of the parameters (frame_limits.h); memory_fallback.h says what
-    /// to try next.
+    /// to try next —, and std::invalid_argument when the settings ask for what the method
+    /// cannot do (CSG, collision or coplanar highlighting with a peeling method or the
+    /// two-pass method — the message names the buffer methods to pick instead; clip sets
+    /// and capping work with every method), for a CSG expression naming an object the
+    /// scene lacks, and for collision highlighting in a scene of more than
+    /// kMaxCsgOperands objects.
     void render(const Camera& camera, const TrimSettings& settings, int width, int height);
     /// The same with another uploaded scene and a classification mode. Throws
-    /// std::invalid_argument when the mode is dynamic and the method cannot run it.
+    /// std::invalid_argument when the mode is dynamic and the method cannot run it, or
+    /// the settings ask for capping, CSG or highlighting (static classification only).
     void render(GpuScene& scene, const TrimMode& mode, const Camera& camera, const TrimSettings& settings, int width,
                 int height);
     [[nodiscard]] GlFunctions& gl() { return m_gl; }
@@ -108,6 +116,11 @@ public:
     [[nodiscard]] const GlCapabilities& capabilities() const { return m_capabilities; }
 
 private:
+    /// The defines and buffer the frame's inspection settings need (capping, per-object
+    /// windings, coplanar counts); the buffer, or nullptr without per-object windings.
+    ObjectWindingBuffer* prepareInspection(const TrimSettings& settings, std::size_t objectCount, int width, int height,
+                                           QStringList& defines);
+
     GlCapabilities m_capabilities; // first: m_gl's initialisation checks it
     GlFunctions& m_gl;
     std::unique_ptr<ShaderLibrary> m_shaders;
@@ -115,6 +128,7 @@ private:
     std::unique_ptr<RenderTarget> m_target;
     std::unique_ptr<FrameCounters> m_counters;
     std::unique_ptr<FragmentMethod> m_method;
+    std::unique_ptr<ObjectWindingBuffer> m_objectWindings; // created on first use
     MethodParameters m_parameters;
     GlQuery m_timer;
     FrameStats m_stats;

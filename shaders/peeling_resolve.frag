@@ -3,7 +3,8 @@
 // peeling when the pass bound (MethodParameters::maxPeelingPasses) stopped the frame, or
 // whose DUAL walks disagreed, cannot be known: it is flagged overflowed and unresolved,
 // counted, and its unpeeled fragments are counted as lost. Such pixels are painted
-// UNRESOLVED_COLOR, never shown wrong.
+// UNRESOLVED_COLOR, never shown wrong. With CAPPING a pixel whose span starts inside the
+// solid at a clipping plane shows the cap (cap.glsl).
 
 #include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
@@ -16,6 +17,10 @@
 #include "common/peel_state.glsl"
 #include "common/peel_walk_state.glsl"
 
+#ifdef CAPPING
+#include "common/cap.glsl"
+#endif
+
 layout(binding = IMAGE_OVERFLOW, r32ui) uniform writeonly uimage2D u_overflow;
 
 void main()
@@ -23,6 +28,11 @@ void main()
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     PeelWalk front = loadPeelWalk(pixel, WALK_FRONT);
     int start = windingAtStart(pixel);
+#ifdef CAPPING
+    // The cap needs only the exact index at the span start, not the peeled fragments.
+    if (emitCapIfShown(u_trimEnabled && isInterior(u_rule, start), start, false))
+        return;
+#endif
     if (front.done && !front.inconsistent) {
         if (front.walk.found)
             emitShownPixel(front.walk.shown, start, false);

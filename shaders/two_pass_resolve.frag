@@ -4,7 +4,8 @@
 // is a trim boundary it is the answer. If not, the trim lies deeper (a self-crossing
 // surface seen through an interior sheet) and two passes cannot tell where: the pixel is
 // flagged overflowed and unresolved, counted, painted UNRESOLVED_COLOR, and the span's
-// other fragments, which the method never looked at, are counted as lost.
+// other fragments, which the method never looked at, are counted as lost. With CAPPING a
+// pixel whose span starts inside the solid at a clipping plane shows the cap (cap.glsl).
 
 #include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
@@ -21,11 +22,20 @@ layout(binding = IMAGE_OVERFLOW, r32ui) uniform writeonly uimage2D u_overflow;
 
 uniform usampler2D u_closest; // the closest pass's packed fragment; x = 0: none
 
+#ifdef CAPPING
+#include "common/cap.glsl"
+#endif
+
 void main()
 {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     int start = imageLoad(u_winding, pixel).r;
     uvec2 closest = texelFetch(u_closest, pixel, 0).xy;
+#ifdef CAPPING
+    // The cap needs only the exact index at the span start (counted by the first pass).
+    if (emitCapIfShown(u_trimEnabled && isInterior(u_rule, start), start, false))
+        return;
+#endif
     if (closest.x == 0u) {
         emitEmptyPixel(start, false, false);
         return;

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// The "Clipping plane" group of the Render panel: a checkable group box editing a
-/// ClipPlane (n·x + offset ≥ 0 is kept). The normal is three spin boxes plus presets
+/// The editor of one clipping plane (the plane picked in the Render panel's clip set
+/// editor, clip_set_editor.h): a checkable group box editing a ClipPlane (n·x + offset ≥ 0
+/// is kept). The normal is three spin boxes plus presets
 /// (±X, ±Y, ±Z, and the current view direction, which the owner supplies on request);
 /// presets put the plane through the centre of the scene bounds. The offset has a slider
 /// spanning the offsets at which the plane touches the scene's bounding sphere, and a

@@ -2,6 +2,7 @@
 
 #include <QLabel>
 #include <QLocale>
+#include <QStringList>
 #include <QStatusBar>
 
 namespace trimlab::ui {
@@ -32,6 +33,9 @@ FrameStatsLabels::FrameStatsLabels(QStatusBar* statusBar) : QObject(statusBar)
                                "fragments lost. The Frame statistics panel offers a larger k or an unbounded method."));
     m_memory = addLabel(statusBar, QStringLiteral("memoryLabel"),
                         tr("GPU memory held by the multi-fragment method, the render target and the scene"));
+    m_highlights = addLabel(statusBar, QStringLiteral("highlightLabel"),
+                            tr("Pixels of the last frame highlighted as colliding (inside another object, or where an "
+                               "object overlaps itself) and as coplanar (sharing their depth with other surfaces)"));
     clear();
 }
 
@@ -70,8 +74,21 @@ void FrameStatsLabels::showStats(const render::FrameStats& stats)
     m_memory->setText(tr("%1 MB").arg(stats.bufferMegabytes, 0, 'f', 1));
 }
 
+void FrameStatsLabels::showHighlights(const HighlightSettings& highlight, const render::FrameCounts& counts)
+{
+    QStringList parts;
+    if (highlight.collisions)
+        parts << tr("collisions %1 px").arg(countText(counts.collisionPixels));
+    if (highlight.coplanar)
+        parts << tr("coplanar %1 px").arg(countText(counts.coplanarPixels));
+    m_highlights->setText(parts.join(QStringLiteral(", ")));
+    m_highlights->setVisible(!parts.isEmpty());
+}
+
 void FrameStatsLabels::clear()
 {
+    m_highlights->clear();
+    m_highlights->setVisible(false);
     m_method->setText(QString());
     m_frameTime->setText(tr("GPU – ms"));
     m_fragments->setText(tr("– fragments"));

@@ -3,9 +3,11 @@
 /// The permanent labels of the main window's status bar that report each frame: the
 /// method, GPU time (ms), fragments in the span, overflowed pixels, unresolved pixels and
 /// lost fragments (highlighted when any exist: the method's capacity was too small; the
-/// Frame statistics panel offers remedies), and the GPU memory the renderer holds (MB).
+/// Frame statistics panel offers remedies), the GPU memory the renderer holds (MB), and —
+/// while highlighting is on — the pixels highlighted as colliding and as coplanar.
 
 #include "frame_counters.h"
+#include "trim/inspect_settings.h"
 #include "trim_renderer.h"
 
 #include <QObject>
@@ -22,10 +24,14 @@ public:
     explicit FrameStatsLabels(QStatusBar* statusBar);
 
     void showStats(const render::FrameStats& stats);
+    /// The highlighted pixels of a frame rendered with `highlight` (hidden when it
+    /// highlights nothing): "collisions N px", "coplanar N px".
+    void showHighlights(const HighlightSettings& highlight, const render::FrameCounts& counts);
     /// Blank labels (no frame yet, or the renderer failed).
     void clear();
 
     [[nodiscard]] QLabel* unresolvedLabel() const { return m_unresolved; }
+    [[nodiscard]] QLabel* highlightLabel() const { return m_highlights; }
 
 private:
     QLabel* addLabel(QStatusBar* statusBar, const QString& objectName, const QString& toolTip);
@@ -36,6 +42,7 @@ private:
     QLabel* m_overflow;
     QLabel* m_unresolved;
     QLabel* m_memory;
+    QLabel* m_highlights;
 };
 
 } // namespace trimlab::ui

@@ -9,6 +9,7 @@
 #include "design_session.h"
 #include "design_workspace.h"
 #include "history_exports.h"
+#include "inspect_scene.h"
 #include "mesh/mesh_validation.h"
 #include "project_files.h"
 #include "timeline/project_file.h"
@@ -108,6 +109,7 @@ MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
     createAnimationDocks();
     createDesignDocks();
     createSkeletonDock();
+    createInspectDock();
     createFileMenu();
     createEditMenu();
     createViewMenu();
@@ -116,6 +118,7 @@ MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
     connectAnimationParts();
     connectDesignParts();
     connectSkeletonParts();
+    connectInspectParts();
     restoreSettings();
     updateTitle();
     QTimer::singleShot(0, this, &MainWindow::openDefaultIfNothingRequested);
@@ -236,6 +239,9 @@ void MainWindow::createFileMenu()
         action->setStatusTip(QString::fromStdString(std::string(demoSceneDescription(name))));
     }
     m_recentMenu = file->addMenu(tr("Open &Recent"));
+    QAction* addObject = file->addAction(tr("Add O&bject…"), this, &MainWindow::showAddObjectDialog);
+    addObject->setObjectName(QStringLiteral("addObjectAction"));
+    addObject->setStatusTip(tr("Load a mesh file into the scene shown as one more object (CSG, collisions)"));
     file->addSeparator();
     QAction* openAnimation = file->addAction(tr("Open &Animation…"), this, &MainWindow::showOpenAnimationDialog);
     openAnimation->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
@@ -303,6 +309,9 @@ void MainWindow::createViewMenu()
     QAction* panel = m_dock->toggleViewAction();
     panel->setText(tr("Render &Panel"));
     m_viewMenu->addAction(panel);
+    QAction* scenePanel = m_sceneDock->toggleViewAction();
+    scenePanel->setText(tr("S&cene Panel"));
+    m_viewMenu->addAction(scenePanel);
     QAction* statistics = m_statsDock->toggleViewAction();
     statistics->setText(tr("Frame &Statistics"));
     m_viewMenu->addAction(statistics);
@@ -453,6 +462,7 @@ void MainWindow::openSource(const QString& source)
         return;
     }
     m_animationOpener->cancel(); // the newest request wins
+    m_objectLoader->cancel();
     statusBar()->showMessage(tr("Opening %1…").arg(sceneLabel(source)));
     m_loader->load(source);
 }
@@ -475,7 +485,8 @@ void MainWindow::openDefaultIfNothingRequested()
 
 bool MainWindow::isLoading() const
 {
-    return m_loader->isLoading() || m_animationOpener->isLoading() || m_projectFiles->isOpening() ||
+    return m_loader->isLoading() || m_objectLoader->isLoading() || m_animationOpener->isLoading() ||
+           m_projectFiles->isOpening() ||
            m_exports->isReplaying();
 }
 
@@ -597,7 +608,9 @@ void MainWindow::showScene(std::shared_ptr<const LoadedScene> loaded, const Boun
     m_panel->setSceneInfo(bounds, m_scene->trimmable(), QString::fromStdString(m_scene->trimUnavailableReason()));
     m_viewport->setScene(std::shared_ptr<const Scene>(m_scene, &m_scene->scene));
     m_skeleton->setScene(m_scene); // after the viewport: its result never meets another mesh
+    m_inspect->reset(m_scene); // no CSG, transforms of the new scene, a clean scene undo stack
     applyRenderChoices();
+    updateSceneEditability();
     updateTitle();
 }
 
@@ -611,6 +624,7 @@ void MainWindow::clearAnimation()
     m_skinning->setAnimation(nullptr);
     m_timelineDock->hide();
     m_skinningDock->hide();
+    updateSceneEditability();
 }
 
 void MainWindow::showPose(int pose)
@@ -664,6 +678,7 @@ void MainWindow::applyRenderChoices()
     const RenderChoices choices = m_panel->renderChoices();
     saveRenderChoices(*m_settings, choices);
     TrimSettings effective = choices.trim;
+    effective.csg = m_inspect->csg(); // the Scene panel's: it belongs to the scene, not to the saved choices
     // The winding index is undefined for open or inconsistently oriented surfaces.
     effective.trimEnabled = effective.trimEnabled && m_panel->sceneTrimmable();
     m_viewport->setTrimSettings(effective);
@@ -680,8 +695,10 @@ void MainWindow::refreshMemoryEstimate()
 
 void MainWindow::showFrameStatistics()
 {
-    if (const auto& frame = m_viewport->lastFrame())
+    if (const auto& frame = m_viewport->lastFrame()) {
         m_statsPanel->showFrame(*frame);
+        m_statsLabels->showHighlights(frame->settings.highlight, frame->stats.counts);
+    }
     refreshMemoryEstimate();
 }
 

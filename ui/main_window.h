@@ -31,6 +31,15 @@
 /// targets); File ▸ Save/Replay Stroke Script record and replay strokes. Unsaved changes
 /// are asked about before they would be lost, and the title marks them with a *.
 ///
+/// Interior inspection (main_window_inspect.cpp): the Render panel's clipping planes (up
+/// to six, a box), capping and highlighting; the Scene dock (scene_panel.h, tabbed with
+/// the Render panel) lists the objects, edits their transforms, rules and the CSG
+/// expression through an InspectScene, whose undo stack joins the Edit menu's undo
+/// group (the stack last edited — the scene's or a design session's — is the one Undo
+/// acts on); File ▸ Add Object… (addObject()) loads a mesh into the scene shown as one
+/// more object, off the UI thread like opening. The status bar counts highlighted
+/// (colliding, coplanar) pixels.
+///
 /// Settings (render choices, segmentation choices, playback, recent files and recent
 /// animations — two lists, since an animation is a folder or pattern as often as a
 /// file —, last directory, window geometry and dock state) persist in a QSettings: the
@@ -65,6 +74,8 @@ class BrushPanel;
 class DeformationTimelinePanel;
 class DesignWorkspace;
 class HistoryExports;
+class InspectScene;
+class ScenePanel;
 class ProjectFiles;
 class FrameStatsLabels;
 class FrameStatsPanel;
@@ -101,6 +112,12 @@ public:
     /// cancel. The result arrives as animationLoaded() or sceneLoadFailed() (with its
     /// dialog); a newer openSource()/openAnimation() or Cancel discards a pending one.
     void openAnimation(const QString& source);
+    /// Loads the mesh file (or "demo:NAME") `source` off the UI thread and appends its
+    /// objects to the scene shown, keeping the camera (File ▸ Add Object…). Asks about
+    /// unsaved design changes first (the scene stops being a single designed object).
+    /// objectAdded() or sceneLoadFailed() (with its dialog) follows; without a scene, or
+    /// while an animation is shown, a dialog explains and nothing is loaded.
+    void addObject(const QString& source);
     /// Writes the viewport's last frame (color, at the frame's pixel size) as a PNG file.
     /// Returns false with the reason in `error` when there is no frame or writing fails.
     bool exportImage(const QString& path, QString* error = nullptr);
@@ -114,6 +131,9 @@ public:
     [[nodiscard]] FrameStatsPanel* frameStatsPanel() const { return m_statsPanel; }
     [[nodiscard]] MethodTimingPanel* methodTimingPanel() const { return m_timingPanel; }
     [[nodiscard]] SceneLoader* sceneLoader() const { return m_loader; }
+    /// The scene's edits (transforms, CSG) and the Scene dock's panel.
+    [[nodiscard]] InspectScene* inspectScene() const { return m_inspect; }
+    [[nodiscard]] ScenePanel* scenePanel() const { return m_scenePanel; }
     [[nodiscard]] QStringList recentFiles() const { return m_recent.paths(); }
     /// The open animation (nullptr while a mesh or demo is shown).
     [[nodiscard]] std::shared_ptr<const LoadedAnimation> animation() const { return m_animation; }
@@ -144,6 +164,8 @@ signals:
     /// Loading `source` (a scene or an animation) failed with `message`; the previous
     /// scene or animation is still shown.
     void sceneLoadFailed(const QString& source, const QString& message);
+    /// addObject(`source`) appended its objects to the scene shown.
+    void objectAdded(const QString& source);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -163,6 +185,13 @@ private:
     [[nodiscard]] QString askSkeletonExportPath(const QString& title, const QStringList& filters, const QString& ending);
     void showExportRiggedGltfDialog();
     void showExportSkeletonJsonDialog();
+    void createInspectDock();
+    void connectInspectParts();
+    void showAddObjectDialog();
+    void onObjectsLoaded(std::shared_ptr<const LoadedScene> loaded);
+    void onObjectTransformChanged();
+    void updateSceneEditability();
+    void followUndoStacks();
     void createDesignFileActions(QMenu* file);
     void createEditMenu();
     void connectDesignParts();
@@ -216,6 +245,10 @@ private:
     QDockWidget* m_statsDock = nullptr;
     FrameStatsLabels* m_statsLabels = nullptr;
     SceneLoader* m_loader = nullptr;
+    SceneLoader* m_objectLoader = nullptr; ///< File ▸ Add Object…
+    InspectScene* m_inspect = nullptr;
+    ScenePanel* m_scenePanel = nullptr;
+    QDockWidget* m_sceneDock = nullptr;
     AnimationOpener* m_animationOpener = nullptr;
     TimelinePanel* m_timeline = nullptr;
     QDockWidget* m_timelineDock = nullptr;

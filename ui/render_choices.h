@@ -30,6 +30,15 @@ struct RenderChoices {
     /// alone; true, the dynamic rules of the history's sets (thesis 8.1.1), with the
     /// static rule classifying the base mesh.
     bool dynamicRules = false;
+    /// The cap pattern's line spacing as a fraction of the scene's bounding radius (the
+    /// command line's 1/25 by default); trim.cap.spacing is this times the radius of the
+    /// scene shown (RenderPanel::renderChoices), so the pattern looks alike on any scene.
+    double capSpacingFraction = kDefaultCapSpacingFraction;
+
+    static constexpr double kDefaultCapSpacingFraction = 1.0 / 25.0;
+    /// The range the GUI and the settings store accept for capSpacingFraction.
+    static constexpr double kMinCapSpacingFraction = 0.001;
+    static constexpr double kMaxCapSpacingFraction = 1.0;
 
     /// The renderer's parameters for these choices (the others at their defaults).
     [[nodiscard]] render::MethodParameters methodParameters() const

@@ -1,6 +1,8 @@
 #include "render_panel.h"
 
 #include "clip_plane_editor.h"
+#include "clip_set_editor.h"
+#include "inspect_group.h"
 #include "method_group.h"
 
 #include <QCheckBox>
@@ -46,10 +48,13 @@ RenderPanel::RenderPanel(QWidget* parent) : QWidget(parent)
     setObjectName(QStringLiteral("renderPanel"));
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(createTrimGroup());
-    m_clip = new ClipPlaneEditor(this);
-    connect(m_clip, &ClipPlaneEditor::planeChanged, this, &RenderPanel::renderChoicesChanged);
-    connect(m_clip, &ClipPlaneEditor::viewDirectionRequested, this, &RenderPanel::viewDirectionRequested);
+    m_clip = new ClipSetEditor(this);
+    connect(m_clip, &ClipSetEditor::clipSetChanged, this, &RenderPanel::renderChoicesChanged);
+    connect(m_clip, &ClipSetEditor::viewDirectionRequested, this, &RenderPanel::viewDirectionRequested);
     layout->addWidget(m_clip);
+    m_inspect = new InspectGroup(this);
+    connect(m_inspect, &InspectGroup::changed, this, &RenderPanel::renderChoicesChanged);
+    layout->addWidget(m_inspect);
     m_methodGroup = new MethodGroup(this);
     connect(m_methodGroup, &MethodGroup::changed, this, &RenderPanel::renderChoicesChanged);
     layout->addWidget(m_methodGroup);
@@ -101,7 +106,8 @@ void RenderPanel::setRenderChoices(const RenderChoices& choices)
     m_classification->setCurrentIndex(choices.dynamicRules ? 1 : 0);
     m_trim->setChecked(choices.trim.trimEnabled);
     m_rule->setCurrentIndex(m_rule->findData(ruleKey(choices.trim.rule)));
-    m_clip->setPlane(choices.trim.clip);
+    m_clip->setClipSet(choices.trim.clipSet());
+    m_inspect->setChoices(choices.trim.cap, choices.capSpacingFraction, choices.trim.highlight);
     m_methodGroup->setChoices(choices.method, choices.k, choices.sharedCounters);
     m_methodGroup->setMemoryBudgetMegabytes(choices.memoryBudgetMegabytes);
 }
@@ -112,7 +118,13 @@ RenderChoices RenderPanel::renderChoices() const
     choices.trim.trimEnabled = m_trim->isChecked();
     const auto rule = parseStaticRule(m_rule->currentData().toString().toStdString());
     choices.trim.rule = rule.value_or(StaticRule::AlternatingBorder);
-    choices.trim.clip = m_clip->plane();
+    choices.trim.setClipSet(m_clip->clipSet());
+    choices.capSpacingFraction = m_inspect->spacingFraction();
+    choices.trim.cap = m_inspect->cap();
+    // World units on the scene shown (the command line's rule: a fraction of its radius).
+    const double radius = m_bounds.valid() ? m_bounds.radius() : 1.0;
+    choices.trim.cap.spacing = choices.capSpacingFraction * (radius > 0.0 ? radius : 1.0);
+    choices.trim.highlight = m_inspect->highlight();
     choices.method = m_methodGroup->method();
     choices.k = m_methodGroup->k();
     choices.sharedCounters = m_methodGroup->sharedCounters();
@@ -124,12 +136,23 @@ RenderChoices RenderPanel::renderChoices() const
 void RenderPanel::setSceneInfo(const Bounds& bounds, bool trimmable, const QString& reason)
 {
     m_trimmable = trimmable;
+    m_bounds = bounds;
     m_clip->setSceneBounds(bounds);
     m_trim->setEnabled(trimmable);
     m_rule->setEnabled(trimmable);
     m_classification->setEnabled(trimmable);
     m_trimUnavailable->setText(trimmable ? QString() : tr("Trim modes unavailable: %1").arg(reason));
     m_trimUnavailable->setVisible(!trimmable);
+}
+
+void RenderPanel::setClipBounds(const Bounds& bounds)
+{
+    m_clip->setSceneBounds(bounds);
+}
+
+ClipPlaneEditor* RenderPanel::clipEditor() const
+{
+    return m_clip->planeEditor();
 }
 
 void RenderPanel::setMemoryEstimate(const MemoryEstimate& estimate)

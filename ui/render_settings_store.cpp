@@ -24,6 +24,26 @@ const QString kSharedCounters = QStringLiteral("render/sharedCounters");
 const QString kMemoryBudget = QStringLiteral("render/memoryBudgetMB");
 const QString kClassification = QStringLiteral("render/classification");
 const QString kLastDirectory = QStringLiteral("paths/lastDirectory");
+const QString kCapEnabled = QStringLiteral("render/capEnabled");
+const QString kCapPattern = QStringLiteral("render/capPattern");
+const QString kCapSpacingFraction = QStringLiteral("render/capSpacingFraction");
+const QString kHighlightCollisions = QStringLiteral("render/highlightCollisions");
+const QString kHighlightCoplanar = QStringLiteral("render/highlightCoplanar");
+
+/// The keys of clipping plane `index` > 0 (plane 0 keeps the keys of the one plane of
+/// earlier versions): "render/clipPlaneN/enabled", ".../normalX" etc.
+struct ClipKeys {
+    QString enabled, normalX, normalY, normalZ, offset;
+};
+
+ClipKeys clipKeys(int index)
+{
+    if (index == 0)
+        return {kClipEnabled, kClipNormalX, kClipNormalY, kClipNormalZ, kClipOffset};
+    const QString group = QStringLiteral("render/clipPlane%1/").arg(index);
+    return {group + QStringLiteral("enabled"), group + QStringLiteral("normalX"), group + QStringLiteral("normalY"),
+            group + QStringLiteral("normalZ"), group + QStringLiteral("offset")};
+}
 
 /// The stored number at `key`, or `fallback` when missing, unparsable or not finite.
 double finiteValue(const QSettings& settings, const QString& key, double fallback)
@@ -33,17 +53,41 @@ double finiteValue(const QSettings& settings, const QString& key, double fallbac
     return ok && std::isfinite(value) ? value : fallback;
 }
 
-ClipPlane loadClipPlane(const QSettings& settings, const ClipPlane& fallback)
+ClipPlane loadClipPlane(const QSettings& settings, const ClipKeys& keys, const ClipPlane& fallback)
 {
     ClipPlane plane = fallback;
-    plane.enabled = settings.value(kClipEnabled, fallback.enabled).toBool();
-    const glm::dvec3 normal{finiteValue(settings, kClipNormalX, fallback.normal.x),
-                            finiteValue(settings, kClipNormalY, fallback.normal.y),
-                            finiteValue(settings, kClipNormalZ, fallback.normal.z)};
+    plane.enabled = settings.value(keys.enabled, fallback.enabled).toBool();
+    const glm::dvec3 normal{finiteValue(settings, keys.normalX, fallback.normal.x),
+                            finiteValue(settings, keys.normalY, fallback.normal.y),
+                            finiteValue(settings, keys.normalZ, fallback.normal.z)};
     if (normal != glm::dvec3(0.0))
         plane.normal = normal;
-    plane.offset = finiteValue(settings, kClipOffset, fallback.offset);
+    plane.offset = finiteValue(settings, keys.offset, fallback.offset);
     return plane;
+}
+
+void saveClipPlane(QSettings& settings, const ClipKeys& keys, const ClipPlane& plane)
+{
+    settings.setValue(keys.enabled, plane.enabled);
+    settings.setValue(keys.normalX, plane.normal.x);
+    settings.setValue(keys.normalY, plane.normal.y);
+    settings.setValue(keys.normalZ, plane.normal.z);
+    settings.setValue(keys.offset, plane.offset);
+}
+
+/// Capping and highlighting, each field falling back on its own.
+void loadInspection(const QSettings& settings, const RenderChoices& fallback, RenderChoices& choices)
+{
+    choices.trim.cap.enabled = settings.value(kCapEnabled, fallback.trim.cap.enabled).toBool();
+    choices.trim.cap.pattern = parseCapPattern(settings.value(kCapPattern).toString().toStdString())
+                                   .value_or(fallback.trim.cap.pattern);
+    const double fraction = finiteValue(settings, kCapSpacingFraction, fallback.capSpacingFraction);
+    const bool inRange = fraction >= RenderChoices::kMinCapSpacingFraction &&
+                         fraction <= RenderChoices::kMaxCapSpacingFraction;
+    choices.capSpacingFraction = inRange ? fraction : fallback.capSpacingFraction;
+    choices.trim.highlight.collisions =
+        settings.value(kHighlightCollisions, fallback.trim.highlight.collisions).toBool();
+    choices.trim.highlight.coplanar = settings.value(kHighlightCoplanar, fallback.trim.highlight.coplanar).toBool();
 }
 
 /// The stored integer at `key` when it lies in [lo, hi], else `fallback`.
@@ -69,7 +113,9 @@ RenderChoices loadRenderChoices(const QSettings& settings)
     choices.trim.trimEnabled = settings.value(kTrimEnabled, fallback.trim.trimEnabled).toBool();
     const std::string ruleText = settings.value(kRule).toString().toStdString();
     choices.trim.rule = parseStaticRule(ruleText).value_or(fallback.trim.rule);
-    choices.trim.clip = loadClipPlane(settings, fallback.trim.clip);
+    for (int i = 0; i < kMaxClipPlanes; ++i)
+        choices.trim.clipPlane(i) = loadClipPlane(settings, clipKeys(i), fallback.trim.clipPlane(i));
+    loadInspection(settings, fallback, choices);
     choices.k = boundedInt(settings, kK, 1, render::MethodParameters::kMaxK, fallback.k);
     choices.method = loadMethod(settings, fallback.method);
     choices.sharedCounters = boundedInt(settings, kSharedCounters, 1, kMaxSharedCounters, fallback.sharedCounters);
@@ -84,11 +130,14 @@ void saveRenderChoices(QSettings& settings, const RenderChoices& choices)
     settings.setValue(kTrimEnabled, choices.trim.trimEnabled);
     settings.setValue(kRule, QString::fromLatin1(ruleName(choices.trim.rule).data(),
                                                  qsizetype(ruleName(choices.trim.rule).size())));
-    settings.setValue(kClipEnabled, choices.trim.clip.enabled);
-    settings.setValue(kClipNormalX, choices.trim.clip.normal.x);
-    settings.setValue(kClipNormalY, choices.trim.clip.normal.y);
-    settings.setValue(kClipNormalZ, choices.trim.clip.normal.z);
-    settings.setValue(kClipOffset, choices.trim.clip.offset);
+    for (int i = 0; i < kMaxClipPlanes; ++i)
+        saveClipPlane(settings, clipKeys(i), choices.trim.clipPlane(i));
+    settings.setValue(kCapEnabled, choices.trim.cap.enabled);
+    const std::string_view pattern = capPatternName(choices.trim.cap.pattern);
+    settings.setValue(kCapPattern, QString::fromLatin1(pattern.data(), qsizetype(pattern.size())));
+    settings.setValue(kCapSpacingFraction, choices.capSpacingFraction);
+    settings.setValue(kHighlightCollisions, choices.trim.highlight.collisions);
+    settings.setValue(kHighlightCoplanar, choices.trim.highlight.coplanar);
     settings.setValue(kK, choices.k);
     const std::string_view method = render::methodInfo(choices.method).id;
     settings.setValue(kMethod, QString::fromLatin1(method.data(), qsizetype(method.size())));

@@ -2,10 +2,14 @@
 /// \file
 /// Reading and writing the render choices and the file dialogs' last directory in a
 /// QSettings (keys "render/…" and "paths/lastDirectory"; recent files: recent_files.h;
+/// clipping plane 1 keeps the keys of the one plane of earlier versions, planes 2–6 are
+/// "render/clipPlaneN/…"; capping and highlighting "render/cap…", "render/highlight…";
+/// the CSG expression and per-object rules belong to the scene and are not stored;
 /// window geometry and dock state: main_window.cpp). The method is stored by its stable
 /// id ("render/method"), the classification as "static" or "dynamic"
 /// ("render/classification"). Values that are missing or unusable (unknown rule name, a method
-/// this build lacks, k or S out of range, zero or non-finite normal) fall back to
+/// this build lacks, k or S out of range, zero or non-finite normal, unknown cap pattern,
+/// cap spacing out of range) fall back to
 /// firstStartRenderChoices(), field by field — so no saved settings means first start.
 
 #include "render_choices.h"

@@ -41,7 +41,8 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent), m_cpuSt
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
     setToolTip(tr("Left drag: orbit · Right/middle or Shift+left drag: pan · Wheel: zoom (Ctrl: toward the "
-                  "cursor) · Double click or F: fit"));
+                  "cursor) · Double click or F: fit · Ctrl+left drag on an object: move it (when the Scene panel "
+                  "allows)"));
 }
 
 ViewportWidget::~ViewportWidget()
@@ -62,6 +63,29 @@ void ViewportWidget::setScene(std::shared_ptr<const Scene> scene)
     m_chain.reset(); // a chain belongs to the previous scene's mesh
     m_level.reset();
     resetFallback();
+    update();
+}
+
+void ViewportWidget::replaceScene(std::shared_ptr<const Scene> scene)
+{
+    const bool keepView = !m_resetPending;
+    setScene(std::move(scene));
+    m_resetPending = !keepView; // a view never shown yet is still fitted on the first frame
+}
+
+void ViewportWidget::setSceneTransforms(std::shared_ptr<const Scene> scene)
+{
+    if (!m_scene || !scene || scene->objects.size() != m_scene->objects.size())
+        throw std::invalid_argument("setSceneTransforms: the new scene does not have the shown scene's objects.");
+    for (std::size_t i = 0; i < scene->objects.size(); ++i) {
+        if (scene->objects[i].mesh.vertexCount() != m_scene->objects[i].mesh.vertexCount() ||
+            scene->objects[i].mesh.triangleCount() != m_scene->objects[i].mesh.triangleCount())
+            throw std::invalid_argument("setSceneTransforms: object " + std::to_string(i) +
+                                        " has another mesh than the one shown.");
+    }
+    m_scene = std::move(scene);
+    m_orbit.setSceneBounds(m_scene->worldBounds()); // the depth range must enclose the moved object
+    m_transformsDirty = true;
     update();
 }
 
@@ -153,8 +177,14 @@ void ViewportWidget::syncGpuScene()
     if (!m_sceneUploaded) {
         m_renderer->setScene(*m_scene);
         m_sceneUploaded = true;
+        m_transformsDirty = false; // the upload carried the current matrices
         m_poseDirty = !m_pose.empty();
         m_colorsDirty = !m_vertexColors.empty();
+    }
+    if (m_transformsDirty) {
+        for (std::size_t i = 0; i < m_scene->objects.size(); ++i)
+            m_renderer->gpuScene().setModelMatrix(i, m_scene->objects[i].modelMatrix);
+        m_transformsDirty = false;
     }
     if (m_poseDirty) {
         m_renderer->gpuScene().updatePositions(0, m_pose);
@@ -551,7 +581,7 @@ void ViewportWidget::recordFrame(const Camera& camera, QSize size)
 {
     const render::FrameStats& stats = m_renderer->lastStats();
     m_trimCache = TrimImage(); // read again on demand: the frame changed
-    ViewportFrame frame{camera, m_settings, m_parameters.k, m_parameters, size, stats, std::nullopt};
+    ViewportFrame frame{camera, m_settings, m_parameters.k, m_parameters, size, stats, std::nullopt, m_scene};
     const render::FrameCounts& counts = stats.counts;
     if (counts.overflowPixels > 0 || counts.unresolvedPixels > 0 || counts.fragmentsLost > 0) {
         const std::optional<render::PixelOccupancy> occupancy = m_renderer->readOccupancy();
@@ -605,6 +635,29 @@ double ViewportWidget::depthUnderCursor(QPointF position)
     return pixel.covered() && std::isfinite(depth) && depth > 0.0 ? depth : fallback;
 }
 
+bool ViewportWidget::startObjectDrag(QPointF position)
+{
+    const std::optional<TrimPixel> pixel = trimPixelAt(position);
+    if (!pixel || pixel->objectId < 0 || !std::isfinite(pixel->viewDepth) || !(pixel->viewDepth > 0.0))
+        return false; // the background or a cap: the camera orbits as without Ctrl
+    m_drag = Drag::MoveObject;
+    m_draggedObject = pixel->objectId;
+    m_grabDepth = pixel->viewDepth;
+    m_lastMouse = position;
+    return true;
+}
+
+// The ray through the pixel under `position` (the frame's camera and size), at `depth`.
+glm::dvec3 ViewportWidget::worldAtDepth(QPointF position, double depth) const
+{
+    const QSize size = framePixelSize();
+    const QPointF device = devicePosition(position);
+    const int x = std::clamp(int(std::floor(device.x())), 0, size.width() - 1);
+    const int y = std::clamp(int(std::floor(device.y())), 0, size.height() - 1);
+    const PixelRay ray = pixelRay(camera(), size.width(), size.height(), x, y);
+    return ray.origin + depth * ray.direction;
+}
+
 void ViewportWidget::mousePressEvent(QMouseEvent* event)
 {
     if (m_drag == Drag::None && m_tool && m_tool->pressed(*event)) {
@@ -614,6 +667,11 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event)
     }
     if (m_drag == Drag::Tool) {
         event->accept(); // a second button during a tool drag changes nothing
+        return;
+    }
+    const bool ctrlLeft = event->button() == Qt::LeftButton && event->modifiers() == Qt::ControlModifier;
+    if (ctrlLeft && m_objectDragEnabled && m_drag == Drag::None && startObjectDrag(event->position())) {
+        event->accept();
         return;
     }
     const bool shiftLeft = event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier);
@@ -644,6 +702,14 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
         QOpenGLWidget::mouseMoveEvent(event);
         return;
     }
+    if (m_drag == Drag::MoveObject) {
+        const glm::dvec3 moved = worldAtDepth(event->position(), m_grabDepth) - worldAtDepth(m_lastMouse, m_grabDepth);
+        m_lastMouse = event->position();
+        if (moved != glm::dvec3(0.0))
+            emit objectDragged(m_draggedObject, moved);
+        event->accept();
+        return;
+    }
     const QPointF delta = event->position() - m_lastMouse;
     m_lastMouse = event->position();
     if (m_drag == Drag::Orbit)
@@ -657,10 +723,12 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
 {
     if (event->buttons() == Qt::NoButton) {
-        const bool tool = m_drag == Drag::Tool;
+        const Drag ended = m_drag;
         m_drag = Drag::None;
-        if (tool && m_tool)
+        if (ended == Drag::Tool && m_tool)
             m_tool->released(*event);
+        if (ended == Drag::MoveObject)
+            emit objectDragFinished(m_draggedObject);
     }
     event->accept();
 }

@@ -6,7 +6,8 @@
 ///
 /// Mouse: left drag orbits, right or middle drag (or Shift + left drag) pans, the wheel
 /// dollies toward the target (Ctrl + wheel toward the point under the cursor), a double
-/// click fits the scene. Keys: F fits the scene. A ViewportTool (setTool, e.g. the brush)
+/// click fits the scene. Keys: F fits the scene. With setObjectDragEnabled, Ctrl + left
+/// drag on an object asks to move it in the view plane (objectDragged; the owner moves it). A ViewportTool (setTool, e.g. the brush)
 /// is asked first on every press and takes the presses it wants; what it leaves (for the
 /// brush: Alt + left drag, right and middle drag) still moves the camera.
 ///
@@ -60,6 +61,8 @@ struct ViewportFrame {
     /// per-pixel counts: the largest count (capped at k by methods that count only what
     /// they hold). nullopt otherwise.
     std::optional<std::uint32_t> largestPixelCount;
+    /// The scene as rendered (objects and model matrices), e.g. for the CPU reference.
+    std::shared_ptr<const Scene> scene;
 };
 
 /// What ViewportWidget::measureMethod found.
@@ -78,6 +81,18 @@ public:
     /// frame, when the widget's final size is known. Clears the pose, the vertex colors and
     /// the dynamic chain below, and the view bounds become the scene's bounds.
     void setScene(std::shared_ptr<const Scene> scene);
+    /// Shows `scene` in place of the shown one keeping the camera (an object was added
+    /// to the scene shown): uploads it, the view bounds become its bounds, the pose, the
+    /// vertex colors and the dynamic chain are cleared as by setScene().
+    void replaceScene(std::shared_ptr<const Scene> scene);
+    /// Shows `scene`, which has the shown scene's objects with the same meshes and differs
+    /// only in model matrices (the Scene panel moved an object): only the matrices go to
+    /// the GPU (GpuScene::setModelMatrix), the view bounds become the new world bounds and
+    /// the camera stays. Throws std::invalid_argument without a shown scene or when an
+    /// object or vertex count differs (use replaceScene then).
+    void setSceneTransforms(std::shared_ptr<const Scene> scene);
+    /// The scene shown (nullptr: none).
+    [[nodiscard]] const std::shared_ptr<const Scene>& scene() const { return m_scene; }
     /// The box the camera's depth range must enclose and Fit frames (default: the
     /// scene's world bounds). An animation passes the bounds of all its poses, so that no
     /// pose reaches past the far plane. Re-renders; the camera itself is not moved.
@@ -146,6 +161,11 @@ public:
     /// when openGlProblem() is not empty and the widget is therefore never shown.
     void setUnavailable(const QString& reason);
 
+    /// Whether Ctrl + left drag on an object reports objectDragged() instead of orbiting
+    /// (default off: the owner turns it on while objects may be moved).
+    void setObjectDragEnabled(bool enabled) { m_objectDragEnabled = enabled; }
+    [[nodiscard]] bool objectDragEnabled() const { return m_objectDragEnabled; }
+
     /// The mouse tool asked first on every press (nullptr: none). Not owned; the tool
     /// must outlive the viewport or be reset first. Turns on hover tracking.
     void setTool(ViewportTool* tool);
@@ -191,6 +211,12 @@ signals:
     /// The chosen method ran out of GPU memory: `message` says why and what is shown
     /// instead (another method, or the CPU reference).
     void memoryFallback(const QString& message);
+    /// Ctrl + left drag on object `object` (setObjectDragEnabled): the cursor moved the
+    /// grabbed point by `worldDelta` (world units, in the view plane at the grabbed
+    /// point's depth) since the previous report.
+    void objectDragged(int object, const glm::dvec3& worldDelta);
+    /// That drag ended (the button went up).
+    void objectDragFinished(int object);
 
 protected:
     void initializeGL() override;
@@ -205,7 +231,7 @@ protected:
     void leaveEvent(QEvent* event) override;
 
 private:
-    enum class Drag { None, Orbit, Pan, Tool };
+    enum class Drag { None, Orbit, Pan, Tool, MoveObject };
 
     void releaseGl();
     void syncGpuScene();
@@ -224,6 +250,10 @@ private:
     void setError(const QString& message);
     [[nodiscard]] double aspect() const;
     [[nodiscard]] double depthUnderCursor(QPointF position);
+    /// Starts a Ctrl + left drag of the object under `position`; false when none is there.
+    bool startObjectDrag(QPointF position);
+    /// The world point at view depth `depth` under the logical position `position`.
+    [[nodiscard]] glm::dvec3 worldAtDepth(QPointF position, double depth) const;
 
     OrbitController m_orbit;
     std::unique_ptr<render::TrimRenderer> m_renderer;
@@ -235,6 +265,7 @@ private:
     std::vector<glm::vec3> m_pose;              ///< object 0's positions; empty: the scene's
     std::vector<std::uint32_t> m_vertexColors; ///< empty: the trim palette
     bool m_poseDirty = false;
+    bool m_transformsDirty = false; ///< model matrices changed since the upload
     bool m_colorsDirty = false;
     bool m_resetPending = false;
     std::optional<ViewportFrame> m_lastFrame;
@@ -256,6 +287,8 @@ private:
     Drag m_drag = Drag::None;
     QPointF m_lastMouse;
     double m_grabDepth = 0.0;
+    bool m_objectDragEnabled = false;
+    int m_draggedObject = -1;
 };
 
 } // namespace trimlab::ui

@@ -39,13 +39,24 @@ Scene sphereScene()
     return singleObject("sphere", makeIcosphere(glm::dvec3(0.0), 1.0, 4));
 }
 
+// Three overlapping solids for CSG, capping and collisions (objects 0, 1, 2): the
+// self-crossing pushed sphere, a ball through its side and a ring around its equator.
+Scene csgTrioScene()
+{
+    Scene scene;
+    scene.objects.push_back({"pushed sphere", makePushedSphere(64, 32), glm::dmat4(1.0)});
+    scene.objects.push_back({"ball", makeIcosphere(glm::dvec3(0.8, 0.3, 0.4), 0.7, 3), glm::dmat4(1.0)});
+    scene.objects.push_back({"ring", makeTorus(glm::dvec3(-0.15, 0.1, 0.0), 1.0, 0.28, 48, 24), glm::dmat4(1.0)});
+    return scene;
+}
+
 struct DemoEntry {
     std::string_view name;
     std::string_view description;
     Scene (*make)();
 };
 
-constexpr std::array<DemoEntry, 4> kDemos = {{
+constexpr std::array<DemoEntry, 5> kDemos = {{
     {"pushed-sphere", "A sphere with a finger pushed through its south cap: the alternating border rule trims "
                       "a hole through it (genus 0 to 1).",
      pushedSphereScene},
@@ -56,6 +67,9 @@ constexpr std::array<DemoEntry, 4> kDemos = {{
                        "inside the inner one).",
      nestedSpheresScene},
     {"sphere", "A unit icosphere (5120 triangles): the simplest closed surface.", sphereScene},
+    {"csg-trio", "Three overlapping solids for CSG and capping: the self-crossing pushed sphere (object 0), a ball "
+                 "(1) and a ring (2), e.g. --csg \"0 | 1 - 2\".",
+     csgTrioScene},
 }};
 
 const DemoEntry* findDemo(std::string_view name)

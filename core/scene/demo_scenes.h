@@ -13,7 +13,7 @@
 namespace trimlab {
 
 /// The names of all demo scenes, in menu order: "pushed-sphere", "crossing-loop",
-/// "nested-spheres", "sphere".
+/// "nested-spheres", "sphere", "csg-trio" (three objects for CSG, capping, collisions).
 [[nodiscard]] std::vector<std::string> demoSceneNames();
 
 /// A one-line description of demo scene `name`; empty for an unknown name.

@@ -253,4 +253,34 @@ TriangleMesh makeTorus(const glm::dvec3& center, double majorRadius, double mino
     return makeTube(circle, minorRadius, minorSegments, outward);
 }
 
+TriangleMesh makeBox(const glm::dvec3& lower, const glm::dvec3& upper, bool outward)
+{
+    if (!(lower.x < upper.x && lower.y < upper.y && lower.z < upper.z))
+        return {};
+    TriangleMesh mesh;
+    // Vertex index bit k set: coordinate k at `upper`.
+    for (unsigned i = 0; i < 8; ++i)
+        mesh.positions.emplace_back(glm::dvec3((i & 1u) ? upper.x : lower.x, (i & 2u) ? upper.y : lower.y,
+                                               (i & 4u) ? upper.z : lower.z));
+    for (unsigned axis = 0; axis < 3; ++axis) {
+        // (u, v) the other two axes in cyclic order, so u × v points along +axis.
+        const unsigned u = 1u << ((axis + 1) % 3);
+        const unsigned v = 1u << ((axis + 2) % 3);
+        for (unsigned side = 0; side < 2; ++side) {
+            const unsigned base = side ? 1u << axis : 0u;
+            const unsigned c00 = base, c10 = base | u, c11 = base | u | v, c01 = base | v;
+            // Counter-clockwise seen from outside: (u, v) order on the + side, reversed on the − side.
+            const bool forward = (side == 1) == outward;
+            if (forward) {
+                mesh.triangles.push_back({c00, c10, c11});
+                mesh.triangles.push_back({c00, c11, c01});
+            } else {
+                mesh.triangles.push_back({c00, c11, c10});
+                mesh.triangles.push_back({c00, c01, c11});
+            }
+        }
+    }
+    return mesh;
+}
+
 } // namespace trimlab

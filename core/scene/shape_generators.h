@@ -52,4 +52,11 @@ namespace trimlab {
 [[nodiscard]] TriangleMesh makeTorus(const glm::dvec3& center, double majorRadius, double minorRadius,
                                      int majorSegments, int minorSegments, bool outward = true);
 
+/// Axis-aligned box [lower, upper]: 8 vertices, 12 triangles. Every face is split along
+/// the diagonal from its (min, min) to its (max, max) corner in its two axes, so two boxes
+/// sharing a face (a face of one lying on a face of the other) have the same two triangles
+/// there, with opposite orientation: coincident fragments in exact depth ties (thesis
+/// chapter 6). Empty unless lower < upper on every axis.
+[[nodiscard]] TriangleMesh makeBox(const glm::dvec3& lower, const glm::dvec3& upper, bool outward = true);
+
 } // namespace trimlab

@@ -5,4 +5,5 @@ target_sources(trimlab_core PRIVATE
   scene/demo_shapes.cpp
   scene/demo_scenes.cpp
   scene/scene_source.cpp
+  scene/object_transform.cpp
 )

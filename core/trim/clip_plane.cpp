@@ -25,9 +25,11 @@ KeptSpan keptSpan(const ClipPlane& plane, const PixelRay& ray, double zNear, dou
     const double tPlane = -f0 / slope;
     if (fNear >= 0.0) {
         span.tEnd = std::clamp(tPlane, zNear, zFar);
+        span.endPlane = 0;
     } else {
         span.tStart = std::clamp(tPlane, zNear, zFar);
         span.startsAtNear = false;
+        span.startPlane = 0;
     }
     return span;
 }

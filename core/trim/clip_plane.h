@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -38,6 +39,16 @@ struct KeptSpan {
     double tEnd = 0.0;
     /// True when tStart is the near plane (the ray starts inside the kept half-space).
     bool startsAtNear = true;
+    /// Which plane of a ClipSet bounds the span at tStart (−1: the near plane) and at
+    /// tEnd (−1: the far plane). keptSpan(ClipPlane) reports plane 0.
+    int startPlane = -1;
+    int endPlane = -1;
+    /// The runner-up plane bound at each end (the next largest lower bound of another
+    /// plane behind tStart, the next smallest upper bound beyond tEnd), −inf / +inf when
+    /// no other plane bounds that end: where two planes nearly tie, which one bounds the
+    /// span may flip under rounding (reference_diagnostics.h counts it as a depth margin).
+    double startRunnerUp = -std::numeric_limits<double>::infinity();
+    double endRunnerUp = std::numeric_limits<double>::infinity();
 };
 
 [[nodiscard]] KeptSpan keptSpan(const ClipPlane& plane, const PixelRay& ray, double zNear, double zFar);

@@ -20,8 +20,15 @@ double pixelDepthMargin(std::span<const RayHit> sortedHits, const KeptSpan& span
         scratch.push_back(hit.t);
     scratch.push_back(span.tStart);
     scratch.push_back(span.tEnd);
+    // Another clipping plane nearly bounding the span instead (ClipSet).
+    if (std::isfinite(span.startRunnerUp))
+        scratch.push_back(span.startRunnerUp);
+    if (std::isfinite(span.endRunnerUp))
+        scratch.push_back(span.endRunnerUp);
     std::sort(scratch.begin(), scratch.end());
-    const double deciding = walk.shownIndex >= 0 ? sortedHits[std::size_t(walk.shownIndex)].t : span.tEnd;
+    const double deciding = walk.capPlane >= 0       ? span.tStart
+                            : walk.shownIndex >= 0 ? sortedHits[std::size_t(walk.shownIndex)].t
+                                                   : span.tEnd;
     auto first = std::lower_bound(scratch.begin(), scratch.end(), span.tStart);
     if (first != scratch.begin())
         --first;

@@ -46,9 +46,10 @@ private:
 };
 
 /// How close the depth order that decided this pixel was to flipping.
-/// Take the depths of all hits together with the markers tStart and tEnd, sorted. The
-/// decision depends on the order of the window from the last depth before tStart up to
-/// the first depth after the deciding one (the shown hit, or tEnd when nothing is shown).
+/// Take the depths of all hits together with the markers tStart and tEnd (and the
+/// span's runner-up plane bounds, see KeptSpan), sorted. The decision depends on the
+/// order of the window from the last depth before tStart up to the first depth after the
+/// deciding one (tStart for a cap, the shown hit, or tEnd when nothing is shown).
 /// Returns the smallest |a − b| / max(a, b) over consecutive depths of that window: 0 for
 /// exact ties (coincident surfaces, a hit exactly on the clip plane), +inf for an empty
 /// span or a window of one depth. `scratch` is reused storage.

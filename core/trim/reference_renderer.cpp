@@ -30,6 +30,7 @@ struct ReferenceRenderer::RowContext {
     int width;
     int height;
     const TrimSettings& settings;
+    ClipSet clips; ///< settings.clipSet(), built once
     const RayWalker* walker;
     ReferenceResult& result;
     std::vector<RayHit> hits;
@@ -51,13 +52,13 @@ PixelTrace ReferenceRenderer::tracePixel(const Camera& camera, int width, int he
     trace.ray = pixelRay(camera, width, height, x, y);
     m_bvh.intersectAll(trace.ray, camera.zNear, camera.zFar, trace.hits);
     std::sort(trace.hits.begin(), trace.hits.end(), walkOrder);
-    trace.span = keptSpan(settings.clip, trace.ray, camera.zNear, camera.zFar);
+    trace.span = keptSpan(settings.clipSet(), trace.ray, camera.zNear, camera.zFar);
     trace.walk = walkTrimRay(trace.hits, trace.span, settings);
     trace.pixel = trimPixelFromWalk(trace.hits, trace.walk);
     return trace;
 }
 
-glm::vec3 ReferenceRenderer::shadeHit(const RayHit& hit, const PixelRay& ray) const
+glm::vec3 ReferenceRenderer::shadeHit(const RayHit& hit, const PixelRay& ray, const TrimPixel& pixel) const
 {
     const ObjectGeometry& object = m_objects[std::size_t(hit.objectId)];
     const glm::uvec3 t = object.triangles[std::size_t(hit.primitiveId)];
@@ -68,8 +69,20 @@ glm::vec3 ReferenceRenderer::shadeHit(const RayHit& hit, const PixelRay& ray) co
         normal = glm::cross(object.positions[t[1]] - a, object.positions[t[2]] - a);
     }
     const double length = glm::length(normal);
-    normal = length > 0.0 ? normal / length : -glm::normalize(ray.direction);
-    return shadeTrimPoint(hit.facing, normal, -glm::normalize(ray.direction));
+    const glm::dvec3 toViewer = -glm::normalize(ray.direction);
+    normal = length > 0.0 ? normal / length : toViewer;
+    const glm::vec3 shaded = shadeTrimPoint(hit.facing, normal, toViewer);
+    if (!pixel.collision && pixel.coplanarCount < 2)
+        return shaded;
+    const float lighting = kAmbient + (1.0f - kAmbient) * static_cast<float>(std::abs(glm::dot(normal, toViewer)));
+    return applyHighlights(shaded, lighting, pixel.collision, pixel.coplanarCount);
+}
+
+glm::vec3 ReferenceRenderer::shadeCapPixel(const RowContext& context, const PixelRay& ray, const TrimWalk& walk) const
+{
+    const glm::dvec3 normal = glm::normalize(context.clips.planes[std::size_t(walk.capPlane)].normal);
+    const glm::dvec3 point = ray.origin + walk.capDepth * ray.direction;
+    return shadeCap(context.settings.cap, point, normal, -glm::normalize(ray.direction));
 }
 
 void ReferenceRenderer::renderRow(RowContext& context, int y) const
@@ -80,7 +93,7 @@ void ReferenceRenderer::renderRow(RowContext& context, int y) const
         context.hits.clear();
         m_bvh.intersectAll(ray, camera.zNear, camera.zFar, context.hits);
         std::sort(context.hits.begin(), context.hits.end(), walkOrder);
-        const KeptSpan span = keptSpan(context.settings.clip, ray, camera.zNear, camera.zFar);
+        const KeptSpan span = keptSpan(context.clips, ray, camera.zNear, camera.zFar);
         bool unresolved = false;
         const TrimWalk walk = context.walker ? (*context.walker)(x, y, context.hits, span, unresolved)
                                              : walkTrimRay(context.hits, span, context.settings);
@@ -97,14 +110,17 @@ void ReferenceRenderer::renderRow(RowContext& context, int y) const
         context.stats.maxHitsPerPixel = std::max(context.stats.maxHitsPerPixel, hitCount);
 
         glm::vec3 color = kBackgroundColor;
-        if (pixel.covered()) {
+        if (pixel.isCap()) {
+            color = shadeCapPixel(context, ray, walk);
+            ++context.stats.coveredPixels;
+        } else if (pixel.covered()) {
             const RayHit& hit = context.hits[std::size_t(walk.shownIndex)];
             const ObjectGeometry& object = m_objects[std::size_t(hit.objectId)];
             const glm::uvec3 t = object.triangles[std::size_t(hit.primitiveId)];
             diagnostics.edgeDistancePx[index] = float(edgeDistancePixels(
                 camera, context.width, context.height, x, y,
                 {object.positions[t[0]], object.positions[t[1]], object.positions[t[2]]}));
-            color = shadeHit(hit, ray);
+            color = shadeHit(hit, ray, pixel);
             ++context.stats.coveredPixels;
         }
         std::uint8_t* rgba = context.result.color.at(x, y);
@@ -139,7 +155,7 @@ ReferenceResult ReferenceRenderer::render(const Camera& camera, int width, int h
     std::atomic<int> nextBlock{0};
     std::vector<ReferenceStats> partial(threads);
     auto work = [&](unsigned worker) {
-        RowContext context{camera, width, height, settings, walker ? &walker : nullptr, result, {}, {}, {}};
+        RowContext context{camera, width, height, settings, settings.clipSet(), walker ? &walker : nullptr, result, {}, {}, {}};
         for (int block = nextBlock++; block < blockCount; block = nextBlock++) {
             const int rowEnd = std::min(height, (block + 1) * kRowsPerBlock);
             for (int y = block * kRowsPerBlock; y < rowEnd; ++y)

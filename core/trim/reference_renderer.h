@@ -37,7 +37,8 @@ struct ReferenceStats {
 struct ReferenceResult {
     TrimImage trim;
     /// Background kBackgroundColor where empty, else shadeTrimPoint with the smooth world
-    /// normal at the hit and toViewer = −normalize(ray direction); channels are
+    /// normal at the hit and toViewer = −normalize(ray direction) (with applyHighlights
+    /// for collisions and coplanar groups), or shadeCap for a cap; channels are
     /// round(255·clamp(c, 0, 1)), alpha 255.
     RgbaImage color;
     ReferenceDiagnostics diagnostics;
@@ -90,7 +91,10 @@ private:
     struct RowContext;
 
     void renderRow(RowContext& context, int y) const;
-    [[nodiscard]] glm::vec3 shadeHit(const RayHit& hit, const PixelRay& ray) const;
+    /// Smooth-normal shading of the shown hit, with the pixel's highlights.
+    [[nodiscard]] glm::vec3 shadeHit(const RayHit& hit, const PixelRay& ray, const TrimPixel& pixel) const;
+    /// Flat shading and world-space pattern of a cap.
+    [[nodiscard]] glm::vec3 shadeCapPixel(const RowContext& context, const PixelRay& ray, const TrimWalk& walk) const;
 
     TriangleBvh m_bvh;
     std::vector<ObjectGeometry> m_objects;

@@ -2,6 +2,9 @@
 target_sources(trimlab_core PRIVATE
   trim/ray_triangle.cpp
   trim/triangle_bvh.cpp
+  trim/clip_set.cpp
+  trim/csg_expression.cpp
+  trim/inspect_settings.cpp
   trim/trim_walk.cpp
   trim/reference_diagnostics.cpp
   trim/reference_renderer.cpp

@@ -10,7 +10,8 @@ namespace {
 bool samePixel(const TrimPixel& a, const TrimPixel& b)
 {
     return a.covered() == b.covered() && a.primitiveId == b.primitiveId && a.objectId == b.objectId &&
-           a.facing == b.facing && a.windingAtStart == b.windingAtStart;
+           a.facing == b.facing && a.windingAtStart == b.windingAtStart && a.capPlane == b.capPlane &&
+           a.collision == b.collision && a.coplanarCount == b.coplanarCount;
 }
 
 bool isReferenceSilhouette(const TrimImage& reference, int x, int y)

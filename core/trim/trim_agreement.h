@@ -5,8 +5,8 @@
 /// and by `trimlab bench`.
 ///
 /// A pixel counts when either image covers it (or the GPU marks it unresolved). It agrees
-/// when both cover it with the same object, primitive and facing and the same winding
-/// index at the span start. Pixels where a float rasteriser may legitimately decide
+/// when both cover it with the same object, primitive and facing (or the same cap plane)
+/// and the same winding index at the span start, collision flag and coplanar count. Pixels where a float rasteriser may legitimately decide
 /// otherwise are *excluded*, by definitions read from the reference's diagnostics, and
 /// counted so that exclusions cannot hide a broken renderer:
 /// - depth: the depth order that decided the pixel was within `relativeDepthTolerance` of

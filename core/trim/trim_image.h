@@ -26,8 +26,21 @@ struct TrimPixel {
     /// nothing (painted as unresolved) rather than something wrong. Set by the CPU
     /// reference only where a dynamic rule's reference characterization overflowed.
     bool unresolved = false;
+    /// Capping (CapSettings): the pixel shows the cap of this plane of the ClipSet (0 ..
+    /// kMaxClipPlanes − 1) at viewDepth = the span start; primitiveId and objectId are −1
+    /// and facing 0 then. −1: no cap.
+    std::int8_t capPlane = -1;
+    /// HighlightSettings::collisions: the shown fragment lies inside another object or
+    /// where its own object overlaps itself. Always false with the highlight off.
+    bool collision = false;
+    /// HighlightSettings::coplanar: fragments of the kept span at exactly the shown
+    /// fragment's depth, the shown one included (>= 1 when a fragment is shown; 2 or more
+    /// is a coplanar group). Always 0 with the highlight off or for an empty pixel or cap.
+    std::uint8_t coplanarCount = 0;
 
-    [[nodiscard]] bool covered() const { return primitiveId >= 0; }
+    /// The pixel shows something: a surface fragment or a cap.
+    [[nodiscard]] bool covered() const { return primitiveId >= 0 || capPlane >= 0; }
+    [[nodiscard]] bool isCap() const { return capPlane >= 0; }
 };
 
 /// A width×height image of TrimPixel, row 0 at the top.

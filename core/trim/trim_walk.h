@@ -17,12 +17,28 @@
 ///   With trimming on, the shown hit is the first with isTrimBoundary(rule, wBefore,
 ///   wAfter); with trimming off, simply the first hit. None: the pixel is empty.
 /// - An empty span (everything clipped) has w = 0 and shows nothing.
+/// Interior inspection (TrimSettings::cap, csg, highlight; thesis 8.1.2 "Capping and CSG
+/// Operations", Algorithm 8.14 for n operands) extends the same walk:
+/// - Per-object windings: with CSG or collision highlighting the walk also carries
+///   w_o(t) for every object o < kMaxCsgOperands, counted from the far side like w.
+///   The classification of a point is then the CSG expression on the inside bits
+///   isInterior(objectRule(o), w_o) (with an expression) or isInterior(rule, w) (without).
+/// - Capping: when the span starts at a clipping plane (span.startPlane >= 0) and the
+///   start point classifies interior, the pixel shows that plane's cap at tStart and no
+///   hit (capPlane >= 0, shownIndex −1).
+/// - Collision: the shown hit of object o lies inside another object q (q != o, q <
+///   kMaxCsgOperands, isInterior(objectRule(q), w_q) there) or its own object overlaps
+///   itself there (|w_o| > 1 on either side).
+/// - Coplanar: the number of hits of the kept span at exactly the shown hit's t.
+/// Without these settings the walk is the static walk above, unchanged.
 
 #include "trim/clip_plane.h"
+#include "trim/csg_expression.h"
 #include "trim/ray_hit.h"
 #include "trim/trim_image.h"
 #include "trim/trim_settings.h"
 
+#include <array>
 #include <cstddef>
 #include <span>
 
@@ -31,17 +47,38 @@ namespace trimlab {
 /// What the walk decided for one ray, as indices into the sorted hit list.
 struct TrimWalk {
     int windingAtStart = 0;
-    std::ptrdiff_t shownIndex = -1; ///< index of the shown hit, −1 for an empty pixel
+    std::ptrdiff_t shownIndex = -1; ///< index of the shown hit, −1 for an empty pixel or a cap
     std::size_t walkBegin = 0;      ///< first hit with t > tStart
     std::size_t walkEnd = 0;        ///< one past the last hit with t <= tEnd
+    int capPlane = -1;              ///< the ClipSet plane whose cap the pixel shows, −1: none
+    double capDepth = 0.0;          ///< tStart when capPlane >= 0
+    bool collision = false;         ///< the shown hit collides (HighlightSettings::collisions)
+    int coplanarCount = 0;          ///< hits at the shown hit's t (HighlightSettings::coplanar)
 };
+
+/// Winding index per object (index = object id < kMaxCsgOperands).
+using ObjectWindings = std::array<int, kMaxCsgOperands>;
+
+/// Bit o set iff object o classifies interior under settings.objectRule(o) at `windings`.
+[[nodiscard]] std::uint32_t objectInsideBits(const TrimSettings& settings, const ObjectWindings& windings);
+
+/// The classification of a point with total winding `winding` and per-object `windings`:
+/// the CSG expression on objectInsideBits when settings.csg has one, else
+/// isInterior(settings.rule, winding).
+[[nodiscard]] bool classifiesInterior(const TrimSettings& settings, int winding, const ObjectWindings& windings);
+
+/// Whether a hit of object `objectId` collides, given the per-object windings at it
+/// (the hit's own object: `ownBefore` and `ownAfter` on its two sides).
+[[nodiscard]] bool hitCollides(const TrimSettings& settings, const ObjectWindings& windings, int objectId,
+                               int ownBefore, int ownAfter);
 
 /// Walks one ray (see the conventions above).
 [[nodiscard]] TrimWalk walkTrimRay(std::span<const RayHit> sortedHits, const KeptSpan& span,
                                    const TrimSettings& settings);
 
 /// The TrimPixel that `walk` describes: the shown hit's depth (as float), ids and facing,
-/// and windingAtStart (also for empty pixels with a non-empty span).
+/// and windingAtStart (also for empty pixels with a non-empty span); for a cap its plane
+/// and depth; the collision flag and coplanar count.
 [[nodiscard]] TrimPixel trimPixelFromWalk(std::span<const RayHit> sortedHits, const TrimWalk& walk);
 
 /// walkTrimRay followed by trimPixelFromWalk.

@@ -26,7 +26,7 @@ void ABufferFixed::render(TrimFrame& frame)
 {
     m_slots.allocate(frame.width, frame.height, frame.parameters.k, "AB_FP arrays");
     m_state.allocate(frame.width, frame.height);
-    m_state.clear(frame.shaders);
+    clearCountingState(frame, m_state);
     storePass(frame);
     m_gl.glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT);
     resolvePass(frame);

@@ -78,7 +78,7 @@ void ABufferLinkedList::render(TrimFrame& frame)
 
 std::uint64_t ABufferLinkedList::storePass(TrimFrame& frame)
 {
-    m_state.clear(frame.shaders);
+    clearCountingState(frame, m_state);
     m_head.clear(frame.shaders);
     const GLuint zero = 0;
     m_gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_nodeCounter.id());

@@ -24,5 +24,6 @@ inline constexpr GLuint kSharedCountersStorage = 7;
 inline constexpr GLuint kDynamicStateStorage = 8;
 inline constexpr GLuint kReferenceBitsStorage = 9;
 inline constexpr GLuint kCharacterizationBitsStorage = 10;
+inline constexpr GLuint kObjectWindingsStorage = 11;
 
 } // namespace trimlab::render::binding

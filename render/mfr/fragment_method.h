@@ -42,6 +42,10 @@ struct MethodInfo {
     /// walk (the peeling methods and the two-pass method cannot: they never hold a
     /// pixel's reference and current fragments together).
     bool dynamicRules;
+    /// Its resolve walks all of a pixel's fragments in one invocation, so it can carry the
+    /// per-object windings of CSG and collision highlighting and count coplanar groups
+    /// (the buffer methods). Clipping sets and capping work with every method.
+    bool inspection;
 };
 
 /// Every method, in menu order. Only those with an implementation are listed.

@@ -63,7 +63,7 @@ void KPlusBuffer::render(TrimFrame& frame)
     m_slots.allocate(frame.width, frame.height, frame.parameters.k, "k+-buffer");
     m_state.allocate(frame.width, frame.height);
     const KPlusLock lock = chooseKPlusLock(frame.capabilities, frame.parameters.allowInterlock);
-    m_state.clear(frame.shaders);
+    clearCountingState(frame, m_state);
     storePass(frame, lock);
     m_gl.glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT);
     resolvePass(frame);

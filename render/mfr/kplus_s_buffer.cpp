@@ -39,7 +39,7 @@ void KPlusSBuffer::render(TrimFrame& frame)
     const KPlusLock lock = chooseKPlusLock(frame.capabilities, frame.parameters.allowInterlock);
     m_state.allocate(frame.width, frame.height);
     m_head.allocate(frame.width, frame.height);
-    m_state.clear(frame.shaders);
+    clearCountingState(frame, m_state);
     m_referencing.countPass(frame, m_state);
     m_countedTotal =
         m_referencing.reference(frame, m_state, m_head, frame.parameters.sharedCounters, std::uint32_t(m_k));

@@ -95,6 +95,7 @@ void PeelingPasses::resolvePass(TrimFrame& frame, PeelingState& state)
 {
     const GLuint program = trimProgram(frame, QStringLiteral("peeling_resolve"));
     m_gl.glUseProgram(program);
+    setTrimWalkUniforms(frame, program); // the rule and the clip / cap uniforms of CAPPING
     setOutputUniforms(frame, program);
     state.bind();
     frame.counters.bind();

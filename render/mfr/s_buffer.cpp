@@ -26,7 +26,7 @@ void SBuffer::render(TrimFrame& frame)
 {
     m_state.allocate(frame.width, frame.height);
     m_head.allocate(frame.width, frame.height);
-    m_state.clear(frame.shaders);
+    clearCountingState(frame, m_state);
     m_referencing.countPass(frame, m_state);
     m_countedTotal = m_referencing.reference(frame, m_state, m_head, frame.parameters.sharedCounters,
                                              std::numeric_limits<std::uint32_t>::max());

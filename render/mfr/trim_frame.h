@@ -16,6 +16,7 @@ namespace trimlab::render {
 
 class FrameCounters;
 class GpuScene;
+class ObjectWindingBuffer;
 class RenderTarget;
 class ShaderLibrary;
 struct GlCapabilities;
@@ -41,6 +42,10 @@ struct TrimFrame {
     /// its reference is the base mesh (classified by settings.rule) or a characterization.
     int dynamicRule = 3;
     bool referenceIsBase = true;
+    /// Per-object winding indices (CSG, collision highlighting: TrimSettings::
+    /// perObjectWinding); nullptr when the frame does not need them. The programs are then
+    /// built with OBJECT_WINDINGS <objects> among the mode defines.
+    ObjectWindingBuffer* objectWindings = nullptr;
 };
 
 /// The program `name` with `defines` and the frame's mode defines.

@@ -74,7 +74,7 @@ void TwoPassTrim::allocate(int width, int height)
 void TwoPassTrim::render(TrimFrame& frame)
 {
     allocate(frame.width, frame.height);
-    m_state.clear(frame.shaders);
+    clearCountingState(frame, m_state);
     countPass(frame);
     closestPass(frame);
     m_gl.glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

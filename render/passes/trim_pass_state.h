@@ -10,10 +10,18 @@ namespace trimlab::render {
 
 struct TrimFrame;
 
-/// Clip plane in view space, near plane (shaders/common/clip.glsl).
+class PixelState;
+
+/// Clip planes in view space, near and far plane (shaders/common/clip.glsl); binds the
+/// frame's per-object winding buffer, if any (counting passes add to it).
 void setClipUniforms(const TrimFrame& frame, GLuint program);
-/// Rule and trim on/off (shaders/common/trim_walk.glsl).
+/// Rule and trim on/off (shaders/common/trim_walk.glsl), per-object rules and the CSG
+/// truth table, highlights, and the capping uniforms (shaders/common/cap.glsl, which also
+/// needs the clip uniforms: they are set too).
 void setTrimWalkUniforms(const TrimFrame& frame, GLuint program);
+/// Clears `state` (PixelState::clear) and the frame's per-object winding buffer, if any:
+/// what a method does before each pass that counts the winding index.
+void clearCountingState(TrimFrame& frame, PixelState& state);
 /// Projection, viewport and pixel-ray parameters, vertex colors (trim_output.glsl).
 void setOutputUniforms(const TrimFrame& frame, GLuint program);
 

@@ -15,3 +15,4 @@
 #define STORAGE_DYNAMIC_STATE 8          // dynamic rules: per-pixel reference index and fragments behind
 #define STORAGE_REFERENCE_BITS 9         // dynamic rules: the reference frame's characterization bit vectors
 #define STORAGE_CHARACTERIZATION_BITS 10 // dynamic rules: the bit vectors a chain level writes
+#define STORAGE_OBJECT_WINDINGS 11       // CSG, collisions: per-pixel per-object winding at the span start

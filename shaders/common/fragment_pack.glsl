@@ -14,3 +14,17 @@ float fragmentDepth(uvec2 f) { return uintBitsToFloat(f.x); }
 uint fragmentPrimitive(uvec2 f) { return f.y & 0xFFFFFFu; }
 uint fragmentObject(uvec2 f) { return (f.y >> 24) & 31u; }
 bool fragmentFrontFacing(uvec2 f) { return ((f.y >> 29) & 1u) != 0u; }
+
+// The walk order of the CPU reference (core/trim/ray_hit.h, walkOrder): by view depth,
+// ties (coincident surfaces) by object id, then primitive id, so every backend and every
+// frame resolves them alike (thesis chapter 6). The facing bit and the dynamic rules'
+// bits 30-31 take no part.
+uint fragmentOrderKey(uvec2 f) { return f.y & 0x1FFFFFFFu; }
+
+// True when `a` comes after `b` in the walk order.
+bool fragmentAfter(uvec2 a, uvec2 b)
+{
+    float da = fragmentDepth(a);
+    float db = fragmentDepth(b);
+    return da > db || (da == db && fragmentOrderKey(a) > fragmentOrderKey(b));
+}

@@ -1,4 +1,5 @@
-// Sorting a pixel's fragments by view depth in registers (thesis 7.1.2, resolve pass):
+// Sorting a pixel's fragments in the walk order (view depth, ties by object and primitive
+// id: fragment_pack.glsl) in registers (thesis 7.1.2, resolve pass):
 // insertion sort for short lists, shell sort for longer ones.
 // Operates on the array g_fragments[FRAGMENT_ARRAY_SIZE] that the including shader
 // declares before including this file (GLSL passes arrays by value, so a global avoids
@@ -12,11 +13,10 @@ void insertionSortFragments(int count)
 {
     for (int i = 1; i < count; ++i) {
         uvec2 f = g_fragments[i];
-        float d = fragmentDepth(f);
         int j = i;
         while (j >= 1) {
             uvec2 previous = g_fragments[j - 1];
-            if (fragmentDepth(previous) <= d)
+            if (!fragmentAfter(previous, f))
                 break;
             g_fragments[j] = previous;
             --j;
@@ -34,11 +34,10 @@ void shellSortFragments(int count)
     for (; gap >= 1; gap /= 3) {
         for (int i = gap; i < count; ++i) {
             uvec2 f = g_fragments[i];
-            float d = fragmentDepth(f);
             int j = i;
             while (j >= gap) {
                 uvec2 previous = g_fragments[j - gap];
-                if (fragmentDepth(previous) <= d)
+                if (!fragmentAfter(previous, f))
                     break;
                 g_fragments[j] = previous;
                 j -= gap;

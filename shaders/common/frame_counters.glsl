@@ -5,3 +5,6 @@ layout(binding = 0, offset = 8) uniform atomic_uint u_unresolvedPixels; // of th
 layout(binding = 0, offset = 12) uniform atomic_uint u_spinGiveUps;     // fragments that gave up the lock
 layout(binding = 0, offset = 16) uniform atomic_uint u_fragmentsLost;   // fragments not stored (capacity)
 layout(binding = 0, offset = 20) uniform atomic_uint u_fragmentsStored; // fragments written to storage
+layout(binding = 0, offset = 24) uniform atomic_uint u_capPixels;       // pixels showing a cap
+layout(binding = 0, offset = 28) uniform atomic_uint u_collisionPixels; // shown fragments highlighted as colliding
+layout(binding = 0, offset = 32) uniform atomic_uint u_coplanarPixels;  // shown fragments in a coplanar group (>= 2)

@@ -8,10 +8,11 @@
 
 uint nextLink(uint link) { return links[link - 1u]; }
 
-// Whether the run head `p` goes before `q` (both valid links): the nearer, or the first.
+// Whether the run head `p` goes before `q` (both valid links): the first in the walk
+// order (fragment_pack.glsl), or the first of two equal ones.
 bool takesFirst(uint p, uint q)
 {
-    return fragmentDepth(nodes[p - 1u]) <= fragmentDepth(nodes[q - 1u]);
+    return !fragmentAfter(nodes[p - 1u], nodes[q - 1u]);
 }
 
 bool mergeSortList(inout uint head, inout int budget)

@@ -1,4 +1,4 @@
-// Sorting a pixel's fragments by view depth in place in the node buffer: the fallback of
+// Sorting a pixel's fragments in the walk order (fragment_pack.glsl) in place in the node buffer: the fallback of
 // the S-buffer's resolve for lists longer than its register array (LIST_MAX). The pixel
 // owns its region, so no other invocation touches these nodes. Shell sort with Knuth's
 // gaps, as fragment_sort.glsl does in registers (and, like it, never forming an index
@@ -15,13 +15,12 @@ bool shellSortNodes(uint start, int count, inout int budget)
     for (; gap >= 1; gap /= 3) {
         for (int i = gap; i < count; ++i) {
             uvec2 f = nodes[start + uint(i)];
-            float d = fragmentDepth(f);
             int j = i;
             while (j >= gap) {
                 if (--budget < 0)
                     return false;
                 uvec2 previous = nodes[start + uint(j - gap)];
-                if (fragmentDepth(previous) <= d)
+                if (!fragmentAfter(previous, f))
                     break;
                 nodes[start + uint(j)] = previous;
                 j -= gap;

@@ -4,10 +4,23 @@
 // (counted, magenta) — never silently wrong. A pixel that lost fragments is certain only
 // when the walk found its trim fragment in front of every lost one; a pixel whose long
 // list could not be sorted within the loop budget is never certain.
-// Needs frame_counters.glsl, trim_walk.glsl and trim_output.glsl.
+// With CAPPING the cap comes first (cap.glsl). Needs frame_counters.glsl, trim_walk.glsl and
+// trim_output.glsl.
+
+#ifdef CAPPING
+#include "common/cap.glsl"
+#endif
 
 void emitWalkResult(TrimWalk walk, bool certain, int windingAtStart, bool overflowed)
 {
+#ifdef CAPPING
+    // A cap depends only on the exactly counted start of the span, never on storage.
+    if (emitCapIfShown(g_startInterior, windingAtStart, overflowed)) {
+        if (overflowed)
+            atomicCounterIncrement(u_overflowPixels);
+        return;
+    }
+#endif
     finishTrimWalk(walk, certain && !overflowed);
     certain = certain && trimWalkCertain(walk);
     if (overflowed)

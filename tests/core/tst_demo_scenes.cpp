@@ -103,7 +103,7 @@ private slots:
 void TestDemoScenes::namesAndDescriptions()
 {
     const std::vector<std::string> names = demoSceneNames();
-    QCOMPARE(names, (std::vector<std::string>{"pushed-sphere", "crossing-loop", "nested-spheres", "sphere"}));
+    QCOMPARE(names, (std::vector<std::string>{"pushed-sphere", "crossing-loop", "nested-spheres", "sphere", "csg-trio"}));
     for (const std::string& name : names) {
         QVERIFY(!demoSceneDescription(name).empty());
         QVERIFY(demoSceneDescription(name).find('\n') == std::string_view::npos);

@@ -37,10 +37,10 @@ std::optional<QString> checkMethodAgainstReference(render::TrimRenderer& rendere
     renderer.setMethod(method);
     renderer.setParameters(testCase.parameters);
     renderer.render(testCase.camera, testCase.settings, testCase.width, testCase.height);
-    return checkFrameAgainstReference(renderer, testCase, reference,
-                                      referenceTieCheck(referenceRenderer, testCase.camera, testCase.width,
-                                                        testCase.height, testCase.settings),
-                                      summary, criteria);
+    const TieCheck ties = criteria.allowTies ? referenceTieCheck(referenceRenderer, testCase.camera, testCase.width,
+                                                                 testCase.height, testCase.settings)
+                                             : TieCheck{};
+    return checkFrameAgainstReference(renderer, testCase, reference, ties, summary, criteria);
 }
 
 std::optional<QString> checkFrameAgainstReference(render::TrimRenderer& renderer, const MethodCase& testCase,

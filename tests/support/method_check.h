@@ -29,11 +29,16 @@ struct MethodCriteria {
     double minimumAgreement = 0.999;   ///< on compared pixels
     double maximumExcluded = 0.05;     ///< edge/depth/silhouette exclusions per covered pixel
     double minimumCoverage = 0.05;     ///< covered pixels per image pixel: no vacuous cases
+    /// Accept another fragment tied in depth with the reference's shown one (TieCheck).
+    /// False: ties must resolve exactly as the reference's walk order (coplanar tests).
+    bool allowTies = true;
 };
 
 /// Renders `testCase` with `method` on `renderer` (whose scene is already set) and
 /// compares with `reference` (computed for the same camera, size and settings by
-/// `referenceRenderer`). Bounded methods may differ only on pixels they flag as
+/// `referenceRenderer`). The settings may hold any inspection settings (clip sets,
+/// capping, CSG, highlights): caps, collision flags and coplanar counts are compared
+/// pixel by pixel like the shown fragment. Bounded methods may differ only on pixels they flag as
 /// overflowed; unbounded ones must flag none and lose no fragment. Returns nullopt on
 /// success, else the failure message (artifacts written). `summary` receives the
 /// comparison summary either way.

@@ -32,6 +32,11 @@ QImage trimImageToPicture(const TrimImage& image)
                 picture.setPixel(x, y, qRgb(0, 0, 0));
                 continue;
             }
+            if (p.isCap()) { // caps: light gray, one shade per plane
+                const int shade = 140 + 20 * p.capPlane;
+                picture.setPixel(x, y, qRgb(shade, shade, shade));
+                continue;
+            }
             // A cheap integer hash spreads neighbouring primitive ids over the hue circle.
             const unsigned h = unsigned(p.primitiveId) * 2654435761u + unsigned(p.objectId) * 40503u;
             const int scale = p.facing > 0 ? 255 : 150;

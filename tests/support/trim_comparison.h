@@ -35,7 +35,8 @@ struct TrimComparison : TrimAgreement {
                                                const TieCheck& ties = {});
 
 /// A false-color picture of a trim image for failure artifacts: empty pixels black,
-/// covered ones colored by primitive id, front-facing brighter than back-facing.
+/// caps gray (lighter for higher plane indices), covered ones colored by primitive id,
+/// front-facing brighter than back-facing.
 [[nodiscard]] QImage trimImageToPicture(const TrimImage& image);
 
 } // namespace trimlab::test

@@ -1,0 +1,220 @@
+// `trimlab render` with the interior-inspection flags as users call it: repeated --clip,
+// --cap, --csg, --object-rule and --highlight; bad combinations exit with 2 and one line;
+// both backends' ids and depths agree with the in-process CPU reference.
+#include "gl_test_context.h"
+#include "run_trimlab.h"
+#include "trim_comparison.h"
+
+#include "io/pfm_image.h"
+#include "scene/scene_source.h"
+#include "trim/reference_renderer.h"
+
+#include <glm/geometric.hpp>
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace trimlab;
+using trimlab::test::Run;
+using trimlab::test::runTrimlab;
+
+namespace {
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 120;
+
+// The settings the CLI arguments of kTrioView mean (the cap pattern does not change ids).
+TrimSettings trioSettings()
+{
+    TrimSettings s;
+    ClipSet clips;
+    clips.planes[0] = ClipPlane{true, {0.0, 0.0, -1.0}, 0.2};
+    clips.planes[1] = ClipPlane{true, {0.0, -1.0, 0.0}, 0.5};
+    s.setClipSet(clips);
+    s.cap.enabled = true;
+    s.csg.expression = parseCsgExpression("0 | 1 - 2", nullptr).value();
+    s.csg.objectRules[0] = StaticRule::AlternatingBorder;
+    s.rule = StaticRule::PositiveIndex;
+    s.highlight.collisions = true;
+    return s;
+}
+
+const QStringList kTrioView = {"render", "demo:csg-trio", "--rule", "positive-index", "--clip", "0,0,-1,0.2",
+                               "--clip", "0,-1,0,0.5", "--cap", "--csg", "0 | 1 - 2", "--object-rule",
+                               "0=alternating-border", "--highlight", "collisions", "--size", "160x120"};
+
+// Decodes the --ids PNG (docs/file-formats.md) into primitive and object ids.
+TrimImage decodeIds(const QImage& png)
+{
+    const QImage image = png.convertToFormat(QImage::Format_RGBA64);
+    TrimImage trim(image.width(), image.height());
+    for (int y = 0; y < image.height(); ++y) {
+        const auto* row = reinterpret_cast<const QRgba64*>(image.constScanLine(y));
+        for (int x = 0; x < image.width(); ++x) {
+            if (row[x].red() == 0)
+                continue;
+            trim.at(x, y).objectId = row[x].red() - 1;
+            trim.at(x, y).primitiveId = row[x].green() + (int(row[x].blue()) << 16);
+        }
+    }
+    return trim;
+}
+
+TrimImage idsOnly(const TrimImage& full)
+{
+    TrimImage reduced(full.width, full.height);
+    for (std::size_t i = 0; i < full.pixels.size(); ++i) {
+        reduced.pixels[i].primitiveId = full.pixels[i].primitiveId;
+        reduced.pixels[i].objectId = full.pixels[i].objectId;
+    }
+    return reduced;
+}
+
+ReferenceResult trioReference(Camera* cameraOut = nullptr)
+{
+    const LoadedScene loaded = loadScene("demo:csg-trio");
+    const Camera camera = fitCamera(loaded.scene.worldBounds(), double(kWidth) / kHeight);
+    if (cameraOut)
+        *cameraOut = camera;
+    return ReferenceRenderer(loaded.scene).render(camera, kWidth, kHeight, trioSettings());
+}
+
+} // namespace
+
+class TestInspectCli : public QObject {
+    Q_OBJECT
+private slots:
+    void badArgumentsExitWithTwo_data();
+    void badArgumentsExitWithTwo();
+    void referenceBackendWritesCapsAndCsg();
+    void gpuBackendAgreesWithReference();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestInspectCli::badArgumentsExitWithTwo_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+    const QStringList base = {"render", "demo:csg-trio", "-o", "x.png"};
+    QTest::newRow("cap without clip") << base + QStringList{"--cap"} << "--cap needs at least one --clip";
+    QStringList seven = base;
+    for (int i = 0; i < 7; ++i)
+        seven << "--clip" << "1,0,0,0";
+    QTest::newRow("seven planes") << seven << "at most 6 clipping planes";
+    QTest::newRow("bad second plane") << base + QStringList{"--clip", "1,0,0,0", "--clip", "0,0,0,1"}
+                                      << "--clip: plane 2";
+    QTest::newRow("bad csg") << base + QStringList{"--csg", "0 | | 1"} << "--csg '0 | | 1': at character 5";
+    QTest::newRow("csg id out of range") << base + QStringList{"--csg", "0 - 9"} << "object id 9 is out of range";
+    QTest::newRow("csg object missing") << QStringList{"render", "demo:sphere", "--csg", "0 & 1", "-o", "x.png",
+                                                       "--backend", "reference"}
+                                        << "--csg refers to object 1, but the scene has 1 object(s)";
+    QTest::newRow("bad object rule") << base + QStringList{"--object-rule", "1:parity"} << "--object-rule must look like";
+    QTest::newRow("unknown object rule") << base + QStringList{"--object-rule", "1=winding"} << "unknown rule 'winding'";
+    QTest::newRow("bad highlight") << base + QStringList{"--highlight", "collisions,ghosts"}
+                                   << "unknown --highlight 'ghosts'";
+    QTest::newRow("csg without a rule") << base + QStringList{"--rule", "none", "--csg", "0 | 1"}
+                                        << "--rule none has no interior";
+    QTest::newRow("bad cap pattern") << base + QStringList{"--clip", "1,0,0,0", "--cap", "--cap-pattern", "dots"}
+                                     << "unknown --cap-pattern 'dots'";
+    QTest::newRow("csg with a peeling method") << base + QStringList{"--csg", "0 | 1", "--method", "peeling-dual"}
+                                               << "--method peeling-dual cannot render --csg";
+}
+
+void TestInspectCli::badArgumentsExitWithTwo()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    const Run run = runTrimlab(arguments);
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.contains(message), qPrintable(run.err));
+    QCOMPARE(run.err.trimmed().count(QLatin1Char('\n')), 0);
+}
+
+// The reference backend is the in-process reference: identical ids, and the depth image
+// holds the caps' depths (on the clipping plane) where the ids are empty.
+void TestInspectCli::referenceBackendWritesCapsAndCsg()
+{
+    const QString ids = m_dir.filePath("trio-ids.png");
+    const QString depth = m_dir.filePath("trio.pfm");
+    const Run run = runTrimlab(kTrioView + QStringList{"--backend", "reference", "--ids", ids, "--depth", depth, "-o",
+                                                       m_dir.filePath("trio-ref.png")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains("CSG 0 | 1 - 2") && run.out.contains("2 clipping planes") && run.out.contains("capped") &&
+                 run.out.contains("cap pixels") && run.out.contains("colliding pixels"),
+             qPrintable(run.out));
+    Camera camera;
+    const ReferenceResult reference = trioReference(&camera);
+    const TrimImage fromFile = decodeIds(QImage(ids));
+    const FloatImage distances = readPfm(depth.toStdString());
+    int idMismatches = 0, depthMismatches = 0, caps = 0;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            const TrimPixel& r = reference.trim.at(x, y);
+            idMismatches += fromFile.at(x, y).primitiveId == r.primitiveId ? 0 : 1;
+            const float d = distances.values[std::size_t(y) * kWidth + x];
+            const double expected = r.covered() ? double(r.viewDepth) *
+                                                      glm::length(pixelRay(camera, kWidth, kHeight, x, y).direction)
+                                                : INFINITY;
+            depthMismatches += (r.covered() ? std::abs(d - expected) <= 1e-5 * expected : std::isinf(d)) ? 0 : 1;
+            caps += r.isCap() ? 1 : 0;
+        }
+    }
+    QCOMPARE(idMismatches, 0);
+    QCOMPARE(depthMismatches, 0);
+    QVERIFY(caps > 300);
+    QVERIFY2(run.out.contains(QStringLiteral("%1 cap pixels").arg(caps)), qPrintable(run.out));
+}
+
+void TestInspectCli::gpuBackendAgreesWithReference()
+{
+    QString why;
+    if (!test::tryCreateGlContext(&why)) {
+        if (test::glRequired())
+            QFAIL(qPrintable("TRIMLAB_REQUIRE_GL=1 but no OpenGL 4.3 context: " + why));
+        QSKIP(qPrintable("no OpenGL 4.3 context: " + why));
+    }
+    Camera camera;
+    const ReferenceResult reference = trioReference(&camera);
+    for (const char* method : {"abuffer-linked-list", "kplus-array"}) {
+        const QString ids = m_dir.filePath(QStringLiteral("%1-ids.png").arg(method));
+        const QString depth = m_dir.filePath(QStringLiteral("%1.pfm").arg(method));
+        const Run run = runTrimlab(kTrioView + QStringList{"--method", method, "--k", "32", "--ids", ids, "--depth",
+                                                           depth, "-o", m_dir.filePath(QStringLiteral("%1.png").arg(method))});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        QVERIFY2(run.out.contains("0 overflowed pixels") && run.out.contains("cap pixels"), qPrintable(run.out));
+        // The shown surfaces, by their ids (a cap has none: it is empty in the ids image).
+        const test::TrimComparison comparison =
+            test::compareTrimImages(decodeIds(QImage(ids)), idsOnly(reference.trim), reference.diagnostics);
+        qInfo("%s: %s", method, qPrintable(comparison.summary()));
+        QVERIFY(comparison.coveredPixels > 300);
+        QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05,
+                 qPrintable(comparison.summary()));
+        // The caps, by the depth image: where the reference shows a cap, the file holds the
+        // distance to the clipping plane (float rounding: 1e-4 relative) and no ids.
+        const FloatImage distances = readPfm(depth.toStdString());
+        const TrimImage fromIds = decodeIds(QImage(ids));
+        int caps = 0, capsAgreeing = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                const TrimPixel& r = reference.trim.at(x, y);
+                if (!r.isCap())
+                    continue;
+                ++caps;
+                const double expected =
+                    double(r.viewDepth) * glm::length(pixelRay(camera, kWidth, kHeight, x, y).direction);
+                const float d = distances.values[std::size_t(y) * kWidth + x];
+                capsAgreeing += fromIds.at(x, y).primitiveId < 0 && std::abs(d - expected) <= 1e-4 * expected ? 1 : 0;
+            }
+        }
+        qInfo("%s: %d of %d reference cap pixels are caps in the files", method, capsAgreeing, caps);
+        QVERIFY(caps > 1000);
+        QVERIFY2(capsAgreeing >= caps * 999 / 1000, qPrintable(QStringLiteral("%1 of %2").arg(capsAgreeing).arg(caps)));
+    }
+}
+
+QTEST_MAIN(TestInspectCli)
+#include "tst_inspect_cli.moc"

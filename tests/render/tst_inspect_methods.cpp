@@ -1,0 +1,286 @@
+// Interior inspection on the GPU against the exact CPU reference (tests/support/
+// method_check.h, >= 99.9 % of compared pixels): multi-plane clipping (a box) and capping
+// with every method, n-ary CSG (union, intersection, difference, a 3-operand tree) of
+// self-crossing demo surfaces and of a real mesh placed twice with its own transforms,
+// with capping and collision highlighting, on every buffer method; and the clear refusal
+// of the methods that cannot carry the per-object walk.
+#include "gl_test_context.h"
+#include "method_check.h"
+#include "test_paths.h"
+
+#include "scene/demo_scenes.h"
+#include "scene/scene_source.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <QtTest>
+
+#include <map>
+
+using namespace trimlab;
+using namespace trimlab::render;
+
+namespace {
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 120;
+
+CsgExpression expression(const char* text)
+{
+    std::string error;
+    const std::optional<CsgExpression> e = parseCsgExpression(text, &error);
+    if (!e)
+        qFatal("bad expression %s: %s", text, error.c_str());
+    return *e;
+}
+
+// The spot mesh twice: object 0 as loaded, object 1 turned by 70 degrees about y,
+// scaled by 0.8 and shifted, so that the two overlap in their bodies.
+Scene twoSpots()
+{
+    const Scene spot = loadScene(test::sharedDataPath("static/odedstein-spot_low_resolution.obj.gz").string()).scene;
+    Scene scene;
+    scene.objects.push_back({"spot", spot.objects[0].mesh, glm::dmat4(1.0)});
+    glm::dmat4 model = glm::translate(glm::dmat4(1.0), glm::dvec3(0.25, 0.1, 0.15));
+    model = glm::rotate(model, glm::radians(70.0), glm::dvec3(0.0, 1.0, 0.0));
+    model = glm::scale(model, glm::dvec3(0.8));
+    scene.objects.push_back({"spot turned", spot.objects[0].mesh, model});
+    return scene;
+}
+
+Scene sceneNamed(const std::string& name)
+{
+    if (name == "two-spots")
+        return twoSpots();
+    return *makeDemoScene(name);
+}
+
+// The settings of one case, on `bounds` (planes through the scene's centre).
+TrimSettings caseSettings(const QString& which, const Bounds& bounds)
+{
+    TrimSettings s;
+    const glm::dvec3 c = bounds.center();
+    const double r = bounds.radius();
+    const ClipPlane tilted{true, glm::normalize(glm::dvec3(0.3, -0.2, -1.0)), 0.0};
+    auto through = [&](ClipPlane p, double shift) {
+        p.offset = -glm::dot(p.normal, c) + shift * r;
+        return p;
+    };
+    const ClipSet box = ClipSet::box(c - glm::dvec3(0.45 * r, 0.5 * r, 0.6 * r), c + glm::dvec3(0.35 * r, 0.4 * r, 0.1 * r));
+    if (which == "box") {
+        s.setClipSet(box);
+    } else if (which == "box capped") {
+        s.setClipSet(box);
+        s.cap.enabled = true;
+    } else if (which == "plane capped") {
+        s.clip = through(tilted, 0.05);
+        s.cap.enabled = true;
+    } else if (which == "union capped") {
+        s.csg.expression = expression("0 | 1");
+        s.clip = through(tilted, 0.0);
+        s.cap.enabled = true;
+    } else if (which == "intersection") {
+        s.csg.expression = expression("0 & 1");
+        s.rule = StaticRule::PositiveIndex;
+    } else if (which == "difference capped") {
+        s.csg.expression = expression("0 - 1");
+        s.clip = through(tilted, -0.1);
+        s.cap.enabled = true;
+    } else if (which == "tree box capped") {
+        s.csg.expression = expression("(0 | 2) - 1");
+        s.setClipSet(box);
+        s.cap.enabled = true;
+        s.highlight.collisions = true;
+    } else if (which == "tree per-object rules") {
+        s.csg.expression = expression("0 & 1 | 2");
+        s.csg.objectRules[0] = StaticRule::Parity;
+        s.csg.objectRules[2] = StaticRule::PositiveIndex;
+        s.clip = through(tilted, 0.1);
+    } else if (which == "collisions") {
+        s.rule = StaticRule::Parity;
+        s.clip = through(tilted, 0.0);
+        s.highlight.collisions = true;
+    }
+    return s;
+}
+
+} // namespace
+
+Q_DECLARE_METATYPE(trimlab::render::FragmentMethodKind)
+
+class TestInspectMethods : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void agreesWithReference_data();
+    void agreesWithReference();
+    void peelingMethodsRefuseThePerObjectWalk();
+    void badExpressionsAreRefused();
+    void framesCountCapsAndCollisions();
+
+private:
+    struct Prepared {
+        Scene scene;
+        std::unique_ptr<ReferenceRenderer> reference;
+    };
+    Prepared& prepare(const std::string& name);
+
+    std::unique_ptr<OffscreenGlContext> m_context;
+    std::unique_ptr<TrimRenderer> m_renderer;
+    std::map<std::string, Prepared> m_scenes;
+    std::map<std::string, ReferenceResult> m_results;
+    std::string m_uploaded;
+};
+
+void TestInspectMethods::initTestCase()
+{
+    TRIMLAB_INIT_GL_CONTEXT(m_context);
+    m_renderer = std::make_unique<TrimRenderer>(m_context->context());
+}
+
+void TestInspectMethods::agreesWithReference_data()
+{
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<QString>("settings");
+    QTest::addColumn<FragmentMethodKind>("method");
+    struct Case {
+        const char* scene;
+        const char* settings;
+        bool perObject; // needs a buffer method
+    };
+    const Case cases[] = {
+        {"pushed-sphere", "box", false},
+        {"pushed-sphere", "box capped", false},
+        {"crossing-loop", "plane capped", false},
+        {"csg-trio", "union capped", true},
+        {"csg-trio", "intersection", true},
+        {"csg-trio", "difference capped", true},
+        {"csg-trio", "tree box capped", true},
+        {"csg-trio", "tree per-object rules", true},
+        {"csg-trio", "collisions", true},
+        {"two-spots", "difference capped", true},
+        {"two-spots", "intersection", true},
+    };
+    for (const Case& c : cases)
+        for (const MethodInfo& info : fragmentMethods())
+            if (info.inspection || !c.perObject)
+                QTest::newRow(qPrintable(QString("%1 %2 %3").arg(QString::fromLatin1(info.id.data()), c.scene, c.settings)))
+                    << QString(c.scene) << QString(c.settings) << info.kind;
+}
+
+TestInspectMethods::Prepared& TestInspectMethods::prepare(const std::string& name)
+{
+    auto it = m_scenes.find(name);
+    if (it == m_scenes.end()) {
+        Prepared prepared{sceneNamed(name), nullptr};
+        prepared.reference = std::make_unique<ReferenceRenderer>(prepared.scene);
+        it = m_scenes.emplace(name, std::move(prepared)).first;
+    }
+    if (m_uploaded != name) {
+        m_renderer->setScene(it->second.scene);
+        m_uploaded = name;
+    }
+    return it->second;
+}
+
+void TestInspectMethods::agreesWithReference()
+{
+    QFETCH(QString, scene);
+    QFETCH(QString, settings);
+    QFETCH(FragmentMethodKind, method);
+    Prepared& prepared = prepare(scene.toStdString());
+    const Bounds bounds = prepared.scene.worldBounds();
+    Camera camera = fitCamera(bounds, double(kWidth) / kHeight);
+    if (settings == "intersection") { // the common part is small: move closer to it
+        camera.eye = camera.target + 0.6 * (camera.eye - camera.target);
+        camera = withDepthRange(camera, bounds);
+    }
+    test::MethodCase testCase{QTest::currentDataTag(), camera, {}, {}, kWidth, kHeight};
+    testCase.settings = caseSettings(settings, bounds);
+    testCase.parameters.k = 32; // the nested sheets of csg-trio exceed 16 in places
+    const std::string key = scene.toStdString() + "/" + settings.toStdString();
+    auto result = m_results.find(key);
+    if (result == m_results.end())
+        result = m_results
+                     .emplace(key, prepared.reference->render(testCase.camera, kWidth, kHeight, testCase.settings))
+                     .first;
+    QString summary;
+    const auto failure = test::checkMethodAgainstReference(*m_renderer, method, testCase, *prepared.reference,
+                                                           result->second, &summary);
+    qInfo("%s; %llu caps, %llu collisions", qPrintable(summary),
+          static_cast<unsigned long long>(m_renderer->lastStats().counts.capPixels),
+          static_cast<unsigned long long>(m_renderer->lastStats().counts.collisionPixels));
+    QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
+}
+
+void TestInspectMethods::peelingMethodsRefuseThePerObjectWalk()
+{
+    prepare("csg-trio");
+    const Camera camera = fitCamera(m_scenes.at("csg-trio").scene.worldBounds(), double(kWidth) / kHeight);
+    TrimSettings settings;
+    settings.csg.expression = expression("0 | 1");
+    for (FragmentMethodKind kind : {FragmentMethodKind::PeelingF2B, FragmentMethodKind::PeelingDual,
+                                    FragmentMethodKind::TwoPass}) {
+        m_renderer->setMethod(kind);
+        const std::string name(methodInfo(kind).displayName);
+        try {
+            m_renderer->render(camera, settings, kWidth, kHeight);
+            QFAIL(qPrintable(QString::fromStdString(name) + " rendered CSG instead of refusing it"));
+        } catch (const std::invalid_argument& e) {
+            const std::string message = e.what();
+            QVERIFY2(message.find(name) != std::string::npos && message.find("CSG") != std::string::npos &&
+                         message.find("buffer method") != std::string::npos,
+                     e.what());
+        }
+    }
+    // The coplanar highlight is refused alike; capping is not.
+    m_renderer->setMethod(FragmentMethodKind::PeelingF2B);
+    settings = TrimSettings{};
+    settings.highlight.coplanar = true;
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, m_renderer->render(camera, settings, kWidth, kHeight));
+    settings = TrimSettings{};
+    settings.clip = ClipPlane{true, {0.0, 0.0, -1.0}, 0.0};
+    settings.cap.enabled = true;
+    m_renderer->render(camera, settings, kWidth, kHeight);
+    QVERIFY(m_renderer->lastStats().counts.capPixels > 0);
+}
+
+void TestInspectMethods::badExpressionsAreRefused()
+{
+    prepare("pushed-sphere"); // one object
+    const Camera camera = fitCamera(m_scenes.at("pushed-sphere").scene.worldBounds(), double(kWidth) / kHeight);
+    m_renderer->setMethod(FragmentMethodKind::KPlusArray);
+    TrimSettings settings;
+    settings.csg.expression = expression("0 - 2");
+    try {
+        m_renderer->render(camera, settings, kWidth, kHeight);
+        QFAIL("an expression naming a missing object rendered");
+    } catch (const std::invalid_argument& e) {
+        QVERIFY2(std::string(e.what()).find("object 2") != std::string::npos, e.what());
+    }
+}
+
+void TestInspectMethods::framesCountCapsAndCollisions()
+{
+    // The frame counters the status bar shows equal the counts of the read-back image.
+    Prepared& prepared = prepare("csg-trio");
+    const Bounds bounds = prepared.scene.worldBounds();
+    const Camera camera = fitCamera(bounds, double(kWidth) / kHeight);
+    const TrimSettings settings = caseSettings("tree box capped", bounds);
+    m_renderer->setMethod(FragmentMethodKind::ABufferLinkedList);
+    m_renderer->render(camera, settings, kWidth, kHeight);
+    const TrimImage image = m_renderer->readTrimImage();
+    std::uint64_t caps = 0, collisions = 0;
+    for (const TrimPixel& p : image.pixels) {
+        caps += p.isCap() ? 1 : 0;
+        collisions += p.collision ? 1 : 0;
+    }
+    QVERIFY(caps > 100);
+    QVERIFY(collisions > 20);
+    QCOMPARE(m_renderer->lastStats().counts.capPixels, caps);
+    QCOMPARE(m_renderer->lastStats().counts.collisionPixels, collisions);
+}
+
+QTEST_MAIN(TestInspectMethods)
+#include "tst_inspect_methods.moc"
