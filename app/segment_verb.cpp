@@ -1,6 +1,7 @@
 #include "segment_verb.h"
 
 #include "cli_messages.h"
+#include "option_values.h"
 
 #include "animation/animation_loader.h"
 #include "animation/animation_segmenter.h"
@@ -51,29 +52,6 @@ void addSegmentOptions(QCommandLineParser& parser)
     parser.addOption(QCommandLineOption({QStringLiteral("help"), QStringLiteral("?")}, QStringLiteral("Displays help.")));
 }
 
-std::optional<QString> parseInteger(const QCommandLineParser& parser, const QString& name, long long lo, long long hi,
-                                    long long& out)
-{
-    if (!parser.isSet(name))
-        return std::nullopt;
-    bool ok = false;
-    out = parser.value(name).toLongLong(&ok);
-    if (!ok || out < lo || out > hi)
-        return QStringLiteral("--%1 must be an integer from %2 to %3, got '%4'").arg(name).arg(lo).arg(hi).arg(parser.value(name));
-    return std::nullopt;
-}
-
-std::optional<QString> parseReal(const QCommandLineParser& parser, const QString& name, double lo, double hi, double& out)
-{
-    if (!parser.isSet(name))
-        return std::nullopt;
-    bool ok = false;
-    out = parser.value(name).toDouble(&ok);
-    if (!ok || !std::isfinite(out) || out < lo || out > hi)
-        return QStringLiteral("--%1 must be a number from %2 to %3, got '%4'").arg(name).arg(lo).arg(hi).arg(parser.value(name));
-    return std::nullopt;
-}
-
 std::optional<QString> parseChoices(const QCommandLineParser& parser, SegmentOptions& options)
 {
     const QString feature = parser.value("feature");
@@ -119,12 +97,12 @@ std::optional<QString> parseNumbers(const QCommandLineParser& parser, SegmentOpt
     long long restPose = 0;
     long long animation = 0;
     long long threads = 0;
-    for (const auto& error : {parseInteger(parser, "clusters", 1, 100000, clusters),
-                              parseInteger(parser, "rest-pose", 0, 1000000000, restPose),
-                              parseInteger(parser, "animation", 0, 1000000, animation),
-                              parseInteger(parser, "threads", 0, 1024, threads),
-                              parseReal(parser, "h", 0.0, 1.0, options.h),
-                              parseReal(parser, "fps", 1e-3, 10000.0, options.load.gltf.fps)}) {
+    for (const auto& error : {parseIntegerFlag(parser, "clusters", 1, 100000, clusters),
+                              parseIntegerFlag(parser, "rest-pose", 0, 1000000000, restPose),
+                              parseIntegerFlag(parser, "animation", 0, 1000000, animation),
+                              parseIntegerFlag(parser, "threads", 0, 1024, threads),
+                              parseRealFlag(parser, "h", 0.0, 1.0, options.h),
+                              parseRealFlag(parser, "fps", 1e-3, 10000.0, options.load.gltf.fps)}) {
         if (error)
             return error;
     }

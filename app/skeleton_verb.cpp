@@ -1,6 +1,7 @@
 #include "skeleton_verb.h"
 
 #include "cli_messages.h"
+#include "option_values.h"
 #include "terminal_progress.h"
 
 #include "mesh/loop_subdivision.h"
@@ -60,23 +61,11 @@ void addSkeletonOptions(QCommandLineParser& parser)
     parser.addHelpOption();
 }
 
-std::optional<QString> parseInteger(const QCommandLineParser& parser, const QString& name, long long lo, long long hi,
-                                    long long& out)
-{
-    if (!parser.isSet(name))
-        return std::nullopt;
-    bool ok = false;
-    out = parser.value(name).toLongLong(&ok);
-    if (!ok || out < lo || out > hi)
-        return QStringLiteral("--%1 must be an integer from %2 to %3, got '%4'").arg(name).arg(lo).arg(hi).arg(parser.value(name));
-    return std::nullopt;
-}
-
 std::optional<QString> parseNumbers(const QCommandLineParser& parser, SkeletonVerbOptions& o)
 {
     long long nodes = 30, root = -1, levels = 0;
-    for (const auto& error : {parseInteger(parser, "nodes", 2, 10000, nodes), parseInteger(parser, "root", 0, 9999, root),
-                              parseInteger(parser, "loop-subdivide", 0, 6, levels)}) {
+    for (const auto& error : {parseIntegerFlag(parser, "nodes", 2, 10000, nodes), parseIntegerFlag(parser, "root", 0, 9999, root),
+                              parseIntegerFlag(parser, "loop-subdivide", 0, 6, levels)}) {
         if (error)
             return error;
     }

@@ -1,6 +1,7 @@
 #include "skin_verb.h"
 
 #include "cli_messages.h"
+#include "option_values.h"
 #include "terminal_progress.h"
 
 #include "animation/animation_loader.h"
@@ -59,24 +60,12 @@ void addSkinOptions(QCommandLineParser& parser)
     parser.addHelpOption();
 }
 
-std::optional<QString> parseInteger(const QCommandLineParser& parser, const QString& name, long long lo, long long hi,
-                                    long long& out)
-{
-    if (!parser.isSet(name))
-        return std::nullopt;
-    bool ok = false;
-    out = parser.value(name).toLongLong(&ok);
-    if (!ok || out < lo || out > hi)
-        return QStringLiteral("--%1 must be an integer from %2 to %3, got '%4'").arg(name).arg(lo).arg(hi).arg(parser.value(name));
-    return std::nullopt;
-}
-
 std::optional<QString> parseNumbers(const QCommandLineParser& parser, SkinOptions& options)
 {
     long long bones = 0, restPose = 0, threads = 0;
-    for (const auto& error : {parseInteger(parser, "bones", 1, 65535, bones),
-                              parseInteger(parser, "rest-pose", 0, 1000000000, restPose),
-                              parseInteger(parser, "threads", 0, 1024, threads)}) {
+    for (const auto& error : {parseIntegerFlag(parser, "bones", 1, 65535, bones),
+                              parseIntegerFlag(parser, "rest-pose", 0, 1000000000, restPose),
+                              parseIntegerFlag(parser, "threads", 0, 1024, threads)}) {
         if (error)
             return error;
     }

@@ -1,7 +1,9 @@
 // Writes the seed inputs that tests/data cannot provide, into the folder given as the
-// only argument: small valid .trimlab projects (project/) and PFM images (pfm/). Built in
+// only argument: small valid .trimlab projects (project/), PFM images (pfm/) and skeleton
+// files (skeleton_json/). Built in
 // the fuzz tree; scripts/fuzz runs it before fuzzing.
 #include "io/pfm_image.h"
+#include "skeleton/skeleton_json.h"
 #include "timeline/project_file.h"
 
 #include <cstdio>
@@ -60,6 +62,7 @@ int main(int argc, char** argv)
     const std::filesystem::path out = argv[1];
     std::filesystem::create_directories(out / "project");
     std::filesystem::create_directories(out / "pfm");
+    std::filesystem::create_directories(out / "skeleton_json");
 
     timeline::Timeline empty(grid(2));
     writeText(out / "project" / "empty_history.trimlab", timeline::projectJson(empty));
@@ -76,5 +79,19 @@ int main(int argc, char** argv)
 
     FloatImage image{3, 2, {0.5f, 1.0f, 2.0f, -1.0f, 0.0f, std::numeric_limits<float>::infinity()}};
     writePfm(out / "pfm" / "depth_3x2.pfm", image);
+
+    // A three-joint chain with its curve skeleton: every section of the format.
+    SkeletonRig rig;
+    rig.joints = {{0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 2.0, 0.5}};
+    rig.parent = {-1, 0, 1};
+    rig.root = 0;
+    rig.bones = {{0, 1, -1}, {1, 2, 0}};
+    rig.vertexJoint = {0, 1, 1, 2};
+    CurveSkeleton curve;
+    curve.nodes = {{0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 2.0, 0.5}};
+    curve.edges = {{0, 1}, {1, 2}};
+    curve.vertexNode = {0, 1, 1, 2};
+    writeText(out / "skeleton_json" / "chain.json", skeletonJson(rig, &curve));
+    writeText(out / "skeleton_json" / "chain_without_curve.json", skeletonJson(rig));
     return 0;
 }

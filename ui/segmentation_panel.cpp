@@ -1,5 +1,7 @@
 #include "segmentation_panel.h"
 
+#include "run_cancel_row.h"
+
 #include "background_task.h"
 #include "loaded_animation.h"
 #include "segment_stream.h"
@@ -80,12 +82,7 @@ QWidget* SegmentationPanel::createRunRow()
     m_cancel->setObjectName(QStringLiteral("cancelSegmentationButton"));
     connect(m_run, &QPushButton::clicked, this, &SegmentationPanel::run);
     connect(m_cancel, &QPushButton::clicked, this, &SegmentationPanel::cancel);
-    auto* row = new QWidget;
-    auto* layout = new QHBoxLayout(row);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_run);
-    layout->addWidget(m_cancel);
-    return row;
+    return runCancelRow(m_run, m_cancel);
 }
 
 QWidget* SegmentationPanel::createCleaningGroup()

@@ -1,5 +1,7 @@
 #include "skeleton_panel.h"
 
+#include "run_cancel_row.h"
+
 #include "background_task.h"
 #include "heat_map_legend.h"
 #include "skeleton_overlay.h"
@@ -117,12 +119,7 @@ QWidget* SkeletonPanel::createRunRow()
     m_cancel->setObjectName(QStringLiteral("cancelSkeletonButton"));
     connect(m_run, &QPushButton::clicked, this, &SkeletonPanel::run);
     connect(m_cancel, &QPushButton::clicked, this, &SkeletonPanel::cancel);
-    auto* row = new QWidget;
-    auto* layout = new QHBoxLayout(row);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_run);
-    layout->addWidget(m_cancel);
-    return row;
+    return runCancelRow(m_run, m_cancel);
 }
 
 QWidget* SkeletonPanel::createViewGroup()

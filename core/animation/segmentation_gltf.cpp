@@ -53,21 +53,8 @@ tinygltf::Model buildModel(const TriangleMesh& mesh, const VertexLabeling& segme
     const int labelView = addGltfBufferView(model, labels.data(), labels.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
     primitive.attributes["_SEGMENT"] =
         addGltfAccessor(model, labelView, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, labels.size());
-    const int indexView = addGltfBufferView(model, mesh.triangles.data(), mesh.triangles.size() * sizeof(glm::uvec3),
-                                  TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    primitive.indices = addGltfAccessor(model, indexView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
-                                    3 * mesh.triangles.size());
-    tinygltf::Mesh gltfMesh;
-    gltfMesh.name = "segmentation";
-    gltfMesh.primitives.push_back(primitive);
-    model.meshes.push_back(gltfMesh);
-    tinygltf::Node node;
-    node.mesh = 0;
-    model.nodes.push_back(node);
-    tinygltf::Scene scene;
-    scene.nodes = {0};
-    model.scenes.push_back(scene);
-    model.defaultScene = 0;
+    primitive.indices = addGltfTriangleIndices(model, mesh.triangles);
+    addGltfSingleMeshScene(model, primitive, "segmentation");
     return model;
 }
 

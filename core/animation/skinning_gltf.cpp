@@ -103,23 +103,8 @@ tinygltf::Model meshModel(const SkinningModel& skinning)
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
     primitive.attributes["POSITION"] = skinning_gltf::addVec3Accessor(
         model, skinning_gltf::toFloat(skinning.restPositions), TINYGLTF_TARGET_ARRAY_BUFFER, true);
-    const int indexView = addGltfBufferView(model, skinning.triangles.data(),
-                                            skinning.triangles.size() * sizeof(glm::uvec3),
-                                            TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    primitive.indices = addGltfAccessor(model, indexView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
-                                        3 * skinning.triangles.size());
-    tinygltf::Mesh mesh;
-    mesh.name = "skinned mesh";
-    mesh.primitives.push_back(primitive);
-    model.meshes.push_back(mesh);
-    tinygltf::Node node;
-    node.name = "skinned mesh";
-    node.mesh = 0;
-    model.nodes.push_back(node);
-    tinygltf::Scene scene;
-    scene.nodes = {0};
-    model.scenes.push_back(scene);
-    model.defaultScene = 0;
+    primitive.indices = addGltfTriangleIndices(model, skinning.triangles);
+    addGltfSingleMeshScene(model, primitive, "skinned mesh");
     return model;
 }
 

@@ -136,23 +136,8 @@ tinygltf::Model meshModel(const TriangleMesh& mesh)
         skinning_gltf::addVec3Accessor(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER, true);
     primitive.attributes["NORMAL"] =
         skinning_gltf::addVec3Accessor(model, exportNormals(mesh), TINYGLTF_TARGET_ARRAY_BUFFER, false);
-    const int indexView = addGltfBufferView(model, mesh.triangles.data(), mesh.triangles.size() * sizeof(glm::uvec3),
-                                            TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    primitive.indices = addGltfAccessor(model, indexView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
-                                        3 * mesh.triangles.size());
-    tinygltf::Mesh gltfMesh;
-    gltfMesh.name = "mesh";
-    gltfMesh.primitives.push_back(primitive);
-    model.meshes.push_back(gltfMesh);
-    tinygltf::Node node;
-    node.name = "mesh";
-    node.mesh = 0;
-    node.skin = 0;
-    model.nodes.push_back(node);
-    tinygltf::Scene scene;
-    scene.nodes = {0};
-    model.scenes.push_back(scene);
-    model.defaultScene = 0;
+    primitive.indices = addGltfTriangleIndices(model, mesh.triangles);
+    addGltfSingleMeshScene(model, primitive, "mesh", 0);
     return model;
 }
 

@@ -43,13 +43,6 @@ int addBasePositions(tinygltf::Model& model, const std::vector<glm::vec3>& posit
     return accessor;
 }
 
-int addIndices(tinygltf::Model& model, const std::vector<glm::uvec3>& triangles)
-{
-    const int view = addGltfBufferView(model, triangles.data(), triangles.size() * sizeof(glm::uvec3),
-                             TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    return addGltfAccessor(model, view, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, 3 * triangles.size());
-}
-
 // A morph target POSITION accessor: `displacement` (#V, mostly zero) stored sparsely.
 int addDisplacements(tinygltf::Model& model, const std::vector<glm::vec3>& displacement)
 {
@@ -145,7 +138,7 @@ tinygltf::Model buildModel(const Timeline& timeline, double fps)
     tinygltf::Primitive primitive;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
     primitive.attributes["POSITION"] = addBasePositions(model, timeline.base().positions);
-    primitive.indices = addIndices(model, timeline.base().triangles);
+    primitive.indices = addGltfTriangleIndices(model, timeline.base().triangles);
     tinygltf::Mesh mesh;
     mesh.name = "timeline";
     addMorphTargets(model, timeline, primitive, mesh);

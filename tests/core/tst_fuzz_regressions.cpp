@@ -16,6 +16,7 @@
 #include "timeline/file_bytes.h"
 #include "timeline/project_file.h"
 #include "timeline/stroke_script.h"
+#include "skeleton/skeleton_json.h"
 #include "trim/clip_plane.h"
 #include "view/camera.h"
 
@@ -110,6 +111,7 @@ const std::map<std::string, std::function<void(const std::filesystem::path&)>>& 
         {"project", [](const auto& p) { (void)timeline::parseProject(readAll(p), p.string()); }},
         {"stroke_script", [](const auto& p) { (void)timeline::parseStrokeScript(readAll(p), p.string()); }},
         {"pfm", [](const auto& p) { (void)readPfm(p); }},
+        {"skeleton_json", [](const auto& p) { (void)parseSkeletonJson(readAll(p), p.string()); }},
         {"cli_values", [](const auto& p) {
              const std::string text = readAll(p);
              std::string error;
@@ -128,6 +130,8 @@ bool isTypedError(const std::exception& error, const std::string& target)
         return dynamic_cast<const timeline::StrokeScriptError*>(&error) != nullptr;
     if (target == "pfm")
         return dynamic_cast<const std::runtime_error*>(&error) != nullptr;
+    if (target == "skeleton_json")
+        return dynamic_cast<const SkeletonFileError*>(&error) != nullptr;
     if (target == "cli_values")
         return false;
     return dynamic_cast<const MeshLoadError*>(&error) != nullptr;

@@ -1,0 +1,14 @@
+#pragma once
+/// \file
+/// The Run / Cancel row of the panels that start long work in the background
+/// (segmentation, skeleton): two buttons side by side, no margins.
+
+class QPushButton;
+class QWidget;
+
+namespace trimlab::ui {
+
+/// A new row widget holding `run` and `cancel` (which it adopts).
+[[nodiscard]] QWidget* runCancelRow(QPushButton* run, QPushButton* cancel);
+
+} // namespace trimlab::ui
