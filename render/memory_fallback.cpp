@@ -2,7 +2,8 @@
 
 namespace trimlab::render {
 
-std::optional<FragmentMethodKind> memoryFallbackAfter(FragmentMethodKind failed, bool dynamicRules)
+std::optional<FragmentMethodKind> memoryFallbackAfter(FragmentMethodKind failed, bool dynamicRules,
+                                                     bool needsInspection)
 {
     switch (failed) {
     case FragmentMethodKind::KPlusArray:
@@ -13,7 +14,7 @@ std::optional<FragmentMethodKind> memoryFallbackAfter(FragmentMethodKind failed,
     case FragmentMethodKind::KPlusSBuffer:
     case FragmentMethodKind::ABufferLinkedList:
     case FragmentMethodKind::TwoPass:
-        if (dynamicRules)
+        if (dynamicRules || needsInspection)
             return std::nullopt;
         return FragmentMethodKind::PeelingF2B;
     case FragmentMethodKind::PeelingF2B:

@@ -10,7 +10,10 @@
 ///   back peeling: a few per-pixel images, one geometry pass per layer (exact, slower);
 /// - peeling → nothing on the GPU: the caller shows the CPU reference for a still image.
 /// Under the dynamic rules peeling cannot run (it never holds a pixel's reference and
-/// current fragments together), so the S-buffer is the last GPU step there.
+/// current fragments together), so the S-buffer is the last GPU step there. Likewise when
+/// the settings need a method that walks a pixel's whole list in one pass (CSG, the
+/// highlights: MethodInfo::inspection): peeling would refuse them, so the CPU still,
+/// which does everything, follows the S-buffer.
 
 #include "mfr/fragment_method.h"
 
@@ -19,6 +22,9 @@
 namespace trimlab::render {
 
 /// The method to try after `failed` ran out of memory; nullopt: no GPU method is left.
-[[nodiscard]] std::optional<FragmentMethodKind> memoryFallbackAfter(FragmentMethodKind failed, bool dynamicRules);
+/// `needsInspection`: the frame's settings need a MethodInfo::inspection method
+/// (needsInspectionMethod in trim_renderer.h).
+[[nodiscard]] std::optional<FragmentMethodKind> memoryFallbackAfter(FragmentMethodKind failed, bool dynamicRules,
+                                                                    bool needsInspection = false);
 
 } // namespace trimlab::render

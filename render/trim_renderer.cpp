@@ -51,12 +51,21 @@ std::string inspectionFeatures(const TrimSettings& settings)
     return features;
 }
 
+} // namespace
+
+bool needsInspectionMethod(const TrimSettings& settings)
+{
+    return settings.perObjectWinding() || settings.highlight.coplanar;
+}
+
+namespace {
+
 // Throws std::invalid_argument when `settings` ask for something the method, the mode or
 // the scene cannot do, naming what to pick instead.
 void checkInspection(const MethodInfo& info, const TrimMode& mode, const TrimSettings& settings,
                      std::size_t objectCount)
 {
-    const bool needsWalk = settings.perObjectWinding() || settings.highlight.coplanar;
+    const bool needsWalk = needsInspectionMethod(settings);
     if (mode.dynamic && (needsWalk || settings.capping()))
         throw std::invalid_argument("Capping, CSG and highlighting are not available with the dynamic rules; switch the "
                                     "classification to static to use them.");

@@ -54,6 +54,11 @@ struct TrimMode {
     bool referenceIsBase = true;
 };
 
+/// The settings need a method that walks all of a pixel's fragments in one pass
+/// (MethodInfo::inspection): per-object windings (CSG, collision highlighting) or coplanar
+/// counts. Other methods refuse such settings with std::invalid_argument.
+[[nodiscard]] bool needsInspectionMethod(const TrimSettings& settings);
+
 class TrimRenderer {
 public:
     /// `context` must be current. Throws GlUnavailableError if it lacks OpenGL 4.3

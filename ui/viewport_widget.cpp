@@ -494,7 +494,7 @@ void ViewportWidget::renderWithFallbacks()
 bool ViewportWidget::fallBackFrom(const QString& reason)
 {
     const bool dynamic = m_chain && m_settings.trimEnabled;
-    const std::optional<render::FragmentMethodKind> next = render::memoryFallbackAfter(effectiveMethod(), dynamic);
+    const std::optional<render::FragmentMethodKind> next = render::memoryFallbackAfter(effectiveMethod(), dynamic, render::needsInspectionMethod(m_settings));
     m_lastFrame.reset();
     if (next) {
         m_fallbackMethod = next;

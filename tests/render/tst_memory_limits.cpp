@@ -11,6 +11,7 @@
 #include "trim_renderer.h"
 
 #include "scene/demo_scenes.h"
+#include "trim/csg_expression.h"
 #include "trim/reference_renderer.h"
 
 #include <QtTest>
@@ -142,21 +143,32 @@ void TestMemoryLimits::framesBeyondTheTextureLimitAreRefused()
     QCOMPARE(memoryErrorOf(*m_renderer, m_camera, TrimSettings{}, kWidth, kHeight), QString());
 }
 
-// From every method the chain ends (no cycles), never passes a method the mode cannot
-// run, and each step holds no more memory at this view than the one before.
+// From every method the chain ends (no cycles), never passes a method the mode or the
+// settings cannot run (CSG and the highlights need an inspection method), and each step
+// holds no more memory at this view than the one before.
 void TestMemoryLimits::fallbackChainEndsAndSavesMemory()
 {
     for (const bool dynamic : {false, true}) {
-        for (const MethodInfo& start : fragmentMethods()) {
-            int steps = 0;
-            for (auto method = memoryFallbackAfter(start.kind, dynamic); method;
-                 method = memoryFallbackAfter(*method, dynamic)) {
-                QVERIFY2(++steps <= 3, start.id.data());
-                if (dynamic)
-                    QVERIFY2(methodInfo(*method).dynamicRules, methodInfo(*method).id.data());
+        for (const bool inspection : {false, true}) {
+            for (const MethodInfo& start : fragmentMethods()) {
+                int steps = 0;
+                for (auto method = memoryFallbackAfter(start.kind, dynamic, inspection); method;
+                     method = memoryFallbackAfter(*method, dynamic, inspection)) {
+                    QVERIFY2(++steps <= 3, start.id.data());
+                    if (dynamic)
+                        QVERIFY2(methodInfo(*method).dynamicRules, methodInfo(*method).id.data());
+                    if (inspection)
+                        QVERIFY2(methodInfo(*method).inspection, methodInfo(*method).id.data());
+                }
             }
         }
     }
+    TrimSettings csg;
+    csg.csg.expression = *parseCsgExpression("0 - 1", nullptr);
+    QVERIFY(needsInspectionMethod(csg));
+    QVERIFY(!needsInspectionMethod(TrimSettings{}));
+    // With CSG on, the S-buffer's fallback is the CPU still, not peeling's refusal.
+    QCOMPARE(memoryFallbackAfter(FragmentMethodKind::SBuffer, false, true), std::nullopt);
     // The bounded arrays fall back to the S-buffer, which holds exactly the fragments.
     m_renderer->setMethod(FragmentMethodKind::KPlusArray);
     m_renderer->setParameters(MethodParameters{});
