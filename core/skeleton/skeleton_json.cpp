@@ -186,12 +186,6 @@ SkeletonDocument readDocument(const json& document)
 
 } // namespace
 
-SkeletonFileError::SkeletonFileError(std::string file, std::string where, std::string reason)
-    : std::runtime_error(file + ": " + (where.empty() ? std::string() : where + ": ") + reason),
-      m_file(std::move(file)), m_where(std::move(where)), m_reason(std::move(reason))
-{
-}
-
 std::string skeletonJson(const SkeletonRig& rig, const CurveSkeleton* curve)
 {
     requireValidRig(rig, "skeletonJson");

@@ -19,6 +19,7 @@
 ///     }
 
 #include "skeleton/skeleton.h"
+#include "util/document_file_error.h"
 
 #include <filesystem>
 #include <optional>
@@ -36,18 +37,9 @@ inline constexpr std::size_t kMaxSkeletonFileBytes = std::size_t(1) << 30;
 /// A skeleton file could not be read. `what()` reads `FILE: [WHERE: ]REASON`, with WHERE
 /// a JSON path such as "bones[3].parent_bone" or "curve_skeleton.edges[7]", e.g.
 /// `rig.json: bones[3].head: joint 5 is not the parent of tail 4`.
-class SkeletonFileError : public std::runtime_error {
+class SkeletonFileError : public DocumentFileError {
 public:
-    SkeletonFileError(std::string file, std::string where, std::string reason);
-
-    [[nodiscard]] const std::string& file() const noexcept { return m_file; }
-    [[nodiscard]] const std::string& where() const noexcept { return m_where; }
-    [[nodiscard]] const std::string& reason() const noexcept { return m_reason; }
-
-private:
-    std::string m_file;
-    std::string m_where;
-    std::string m_reason;
+    using DocumentFileError::DocumentFileError;
 };
 
 struct SkeletonDocument {

@@ -2,8 +2,7 @@
 /// \file
 /// The typed exception project file loading throws: which file, where in it, and why.
 
-#include <stdexcept>
-#include <string>
+#include "util/document_file_error.h"
 
 namespace trimlab::timeline {
 
@@ -12,19 +11,10 @@ namespace trimlab::timeline {
 /// damaged)`, `scene.trimlab: truncated: the JSON document ends early (at byte 812 of
 /// 812)` or `old.trimlab: version 7 is newer than this TrimLab (1)`. Thrown for every
 /// problem caused by file contents or by reading the file; never for programmer errors.
-class ProjectFileError : public std::runtime_error {
+class ProjectFileError : public DocumentFileError {
 public:
     /// `where` is a JSON path such as "frames[3].after" or "" for the file as a whole.
-    ProjectFileError(std::string file, std::string where, std::string reason);
-
-    [[nodiscard]] const std::string& file() const noexcept { return m_file; }
-    [[nodiscard]] const std::string& where() const noexcept { return m_where; }
-    [[nodiscard]] const std::string& reason() const noexcept { return m_reason; }
-
-private:
-    std::string m_file;
-    std::string m_where;
-    std::string m_reason;
+    using DocumentFileError::DocumentFileError;
 };
 
 } // namespace trimlab::timeline

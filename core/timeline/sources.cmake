@@ -11,7 +11,6 @@ target_sources(trimlab_core PRIVATE
   timeline/json_fields.cpp
   timeline/morph_gltf.cpp
   timeline/project_file.cpp
-  timeline/project_file_error.cpp
   timeline/stale_temporaries.cpp
   timeline/stroke_json.cpp
   timeline/stroke_replay.cpp

@@ -1,6 +1,6 @@
-#include "timeline/project_file_error.h"
+#include "util/document_file_error.h"
 
-namespace trimlab::timeline {
+namespace trimlab {
 
 namespace {
 
@@ -11,10 +11,10 @@ std::string message(const std::string& file, const std::string& where, const std
 
 } // namespace
 
-ProjectFileError::ProjectFileError(std::string file, std::string where, std::string reason)
+DocumentFileError::DocumentFileError(std::string file, std::string where, std::string reason)
     : std::runtime_error(message(file, where, reason)), m_file(std::move(file)), m_where(std::move(where)),
       m_reason(std::move(reason))
 {
 }
 
-} // namespace trimlab::timeline
+} // namespace trimlab
