@@ -1,6 +1,7 @@
 #include "render_options.h"
 
 #include "cli_messages.h"
+#include "option_values.h"
 
 #include "mfr/fragment_method.h"
 #include "render_choices.h"
@@ -37,6 +38,18 @@ void addRenderOptions(QCommandLineParser& parser)
         {"highlight", "Tint shown fragments: collisions (inside another object, or where an object overlaps "
                       "itself) and/or coplanar (groups of fragments at equal depth, by group size); comma-separated. "
                       "Buffer methods only.", "what"},
+        {"transparency", "X-ray over the kept span's sorted fragments: opaque (the trimmed solid as usual, the "
+                         "fragments the trim removed in front of it as translucent ghosts) or translucent (every "
+                         "boundary of the trimmed solid, caps included, as a translucent layer). Buffer methods only.",
+         "mode"},
+        {"layer-alpha", "Opacity of each layer of the trimmed solid with --transparency translucent (0-1). "
+                        "Default: 0.4.", "A"},
+        {"ghost-alpha", "Opacity of each removed fragment with --transparency (0-1, 0 hides them). Default: 0.25.",
+         "A"},
+        {"density", "Absorption per world unit of distance travelled inside the solid with --transparency "
+                    "(Beer-Lambert, 0-1000000). Default: 0.", "D"},
+        {"fresnel", "Fresnel exponent P with --transparency: a layer's alpha grows towards grazing angles, "
+                    "a + (1 - a)(1 - |n.v|)^P (0-64, 0 = off). Default: 0.", "P"},
         {"k", "Fragments kept per pixel by the capacity-bounded methods (k+-buffer, K+B-SB, AB_FP; 1-128). Default: 16.",
          "N"},
         {"method", QStringLiteral("Multi-fragment method of the OpenGL backend: %1. Default: kplus-array.")
@@ -132,8 +145,8 @@ std::optional<QString> parseDesignOptions(const QCommandLineParser& parser, Rend
         return QStringLiteral("--frame and --classification need --script or a .trimlab project source");
     const TrimSettings& trim = options.trim;
     if (options.designed() && options.classification == Classification::Dynamic &&
-        (trim.cap.enabled || trim.csg.enabled() || trim.highlight.any()))
-        return QStringLiteral("--cap, --csg and --highlight need static classification of a design "
+        (trim.cap.enabled || trim.csg.enabled() || trim.highlight.any() || trim.xray()))
+        return QStringLiteral("--cap, --csg, --highlight and --transparency need static classification of a design "
                               "(--classification static)");
     if (options.designed() && !options.trim.trimEnabled && options.classification == Classification::Dynamic)
         return QStringLiteral("--rule none cannot classify the base mesh of the dynamic rules; use --classification "
@@ -194,6 +207,30 @@ std::optional<QString> parseInspectionOptions(const QCommandLineParser& parser, 
     if (needsRule && !options.trim.trimEnabled)
         return QStringLiteral("--rule none has no interior: --cap, --csg and --highlight collisions need a rule");
     return std::nullopt;
+}
+
+// --transparency and the values it uses.
+std::optional<QString> parseTransparencyOptions(const QCommandLineParser& parser, RenderOptions& options)
+{
+    TransparencySettings& xray = options.trim.transparency;
+    if (parser.isSet("transparency")) {
+        const std::optional<TrimDisplay> display = parseTrimDisplay(parser.value("transparency").toStdString());
+        if (!display)
+            return QStringLiteral("unknown --transparency '%1' (use opaque or translucent)")
+                .arg(parser.value("transparency"));
+        xray.enabled = true;
+        xray.display = *display;
+    }
+    for (const char* name : {"layer-alpha", "ghost-alpha", "density", "fresnel"})
+        if (parser.isSet(name) && !xray.enabled)
+            return QStringLiteral("--%1 needs --transparency opaque|translucent").arg(QLatin1String(name));
+    if (auto e = parseRealFlag(parser, QStringLiteral("layer-alpha"), 0.0, 1.0, xray.layerAlpha))
+        return e;
+    if (auto e = parseRealFlag(parser, QStringLiteral("ghost-alpha"), 0.0, 1.0, xray.ghostAlpha))
+        return e;
+    if (auto e = parseRealFlag(parser, QStringLiteral("density"), 0.0, 1e6, xray.density))
+        return e;
+    return parseRealFlag(parser, QStringLiteral("fresnel"), 0.0, 64.0, xray.fresnelExponent);
 }
 
 std::optional<QString> parseBackendOptions(const QCommandLineParser& parser, RenderOptions& options)
@@ -281,6 +318,8 @@ std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& argum
         return *e;
     if (auto e = parseInspectionOptions(parser, options))
         return *e;
+    if (auto e = parseTransparencyOptions(parser, options))
+        return *e;
     if (auto e = parseBackendOptions(parser, options))
         return *e;
     if (auto e = parseMethodOptions(parser, options))
@@ -292,6 +331,10 @@ std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& argum
     if (options.backend == Backend::KPlus && needsWalk && !method.inspection)
         return QStringLiteral("--method %1 cannot render --csg or --highlight (it never holds all of a pixel's "
                               "fragments at once); use a buffer method such as kplus-array or abuffer-linked-list")
+            .arg(QString::fromLatin1(method.id.data(), qsizetype(method.id.size())));
+    if (options.backend == Backend::KPlus && options.trim.xray() && !method.inspection)
+        return QStringLiteral("--method %1 cannot render --transparency (it never holds all of a pixel's fragments "
+                              "at once); use a buffer method such as kplus-array or abuffer-linked-list")
             .arg(QString::fromLatin1(method.id.data(), qsizetype(method.id.size())));
     return options;
 }

@@ -280,6 +280,8 @@ QString settingsText(const TrimSettings& trim)
         text += QStringLiteral(", %1 clipping planes").arg(trim.clipSet().enabledCount());
     if (trim.capping())
         text += QStringLiteral(", capped");
+    if (trim.xray())
+        text += QStringLiteral(", X-ray %1").arg(QString::fromLatin1(trimDisplayName(trim.transparency.display).data()));
     return text;
 }
 

@@ -69,6 +69,13 @@ void checkInspection(const MethodInfo& info, const TrimMode& mode, const TrimSet
     if (mode.dynamic && (needsWalk || settings.capping()))
         throw std::invalid_argument("Capping, CSG and highlighting are not available with the dynamic rules; switch the "
                                     "classification to static to use them.");
+    if (settings.xray() && mode.dynamic)
+        throw std::invalid_argument("Transparency (X-ray) is not available with the dynamic rules; switch the "
+                                    "classification to static to use it.");
+    if (settings.xray() && !info.inspection)
+        throw std::invalid_argument(std::string(info.displayName) +
+                                    " cannot render transparency (X-ray): it never holds all of a pixel's fragments "
+                                    "in one pass. Pick a buffer method (k+-buffer, S-buffer, K+B-SB, AB_FP or AB_LL).");
     if (needsWalk && !info.inspection)
         throw std::invalid_argument(std::string(info.displayName) + " cannot render " + inspectionFeatures(settings) +
                                     ": it never holds all of a pixel's fragments in one pass. Pick a buffer method "
@@ -198,6 +205,8 @@ ObjectWindingBuffer* TrimRenderer::prepareInspection(const TrimSettings& setting
         defines << QStringLiteral("CAPPING");
     if (settings.highlight.coplanar)
         defines << QStringLiteral("COPLANAR_COUNT");
+    if (settings.xray())
+        defines << QStringLiteral("TRANSPARENCY");
     if (!settings.perObjectWinding())
         return nullptr;
     const int objects = int(std::clamp<std::size_t>(objectCount, 1, std::size_t(kMaxCsgOperands)));

@@ -97,13 +97,14 @@ public:
     /// to try next —, and std::invalid_argument when the settings ask for what the method
     /// cannot do (CSG, collision or coplanar highlighting with a peeling method or the
     /// two-pass method — the message names the buffer methods to pick instead; clip sets
-    /// and capping work with every method), for a CSG expression naming an object the
+    /// and capping work with every method; transparency likewise needs a buffer method), for a CSG expression naming an object the
     /// scene lacks, and for collision highlighting in a scene of more than
     /// kMaxCsgOperands objects.
     void render(const Camera& camera, const TrimSettings& settings, int width, int height);
     /// The same with another uploaded scene and a classification mode. Throws
     /// std::invalid_argument when the mode is dynamic and the method cannot run it, or
-    /// the settings ask for capping, CSG or highlighting (static classification only).
+    /// the settings ask for capping, CSG, highlighting or transparency (static
+    /// classification only).
     void render(GpuScene& scene, const TrimMode& mode, const Camera& camera, const TrimSettings& settings, int width,
                 int height);
     [[nodiscard]] GlFunctions& gl() { return m_gl; }

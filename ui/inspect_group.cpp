@@ -34,6 +34,26 @@ QString patternKey(CapPattern pattern)
     return QString::fromLatin1(name.data(), qsizetype(name.size()));
 }
 
+// The X-ray combo box's item data: "off" or trimDisplayName().
+const QString kXrayOff = QStringLiteral("off");
+
+QString displayKey(TrimDisplay display)
+{
+    const std::string_view name = trimDisplayName(display);
+    return QString::fromLatin1(name.data(), qsizetype(name.size()));
+}
+
+QDoubleSpinBox* xraySpin(QWidget* parent, const char* name, double lo, double hi, double step, const QString& tip)
+{
+    auto* spin = new QDoubleSpinBox(parent);
+    spin->setObjectName(QLatin1String(name));
+    spin->setRange(lo, hi);
+    spin->setDecimals(2);
+    spin->setSingleStep(step);
+    spin->setToolTip(tip);
+    return spin;
+}
+
 } // namespace
 
 InspectGroup::InspectGroup(QWidget* parent) : QGroupBox(tr("Capping and highlighting"), parent)
@@ -58,6 +78,7 @@ InspectGroup::InspectGroup(QWidget* parent) : QGroupBox(tr("Capping and highligh
                               "brown. Needs a buffer method."));
     form->addRow(m_collisions);
     form->addRow(m_coplanar);
+    form->addRow(createXrayRows());
     connect(m_cap, &QCheckBox::toggled, this, [this] {
         updateEnabled();
         emit changed();
@@ -66,7 +87,74 @@ InspectGroup::InspectGroup(QWidget* parent) : QGroupBox(tr("Capping and highligh
     connect(m_spacing, &QDoubleSpinBox::valueChanged, this, &InspectGroup::changed);
     connect(m_collisions, &QCheckBox::toggled, this, &InspectGroup::changed);
     connect(m_coplanar, &QCheckBox::toggled, this, &InspectGroup::changed);
+    connect(m_xrayMode, &QComboBox::currentIndexChanged, this, [this] {
+        updateEnabled();
+        emit changed();
+    });
+    for (QDoubleSpinBox* spin : {m_layerAlpha, m_ghostAlpha, m_density, m_fresnel})
+        connect(spin, &QDoubleSpinBox::valueChanged, this, &InspectGroup::changed);
     setChoices(CapSettings{}, RenderChoices::kDefaultCapSpacingFraction, HighlightSettings{});
+    setTransparency(TransparencySettings{});
+}
+
+QWidget* InspectGroup::createXrayRows()
+{
+    auto* rows = new QWidget(this);
+    auto* form = new QFormLayout(rows);
+    form->setContentsMargins(0, 0, 0, 0);
+    m_xrayMode = new QComboBox(rows);
+    m_xrayMode->setObjectName(QStringLiteral("xrayModeComboBox"));
+    m_xrayMode->addItem(tr("Off"), kXrayOff);
+    m_xrayMode->addItem(tr("Opaque trim + ghosts"), displayKey(TrimDisplay::Opaque));
+    m_xrayMode->addItem(tr("Translucent"), displayKey(TrimDisplay::Translucent));
+    m_xrayMode->setToolTip(tr("Transparency over every fragment of the kept span, in depth order. Opaque trim + "
+                              "ghosts: the trimmed solid as usual, with the surface the trim removed in front of it "
+                              "as translucent ghosts. Translucent: every boundary of the trimmed solid (caps too) as "
+                              "a translucent layer. Needs a buffer method (not peeling or two-pass)."));
+    form->addRow(tr("X-ray"), m_xrayMode);
+    m_layerAlpha = xraySpin(rows, "xrayLayerAlphaSpin", 0.0, 1.0, 0.05,
+                            tr("Opacity of each layer of the trimmed solid (Translucent)"));
+    m_ghostAlpha = xraySpin(rows, "xrayGhostAlphaSpin", 0.0, 1.0, 0.05,
+                            tr("Opacity of each fragment the trim removed (0 hides them)"));
+    m_density = xraySpin(rows, "xrayDensitySpin", 0.0, 100.0, 0.1,
+                         tr("Absorption per world unit of distance inside the solid (Beer-Lambert); 0: none"));
+    m_fresnel = xraySpin(rows, "xrayFresnelSpin", 0.0, 16.0, 0.5,
+                         tr("Fresnel exponent: layers grow more opaque towards grazing angles; 0: off"));
+    form->addRow(tr("Layer opacity"), m_layerAlpha);
+    form->addRow(tr("Ghost opacity"), m_ghostAlpha);
+    form->addRow(tr("Density"), m_density);
+    form->addRow(tr("Fresnel"), m_fresnel);
+    return rows;
+}
+
+void InspectGroup::setTransparency(const TransparencySettings& transparency)
+{
+    const QSignalBlocker modeBlocker(m_xrayMode);
+    const QSignalBlocker layerBlocker(m_layerAlpha);
+    const QSignalBlocker ghostBlocker(m_ghostAlpha);
+    const QSignalBlocker densityBlocker(m_density);
+    const QSignalBlocker fresnelBlocker(m_fresnel);
+    const QString key = transparency.enabled ? displayKey(transparency.display) : kXrayOff;
+    m_xrayMode->setCurrentIndex(std::max(0, m_xrayMode->findData(key)));
+    auto finite = [](double x) { return std::isfinite(x) ? x : 0.0; };
+    m_layerAlpha->setValue(finite(transparency.layerAlpha)); // the spin boxes clamp to their ranges
+    m_ghostAlpha->setValue(finite(transparency.ghostAlpha));
+    m_density->setValue(finite(transparency.density));
+    m_fresnel->setValue(finite(transparency.fresnelExponent));
+    updateEnabled();
+}
+
+TransparencySettings InspectGroup::transparency() const
+{
+    TransparencySettings xray;
+    const std::optional<TrimDisplay> display = parseTrimDisplay(m_xrayMode->currentData().toString().toStdString());
+    xray.enabled = display.has_value();
+    xray.display = display.value_or(TrimDisplay::Translucent);
+    xray.layerAlpha = m_layerAlpha->value();
+    xray.ghostAlpha = m_ghostAlpha->value();
+    xray.density = m_density->value();
+    xray.fresnelExponent = m_fresnel->value();
+    return xray;
 }
 
 QWidget* InspectGroup::createCapRows()
@@ -129,6 +217,10 @@ void InspectGroup::updateEnabled()
 {
     m_pattern->setEnabled(m_cap->isChecked());
     m_spacing->setEnabled(m_cap->isChecked());
+    const bool xray = m_xrayMode->currentData().toString() != kXrayOff;
+    m_layerAlpha->setEnabled(xray && transparency().display == TrimDisplay::Translucent);
+    for (QDoubleSpinBox* spin : {m_ghostAlpha, m_density, m_fresnel})
+        spin->setEnabled(xray);
 }
 
 } // namespace trimlab::ui

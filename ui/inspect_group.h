@@ -6,6 +6,10 @@
 /// bounding radius — and the tints of the shown fragments: collisions (inside another
 /// object, or where an object overlaps itself) and coplanar fragments (colored by the
 /// size of their group). The status bar counts the highlighted pixels of each frame.
+/// X-ray (TransparencySettings): off, "Opaque trim + ghosts" (the trimmed solid as usual,
+/// the fragments the trim removed in front of it as translucent ghosts) or "Translucent"
+/// (every boundary of the trimmed solid a translucent layer), with the layer and ghost
+/// opacities, the density inside the solid (per world unit) and the Fresnel exponent.
 
 #include "trim/inspect_settings.h"
 
@@ -31,6 +35,10 @@ public:
     /// The line spacing as a fraction of the scene's bounding radius.
     [[nodiscard]] double spacingFraction() const;
     [[nodiscard]] HighlightSettings highlight() const;
+    /// Shows the X-ray choices without emitting changed() (values clamped to the ranges
+    /// of the spin boxes).
+    void setTransparency(const TransparencySettings& transparency);
+    [[nodiscard]] TransparencySettings transparency() const;
 
 signals:
     /// Any user edit.
@@ -38,6 +46,7 @@ signals:
 
 private:
     QWidget* createCapRows();
+    QWidget* createXrayRows();
     void updateEnabled();
 
     QCheckBox* m_cap = nullptr;
@@ -45,6 +54,11 @@ private:
     QDoubleSpinBox* m_spacing = nullptr;
     QCheckBox* m_collisions = nullptr;
     QCheckBox* m_coplanar = nullptr;
+    QComboBox* m_xrayMode = nullptr;
+    QDoubleSpinBox* m_layerAlpha = nullptr;
+    QDoubleSpinBox* m_ghostAlpha = nullptr;
+    QDoubleSpinBox* m_density = nullptr;
+    QDoubleSpinBox* m_fresnel = nullptr;
 };
 
 } // namespace trimlab::ui

@@ -108,6 +108,7 @@ void RenderPanel::setRenderChoices(const RenderChoices& choices)
     m_rule->setCurrentIndex(m_rule->findData(ruleKey(choices.trim.rule)));
     m_clip->setClipSet(choices.trim.clipSet());
     m_inspect->setChoices(choices.trim.cap, choices.capSpacingFraction, choices.trim.highlight);
+    m_inspect->setTransparency(choices.trim.transparency);
     m_methodGroup->setChoices(choices.method, choices.k, choices.sharedCounters);
     m_methodGroup->setMemoryBudgetMegabytes(choices.memoryBudgetMegabytes);
 }
@@ -125,6 +126,7 @@ RenderChoices RenderPanel::renderChoices() const
     const double radius = m_bounds.valid() ? m_bounds.radius() : 1.0;
     choices.trim.cap.spacing = choices.capSpacingFraction * (radius > 0.0 ? radius : 1.0);
     choices.trim.highlight = m_inspect->highlight();
+    choices.trim.transparency = m_inspect->transparency();
     choices.method = m_methodGroup->method();
     choices.k = m_methodGroup->k();
     choices.sharedCounters = m_methodGroup->sharedCounters();

@@ -29,6 +29,11 @@ const QString kCapPattern = QStringLiteral("render/capPattern");
 const QString kCapSpacingFraction = QStringLiteral("render/capSpacingFraction");
 const QString kHighlightCollisions = QStringLiteral("render/highlightCollisions");
 const QString kHighlightCoplanar = QStringLiteral("render/highlightCoplanar");
+const QString kXrayMode = QStringLiteral("render/xrayMode");
+const QString kXrayLayerAlpha = QStringLiteral("render/xrayLayerAlpha");
+const QString kXrayGhostAlpha = QStringLiteral("render/xrayGhostAlpha");
+const QString kXrayDensity = QStringLiteral("render/xrayDensity");
+const QString kXrayFresnel = QStringLiteral("render/xrayFresnel");
 
 /// The keys of clipping plane `index` > 0 (plane 0 keeps the keys of the one plane of
 /// earlier versions): "render/clipPlaneN/enabled", ".../normalX" etc.
@@ -75,6 +80,37 @@ void saveClipPlane(QSettings& settings, const ClipKeys& keys, const ClipPlane& p
     settings.setValue(keys.offset, plane.offset);
 }
 
+/// The stored number at `key` when finite and in [lo, hi], else `fallback`.
+double boundedValue(const QSettings& settings, const QString& key, double lo, double hi, double fallback)
+{
+    const double value = finiteValue(settings, key, fallback);
+    return value >= lo && value <= hi ? value : fallback;
+}
+
+/// X-ray: "off", "opaque" or "translucent" and its values, each falling back on its own.
+void loadTransparency(const QSettings& settings, const TransparencySettings& fallback, TransparencySettings& xray)
+{
+    const QString mode = settings.value(kXrayMode).toString();
+    const std::optional<TrimDisplay> display = parseTrimDisplay(mode.toStdString());
+    xray.enabled = mode == QStringLiteral("off") ? false : (display ? true : fallback.enabled);
+    xray.display = display.value_or(fallback.display);
+    xray.layerAlpha = boundedValue(settings, kXrayLayerAlpha, 0.0, 1.0, fallback.layerAlpha);
+    xray.ghostAlpha = boundedValue(settings, kXrayGhostAlpha, 0.0, 1.0, fallback.ghostAlpha);
+    xray.density = boundedValue(settings, kXrayDensity, 0.0, 100.0, fallback.density);
+    xray.fresnelExponent = boundedValue(settings, kXrayFresnel, 0.0, 16.0, fallback.fresnelExponent);
+}
+
+void saveTransparency(QSettings& settings, const TransparencySettings& xray)
+{
+    const std::string_view display = trimDisplayName(xray.display);
+    settings.setValue(kXrayMode, xray.enabled ? QString::fromLatin1(display.data(), qsizetype(display.size()))
+                                              : QStringLiteral("off"));
+    settings.setValue(kXrayLayerAlpha, xray.layerAlpha);
+    settings.setValue(kXrayGhostAlpha, xray.ghostAlpha);
+    settings.setValue(kXrayDensity, xray.density);
+    settings.setValue(kXrayFresnel, xray.fresnelExponent);
+}
+
 /// Capping and highlighting, each field falling back on its own.
 void loadInspection(const QSettings& settings, const RenderChoices& fallback, RenderChoices& choices)
 {
@@ -88,6 +124,7 @@ void loadInspection(const QSettings& settings, const RenderChoices& fallback, Re
     choices.trim.highlight.collisions =
         settings.value(kHighlightCollisions, fallback.trim.highlight.collisions).toBool();
     choices.trim.highlight.coplanar = settings.value(kHighlightCoplanar, fallback.trim.highlight.coplanar).toBool();
+    loadTransparency(settings, fallback.trim.transparency, choices.trim.transparency);
 }
 
 /// The stored integer at `key` when it lies in [lo, hi], else `fallback`.
@@ -138,6 +175,7 @@ void saveRenderChoices(QSettings& settings, const RenderChoices& choices)
     settings.setValue(kCapSpacingFraction, choices.capSpacingFraction);
     settings.setValue(kHighlightCollisions, choices.trim.highlight.collisions);
     settings.setValue(kHighlightCoplanar, choices.trim.highlight.coplanar);
+    saveTransparency(settings, choices.trim.transparency);
     settings.setValue(kK, choices.k);
     const std::string_view method = render::methodInfo(choices.method).id;
     settings.setValue(kMethod, QString::fromLatin1(method.data(), qsizetype(method.size())));

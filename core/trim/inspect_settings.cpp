@@ -23,4 +23,17 @@ std::optional<CapPattern> parseCapPattern(std::string_view name)
     return std::nullopt;
 }
 
+std::string_view trimDisplayName(TrimDisplay display)
+{
+    return display == TrimDisplay::Opaque ? "opaque" : "translucent";
+}
+
+std::optional<TrimDisplay> parseTrimDisplay(std::string_view name)
+{
+    for (TrimDisplay display : {TrimDisplay::Opaque, TrimDisplay::Translucent})
+        if (trimDisplayName(display) == name)
+            return display;
+    return std::nullopt;
+}
+
 } // namespace trimlab

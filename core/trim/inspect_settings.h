@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// The interior-inspection settings of a trim render beyond rule and clipping: capping,
-/// CSG of several self-trimmed objects with per-object rules, and highlighting of
-/// collisions and coplanar fragments. Plain values shared by the GPU backends, the CPU
+/// CSG of several self-trimmed objects with per-object rules, highlighting of collisions
+/// and coplanar fragments, and transparency (X-ray). Plain values shared by the GPU backends, the CPU
 /// reference, the GUI panels and the command line (TrimSettings holds one of each).
 
 #include "trim/csg_expression.h"
@@ -80,8 +80,54 @@ struct HighlightSettings {
     friend bool operator==(const HighlightSettings&, const HighlightSettings&) = default;
 };
 
+/// How the trimmed solid itself is drawn when transparency is on.
+enum class TrimDisplay {
+    /// The trimmed solid as without transparency (its first boundary point, or its cap, is
+    /// opaque); the fragments the rule removed in front of it are ghost layers over it.
+    Opaque,
+    /// Every boundary fragment of the trimmed solid in the kept span (caps included) is a
+    /// translucent layer; removed fragments are ghost layers between them.
+    Translucent,
+};
+
+/// Transparency / X-ray (thesis 1.3.3 and Fig. 5.2: order-independent transparency over
+/// a pixel's sorted fragments, "accounting for the density between layers", and Fresnel
+/// weighted translucency). The trim walk passes every fragment of the kept span in depth
+/// order with its classification; core/trim/transparency.h composites them front to back
+/// (C += T·α·c, T *= 1 − α) over the background and stops once T < 1/512. Which fragments
+/// are layers:
+/// - boundary fragments (the two sides classify differently; every fragment with
+///   trimming off) are the solid's surface: alpha `layerAlpha` (Translucent), or the
+///   first one opaque and the walk ends there (Opaque);
+/// - the other fragments of the span (the surface the rule removed: inside the solid or
+///   between nested sheets) are ghosts with alpha `ghostAlpha` (0 hides them).
+/// - A cap (CapSettings) is the first boundary layer, at the span start.
+/// Fragments outside the kept span (clipped away) are never stored, so never drawn.
+/// Between two consecutive layers whose interval classifies interior, T is multiplied
+/// by exp(−density · distance) (Beer–Lambert; distance in world units along the ray).
+/// Fresnel (exponent p > 0): a layer's alpha grows towards grazing angles,
+/// α' = α + (1 − α)(1 − |n·v|)^p; a layer whose alpha is 0 stays hidden. Colors are the
+/// layers' usual shading (trim_shading.h); the first boundary fragment keeps its
+/// highlights. The id texel / TrimPixel stays the first shown point, as without
+/// transparency. Out-of-range values are clamped where used (alphas to [0, 1], density
+/// and exponent below 0 to 0; non-finite ones count as 0).
+struct TransparencySettings {
+    bool enabled = false;
+    TrimDisplay display = TrimDisplay::Translucent;
+    double layerAlpha = 0.4;      ///< opacity of each boundary layer (Translucent), 0–1
+    double ghostAlpha = 0.25;     ///< opacity of each removed fragment, 0–1 (0: hidden)
+    double density = 0.0;         ///< absorption per world unit inside the solid, >= 0
+    double fresnelExponent = 0.0; ///< p of the Fresnel term; 0: off
+
+    friend bool operator==(const TransparencySettings&, const TransparencySettings&) = default;
+};
+
 /// Stable names of the cap patterns: "hatched", "striped", "solid".
 [[nodiscard]] std::string_view capPatternName(CapPattern pattern);
 [[nodiscard]] std::optional<CapPattern> parseCapPattern(std::string_view name);
+
+/// Stable names of the transparency displays: "opaque", "translucent".
+[[nodiscard]] std::string_view trimDisplayName(TrimDisplay display);
+[[nodiscard]] std::optional<TrimDisplay> parseTrimDisplay(std::string_view name);
 
 } // namespace trimlab

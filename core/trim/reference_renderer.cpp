@@ -1,6 +1,7 @@
 #include "trim/reference_renderer.h"
 
 #include "scene/world_geometry.h"
+#include "trim/transparency.h"
 #include "trim/trim_shading.h"
 
 #include <glm/geometric.hpp>
@@ -35,6 +36,8 @@ struct ReferenceRenderer::RowContext {
     ReferenceResult& result;
     std::vector<RayHit> hits;
     std::vector<double> scratch;
+    std::vector<WalkLayer> layers;       ///< transparency only
+    std::vector<XrayFragment> fragments; ///< transparency only
     ReferenceStats stats;
 };
 
@@ -58,7 +61,7 @@ PixelTrace ReferenceRenderer::tracePixel(const Camera& camera, int width, int he
     return trace;
 }
 
-glm::vec3 ReferenceRenderer::shadeHit(const RayHit& hit, const PixelRay& ray, const TrimPixel& pixel) const
+glm::dvec3 ReferenceRenderer::hitNormal(const RayHit& hit, const glm::dvec3& toViewer) const
 {
     const ObjectGeometry& object = m_objects[std::size_t(hit.objectId)];
     const glm::uvec3 t = object.triangles[std::size_t(hit.primitiveId)];
@@ -69,8 +72,13 @@ glm::vec3 ReferenceRenderer::shadeHit(const RayHit& hit, const PixelRay& ray, co
         normal = glm::cross(object.positions[t[1]] - a, object.positions[t[2]] - a);
     }
     const double length = glm::length(normal);
+    return length > 0.0 ? normal / length : toViewer;
+}
+
+glm::vec3 ReferenceRenderer::shadeHit(const RayHit& hit, const PixelRay& ray, const TrimPixel& pixel) const
+{
     const glm::dvec3 toViewer = -glm::normalize(ray.direction);
-    normal = length > 0.0 ? normal / length : toViewer;
+    const glm::dvec3 normal = hitNormal(hit, toViewer);
     const glm::vec3 shaded = shadeTrimPoint(hit.facing, normal, toViewer);
     if (!pixel.collision && pixel.coplanarCount < 2)
         return shaded;
@@ -83,6 +91,29 @@ glm::vec3 ReferenceRenderer::shadeCapPixel(const RowContext& context, const Pixe
     const glm::dvec3 normal = glm::normalize(context.clips.planes[std::size_t(walk.capPlane)].normal);
     const glm::dvec3 point = ray.origin + walk.capDepth * ray.direction;
     return shadeCap(context.settings.cap, point, normal, -glm::normalize(ray.direction));
+}
+
+glm::vec3 ReferenceRenderer::xrayPixel(RowContext& context, const PixelRay& ray, const KeptSpan& span,
+                                       const TrimWalk& walk, const TrimPixel& pixel) const
+{
+    walkTrimLayers(context.hits, walk, context.settings, context.layers);
+    const double rayLength = glm::length(ray.direction);
+    const glm::dvec3 toViewer = -ray.direction / rayLength;
+    std::optional<XrayCap> cap;
+    if (walk.capPlane >= 0) {
+        const glm::dvec3 n = glm::normalize(context.clips.planes[std::size_t(walk.capPlane)].normal);
+        cap = XrayCap{glm::dvec3(shadeCapPixel(context, ray, walk)), std::abs(glm::dot(n, toViewer))};
+    }
+    context.fragments.clear();
+    for (const WalkLayer& layer : context.layers) {
+        const RayHit& hit = context.hits[layer.index];
+        const bool shown = std::ptrdiff_t(layer.index) == walk.shownIndex;
+        const glm::vec3 color = shadeHit(hit, ray, shown ? pixel : TrimPixel{});
+        const double cosine = std::abs(glm::dot(hitNormal(hit, toViewer), toViewer));
+        context.fragments.push_back({hit.t * rayLength, layer.boundary, layer.interiorBefore, glm::dvec3(color), cosine});
+    }
+    return glm::vec3(compositeXray(context.settings.transparency, span.tStart * rayLength, cap, context.fragments,
+                                   glm::dvec3(kBackgroundColor)));
 }
 
 void ReferenceRenderer::renderRow(RowContext& context, int y) const
@@ -110,8 +141,11 @@ void ReferenceRenderer::renderRow(RowContext& context, int y) const
         context.stats.maxHitsPerPixel = std::max(context.stats.maxHitsPerPixel, hitCount);
 
         glm::vec3 color = kBackgroundColor;
+        if (context.settings.xray())
+            color = xrayPixel(context, ray, span, walk, pixel);
         if (pixel.isCap()) {
-            color = shadeCapPixel(context, ray, walk);
+            if (!context.settings.xray())
+                color = shadeCapPixel(context, ray, walk);
             ++context.stats.coveredPixels;
         } else if (pixel.covered()) {
             const RayHit& hit = context.hits[std::size_t(walk.shownIndex)];
@@ -120,7 +154,8 @@ void ReferenceRenderer::renderRow(RowContext& context, int y) const
             diagnostics.edgeDistancePx[index] = float(edgeDistancePixels(
                 camera, context.width, context.height, x, y,
                 {object.positions[t[0]], object.positions[t[1]], object.positions[t[2]]}));
-            color = shadeHit(hit, ray, pixel);
+            if (!context.settings.xray())
+                color = shadeHit(hit, ray, pixel);
             ++context.stats.coveredPixels;
         }
         std::uint8_t* rgba = context.result.color.at(x, y);
@@ -155,7 +190,7 @@ ReferenceResult ReferenceRenderer::render(const Camera& camera, int width, int h
     std::atomic<int> nextBlock{0};
     std::vector<ReferenceStats> partial(threads);
     auto work = [&](unsigned worker) {
-        RowContext context{camera, width, height, settings, settings.clipSet(), walker ? &walker : nullptr, result, {}, {}, {}};
+        RowContext context{camera, width, height, settings, settings.clipSet(), walker ? &walker : nullptr, result, {}, {}, {}, {}, {}};
         for (int block = nextBlock++; block < blockCount; block = nextBlock++) {
             const int rowEnd = std::min(height, (block + 1) * kRowsPerBlock);
             for (int y = block * kRowsPerBlock; y < rowEnd; ++y)

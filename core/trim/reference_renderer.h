@@ -38,8 +38,10 @@ struct ReferenceResult {
     TrimImage trim;
     /// Background kBackgroundColor where empty, else shadeTrimPoint with the smooth world
     /// normal at the hit and toViewer = −normalize(ray direction) (with applyHighlights
-    /// for collisions and coplanar groups), or shadeCap for a cap; channels are
-    /// round(255·clamp(c, 0, 1)), alpha 255.
+    /// for collisions and coplanar groups), or shadeCap for a cap; with transparency
+    /// (TrimSettings::xray) the X-ray composite of every layer of the kept span
+    /// (walkTrimLayers, compositeXray; the shown hit with its highlights, the others
+    /// plain); channels are round(255·clamp(c, 0, 1)), alpha 255.
     RgbaImage color;
     ReferenceDiagnostics diagnostics;
     ReferenceStats stats;
@@ -95,6 +97,11 @@ private:
     [[nodiscard]] glm::vec3 shadeHit(const RayHit& hit, const PixelRay& ray, const TrimPixel& pixel) const;
     /// Flat shading and world-space pattern of a cap.
     [[nodiscard]] glm::vec3 shadeCapPixel(const RowContext& context, const PixelRay& ray, const TrimWalk& walk) const;
+    /// Unit smooth world normal at a hit (the face normal where the vertex normals cancel).
+    [[nodiscard]] glm::dvec3 hitNormal(const RayHit& hit, const glm::dvec3& toViewer) const;
+    /// The X-ray composite of the pixel (TransparencySettings).
+    [[nodiscard]] glm::vec3 xrayPixel(RowContext& context, const PixelRay& ray, const KeptSpan& span,
+                                      const TrimWalk& walk, const TrimPixel& pixel) const;
 
     TriangleBvh m_bvh;
     std::vector<ObjectGeometry> m_objects;

@@ -6,6 +6,7 @@ target_sources(trimlab_core PRIVATE
   trim/csg_expression.cpp
   trim/inspect_settings.cpp
   trim/trim_walk.cpp
+  trim/transparency.cpp
   trim/reference_diagnostics.cpp
   trim/reference_renderer.cpp
   trim/trim_agreement.cpp

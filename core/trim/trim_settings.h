@@ -29,6 +29,8 @@ struct TrimSettings {
     CsgSettings csg;
     /// Collision and coplanarity highlighting of the shown fragments.
     HighlightSettings highlight;
+    /// Transparency / X-ray over the kept span's fragments (off by default).
+    TransparencySettings transparency;
 
     /// All clipping planes as one set: plane 0 is `clip`, plane i > 0 is moreClips[i − 1].
     [[nodiscard]] ClipSet clipSet() const
@@ -66,6 +68,8 @@ struct TrimSettings {
     [[nodiscard]] bool perObjectWinding() const { return trimEnabled && (csg.enabled() || highlight.collisions); }
     /// True when caps can show (capping on, trimming on, some plane enabled).
     [[nodiscard]] bool capping() const { return cap.enabled && trimEnabled && clipSet().anyEnabled(); }
+    /// True when the colors composite the span's layers (TransparencySettings).
+    [[nodiscard]] bool xray() const { return transparency.enabled; }
 
     friend bool operator==(const TrimSettings&, const TrimSettings&) = default;
 };

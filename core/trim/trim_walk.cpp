@@ -123,6 +123,27 @@ TrimWalk walkTrimRay(std::span<const RayHit> sortedHits, const KeptSpan& span, c
     return walk;
 }
 
+void walkTrimLayers(std::span<const RayHit> sortedHits, const TrimWalk& walk, const TrimSettings& settings,
+                    std::vector<WalkLayer>& layers)
+{
+    layers.clear();
+    ObjectWindings windings{};
+    if (settings.perObjectWinding())
+        windings = objectWindingsBehind(sortedHits, walk.walkBegin);
+    int w = walk.windingAtStart;
+    bool before = settings.trimEnabled && classifiesInterior(settings, w, windings);
+    for (std::size_t i = walk.walkBegin; i < walk.walkEnd; ++i) {
+        const RayHit& hit = sortedHits[i];
+        const int step = hit.facing > 0 ? 1 : -1;
+        w += step;
+        if (hit.objectId >= 0 && hit.objectId < kMaxCsgOperands)
+            windings[std::size_t(hit.objectId)] += step;
+        const bool after = settings.trimEnabled && classifiesInterior(settings, w, windings);
+        layers.push_back({i, !settings.trimEnabled || before != after, before});
+        before = after;
+    }
+}
+
 TrimPixel trimPixelFromWalk(std::span<const RayHit> sortedHits, const TrimWalk& walk)
 {
     TrimPixel pixel;

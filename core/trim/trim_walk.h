@@ -30,6 +30,10 @@
 ///   kMaxCsgOperands, isInterior(objectRule(q), w_q) there) or its own object overlaps
 ///   itself there (|w_o| > 1 on either side).
 /// - Coplanar: the number of hits of the kept span at exactly the shown hit's t.
+/// - Transparency (TransparencySettings): walkTrimLayers continues the same walk over every
+///   hit of the kept span and reports each with its classification on both sides
+///   (the shown hit is the first boundary of that list); core/trim/transparency.h
+///   composites them.
 /// Without these settings the walk is the static walk above, unchanged.
 
 #include "trim/clip_plane.h"
@@ -41,6 +45,7 @@
 #include <array>
 #include <cstddef>
 #include <span>
+#include <vector>
 
 namespace trimlab {
 
@@ -75,6 +80,20 @@ using ObjectWindings = std::array<int, kMaxCsgOperands>;
 /// Walks one ray (see the conventions above).
 [[nodiscard]] TrimWalk walkTrimRay(std::span<const RayHit> sortedHits, const KeptSpan& span,
                                    const TrimSettings& settings);
+
+/// One hit of the kept span as the walk passes it (transparency).
+struct WalkLayer {
+    std::size_t index = 0;       ///< into the sorted hits
+    bool boundary = false;       ///< its two sides classify differently (every hit with trimming off)
+    bool interiorBefore = false; ///< the point in front of it classifies interior (false with trimming off)
+};
+
+/// Every hit of `walk`'s kept span (walkBegin .. walkEnd) in walk order, classified as
+/// walkTrimRay classifies them (the CSG expression when set, else the rule; per-object
+/// windings counted from the far side). `layers` is cleared first. The first boundary is
+/// walk.shownIndex when the pixel shows no cap.
+void walkTrimLayers(std::span<const RayHit> sortedHits, const TrimWalk& walk, const TrimSettings& settings,
+                    std::vector<WalkLayer>& layers);
 
 /// The TrimPixel that `walk` describes: the shown hit's depth (as float), ids and facing,
 /// and windingAtStart (also for empty pixels with a non-empty span); for a cap its plane

@@ -13,8 +13,8 @@ const std::vector<ProgramDescription>& programCatalog()
     // resolve pass; the renderer compiles one variant per k the user picks. Interlock
     // variants only build where the driver has the extension (representativeDefines are
     // also checked by glslangValidator, which knows every extension). CAPPING,
-    // OBJECT_WINDINGS N and COPLANAR_COUNT are the interior-inspection variants
-    // (TrimRenderer::prepareInspection).
+    // OBJECT_WINDINGS N, COPLANAR_COUNT and TRANSPARENCY are the interior-inspection
+    // variants (TrimRenderer::prepareInspection).
     static const std::vector<ProgramDescription> catalog = {
         {"pixel_state_clear", {"pixel_state_clear.comp"}, {{}}},
         {"kplus_store",
@@ -29,7 +29,8 @@ const std::vector<ProgramDescription>& programCatalog()
          {"fullscreen.vert", "kplus_resolve.frag"},
          {{{"K_MAX 1"}}, {{"K_MAX 16"}}, {{"K_MAX 64"}}, {{"K_MAX 16", "DYNAMIC_RULES"}},
           {{"K_MAX 16", "DYNAMIC_RULES", "DYNAMIC_CHARACTERIZE"}}, {{"K_MAX 16", "CAPPING"}},
-          {{"K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}}}},
+          {{"K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}}, {{"K_MAX 16", "TRANSPARENCY"}},
+          {{"K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT", "TRANSPARENCY"}}}},
         // buffer methods (S-buffer, K+B-SB, AB_FP, AB_LL)
         {"fragment_count", {"scene.vert", "fragment_count.frag"}, {{}, {{"DYNAMIC_RULES"}}, {{"OBJECT_WINDINGS 3"}}}},
         {"sbuffer_address", {"sbuffer_address.comp"}, {{}}},
@@ -39,7 +40,8 @@ const std::vector<ProgramDescription>& programCatalog()
         {"sbuffer_resolve",
          {"fullscreen.vert", "sbuffer_resolve.frag"},
          {{{"LIST_MAX 256"}}, {{"LIST_MAX 256", "DYNAMIC_RULES"}}, {{"LIST_MAX 256", "DYNAMIC_RULES", "DYNAMIC_CHARACTERIZE"}},
-          {{"LIST_MAX 256", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}}}},
+          {{"LIST_MAX 256", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}},
+          {{"LIST_MAX 256", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT", "TRANSPARENCY"}}}},
         {"kplus_sbuffer_store",
          {"scene.vert", "kplus_store.frag"},
          {{{"KPLUS_NODE_REGION"}},
@@ -47,18 +49,21 @@ const std::vector<ProgramDescription>& programCatalog()
         {"kplus_sbuffer_resolve",
          {"fullscreen.vert", "kplus_resolve.frag"},
          {{{"KPLUS_NODE_REGION", "K_MAX 1"}}, {{"KPLUS_NODE_REGION", "K_MAX 16"}}, {{"KPLUS_NODE_REGION", "K_MAX 64"}},
-          {{"KPLUS_NODE_REGION", "K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}}}},
+          {{"KPLUS_NODE_REGION", "K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}},
+          {{"KPLUS_NODE_REGION", "K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT", "TRANSPARENCY"}}}},
         {"abuffer_fixed_store", {"scene.vert", "abuffer_fixed_store.frag"}, {{}, {{"DYNAMIC_RULES"}}, {{"OBJECT_WINDINGS 3"}}}},
         {"abuffer_fixed_resolve",
          {"fullscreen.vert", "abuffer_fixed_resolve.frag"},
          {{{"K_MAX 1"}}, {{"K_MAX 16"}}, {{"K_MAX 64"}}, {{"K_MAX 16", "DYNAMIC_RULES", "DYNAMIC_CHARACTERIZE"}},
-          {{"K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}}}},
+          {{"K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}},
+          {{"K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT", "TRANSPARENCY"}}}},
         {"head_clear", {"head_clear.comp"}, {{}}},
         {"abuffer_list_store", {"scene.vert", "abuffer_list_store.frag"}, {{}, {{"DYNAMIC_RULES"}}, {{"OBJECT_WINDINGS 3"}}}},
         {"abuffer_list_resolve",
          {"fullscreen.vert", "abuffer_list_resolve.frag"},
          {{{"LIST_MAX 256"}}, {{"LIST_MAX 256", "DYNAMIC_RULES"}}, {{"LIST_MAX 256", "DYNAMIC_RULES", "DYNAMIC_CHARACTERIZE"}},
-          {{"LIST_MAX 256", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}}}},
+          {{"LIST_MAX 256", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}},
+          {{"LIST_MAX 256", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT", "TRANSPARENCY"}}}},
         // peeling methods (F2B, DUAL, two-pass)
         {"peeling_clear", {"peeling_clear.comp"}, {{}}},
         {"peel_f2b", {"scene.vert", "peel_f2b.frag"}, {{}}},

@@ -43,8 +43,9 @@ struct MethodInfo {
     /// pixel's reference and current fragments together).
     bool dynamicRules;
     /// Its resolve walks all of a pixel's fragments in one invocation, so it can carry the
-    /// per-object windings of CSG and collision highlighting and count coplanar groups
-    /// (the buffer methods). Clipping sets and capping work with every method.
+    /// per-object windings of CSG and collision highlighting, count coplanar groups and
+    /// composite transparency (X-ray) layers (the buffer methods). Clipping sets and
+    /// capping work with every method.
     bool inspection;
 };
 

@@ -48,7 +48,8 @@ struct TrimFrame {
     ObjectWindingBuffer* objectWindings = nullptr;
 };
 
-/// The program `name` with `defines` and the frame's mode defines.
+/// The program `name` with `defines` and the frame's mode defines (TRANSPARENCY only for
+/// programs named "…_resolve": the capture passes do not depend on it).
 [[nodiscard]] GLuint trimProgram(TrimFrame& frame, const QString& name, QStringList defines = {});
 
 } // namespace trimlab::render

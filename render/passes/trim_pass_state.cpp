@@ -80,6 +80,20 @@ void setCapUniforms(const TrimFrame& frame, GLuint program)
     gl.glUniform3fv(gl.glGetUniformLocation(program, "u_capNormalsWorld"), kMaxClipPlanes, glm::value_ptr(normals[0]));
 }
 
+// TransparencySettings, clamped as core/trim/transparency.h clamps them.
+void setTransparencyUniforms(const TrimFrame& frame, GLuint program)
+{
+    GlFunctions& gl = frame.gl;
+    const TransparencySettings& xray = frame.settings.transparency;
+    auto nonNegative = [](double x) { return std::isfinite(x) ? float(std::max(x, 0.0)) : 0.0f; };
+    auto unit = [](double x) { return std::isfinite(x) ? float(std::clamp(x, 0.0, 1.0)) : 0.0f; };
+    gl.glUniform1i(gl.glGetUniformLocation(program, "u_xrayDisplay"), static_cast<GLint>(xray.display));
+    gl.glUniform1f(gl.glGetUniformLocation(program, "u_xrayLayerAlpha"), unit(xray.layerAlpha));
+    gl.glUniform1f(gl.glGetUniformLocation(program, "u_xrayGhostAlpha"), unit(xray.ghostAlpha));
+    gl.glUniform1f(gl.glGetUniformLocation(program, "u_xrayDensity"), nonNegative(xray.density));
+    gl.glUniform1f(gl.glGetUniformLocation(program, "u_xrayFresnel"), nonNegative(xray.fresnelExponent));
+}
+
 } // namespace
 
 void setTrimWalkUniforms(const TrimFrame& frame, GLuint program)
@@ -91,6 +105,7 @@ void setTrimWalkUniforms(const TrimFrame& frame, GLuint program)
     setClipUniforms(frame, program);
     setObjectWalkUniforms(frame, program);
     setCapUniforms(frame, program);
+    setTransparencyUniforms(frame, program);
 }
 
 void clearCountingState(TrimFrame& frame, PixelState& state)

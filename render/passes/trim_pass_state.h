@@ -16,8 +16,9 @@ class PixelState;
 /// frame's per-object winding buffer, if any (counting passes add to it).
 void setClipUniforms(const TrimFrame& frame, GLuint program);
 /// Rule and trim on/off (shaders/common/trim_walk.glsl), per-object rules and the CSG
-/// truth table, highlights, and the capping uniforms (shaders/common/cap.glsl, which also
-/// needs the clip uniforms: they are set too).
+/// truth table, highlights, the capping uniforms (shaders/common/cap.glsl, which also
+/// needs the clip uniforms: they are set too) and the transparency uniforms
+/// (shaders/common/transparency.glsl).
 void setTrimWalkUniforms(const TrimFrame& frame, GLuint program);
 /// Clears `state` (PixelState::clear) and the frame's per-object winding buffer, if any:
 /// what a method does before each pass that counts the winding index.

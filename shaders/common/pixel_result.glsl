@@ -4,11 +4,18 @@
 // (counted, magenta) — never silently wrong. A pixel that lost fragments is certain only
 // when the walk found its trim fragment in front of every lost one; a pixel whose long
 // list could not be sorted within the loop budget is never certain.
-// With CAPPING the cap comes first (cap.glsl). Needs frame_counters.glsl, trim_walk.glsl and
+// With CAPPING the cap comes first (cap.glsl). With TRANSPARENCY the color is the X-ray
+// composite (transparency.glsl); the id texel stays as without. Needs frame_counters.glsl, trim_walk.glsl and
 // trim_output.glsl.
 
+// clip.glsl first: cap.glsl and transparency.glsl both need it, and each file is
+// expanded once only, at its first #include.
+#include "common/clip.glsl"
 #ifdef CAPPING
 #include "common/cap.glsl"
+#endif
+#ifdef TRANSPARENCY
+#include "common/transparency.glsl"
 #endif
 
 void emitWalkResult(TrimWalk walk, bool certain, int windingAtStart, bool overflowed)
@@ -18,6 +25,9 @@ void emitWalkResult(TrimWalk walk, bool certain, int windingAtStart, bool overfl
     if (emitCapIfShown(g_startInterior, windingAtStart, overflowed)) {
         if (overflowed)
             atomicCounterIncrement(u_overflowPixels);
+#ifdef TRANSPARENCY
+        o_color = vec4(xrayPixelColor(o_color.rgb), 1.0);
+#endif
         return;
     }
 #endif
@@ -33,4 +43,11 @@ void emitWalkResult(TrimWalk walk, bool certain, int windingAtStart, bool overfl
     } else {
         emitEmptyPixel(windingAtStart, overflowed, false);
     }
+#ifdef TRANSPARENCY
+    // An uncertain pixel composites what it has (its shown fragment without highlights);
+    // its id texel still says unresolved.
+    float cosine;
+    vec3 shown = !walk.found ? vec3(0.0) : (certain ? o_color.rgb : xrayShade(walk.shown, cosine));
+    o_color = vec4(xrayPixelColor(shown), 1.0);
+#endif
 }

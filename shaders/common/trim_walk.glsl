@@ -9,6 +9,10 @@
 // - COPLANAR_COUNT (buffer methods): the walk goes on over the fragments at the shown
 //   fragment's depth and counts them;
 // - capping reads the classification at the span start (g_startInterior, cap.glsl).
+// - TRANSPARENCY (buffer methods): the walk goes on over every fragment of the span and
+//   hands each to the X-ray compositing with its classification (transparency.glsl,
+//   included by pixel_result.glsl); it stops once the compositing is done and the shown
+//   fragment is known (walkTrimLayers + compositeXray in core/trim/).
 // Needs fragment_pack.glsl and static_rule.glsl (and bindings.glsl with OBJECT_WINDINGS).
 
 uniform bool u_trimEnabled;
@@ -72,6 +76,13 @@ int g_groupCount = 0;        // fragments of that run fed so far
 
 bool g_startInterior = false; // the classification at the span start (capping)
 
+#ifdef TRANSPARENCY
+// Defined in transparency.glsl (it needs the output and scene functions).
+void beginXray(bool startInterior);
+void xrayFragment(uvec2 fragment, bool boundary, bool interiorBefore, bool first);
+bool xrayDone();
+#endif
+
 struct TrimWalk {
     int winding;  // index of the space in front of the next fragment
     bool found;   // the shown fragment is known
@@ -86,8 +97,66 @@ TrimWalk beginTrimWalk(int windingAtStart)
         g_objectWinding[o] = objectWindings[base + uint(o)];
 #endif
     g_startInterior = u_trimEnabled && walkInterior(windingAtStart);
+#ifdef TRANSPARENCY
+    beginXray(g_startInterior);
+#endif
     return TrimWalk(windingAtStart, false, uvec2(0u));
 }
+
+#ifdef TRANSPARENCY
+// The walk of every fragment of the span (walkTrimLayers): the classification on both
+// sides of each goes to the compositing; the first boundary is the shown fragment (with
+// its highlights, as without transparency). Returns true once the compositing is done
+// and the shown fragment (and, with COPLANAR_COUNT, the fragments at its depth) is known.
+bool trimWalkStep(inout TrimWalk walk, uvec2 fragment)
+{
+#ifdef COPLANAR_COUNT
+    float depth = fragmentDepth(fragment);
+    if (depth != g_groupDepth) {
+        g_groupDepth = depth;
+        g_groupCount = 0;
+    }
+    ++g_groupCount;
+    bool atShownDepth = walk.found && depth == fragmentDepth(walk.shown);
+    if (atShownDepth)
+        g_coplanar = g_groupCount;
+    if (walk.found && xrayDone())
+        return !atShownDepth;
+#else
+    if (walk.found && xrayDone())
+        return true;
+#endif
+    int step = fragmentFrontFacing(fragment) ? 1 : -1;
+    int after = walk.winding + step;
+    bool interiorBefore = u_trimEnabled && walkInterior(walk.winding);
+#ifdef OBJECT_WINDINGS
+    uint o = fragmentObject(fragment);
+    bool tracked = o < uint(OBJECT_WINDINGS);
+    int ownBefore = tracked ? g_objectWinding[min(o, uint(OBJECT_WINDINGS - 1))] : 0; // no index formed out of range
+    if (tracked)
+        g_objectWinding[o] = ownBefore + step;
+#endif
+    bool boundary = !u_trimEnabled || interiorBefore != walkInterior(after);
+    walk.winding = after;
+    bool first = boundary && !walk.found;
+    if (first) {
+        walk.found = true;
+        walk.shown = fragment;
+#ifdef OBJECT_WINDINGS
+        g_collision = u_highlightCollisions && tracked && fragmentCollides(o, ownBefore, ownBefore + step);
+#endif
+#ifdef COPLANAR_COUNT
+        g_coplanar = g_groupCount;
+#endif
+    }
+    xrayFragment(fragment, boundary, interiorBefore, first);
+#ifdef COPLANAR_COUNT
+    return false; // the next fragment tells whether the shown depth's group is complete
+#else
+    return walk.found && xrayDone();
+#endif
+}
+#else
 
 // Feeds the next fragment behind the previous one. Returns true once the walk is done:
 // with trimming, at the first fragment whose two sides classify differently; without,
@@ -140,6 +209,8 @@ bool trimWalkStep(inout TrimWalk walk, uvec2 fragment)
     walk.winding = after;
     return false;
 }
+
+#endif // TRANSPARENCY
 
 // Static walks are always decidable and leave nothing behind (the dynamic walk's
 // versions of these record the characterization and report an overflowed reference).

@@ -1,6 +1,7 @@
 // `trimlab render` with the interior-inspection flags as users call it: repeated --clip,
 // --cap, --csg, --object-rule and --highlight; bad combinations exit with 2 and one line;
 // both backends' ids and depths agree with the in-process CPU reference.
+#include "color_check.h"
 #include "gl_test_context.h"
 #include "run_trimlab.h"
 #include "trim_comparison.h"
@@ -90,6 +91,7 @@ private slots:
     void badArgumentsExitWithTwo();
     void referenceBackendWritesCapsAndCsg();
     void gpuBackendAgreesWithReference();
+    void transparencyColorsAgreeWithReference();
 
 private:
     QTemporaryDir m_dir;
@@ -120,6 +122,16 @@ void TestInspectCli::badArgumentsExitWithTwo_data()
                                         << "--rule none has no interior";
     QTest::newRow("bad cap pattern") << base + QStringList{"--clip", "1,0,0,0", "--cap", "--cap-pattern", "dots"}
                                      << "unknown --cap-pattern 'dots'";
+    QTest::newRow("bad transparency") << base + QStringList{"--transparency", "glass"}
+                                      << "unknown --transparency 'glass'";
+    QTest::newRow("alpha without transparency") << base + QStringList{"--ghost-alpha", "0.5"}
+                                                << "--ghost-alpha needs --transparency";
+    QTest::newRow("alpha out of range") << base + QStringList{"--transparency", "opaque", "--layer-alpha", "1.5"}
+                                        << "--layer-alpha must be a number from 0 to 1";
+    QTest::newRow("negative density") << base + QStringList{"--transparency", "translucent", "--density", "-1"}
+                                      << "--density must be a number from 0";
+    QTest::newRow("transparency with two-pass") << base + QStringList{"--transparency", "opaque", "--method", "two-pass"}
+                                                << "--method two-pass cannot render --transparency";
     QTest::newRow("csg with a peeling method") << base + QStringList{"--csg", "0 | 1", "--method", "peeling-dual"}
                                                << "--method peeling-dual cannot render --csg";
 }
@@ -214,6 +226,40 @@ void TestInspectCli::gpuBackendAgreesWithReference()
         QVERIFY(caps > 1000);
         QVERIFY2(capsAgreeing >= caps * 999 / 1000, qPrintable(QStringLiteral("%1 of %2").arg(capsAgreeing).arg(caps)));
     }
+}
+
+// --transparency with both backends: the reference backend's PNG is the in-process
+// reference's color image byte for byte; the GPU's is within 2/255 on >= 99.9 % of the
+// pixels whose ray hits anything (tests/render/tst_transparency_methods.cpp says why).
+void TestInspectCli::transparencyColorsAgreeWithReference()
+{
+    const QStringList view = {"render", "demo:pushed-sphere", "--transparency", "translucent", "--layer-alpha", "0.3",
+                              "--ghost-alpha", "0.2", "--density", "0.8", "--fresnel", "2", "--size", "160x120"};
+    const Scene scene = loadScene("demo:pushed-sphere").scene;
+    TrimSettings settings;
+    settings.transparency = {true, TrimDisplay::Translucent, 0.3, 0.2, 0.8, 2.0};
+    const Camera camera = fitCamera(scene.worldBounds(), double(kWidth) / kHeight);
+    const ReferenceResult reference = ReferenceRenderer(scene).render(camera, kWidth, kHeight, settings);
+    const QString cpu = m_dir.filePath("xray-ref.png");
+    const Run run = runTrimlab(view + QStringList{"--backend", "reference", "-o", cpu});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains("X-ray translucent"), qPrintable(run.out));
+    QCOMPARE(QImage(cpu).convertToFormat(QImage::Format_RGBA8888), test::rgbaToImage(reference.color));
+    QString why;
+    if (!test::tryCreateGlContext(&why)) {
+        if (test::glRequired())
+            QFAIL(qPrintable("TRIMLAB_REQUIRE_GL=1 but no OpenGL 4.3 context: " + why));
+        QSKIP(qPrintable("no OpenGL 4.3 context: " + why));
+    }
+    const QString gpu = m_dir.filePath("xray-gpu.png");
+    const Run gpuRun = runTrimlab(view + QStringList{"--method", "s-buffer", "-o", gpu});
+    QVERIFY2(gpuRun.exitCode == 0, qPrintable(gpuRun.err));
+    const QImage image(gpu);
+    const test::ColorComparison colors =
+        test::compareColors(image, TrimImage(kWidth, kHeight), reference.color, reference.diagnostics, 2);
+    qInfo("%s", qPrintable(colors.summary()));
+    const auto violation = test::colorViolation(colors, image, reference.color, "cli-xray", 0.999, 1000);
+    QVERIFY2(!violation, violation ? qPrintable(*violation) : "");
 }
 
 QTEST_MAIN(TestInspectCli)

@@ -20,3 +20,6 @@ else()
            COMMAND sh -c "echo 'OpenCSG or GLEW missing: install libopencsg-dev libglew-dev'; exit 1")
   set_tests_properties(render.opencsg_comparison PROPERTIES LABELS render)
 endif()
+
+# Transparency / X-ray: every buffer method's colors against the CPU reference.
+trimlab_add_test(render transparency_methods LIBS trimlab_gl_test_support)

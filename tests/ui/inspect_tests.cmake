@@ -7,3 +7,6 @@ trimlab_add_test(ui inspect_settings LIBS trimlab::ui TIMEOUT 60)
 trimlab_add_test(ui inspect_csg LIBS trimlab::ui trimlab_gl_test_support TIMEOUT 120)
 trimlab_add_test(ui inspect_clip LIBS trimlab::ui trimlab_gl_test_support TIMEOUT 120)
 trimlab_add_test(ui inspect_transform LIBS trimlab::ui trimlab_gl_test_support TIMEOUT 120)
+# X-ray: its choices through the store and the panel, and the viewport's colors against
+# the CPU reference after switching it on through the widgets.
+trimlab_add_test(ui inspect_xray LIBS trimlab::ui trimlab_gl_test_support TIMEOUT 120)
