@@ -3,11 +3,13 @@
 #include "cli_messages.h"
 
 #include "scene/scene_source.h"
+#include "surface/surface_scenes.h"
 #include "timeline/project_file.h"
 #include "timeline/stroke_replay.h"
 #include "timeline/stroke_script.h"
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 namespace trimlab::app {
@@ -61,11 +63,29 @@ DesignedFrame loadProjectFile(const RenderOptions& options)
     return design;
 }
 
+// A built-in surface demo with a history of control-point edits (surface_scenes.h).
+std::optional<DesignedFrame> demoHistory(const RenderOptions& options)
+{
+    if (!isDemoSource(options.source))
+        return std::nullopt;
+    const std::string name = options.source.substr(kDemoPrefix.size());
+    std::optional<timeline::Timeline> history = surfaceDemoHistory(name);
+    if (!history)
+        return std::nullopt;
+    DesignedFrame design{std::move(*history), 0, glm::dmat4(1.0), name};
+    design.frame = chosenFrame(options, design.timeline.frameCount() - 1, design.displayName);
+    return design;
+}
+
 } // namespace
 
 DesignedFrame loadDesignedFrame(const RenderOptions& options)
 {
-    return options.script.isEmpty() ? loadProjectFile(options) : replayScript(options);
+    if (!options.script.isEmpty())
+        return replayScript(options);
+    if (std::optional<DesignedFrame> demo = demoHistory(options))
+        return std::move(*demo);
+    return loadProjectFile(options);
 }
 
 } // namespace trimlab::app

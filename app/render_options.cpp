@@ -5,6 +5,8 @@
 
 #include "mfr/fragment_method.h"
 #include "render_choices.h"
+#include "scene/scene_source.h"
+#include "surface/surface_scenes.h"
 #include "trim/clip_plane.h"
 #include "trim/clip_set.h"
 #include "trim/csg_expression.h"
@@ -142,7 +144,8 @@ std::optional<QString> parseDesignOptions(const QCommandLineParser& parser, Rend
     else if (!classification.isEmpty() && classification != QLatin1String("dynamic"))
         return QStringLiteral("unknown --classification '%1' (use dynamic or static)").arg(classification);
     if ((options.frame || parser.isSet("classification")) && !options.designed())
-        return QStringLiteral("--frame and --classification need --script or a .trimlab project source");
+        return QStringLiteral("--frame and --classification need --script, a .trimlab project source or a "
+                              "demo with a history (demo:nurbs-fig8-13, demo:subdivision-push)");
     const TrimSettings& trim = options.trim;
     if (options.designed() && options.classification == Classification::Dynamic &&
         (trim.cap.enabled || trim.csg.enabled() || trim.highlight.any() || trim.xray()))
@@ -341,7 +344,8 @@ std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& argum
 
 bool RenderOptions::designed() const
 {
-    return !script.isEmpty() || QString::fromStdString(source).endsWith(QLatin1String(".trimlab"), Qt::CaseInsensitive);
+    return !script.isEmpty() || QString::fromStdString(source).endsWith(QLatin1String(".trimlab"), Qt::CaseInsensitive) ||
+           (isDemoSource(source) && hasSurfaceDemoHistory(std::string_view(source).substr(kDemoPrefix.size())));
 }
 
 } // namespace trimlab::app

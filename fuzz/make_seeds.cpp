@@ -4,6 +4,8 @@
 // the fuzz tree; scripts/fuzz runs it before fuzzing.
 #include "io/pfm_image.h"
 #include "skeleton/skeleton_json.h"
+#include "surface/nurbs_json.h"
+#include "surface/nurbs_primitives.h"
 #include "timeline/project_file.h"
 
 #include <cstdio>
@@ -53,6 +55,36 @@ void writeText(const std::filesystem::path& path, const std::string& text)
 
 } // namespace
 
+namespace {
+
+// Every primitive alone (closed, periodic, poles, open patch) and all of them in one file.
+void writeNurbsSeeds(const std::filesystem::path& folder)
+{
+    std::filesystem::create_directories(folder);
+    const std::vector<NurbsSurface> surfaces{
+        makeNurbsSphere({0.0, 0.0, 0.0}, 1.0), makeNurbsTorus({0.0, 0.0, 0.0}, 1.0, 0.25),
+        makeNurbsCylinder({0.0, 0.0, 0.0}, 0.5, 2.0), makeNurbsCappedTube({0.0, 0.0, 0.0}, 0.5, 1.0),
+        makeNurbsPatch({0.0, 0.0, 0.0}, 2.0, 2.0, 5, 4)};
+    for (std::size_t i = 0; i < surfaces.size(); ++i)
+        writeText(folder / ("surface_" + std::to_string(i) + ".json"), nurbsJson(std::span(&surfaces[i], 1)));
+    writeText(folder / "all.json", nurbsJson(surfaces));
+}
+
+// Cage seeds start with the scheme byte of fuzz_cage_obj ('0' Catmull–Clark, '1' Loop):
+// a cube with a crease ring and a corner, and a tetrahedron.
+void writeCageSeeds(const std::filesystem::path& folder)
+{
+    std::filesystem::create_directories(folder);
+    writeText(folder / "creased_cube.obj", "0v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\n"
+                                           "v -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+                                           "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n"
+                                           "t crease 2/1/0 4 5 10\nt crease 2/1/0 5 6 2.5\nt corner 1/1/0 0 10\n");
+    writeText(folder / "tetrahedron.obj", "1v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                          "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");
+}
+
+} // namespace
+
 int main(int argc, char** argv)
 {
     if (argc != 2) {
@@ -93,5 +125,8 @@ int main(int argc, char** argv)
     curve.vertexNode = {0, 1, 1, 2};
     writeText(out / "skeleton_json" / "chain.json", skeletonJson(rig, &curve));
     writeText(out / "skeleton_json" / "chain_without_curve.json", skeletonJson(rig));
+
+    writeNurbsSeeds(out / "nurbs_json");
+    writeCageSeeds(out / "cage_obj");
     return 0;
 }

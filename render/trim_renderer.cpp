@@ -55,7 +55,7 @@ std::string inspectionFeatures(const TrimSettings& settings)
 
 bool needsInspectionMethod(const TrimSettings& settings)
 {
-    return settings.perObjectWinding() || settings.highlight.coplanar;
+    return settings.perObjectWinding() || settings.highlight.coplanar || settings.xray();
 }
 
 namespace {
@@ -65,10 +65,6 @@ namespace {
 void checkInspection(const MethodInfo& info, const TrimMode& mode, const TrimSettings& settings,
                      std::size_t objectCount)
 {
-    const bool needsWalk = needsInspectionMethod(settings);
-    if (mode.dynamic && (needsWalk || settings.capping()))
-        throw std::invalid_argument("Capping, CSG and highlighting are not available with the dynamic rules; switch the "
-                                    "classification to static to use them.");
     if (settings.xray() && mode.dynamic)
         throw std::invalid_argument("Transparency (X-ray) is not available with the dynamic rules; switch the "
                                     "classification to static to use it.");
@@ -76,6 +72,10 @@ void checkInspection(const MethodInfo& info, const TrimMode& mode, const TrimSet
         throw std::invalid_argument(std::string(info.displayName) +
                                     " cannot render transparency (X-ray): it never holds all of a pixel's fragments "
                                     "in one pass. Pick a buffer method (k+-buffer, S-buffer, K+B-SB, AB_FP or AB_LL).");
+    const bool needsWalk = needsInspectionMethod(settings);
+    if (mode.dynamic && (needsWalk || settings.capping()))
+        throw std::invalid_argument("Capping, CSG and highlighting are not available with the dynamic rules; switch the "
+                                    "classification to static to use them.");
     if (needsWalk && !info.inspection)
         throw std::invalid_argument(std::string(info.displayName) + " cannot render " + inspectionFeatures(settings) +
                                     ": it never holds all of a pixel's fragments in one pass. Pick a buffer method "

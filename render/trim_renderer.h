@@ -55,8 +55,8 @@ struct TrimMode {
 };
 
 /// The settings need a method that walks all of a pixel's fragments in one pass
-/// (MethodInfo::inspection): per-object windings (CSG, collision highlighting) or coplanar
-/// counts. Other methods refuse such settings with std::invalid_argument.
+/// (MethodInfo::inspection): per-object windings (CSG, collision highlighting), coplanar
+/// counts or transparency. Other methods refuse such settings with std::invalid_argument.
 [[nodiscard]] bool needsInspectionMethod(const TrimSettings& settings);
 
 class TrimRenderer {

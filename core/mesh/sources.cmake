@@ -6,6 +6,8 @@ target_sources(trimlab_core PRIVATE
   mesh/gltf_reader.cpp
   mesh/gzip_input.cpp
   mesh/loop_subdivision.cpp
+  mesh/obj_writer.cpp
+  mesh/obj_line_parser.cpp
   mesh/mesh_io.cpp
   mesh/mesh_load_error.cpp
   mesh/mesh_validation.cpp

@@ -1,7 +1,10 @@
 #include "scene/scene_source.h"
 
 #include "mesh/mesh_io.h"
+#include "mesh/mesh_load_error.h"
 #include "scene/demo_scenes.h"
+#include "surface/nurbs_json.h"
+#include "surface/surface_scenes.h"
 
 #include <filesystem>
 #include <stdexcept>
@@ -14,14 +17,28 @@ Scene demoScene(std::string_view name)
 {
     if (std::optional<Scene> scene = makeDemoScene(name))
         return std::move(*scene);
+    if (std::optional<Scene> scene = makeSurfaceDemoScene(name))
+        return std::move(*scene);
     std::string known;
     for (const std::string& n : demoSceneNames())
         known += (known.empty() ? "" : ", ") + std::string(kDemoPrefix) + n;
+    for (const std::string& n : surfaceDemoNames())
+        known += ", " + std::string(kDemoPrefix) + n;
     throw std::invalid_argument("Unknown demo scene '" + std::string(name) + "'. Known demos: " + known + ".");
 }
 
 Scene fileScene(const std::string& path)
 {
+    if (isNurbsFileName(path)) {
+        try {
+            return nurbsFileScene(path);
+        } catch (const NurbsFileError& error) {
+            // One error type for every file a scene is read from (the callers catch it).
+            throw MeshLoadError(error.file(), error.reason(), MeshErrorLocation{0, error.where()});
+        } catch (const std::invalid_argument& error) {
+            throw MeshLoadError(path, error.what());
+        }
+    }
     Scene scene;
     scene.objects.push_back({std::filesystem::path(path).filename().string(), loadMesh(path), glm::dmat4(1.0)});
     return scene;

@@ -30,7 +30,11 @@ inline constexpr std::string_view kDemoPrefix = "demo:";
 
 [[nodiscard]] bool isDemoSource(std::string_view source);
 
-/// Loads `source`. Throws MeshLoadError for unreadable or malformed files and
+/// Loads `source`: a mesh file, a NURBS file (name ending in ".nurbs.json" or ".nurbs",
+/// surface/surface_scenes.h: one tessellated object per surface), "demo:NAME" for a demo
+/// scene (demo_scenes.h) or a surface demo (surfaceDemoNames(), e.g.
+/// "demo:nurbs-sphere"). Throws MeshLoadError for unreadable or malformed files (NURBS
+/// file errors included, with their JSON path as the element) and
 /// std::invalid_argument for an unknown demo name (listing the known ones).
 [[nodiscard]] LoadedScene loadScene(const std::string& source);
 

@@ -216,20 +216,8 @@ void saveSkeletonJson(const std::filesystem::path& path, const SkeletonRig& rig,
 
 SkeletonDocument parseSkeletonJson(std::string_view text, const std::string& displayName)
 {
-    json document;
-    try {
-        document = timeline::parseJsonText(text);
-    } catch (const timeline::JsonSyntaxError& error) {
-        const std::string at = "line " + std::to_string(error.position().line) + ", column " +
-                               std::to_string(error.position().column);
-        throw SkeletonFileError(displayName, "", (error.truncated() ? "truncated JSON at " : "invalid JSON at ") + at +
-                                                     ": " + error.reason());
-    }
-    try {
-        return readDocument(document);
-    } catch (const JsonPathError& error) {
-        throw SkeletonFileError(displayName, error.path(), error.reason());
-    }
+    return timeline::readJsonDocument<SkeletonFileError>(
+        text, displayName, [](const json& document) { return readDocument(document); });
 }
 
 SkeletonDocument loadSkeletonJson(const std::filesystem::path& path)

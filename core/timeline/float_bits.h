@@ -18,4 +18,12 @@ namespace trimlab::timeline {
            std::bit_cast<std::uint32_t>(a.z) == std::bit_cast<std::uint32_t>(b.z);
 }
 
+/// The same for double-precision points (control points of editable surfaces).
+[[nodiscard]] inline bool sameBits(const glm::dvec3& a, const glm::dvec3& b)
+{
+    return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+           std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y) &&
+           std::bit_cast<std::uint64_t>(a.z) == std::bit_cast<std::uint64_t>(b.z);
+}
+
 } // namespace trimlab::timeline

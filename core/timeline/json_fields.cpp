@@ -154,6 +154,20 @@ std::string parseReason(const std::string& message)
     return colon == std::string::npos ? message : message.substr(colon + 2);
 }
 
+// nlohmann refuses a number beyond the double range ("1e999") with out_of_range 406
+// ("number overflow parsing '1e999'"), which carries no position: find the number.
+JsonSyntaxError numberOverflow(std::string_view text, const std::string& message)
+{
+    const std::size_t open = message.find('\'');
+    const std::size_t close = open == std::string::npos ? open : message.find('\'', open + 1);
+    if (close == std::string::npos)
+        return JsonSyntaxError(TextPosition{}, false, message);
+    const std::string number = message.substr(open + 1, close - open - 1);
+    const std::size_t offset = text.find(number);
+    return JsonSyntaxError(offset == std::string_view::npos ? TextPosition{} : textPosition(text, offset), false,
+                           "the number " + number + " does not fit a double; use finite values");
+}
+
 } // namespace
 
 nlohmann::json parseJsonText(std::string_view text, std::size_t maxDepth)
@@ -172,7 +186,16 @@ nlohmann::json parseJsonText(std::string_view text, std::size_t maxDepth)
         const bool truncated = error.byte > text.size();
         const std::size_t offset = error.byte > 0 ? std::min<std::size_t>(error.byte - 1, text.size()) : 0;
         throw JsonSyntaxError(textPosition(text, offset), truncated, parseReason(error.what()));
+    } catch (const nlohmann::json::out_of_range& error) {
+        throw numberOverflow(text, error.what());
     }
+}
+
+std::string jsonSyntaxErrorText(const JsonSyntaxError& error)
+{
+    return std::string(error.truncated() ? "truncated JSON at " : "invalid JSON at ") + "line " +
+           std::to_string(error.position().line) + ", column " + std::to_string(error.position().column) + ": " +
+           error.reason();
 }
 
 } // namespace trimlab::timeline

@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace trimlab::timeline {
 
@@ -87,5 +88,27 @@ private:
 /// JSON and for arrays/objects nested deeper than `maxDepth` (which could exhaust the
 /// stack of recursive consumers).
 [[nodiscard]] nlohmann::json parseJsonText(std::string_view text, std::size_t maxDepth = 64);
+
+/// "invalid JSON at line L, column C: REASON" ("truncated JSON at …" when it ended early).
+[[nodiscard]] std::string jsonSyntaxErrorText(const JsonSyntaxError& error);
+
+/// A whole JSON document format's parse: parseJsonText, then `read(document)`; a syntax
+/// error becomes `Error(displayName, "", jsonSyntaxErrorText(…))` and a JsonPathError
+/// `Error(displayName, path, reason)` — `Error` being the format's DocumentFileError.
+template <class Error, class Read>
+auto readJsonDocument(std::string_view text, const std::string& displayName, Read&& read)
+{
+    nlohmann::json document;
+    try {
+        document = parseJsonText(text);
+    } catch (const JsonSyntaxError& error) {
+        throw Error(displayName, "", jsonSyntaxErrorText(error));
+    }
+    try {
+        return read(std::as_const(document));
+    } catch (const JsonPathError& error) {
+        throw Error(displayName, error.path(), error.reason());
+    }
+}
 
 } // namespace trimlab::timeline

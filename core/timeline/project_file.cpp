@@ -5,6 +5,7 @@
 #include "timeline/file_bytes.h"
 #include "timeline/json_fields.h"
 #include "timeline/stroke_json.h"
+#include "timeline/surface_json.h"
 
 #include <nlohmann/json.hpp>
 
@@ -33,10 +34,15 @@ json framesJson(const Timeline& timeline)
     json frames = json::array();
     for (int f = 1; f < timeline.frameCount(); ++f) {
         const Frame& frame = timeline.frame(f);
-        frames.push_back(json{{"stroke", strokeJson(frame.stroke)},
-                              {"vertices", uint32ArrayJson(frame.vertices)},
-                              {"before", positionArrayJson(frame.before)},
-                              {"after", positionArrayJson(frame.after)}});
+        json item = json{{"vertices", uint32ArrayJson(frame.vertices)},
+                         {"before", positionArrayJson(frame.before)},
+                         {"after", positionArrayJson(frame.after)}};
+        // A frame is a stroke or a control-point edit; the key says which.
+        if (frame.isControlEdit())
+            item["control_moves"] = controlMovesJson(frame.controlMoves);
+        else
+            item["stroke"] = strokeJson(frame.stroke);
+        frames.push_back(std::move(item));
     }
     return frames;
 }
@@ -137,7 +143,14 @@ std::vector<Frame> readFrames(const json& value, const std::string& path)
         const json& item = value[f];
         requireObject(item, framePath);
         Frame frame;
-        frame.stroke = readStrokeJson(requiredField(item, "stroke", framePath), fieldPath(framePath, "stroke"), false);
+        if (const json* moves = optionalField(item, "control_moves")) {
+            if (optionalField(item, "stroke"))
+                throw JsonPathError(framePath, "has both 'stroke' and 'control_moves'; a frame is one or the other");
+            frame.controlMoves = readControlMoves(*moves, fieldPath(framePath, "control_moves"));
+        } else {
+            frame.stroke =
+                readStrokeJson(requiredField(item, "stroke", framePath), fieldPath(framePath, "stroke"), false);
+        }
         frame.vertices = readUint32Array(requiredField(item, "vertices", framePath), fieldPath(framePath, "vertices"));
         frame.before = readPositionArray(requiredField(item, "before", framePath), fieldPath(framePath, "before"));
         frame.after = readPositionArray(requiredField(item, "after", framePath), fieldPath(framePath, "after"));
@@ -180,9 +193,13 @@ Project readDocument(const json& document)
     TriangleMesh base = readMesh(requiredField(document, "base_mesh", ""), "base_mesh");
     std::vector<DeformationSet> sets = readSets(requiredField(document, "sets", ""), "sets");
     std::vector<Frame> frames = readFrames(requiredField(document, "frames", ""), "frames");
+    std::optional<SurfaceDefinition> surface;
+    if (const json* value = optionalField(document, "surface"))
+        surface = readSurfaceDefinition(*value, "surface");
     ProjectExtras extras = readExtras(document);
     try {
-        return Project{Timeline::restore(std::move(base), std::move(frames), std::move(sets)), std::move(extras)};
+        return Project{Timeline::restore(std::move(base), std::move(frames), std::move(sets), std::move(surface)),
+                       std::move(extras)};
     } catch (const std::invalid_argument& error) {
         throw JsonPathError("", std::string("inconsistent history: ") + error.what());
     }
@@ -194,8 +211,12 @@ std::string projectJson(const Timeline& timeline, const ProjectExtras& extras)
 {
     json document = json::object();
     document["format"] = std::string(kProjectFormatName);
-    document["version"] = kProjectFormatVersion;
+    // Plain mesh histories stay version 1, readable by every TrimLab; only the surface
+    // parts need version 2.
+    document["version"] = timeline.hasSurface() ? kProjectFormatVersion : 1;
     document["generator"] = "TrimLab";
+    if (timeline.surface())
+        document["surface"] = surfaceDefinitionJson(*timeline.surface());
     document["base_mesh"] = meshJson(timeline.base());
     document["sets"] = setsJson(timeline);
     document["frames"] = framesJson(timeline);

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// The `.trimlab` project file: the base mesh, every frame (stroke and exact positions)
-/// and the sets of the deformation history, plus optional view settings. Loading
+/// The `.trimlab` project file: the base mesh, every frame (stroke or control-point edit,
+/// and exact positions), the sets of the deformation history and, for editable surfaces,
+/// the surface definition, plus optional view settings. Loading
 /// restores the Timeline exactly — bit for bit — and saving replaces the file atomically.
 /// The format is documented in docs/project-format.md.
 
@@ -21,8 +22,11 @@ namespace trimlab::timeline {
 
 /// The value of the "format" field.
 inline constexpr std::string_view kProjectFormatName = "trimlab-project";
-/// The newest format version this TrimLab reads and the one it writes.
-inline constexpr int kProjectFormatVersion = 1;
+/// The newest format version this TrimLab reads, and the one it writes for histories of
+/// editable surfaces (version 2 adds "surface" and frames with "control_moves"). Plain
+/// mesh histories are still written as version 1, so older TrimLabs open them; every
+/// version-1 file reads unchanged.
+inline constexpr int kProjectFormatVersion = 2;
 /// The largest project file accepted: 4 GiB.
 inline constexpr std::size_t kMaxProjectBytes = std::size_t(4) << 30;
 

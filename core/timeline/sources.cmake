@@ -16,6 +16,7 @@ target_sources(trimlab_core PRIVATE
   timeline/stroke_replay.cpp
   timeline/stroke_script.cpp
   timeline/stroke_validation.cpp
+  timeline/surface_json.cpp
   timeline/timeline.cpp
 )
 target_link_libraries(trimlab_core PRIVATE nlohmann_json::nlohmann_json)

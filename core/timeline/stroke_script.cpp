@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace trimlab::timeline {
 
@@ -159,8 +161,13 @@ StrokeScript strokeScriptFromTimeline(const Timeline& timeline)
     for (const DeformationSet& set : timeline.sets()) {
         ScriptSet scriptSet;
         scriptSet.rule = set.rule;
-        for (int f = set.firstFrame; f < set.firstFrame + set.frameCount; ++f)
+        for (int f = set.firstFrame; f < set.firstFrame + set.frameCount; ++f) {
+            if (timeline.frame(f).isControlEdit())
+                throw std::invalid_argument("frame " + std::to_string(f) +
+                                            " is a control-point edit; a stroke script holds brush strokes only "
+                                            "(save the history as a project instead)");
             scriptSet.strokes.push_back(timeline.frame(f).stroke);
+        }
         script.sets.push_back(std::move(scriptSet));
     }
     if (script.sets.empty())

@@ -89,7 +89,8 @@ void writeStrokeScript(const std::filesystem::path& path, const StrokeScript& sc
 
 /// What the GUI records: one script set per timeline set, with the set's rule and the
 /// recorded (resolved) strokes of its frames. Replaying it on timeline.base() gives the
-/// same frames (stroke_replay.h).
+/// same frames (stroke_replay.h). Stroke scripts hold brush strokes only: a history with a
+/// control-point edit throws std::invalid_argument naming the frame (save a project).
 [[nodiscard]] StrokeScript strokeScriptFromTimeline(const Timeline& timeline);
 
 } // namespace trimlab::timeline

@@ -74,6 +74,31 @@ void checkSets(const std::vector<DeformationSet>& sets, std::size_t frameTotal)
                                     std::to_string(frameTotal));
 }
 
+std::string dvec3Text(const glm::dvec3& p)
+{
+    return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")";
+}
+
+// Tied NURBS points (seam twins, poles) must end where their partners end.
+void checkTies(const SurfaceDefinition& surface, const std::vector<glm::dvec3>& current,
+               const std::vector<ControlPointMove>& moves)
+{
+    if (surface.kind() != SurfaceKind::Nurbs)
+        return;
+    std::vector<glm::dvec3> next = current;
+    for (const ControlPointMove& move : moves)
+        next[move.index] = move.after;
+    for (std::size_t k = 0; k < moves.size(); ++k) {
+        for (const std::uint32_t tied : tiedControlPoints(surface, moves[k].index)) {
+            if (!sameBits(next[tied], moves[k].after))
+                throw std::invalid_argument("control move " + std::to_string(k) + ": control point " +
+                                            std::to_string(moves[k].index) + " is tied to control point " +
+                                            std::to_string(tied) +
+                                            " (a seam twin or the same pole), which must move with it");
+        }
+    }
+}
+
 } // namespace
 
 Timeline::Timeline(TriangleMesh base, DynamicRule firstRule)
@@ -82,11 +107,20 @@ Timeline::Timeline(TriangleMesh base, DynamicRule firstRule)
     m_current = m_base.positions;
 }
 
-Timeline Timeline::restore(TriangleMesh base, std::vector<Frame> frames, std::vector<DeformationSet> sets)
+Timeline::Timeline(TriangleMesh base, SurfaceDefinition surface, DynamicRule firstRule)
+    : Timeline(std::move(base), firstRule)
+{
+    requireValidSurfaceDefinition(surface, "Timeline");
+    m_currentControl = surface.controlPoints();
+    m_surface = std::move(surface);
+}
+
+Timeline Timeline::restore(TriangleMesh base, std::vector<Frame> frames, std::vector<DeformationSet> sets,
+                           std::optional<SurfaceDefinition> surface)
 {
     checkTriangles(base);
     checkSets(sets, frames.size());
-    Timeline timeline(std::move(base));
+    Timeline timeline = surface ? Timeline(std::move(base), std::move(*surface)) : Timeline(std::move(base));
     timeline.m_frames.reserve(frames.size());
     for (std::size_t f = 0; f < frames.size(); ++f) {
         try {
@@ -136,14 +170,62 @@ std::vector<glm::vec3> Timeline::positionsAt(int f) const
     return positions;
 }
 
+std::vector<glm::dvec3> Timeline::controlPointsAt(int f) const
+{
+    if (f < 0 || f >= frameCount())
+        throw std::out_of_range("Timeline::controlPointsAt: frame " + std::to_string(f) +
+                                " does not exist (the timeline has " + std::to_string(frameCount()) + " frames)");
+    if (f == frameCount() - 1 || !m_surface)
+        return m_currentControl;
+    std::vector<glm::dvec3> points = m_surface->controlPoints();
+    for (int i = 0; i < f; ++i)
+        for (const ControlPointMove& move : m_frames[std::size_t(i)].controlMoves)
+            points[move.index] = move.after;
+    return points;
+}
+
 TriangleMesh Timeline::meshAt(int f) const
 {
     return TriangleMesh{positionsAt(f), m_base.triangles};
 }
 
+void Timeline::checkControlMoves(const Frame& frame) const
+{
+    if (!m_surface)
+        throw std::invalid_argument("a control-point edit needs a surface definition (this history has none)");
+    const std::vector<ControlPointMove>& moves = frame.controlMoves;
+    for (std::size_t k = 0; k < moves.size(); ++k) {
+        const std::string where = "control move " + std::to_string(k) + ": ";
+        const ControlPointMove& move = moves[k];
+        if (move.index >= m_currentControl.size())
+            throw std::invalid_argument(where + "control point " + std::to_string(move.index) +
+                                        " is out of range (the surface has " +
+                                        std::to_string(m_currentControl.size()) + " control points)");
+        if (k > 0 && move.index <= moves[k - 1].index)
+            throw std::invalid_argument(where + "the control points are not sorted ascending and unique: " +
+                                        std::to_string(moves[k - 1].index) + " is followed by " +
+                                        std::to_string(move.index));
+        if (!sameBits(move.before, m_currentControl[move.index]))
+            throw std::invalid_argument(where + "the 'before' position " + dvec3Text(move.before) +
+                                        " of control point " + std::to_string(move.index) +
+                                        " differs from its current position " +
+                                        dvec3Text(m_currentControl[move.index]));
+        if (!std::isfinite(move.after.x) || !std::isfinite(move.after.y) || !std::isfinite(move.after.z))
+            throw std::invalid_argument(where + "the 'after' position of control point " +
+                                        std::to_string(move.index) + " is not finite");
+    }
+    checkTies(*m_surface, m_currentControl, moves);
+}
+
 void Timeline::checkFrame(const Frame& frame) const
 {
-    if (const std::string problem = strokeProblem(frame.stroke); !problem.empty())
+    if (frame.isControlEdit())
+        checkControlMoves(frame);
+    else if (m_surface)
+        throw std::invalid_argument("this history edits a " + std::string(surfaceKindName(m_surface->kind())) +
+                                    " surface through its control points; a brush stroke on its mesh would "
+                                    "break that (use the control-point brush)");
+    else if (const std::string problem = strokeProblem(frame.stroke); !problem.empty())
         throw std::invalid_argument("invalid stroke: " + problem);
     checkVertexList(frame, m_current.size());
     for (std::size_t k = 0; k < frame.vertices.size(); ++k) {
@@ -163,6 +245,8 @@ void Timeline::appendFrame(Frame frame)
     checkFrame(frame);
     for (std::size_t k = 0; k < frame.vertices.size(); ++k)
         m_current[frame.vertices[k]] = frame.after[k];
+    for (const ControlPointMove& move : frame.controlMoves)
+        m_currentControl[move.index] = move.after;
     if (m_sets.empty())
         m_sets.push_back(DeformationSet{DynamicRule::Confluent, frameCount(), 0});
     ++m_sets.back().frameCount;
@@ -177,6 +261,8 @@ Frame Timeline::removeLastFrame()
     m_frames.pop_back();
     for (std::size_t k = 0; k < frame.vertices.size(); ++k)
         m_current[frame.vertices[k]] = frame.before[k];
+    for (const ControlPointMove& move : frame.controlMoves)
+        m_currentControl[move.index] = move.before;
     std::size_t owner = m_sets.size() - 1;
     while (m_sets[owner].frameCount == 0)
         --owner; // the sets hold every frame, so a non-empty one exists

@@ -8,24 +8,57 @@
 ///
 /// Frames store the exact positions they changed (sparse), so positionsAt(f) is bit-exact
 /// whatever the brush code does later, and undo restores positions bit for bit.
+///
+/// Editable surfaces (NURBS, subdivision; core/surface/): a timeline may also hold the
+/// SurfaceDefinition its base mesh was tessellated from. Its frames are then either brush
+/// strokes on the mesh or control-point edits (Frame::controlMoves), which store the
+/// exact control points they moved as well as the exact mesh vertices that changed, so
+/// the dynamic rules see them exactly like strokes (the tessellation's connectivity is
+/// fixed) and controlPointsAt(f) is bit-exact like positionsAt(f).
 
 #include "deform/stroke.h"
 #include "mesh/triangle_mesh.h"
+#include "surface/surface_definition.h"
 #include "trim/dynamic_rule.h"
 
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace trimlab::timeline {
 
-/// One committed stroke and exactly what it changed.
+/// One control point of an editable surface moved by a control-point edit: its index
+/// into SurfaceDefinition::controlPoints() (< #C) and its exact positions (object space,
+/// double precision) before and after the edit.
+struct ControlPointMove {
+    std::uint32_t index = 0;
+    glm::dvec3 before{0.0};
+    glm::dvec3 after{0.0};
+
+    friend bool operator==(const ControlPointMove&, const ControlPointMove&) = default;
+};
+
+/// One committed edit and exactly what it changed: a brush stroke on the mesh, or a
+/// control-point edit of the timeline's surface.
+/// - Stroke frame: `controlMoves` is empty; `stroke` is the stroke.
+/// - Control-point edit: `controlMoves` is not empty (isControlEdit()); `stroke` is
+///   ignored (leave it default-constructed; it is neither validated beyond what a
+///   default stroke passes nor saved).
+/// In both, `vertices`/`before`/`after` are the mesh vertices whose bits changed.
 struct Frame {
-    deform::Stroke stroke;                  ///< resolved (anchorTriangle set)
+    deform::Stroke stroke;                  ///< resolved (anchorTriangle set); unused by control edits
     std::vector<std::uint32_t> vertices;    ///< moved vertices, sorted ascending, unique
     std::vector<glm::vec3> before;          ///< their positions in the previous frame
     std::vector<glm::vec3> after;           ///< their positions in this frame
+    /// Control-point edits only: the moved control points, sorted ascending by index,
+    /// unique, `before` equal (bits) to the previous frame's control points, `after`
+    /// finite. Tied NURBS points (tiedControlPoints) are listed each, with equal values.
+    std::vector<ControlPointMove> controlMoves;
+
+    /// True for a control-point edit, false for a brush stroke.
+    [[nodiscard]] bool isControlEdit() const { return !controlMoves.empty(); }
 
     /// Field-wise equality (floats by value; compare bit patterns where -0.0f matters).
     friend bool operator==(const Frame&, const Frame&) = default;
@@ -47,6 +80,12 @@ public:
     Timeline() = default;
     /// Starts a history on `base` with one empty set of `firstRule`.
     explicit Timeline(TriangleMesh base, DynamicRule firstRule = DynamicRule::Confluent);
+    /// Starts the history of an editable surface: `base` must be the tessellation of
+    /// `surface` at its own control points (EditableSurface(surface).mesh(); use
+    /// surfaceTimeline() in core/surface/control_edit.h, which guarantees it — this
+    /// constructor does not tessellate). Throws std::invalid_argument "Timeline: ..." for
+    /// an invalid definition (requireValidSurfaceDefinition).
+    Timeline(TriangleMesh base, SurfaceDefinition surface, DynamicRule firstRule = DynamicRule::Confluent);
 
     /// Rebuilds a history from its parts (what a project file stores). `sets` must be
     /// contiguous: sets[0].firstFrame == 1, each next set starts where the previous one
@@ -56,9 +95,16 @@ public:
     /// index must be < #V. Throws std::invalid_argument naming the first problem
     /// ("frames[3]: vertex 9 is out of range (the mesh has 8 vertices)",
     /// "sets[1]: starts at frame 4, expected 3").
-    [[nodiscard]] static Timeline restore(TriangleMesh base, std::vector<Frame> frames, std::vector<DeformationSet> sets);
+    /// `surface`: the editable surface's definition, or nullopt for a plain mesh history
+    /// (then no frame may be a control edit: "frames[2]: a control-point edit needs a
+    /// surface definition"). Control moves are checked like appendFrame's.
+    [[nodiscard]] static Timeline restore(TriangleMesh base, std::vector<Frame> frames, std::vector<DeformationSet> sets,
+                                          std::optional<SurfaceDefinition> surface = std::nullopt);
 
     [[nodiscard]] const TriangleMesh& base() const { return m_base; }
+    /// The editable surface's definition (nullopt for a plain mesh history).
+    [[nodiscard]] const std::optional<SurfaceDefinition>& surface() const { return m_surface; }
+    [[nodiscard]] bool hasSurface() const { return m_surface.has_value(); }
     /// Number of frames including frame 0 (the base): strokes + 1.
     [[nodiscard]] int frameCount() const { return int(m_frames.size()) + 1; }
     [[nodiscard]] const Frame& frame(int f) const;   ///< 1 <= f < frameCount(); else std::out_of_range
@@ -74,6 +120,11 @@ public:
     [[nodiscard]] TriangleMesh meshAt(int f) const;
     /// Positions of the last frame (frameCount() − 1), kept up to date: no reconstruction.
     [[nodiscard]] const std::vector<glm::vec3>& currentPositions() const { return m_current; }
+    /// Control points of frame f (#C, exact: the definition's points with every control
+    /// move up to f applied); empty without a surface. std::out_of_range like positionsAt.
+    [[nodiscard]] std::vector<glm::dvec3> controlPointsAt(int f) const;
+    /// Control points of the last frame, kept up to date; empty without a surface.
+    [[nodiscard]] const std::vector<glm::dvec3>& currentControlPoints() const { return m_currentControl; }
 
     /// Appends a frame to the last set. `frame.before` must equal the current last frame's
     /// positions of `frame.vertices` (std::invalid_argument otherwise).
@@ -84,8 +135,17 @@ public:
     /// iterations outside [0, 10000]). "Equal" means equal bits (-0.0f != 0.0f). A frame
     /// may list no vertices (a stroke that moved nothing is still a frame). On a throw the
     /// timeline is unchanged.
+    /// A control edit (frame.isControlEdit()) is also refused ("control move 2: ...")
+    /// without a surface, when its indices are not sorted ascending and unique or are
+    /// >= #C, when a 'before' differs (bits) from the current control point, when an
+    /// 'after' is not finite, or when tied NURBS points (tiedControlPoints) would end
+    /// with different positions.
+    /// A history with a surface takes control edits only: a stroke frame is refused
+    /// ("this history edits a NURBS surface through its control points; ..."), since the
+    /// mesh must stay the surface evaluated at its control points (use the control-point
+    /// brush, core/surface/control_brush.h).
     void appendFrame(Frame frame);
-    /// Removes the last frame (undo of a stroke) and returns it. The set it belonged to is
+    /// Removes the last frame (undo of a stroke or control edit) and returns it. The set it belonged to is
     /// kept even if it becomes empty; empty sets after it then start at the new last
     /// frame. std::logic_error when there is no stroke to remove.
     Frame removeLastFrame();
@@ -114,8 +174,12 @@ private:
     /// Positions of the last frame; derived from m_base and m_frames (so equal histories
     /// have equal caches and the defaulted operator== stays correct).
     std::vector<glm::vec3> m_current;
+    std::optional<SurfaceDefinition> m_surface;
+    /// Control points of the last frame (empty without a surface); derived like m_current.
+    std::vector<glm::dvec3> m_currentControl;
 
     void checkFrame(const Frame& frame) const;
+    void checkControlMoves(const Frame& frame) const;
 };
 
 } // namespace trimlab::timeline

@@ -321,7 +321,7 @@ void TestTimelineProject::errorsNameTheProblem_data()
     row("not json", "solid cube\nfacet normal", "", "not a TrimLab project: invalid JSON at line 1");
     row("a glTF file", R"({"asset": {"version": "2.0"}})", "", "not a TrimLab project");
     row("an array", "[1, 2]", "", "not a TrimLab project");
-    row("newer version", replaceValue(good, "version", "7"), "", "version 7 is newer than this TrimLab (1)");
+    row("newer version", replaceValue(good, "version", "7"), "", "version 7 is newer than this TrimLab (2)");
     row("version zero", replaceValue(good, "version", "0"), "version", "must be an integer in [1, ");
     const std::size_t secondRule = good.find("\"rule\"", good.find("\"rule\"", good.find("\"sets\"")) + 1);
     row("unknown rule", replaceValue(good, "rule", "\"foo\"", secondRule), "sets[1].rule", "unknown rule 'foo'");
@@ -339,6 +339,10 @@ void TestTimelineProject::errorsNameTheProblem_data()
     row("wrong array type", replaceValue(good, "type", "\"float64\""), "base_mesh.positions.type",
         "must be \"float32\"");
     row("too deep", std::string(200, '[') + std::string(200, ']'), "", "not a TrimLab project: invalid JSON at line 1, column 65");
+    // A number beyond the double range is refused by the JSON library in another way than
+    // a syntax error; it must still be a ProjectFileError naming the number and its place.
+    row("number overflow", "{\"format\": 1e999}", "",
+        "not a TrimLab project: invalid JSON at line 1, column 12: the number 1e999 does not fit a double");
 }
 
 void TestTimelineProject::errorsNameTheProblem()

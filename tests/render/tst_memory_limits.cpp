@@ -167,6 +167,9 @@ void TestMemoryLimits::fallbackChainEndsAndSavesMemory()
     csg.csg.expression = *parseCsgExpression("0 - 1", nullptr);
     QVERIFY(needsInspectionMethod(csg));
     QVERIFY(!needsInspectionMethod(TrimSettings{}));
+    TrimSettings xray;
+    xray.transparency.enabled = true;
+    QVERIFY(needsInspectionMethod(xray));
     // With CSG on, the S-buffer's fallback is the CPU still, not peeling's refusal.
     QCOMPARE(memoryFallbackAfter(FragmentMethodKind::SBuffer, false, true), std::nullopt);
     // The bounded arrays fall back to the S-buffer, which holds exactly the fragments.
