@@ -1,7 +1,8 @@
 #include "brush_tool.h"
 
+#include "control_brush_drag.h"
+#include "append_frame_command.h"
 #include "design_session.h"
-#include "stroke_command.h"
 #include "trim/trim_shading.h"
 #include "viewport_widget.h"
 
@@ -52,13 +53,14 @@ BrushTool::BrushTool(ViewportWidget* viewport, QObject* parent) : QObject(parent
 
 BrushTool::~BrushTool()
 {
-    if (m_enabled)
+    if (m_enabled && m_viewport->tool() == this)
         m_viewport->setTool(nullptr);
 }
 
 void BrushTool::setSession(DesignSession* session)
 {
     m_drag.reset();
+    m_controlDrag.reset();
     clearRegionTint();
     m_session = session;
 }
@@ -75,9 +77,16 @@ void BrushTool::setEnabled(bool enabled)
         return;
     m_enabled = enabled;
     m_drag.reset();
+    if (m_controlDrag && m_session)
+        m_session->syncSurface();
+    m_controlDrag.reset();
     m_hoverTimer.stop();
     clearRegionTint();
-    m_viewport->setTool(enabled ? this : nullptr);
+    // Another tool may have taken the viewport already (Edit ▸ Control Points): leave it.
+    if (enabled)
+        m_viewport->setTool(this);
+    else if (m_viewport->tool() == this)
+        m_viewport->setTool(nullptr);
 }
 
 void BrushTool::setDynamicRules(bool dynamic)
@@ -126,6 +135,8 @@ bool BrushTool::pressed(QMouseEvent& event)
         emit statusMessage(*refusal);
         return true;
     }
+    if (m_session->surface())
+        return startControlDrag(*pick);
     const timeline::Timeline& history = m_session->timeline();
     const DragView view{m_viewport->lastFrame()->camera, m_viewport->lastFrame()->pixelSize};
     try {
@@ -142,23 +153,51 @@ bool BrushTool::pressed(QMouseEvent& event)
             return true;
         }
     }
+    rememberDragStart();
+    return true;
+}
+
+// What a drag must know at its start: the frame count (a history changed meanwhile
+// discards the stroke) and, under the dynamic rules, the current set's reference.
+void BrushTool::rememberDragStart()
+{
+    const timeline::Timeline& history = m_session->timeline();
     m_dragFrameCount = history.frameCount();
     if (m_dynamic) {
         const timeline::DeformationSet& set = history.sets().back();
         m_dragReference = history.positionsAt(set.referenceFrame());
         m_dragRule = set.rule;
     }
+}
+
+// The control points of an editable surface: the same pick and drag, other targets.
+bool BrushTool::startControlDrag(const BrushPick& pick)
+{
+    const DragView view{m_viewport->lastFrame()->camera, m_viewport->lastFrame()->pixelSize};
+    m_session->syncSurface();
+    try {
+        m_controlDrag = std::make_unique<ControlBrushDrag>(*m_session, view, pick, m_settings);
+    } catch (const std::exception& e) {
+        emit statusMessage(tr("The brush cannot start: %1").arg(QString::fromStdString(e.what())));
+        return true;
+    }
+    rememberDragStart();
     return true;
 }
 
 void BrushTool::moved(QMouseEvent& event)
 {
-    if (!m_drag)
+    if (!m_drag && !m_controlDrag)
         return;
     QElapsedTimer timer;
     timer.start();
     const bool alongNormal = event.modifiers() & Qt::ShiftModifier;
-    showDragPositions(m_drag->moveTo(m_viewport->devicePosition(event.position()), alongNormal));
+    const QPointF pixel = m_viewport->devicePosition(event.position());
+    try {
+        showDragPositions(m_drag ? m_drag->moveTo(pixel, alongNormal) : m_controlDrag->moveTo(pixel, alongNormal));
+    } catch (const std::exception& e) {
+        emit statusMessage(tr("The brush cannot move the control points: %1").arg(QString::fromStdString(e.what())));
+    }
     m_lastUpdateMs = double(timer.nsecsElapsed()) * 1e-6;
     emit dragUpdated(m_lastUpdateMs);
 }
@@ -182,6 +221,10 @@ DynamicChainLevel BrushTool::dynamicShownLevelOf(const std::vector<glm::vec3>& p
 
 void BrushTool::released(QMouseEvent&)
 {
+    if (m_controlDrag) {
+        releaseControlDrag();
+        return;
+    }
     const std::unique_ptr<BrushDrag> drag = std::move(m_drag);
     if (!drag || !drag->moved() || !m_session)
         return;
@@ -191,13 +234,52 @@ void BrushTool::released(QMouseEvent&)
     }
     timeline::Frame frame = drag->frame();
     const std::size_t moved = frame.vertices.size();
-    m_session->undoStack()->push(new StrokeCommand(*m_session, std::move(frame)));
+    m_session->undoStack()->push(
+        new AppendFrameCommand(*m_session, std::move(frame), tr("Stroke (%n vertices)", nullptr, int(moved))));
     emit statusMessage(tr("Stroke %1: %n vertices moved.", nullptr, int(moved)).arg(m_session->lastFrame()));
+}
+
+void BrushTool::releaseControlDrag()
+{
+    const std::unique_ptr<ControlBrushDrag> drag = std::move(m_controlDrag);
+    if (!m_session)
+        return;
+    const std::vector<ControlPointTarget> targets = drag->targets();
+    m_session->syncSurface(); // back at the history's control points, where the frame starts
+    if (!drag->moved() || targets.empty()) {
+        m_viewport->showPose(m_session->shownPositions());
+        return;
+    }
+    if (m_session->timeline().frameCount() != m_dragFrameCount) {
+        emit statusMessage(tr("The stroke was discarded: the history changed during the drag."));
+        return;
+    }
+    try {
+        timeline::Frame frame =
+            controlEditFrame(*m_session->surface(), targets, m_session->timeline().currentPositions());
+        if (m_controlGuard) {
+            if (const std::optional<QString> refusal = m_controlGuard(frame)) {
+                m_session->syncSurface();
+                m_viewport->showPose(m_session->shownPositions());
+                emit statusMessage(*refusal);
+                return;
+            }
+        }
+        const int points = int(frame.controlMoves.size());
+        m_session->undoStack()->push(new AppendFrameCommand(
+            *m_session, std::move(frame), tr("Brush on %n control point(s)", nullptr, points)));
+        emit statusMessage(tr("Frame %1: the brush moved %n control points.", nullptr, points)
+                               .arg(m_session->lastFrame()));
+    } catch (const std::invalid_argument& e) {
+        m_session->syncSurface();
+        m_viewport->showPose(m_session->shownPositions());
+        emit statusMessage(tr("No edit recorded: %1").arg(QString::fromStdString(e.what())));
+    }
 }
 
 void BrushTool::hovered(QPointF position)
 {
-    if (!m_enabled || !m_session || m_drag)
+    if (!m_enabled || !m_session || m_drag || m_controlDrag || m_session->surface())
         return;
     m_hoverPosition = position;
     if (!m_hoverTimer.isActive())

@@ -12,6 +12,12 @@
 ///   weight (static rule only: the dynamic-rule scenes carry no vertex colors). The
 ///   region is recomputed only when the hovered triangle changes, at most every
 ///   kHoverIntervalMs.
+/// On an editable surface's history (DesignSession::surface()) the brush moves control
+/// points instead of mesh vertices (ControlBrushDrag: every control point within the
+/// radius of the grabbed point, by the falloff), records the drag as one control edit
+/// (AppendFrameCommand), and hovering tints nothing (the geodesic mesh region is not what
+/// moves). The control guard judges the finished edit's frame (the moved vertices are
+/// known only then).
 /// On an earlier frame than the last, or when a guard (the homogeneous confluent rule)
 /// refuses the grabbed region, the press is refused with a status message saying why.
 
@@ -30,6 +36,7 @@
 
 namespace trimlab::ui {
 
+class ControlBrushDrag;
 class DesignSession;
 class ViewportWidget;
 
@@ -54,8 +61,11 @@ public:
     /// and the base rule it classifies with.
     void setDynamicRules(bool dynamic);
     void setGuard(Guard guard) { m_guard = std::move(guard); }
+    /// The guard of a brush drag on control points, judged on the finished edit's frame.
+    using ControlGuard = std::function<std::optional<QString>(const timeline::Frame& frame)>;
+    void setControlGuard(ControlGuard guard) { m_controlGuard = std::move(guard); }
 
-    [[nodiscard]] bool isDragging() const { return m_drag != nullptr; }
+    [[nodiscard]] bool isDragging() const { return m_drag != nullptr || m_controlDrag != nullptr; }
     /// Milliseconds the last drag update took in the UI thread: the stroke update plus
     /// handing the positions (static) or the rebuilt shown level (dynamic) to the viewport.
     [[nodiscard]] double lastUpdateMilliseconds() const { return m_lastUpdateMs; }
@@ -75,6 +85,9 @@ private:
     [[nodiscard]] std::optional<BrushPick> pickAt(QPointF position);
     [[nodiscard]] std::optional<QString> refusalBeforePick() const;
     void showDragPositions(const std::vector<glm::vec3>& positions);
+    void rememberDragStart();
+    bool startControlDrag(const BrushPick& pick);
+    void releaseControlDrag();
     [[nodiscard]] DynamicChainLevel dynamicShownLevelOf(const std::vector<glm::vec3>& positions) const;
     void updateHoverRegion();
     void clearRegionTint();
@@ -85,7 +98,9 @@ private:
     bool m_enabled = false;
     bool m_dynamic = false;
     Guard m_guard;
+    ControlGuard m_controlGuard;
     std::unique_ptr<BrushDrag> m_drag;
+    std::unique_ptr<ControlBrushDrag> m_controlDrag; ///< on an editable surface
     int m_dragFrameCount = 0;                   ///< the history's frame count at the press
     std::vector<glm::vec3> m_dragReference;     ///< dynamic: the current set's reference positions
     DynamicRule m_dragRule = DynamicRule::Confluent;

@@ -17,6 +17,10 @@ DesignSession::DesignSession(timeline::Timeline history, const glm::dmat4& model
       m_undo(new QUndoStack(this)),
       m_shownFrame(m_timeline.frameCount() - 1)
 {
+    if (m_timeline.hasSurface()) {
+        m_surface = std::make_unique<EditableSurface>(*m_timeline.surface());
+        syncSurface();
+    }
 }
 
 DesignSession::~DesignSession() = default;
@@ -37,7 +41,21 @@ void DesignSession::showFrame(int frame)
         m_scrubbed = {};
     else
         m_scrubbed = m_timeline.positionsAt(frame);
+    syncSurface();
     emit shownFrameChanged(frame);
+}
+
+void DesignSession::syncSurface()
+{
+    if (!m_surface)
+        return;
+    if (showsLastFrame()) {
+        const std::vector<glm::dvec3>& points = m_timeline.currentControlPoints();
+        if (points != m_surface->controlPoints())
+            m_surface->setControlPoints(points);
+    } else {
+        m_surface->setControlPoints(m_timeline.controlPointsAt(m_shownFrame));
+    }
 }
 
 void DesignSession::appendFrame(timeline::Frame frame)
@@ -78,6 +96,7 @@ void DesignSession::afterEdit()
     ++m_revision;
     m_shownFrame = lastFrame();
     m_scrubbed = {};
+    syncSurface();
     emit historyChanged(); // one signal: listeners refresh the shown frame with the history
 }
 

@@ -4,13 +4,20 @@
 /// (timeline::Timeline) of one trimmable mesh — object 0 of the shown scene, in object
 /// space, with its model matrix —, the brush's connectivity, the frame shown and the undo
 /// stack. No widget: the window, the brush and the timeline dock read it and change it
-/// only through undo commands (stroke_command.h, start_set_command.h,
+/// only through undo commands (append_frame_command.h, start_set_command.h,
 /// set_rule_command.h), which call the edit functions below.
 ///
 /// The brush edits the last frame only; earlier frames are shown (scrubbing, playback)
 /// but never changed.
+///
+/// A history of an editable surface (Timeline::hasSurface(): NURBS or subdivision,
+/// thesis 8.2) also has an EditableSurface, the evaluator of its fixed-connectivity mesh,
+/// kept at the shown frame's control points (so the control net drawn is the shown
+/// frame's). The timeline stays the truth: the surface only mirrors it, and a tool that
+/// moves its points for a preview puts them back with syncSurface().
 
 #include "deform/brush_topology.h"
+#include "surface/editable_surface.h"
 #include "timeline/timeline.h"
 
 #include <glm/mat4x4.hpp>
@@ -37,6 +44,11 @@ public:
 
     [[nodiscard]] const timeline::Timeline& timeline() const { return m_timeline; }
     [[nodiscard]] const deform::BrushTopology& topology() const { return *m_topology; }
+    /// The editable surface of a surface history (nullptr for a plain mesh history), at
+    /// the shown frame's control points unless a tool is previewing a move.
+    [[nodiscard]] EditableSurface* surface() const { return m_surface.get(); }
+    /// Puts the surface back at the shown frame's control points (after a preview).
+    void syncSurface();
     [[nodiscard]] const glm::dmat4& modelMatrix() const { return m_model; }
     /// Object-space bounds of the base mesh (the brush radius scales with them).
     [[nodiscard]] const Bounds& baseBounds() const { return m_baseBounds; }
@@ -79,6 +91,7 @@ private:
 
     timeline::Timeline m_timeline;
     std::unique_ptr<deform::BrushTopology> m_topology;
+    std::unique_ptr<EditableSurface> m_surface;
     glm::dmat4 m_model;
     Bounds m_baseBounds;
     QString m_projectPath;

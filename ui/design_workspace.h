@@ -8,6 +8,10 @@
 /// algorithm: the history is core/timeline's, the chain core/trim's, the rendering
 /// render/'s.
 ///
+/// A history of an editable surface (NURBS, subdivision) also gets its control net drawn
+/// over the view (ControlNetOverlay, at the shown frame's control points) and the
+/// control-point tool (ControlPointTool); "Move along normal" edits the selection.
+///
 /// One undo group for the window: each session's stack becomes its active stack, so the
 /// Edit menu's Undo/Redo follow the session shown.
 
@@ -30,6 +34,8 @@ namespace trimlab::ui {
 
 class BrushDrag;
 class BrushTool;
+class ControlNetOverlay;
+class ControlPointTool;
 class DeformationTimelinePanel;
 class DesignSession;
 class TrimmedRegionCheck;
@@ -49,6 +55,12 @@ public:
     [[nodiscard]] DesignSession* session() const { return m_session.get(); }
     [[nodiscard]] QUndoGroup* undoGroup() const { return m_undoGroup; }
     [[nodiscard]] BrushTool* brushTool() const { return m_brush; }
+    [[nodiscard]] ControlPointTool* controlPointTool() const { return m_points; }
+    [[nodiscard]] ControlNetOverlay* controlNetOverlay() const { return m_overlay; }
+    /// Moves the selected control points by `distance` (object units, > 0 outward) along
+    /// their average normal as one undoable frame; a status message says why when
+    /// nothing can move (no surface, no selection, an earlier frame shown, no normal).
+    void moveSelectionAlongNormal(double distance);
     /// True when the session has changes its project file does not hold.
     [[nodiscard]] bool isModified() const;
 
@@ -76,15 +88,22 @@ signals:
 
 private:
     void refreshView();
+    void showControlNet();
     void onHistoryChanged();
     void extendViewBounds(const std::vector<glm::vec3>& positions);
     void refreshTimelinePanel();
     [[nodiscard]] std::optional<QString> trimmedRegionRefusal(const BrushDrag& drag);
+    /// The homogeneous confluent rule for a control edit: refuses a frame that moves a
+    /// trimmed-off part of the last frame.
+    [[nodiscard]] std::optional<QString> controlEditRefusal(const timeline::Frame& frame);
+    [[nodiscard]] std::optional<QString> trimmedSampleRefusal(const std::vector<std::uint32_t>& sample);
 
     ViewportWidget* m_viewport;
     DeformationTimelinePanel* m_timelinePanel;
     QUndoGroup* m_undoGroup;
     BrushTool* m_brush;
+    ControlNetOverlay* m_overlay;
+    ControlPointTool* m_points;
     std::unique_ptr<DesignSession> m_session;
     bool m_dynamicRules = false;
     bool m_trimEnabled = true;

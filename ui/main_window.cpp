@@ -108,15 +108,18 @@ MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
     createStatsDock();
     createAnimationDocks();
     createDesignDocks();
+    createSurfaceDock();
     createSkeletonDock();
     createInspectDock();
     createFileMenu();
     createEditMenu();
+    createCreateMenu();
     createViewMenu();
     createHelpMenu();
     connectParts();
     connectAnimationParts();
     connectDesignParts();
+    connectSurfaceParts();
     connectSkeletonParts();
     connectInspectParts();
     restoreSettings();

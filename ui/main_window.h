@@ -31,6 +31,15 @@
 /// targets); File ▸ Save/Replay Stroke Script record and replay strokes. Unsaved changes
 /// are asked about before they would be lost, and the title marks them with a *.
 ///
+/// Editable surfaces (main_window_surface.cpp, thesis 8.2): Create ▸ NURBS ▸ Sphere /
+/// Torus / Tube / Patch and Create ▸ Subdivision Surface ▸ a built-in cage or From Cage
+/// File… start a design session whose base mesh is the surface's tessellation (asking
+/// about unsaved changes first); so do surface projects and the surface demos. The
+/// control net is drawn over the view, Edit ▸ Control Points (P) picks and drags its
+/// points (the brush moves them too), and the Surface dock shows and changes the
+/// density, degree, level, scheme and mode (a rebuild: a new history) and moves the
+/// selection along its normal.
+///
 /// Interior inspection (main_window_inspect.cpp): the Render panel's clipping planes (up
 /// to six, a box), capping and highlighting; the Scene dock (scene_panel.h, tabbed with
 /// the Render panel) lists the objects, edits their transforms, rules and the CSG
@@ -61,11 +70,16 @@ namespace trimlab::timeline {
 struct Project;
 struct ProjectExtras;
 }
+namespace trimlab {
+struct SubdivisionCage;
+struct SurfaceDefinition;
+}
 
 class QAction;
 class QDockWidget;
 class QMenu;
 class QSettings;
+class QToolBar;
 
 namespace trimlab::ui {
 
@@ -86,7 +100,9 @@ class SegmentationPanel;
 class SessionRecovery;
 class SkeletonPanel;
 class SkinningPanel;
+class SurfacePanel;
 class TimelinePanel;
+enum class NurbsPrimitive;
 class ViewportWidget;
 struct LoadedAnimation;
 
@@ -154,6 +170,15 @@ public:
     /// Edit ▸ Brush (B, checkable) and Edit ▸ New Set (N).
     [[nodiscard]] QAction* brushAction() const { return m_brushAction; }
     [[nodiscard]] QAction* newSetAction() const { return m_newSetAction; }
+    /// Edit ▸ Control Points (P, checkable; exclusive with the brush).
+    [[nodiscard]] QAction* controlPointsAction() const { return m_controlPointsAction; }
+    /// The Surface dock's panel (main_window_surface.cpp).
+    [[nodiscard]] SurfacePanel* surfacePanel() const { return m_surfacePanel; }
+    /// Create ▸ Subdivision Surface ▸ From Cage File… without the dialog: reads the OBJ
+    /// cage at `path` with the panel's scheme, level and mode and starts a surface
+    /// session (after asking about unsaved changes). A file that cannot be read is
+    /// reported like a failed open (dialog, sceneLoadFailed()); false then.
+    bool createSurfaceFromCageFile(const QString& path);
 
 signals:
     /// A scene is shown; `source` as given to openSource().
@@ -192,6 +217,16 @@ private:
     void onObjectTransformChanged();
     void updateSceneEditability();
     void followUndoStacks();
+    void createSurfaceDock();
+    void createCreateMenu();
+    void createControlPointsAction(QMenu* edit, QToolBar* tools);
+    void connectSurfaceParts();
+    void showSurfaceInPanel();
+    void createNurbsPrimitive(NurbsPrimitive primitive);
+    void createSubdivisionFromCage(SubdivisionCage cage, const QString& label);
+    void showCreateFromCageDialog();
+    bool createSurfaceSession(const SurfaceDefinition& definition, const QString& name, bool askToSave);
+    void rebuildSurface();
     void createDesignFileActions(QMenu* file);
     void createEditMenu();
     void connectDesignParts();
@@ -271,6 +306,9 @@ private:
     HistoryExports* m_exports = nullptr;
     QAction* m_brushAction = nullptr;
     QAction* m_newSetAction = nullptr;
+    QAction* m_controlPointsAction = nullptr;
+    SurfacePanel* m_surfacePanel = nullptr;
+    QDockWidget* m_surfaceDock = nullptr;
     RecentFiles m_recent;
     RecentFiles m_recentAnimations{QStringLiteral("recentAnimations")};
     std::shared_ptr<const LoadedScene> m_scene;

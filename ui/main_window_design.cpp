@@ -15,6 +15,8 @@
 #include "project_files.h"
 #include "render_panel.h"
 #include "session_recovery.h"
+#include "surface/control_edit.h"
+#include "surface/surface_scenes.h"
 #include "timeline/project_file.h"
 #include "viewport_widget.h"
 
@@ -32,12 +34,37 @@
 #include <QToolBar>
 #include <QUndoGroup>
 
+#include <optional>
+#include <string_view>
+
 namespace trimlab::ui {
 
 namespace {
 
 constexpr int kStatusMessageMs = 5000;
 const QString kDesignFpsKey = QStringLiteral("design/fps");
+
+/// A surface demo ("demo:nurbs-sphere", …) is edited through its control points: the
+/// history of its definition, when its tessellation is exactly the mesh shown (nullopt
+/// otherwise, and for every other source: those start a plain mesh history).
+std::optional<timeline::Timeline> surfaceDemoHistory(const LoadedScene& scene)
+{
+    if (!isDemoSource(scene.source) || scene.scene.objects.size() != 1)
+        return std::nullopt;
+    const std::optional<SurfaceDefinition> definition =
+        surfaceDemoDefinition(std::string_view(scene.source).substr(kDemoPrefix.size()));
+    if (!definition)
+        return std::nullopt;
+    try {
+        timeline::Timeline history = surfaceTimeline(*definition);
+        const TriangleMesh& shown = scene.scene.objects.front().mesh;
+        if (history.base().triangles != shown.triangles || history.base().positions != shown.positions)
+            return std::nullopt;
+        return history;
+    } catch (const std::exception&) {
+        return std::nullopt; // the demo shows anyway, as a plain mesh
+    }
+}
 
 /// Bounds of every frame of `history`: the base and every position a frame moved to.
 Bounds historyBounds(const timeline::Timeline& history)
@@ -129,6 +156,7 @@ void MainWindow::createEditMenu()
     tools->setObjectName(QStringLiteral("designToolBar"));
     tools->addAction(m_brushAction);
     tools->addAction(m_newSetAction);
+    createControlPointsAction(edit, tools);
     tools->addAction(undo);
     tools->addAction(redo);
 }
@@ -191,7 +219,8 @@ void MainWindow::startDesignSession()
         return;
     }
     const SceneObject& object = m_scene->scene.objects.front();
-    m_design->startSession(timeline::Timeline(object.mesh), object.modelMatrix, QString());
+    m_design->startSession(surfaceDemoHistory(*m_scene).value_or(timeline::Timeline(object.mesh)),
+                           object.modelMatrix, QString());
 }
 
 void MainWindow::onProjectOpened(std::shared_ptr<const timeline::Project> project, const QString& path)

@@ -1,9 +1,7 @@
 #include "skeleton_overlay.h"
 
-#include "skeleton_projection.h"
 #include "viewport_widget.h"
 
-#include <QEvent>
 #include <QPainter>
 #include <QPen>
 
@@ -17,17 +15,8 @@ const QColor kSelectedColor(255, 200, 0);
 
 } // namespace
 
-SkeletonOverlay::SkeletonOverlay(ViewportWidget* viewport) : QWidget(viewport), m_viewport(viewport)
+SkeletonOverlay::SkeletonOverlay(ViewportWidget* viewport) : ViewportOverlay(viewport, QStringLiteral("skeletonOverlay"))
 {
-    setObjectName(QStringLiteral("skeletonOverlay"));
-    setAttribute(Qt::WA_TransparentForMouseEvents);
-    setAttribute(Qt::WA_NoSystemBackground);
-    setAttribute(Qt::WA_TranslucentBackground);
-    setFocusPolicy(Qt::NoFocus);
-    setGeometry(viewport->rect());
-    viewport->installEventFilter(this);
-    connect(viewport, &ViewportWidget::frameRendered, this, qOverload<>(&QWidget::update));
-    hide();
 }
 
 void SkeletonOverlay::setSkeleton(std::vector<glm::dvec3> joints, std::vector<std::array<int, 2>> bones, int root,
@@ -52,22 +41,7 @@ void SkeletonOverlay::setSelectedBone(int bone)
 
 std::vector<std::optional<QPointF>> SkeletonOverlay::projectedJoints() const
 {
-    const Camera camera = m_viewport->camera();
-    const QSizeF size = m_viewport->size();
-    std::vector<std::optional<QPointF>> points;
-    points.reserve(m_joints.size());
-    for (const glm::dvec3& joint : m_joints)
-        points.push_back(projectToWidget(camera, size, joint));
-    return points;
-}
-
-bool SkeletonOverlay::eventFilter(QObject* watched, QEvent* event)
-{
-    if (watched == m_viewport && event->type() == QEvent::Resize) {
-        setGeometry(m_viewport->rect());
-        raise();
-    }
-    return QWidget::eventFilter(watched, event);
+    return projectToViewport(m_joints);
 }
 
 void SkeletonOverlay::paintEvent(QPaintEvent*)

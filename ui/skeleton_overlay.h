@@ -8,8 +8,8 @@
 /// overlay follows orbit, pan and zoom. It takes no mouse events (skeleton_pose_tool.h
 /// does the picking).
 
-#include <QPointF>
-#include <QWidget>
+#include "viewport_overlay.h"
+
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -22,7 +22,7 @@ namespace trimlab::ui {
 
 class ViewportWidget;
 
-class SkeletonOverlay : public QWidget {
+class SkeletonOverlay : public ViewportOverlay {
     Q_OBJECT
 public:
     /// Becomes a child of `viewport`, covering it, and follows its size and frames.
@@ -42,11 +42,9 @@ public:
     [[nodiscard]] std::vector<std::optional<QPointF>> projectedJoints() const;
 
 protected:
-    bool eventFilter(QObject* watched, QEvent* event) override;
     void paintEvent(QPaintEvent* event) override;
 
 private:
-    ViewportWidget* m_viewport;
     std::vector<glm::dvec3> m_joints; ///< world space
     std::vector<std::array<int, 2>> m_bones;
     int m_root = -1;

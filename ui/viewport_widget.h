@@ -169,6 +169,8 @@ public:
     /// The mouse tool asked first on every press (nullptr: none). Not owned; the tool
     /// must outlive the viewport or be reset first. Turns on hover tracking.
     void setTool(ViewportTool* tool);
+    /// The tool set last (nullptr: none).
+    [[nodiscard]] ViewportTool* tool() const { return m_tool; }
 
     /// Renders with the dynamic rules of `chain` (its last level is the shown frame) from
     /// the next frame on; nullptr: back to the static rule of the trim settings. The
