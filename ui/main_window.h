@@ -179,6 +179,15 @@ public:
     /// session (after asking about unsaved changes). A file that cannot be read is
     /// reported like a failed open (dialog, sceneLoadFailed()); false then.
     bool createSurfaceFromCageFile(const QString& path);
+    /// Create ▸ NURBS ▸ From NURBS File… without the dialog: the first surface of the NURBS
+    /// JSON file at `path` (docs/nurbs-json.md), tessellated with the panel's density, as a
+    /// new surface session (asking about unsaved changes first). Errors are shown as for
+    /// other files; false when nothing was created.
+    bool createSurfaceFromNurbsFile(const QString& path);
+    /// Create ▸ NURBS ▸ Save NURBS Surface As… without the dialog: the NURBS session's
+    /// surface at its shown control points, written atomically. False (with a message)
+    /// when there is no NURBS session or the file cannot be written.
+    bool saveNurbsSurface(const QString& path);
 
 signals:
     /// A scene is shown; `source` as given to openSource().
@@ -227,6 +236,8 @@ private:
     void showCreateFromCageDialog();
     bool createSurfaceSession(const SurfaceDefinition& definition, const QString& name, bool askToSave);
     void rebuildSurface();
+    void showCreateFromNurbsDialog();
+    void showSaveNurbsDialog();
     void createDesignFileActions(QMenu* file);
     void createEditMenu();
     void connectDesignParts();
@@ -309,6 +320,7 @@ private:
     QAction* m_controlPointsAction = nullptr;
     SurfacePanel* m_surfacePanel = nullptr;
     QDockWidget* m_surfaceDock = nullptr;
+    QAction* m_saveNurbsAction = nullptr;
     RecentFiles m_recent;
     RecentFiles m_recentAnimations{QStringLiteral("recentAnimations")};
     std::shared_ptr<const LoadedScene> m_scene;

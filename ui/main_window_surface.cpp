@@ -20,11 +20,13 @@
 
 #include "mesh/mesh_validation.h"
 #include "surface/cage_obj.h"
+#include "surface/nurbs_json.h"
 #include "surface/control_edit.h"
 #include "surface/subdivision_cages.h"
 
 #include <QAction>
 #include <QActionGroup>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -71,6 +73,14 @@ void MainWindow::createCreateMenu()
                                            [this, primitive] { createNurbsPrimitive(primitive); });
         action->setObjectName(QStringLiteral("createNurbs%1Action").arg(nurbsPrimitiveKey(primitive)));
     }
+    nurbs->addSeparator();
+    QAction* fromNurbsFile = nurbs->addAction(tr("From NURBS &File…"), this, &MainWindow::showCreateFromNurbsDialog);
+    fromNurbsFile->setObjectName(QStringLiteral("createNurbsFromFileAction"));
+    m_saveNurbsAction = nurbs->addAction(tr("&Save NURBS Surface As…"), this, &MainWindow::showSaveNurbsDialog);
+    m_saveNurbsAction->setObjectName(QStringLiteral("saveNurbsAction"));
+    m_saveNurbsAction->setToolTip(tr("Writes the edited NURBS surface — the shown frame's control points — as a "
+                                     "NURBS JSON file (docs/nurbs-json.md)"));
+    m_saveNurbsAction->setEnabled(false);
     QMenu* subdivision = create->addMenu(tr("&Subdivision Surface"));
     for (const std::string& name : builtInCageNames()) {
         const QString key = QString::fromStdString(name);
@@ -130,6 +140,7 @@ void MainWindow::showSurfaceInPanel()
 {
     const DesignSession* session = m_design->session();
     const EditableSurface* surface = session ? session->surface() : nullptr;
+    m_saveNurbsAction->setEnabled(surface && surface->kind() == SurfaceKind::Nurbs);
     if (!surface) {
         m_surfacePanel->setSurface(SurfacePanel::Kind::None, QString(), 0.0);
         m_surfacePanel->setSelectionCount(0);
@@ -164,6 +175,80 @@ void MainWindow::showCreateFromCageDialog()
         return;
     m_settings->setValue(kCageDirectoryKey, QFileInfo(path).absolutePath());
     createSurfaceFromCageFile(path);
+}
+
+void MainWindow::showCreateFromNurbsDialog()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Create NURBS Surface from File"),
+                                                      m_settings->value(kCageDirectoryKey).toString(),
+                                                      tr("NURBS files (*.nurbs.json *.nurbs *.json);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    m_settings->setValue(kCageDirectoryKey, QFileInfo(path).absolutePath());
+    createSurfaceFromNurbsFile(path);
+}
+
+// A file may hold several surfaces (trimlab render shows them all as objects); a design
+// history edits one mesh, so the first surface is the one opened for editing.
+bool MainWindow::createSurfaceFromNurbsFile(const QString& path)
+{
+    try {
+        std::vector<NurbsSurface> surfaces = loadNurbsJson(path.toStdString());
+        const SurfaceChoices choices = m_surfacePanel->choices();
+        const std::size_t count = surfaces.size();
+        const QString name = surfaces.front().name.empty() ? QFileInfo(path).fileName()
+                                                           : QString::fromStdString(surfaces.front().name);
+        if (!createSurfaceSession(nurbsDefinition(std::move(surfaces.front()), choices.segmentsU, choices.segmentsV),
+                                  name, true))
+            return false;
+        if (count > 1)
+            statusBar()->showMessage(tr("%1 holds %2 surfaces; the first, “%3”, is open for editing.")
+                                         .arg(QFileInfo(path).fileName())
+                                         .arg(count)
+                                         .arg(name),
+                                     kStatusMessageMs);
+        return true;
+    } catch (const std::exception& e) {
+        onLoadFailed(path, QString::fromStdString(e.what()));
+        return false;
+    }
+}
+
+void MainWindow::showSaveNurbsDialog()
+{
+    QString path = QFileDialog::getSaveFileName(this, tr("Save NURBS Surface"),
+                                                m_settings->value(kCageDirectoryKey).toString(),
+                                                tr("NURBS files (*.nurbs.json)"));
+    if (path.isEmpty())
+        return;
+    if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive))
+        path += QStringLiteral(".nurbs.json");
+    m_settings->setValue(kCageDirectoryKey, QFileInfo(path).absolutePath());
+    saveNurbsSurface(path);
+}
+
+bool MainWindow::saveNurbsSurface(const QString& path)
+{
+    const DesignSession* session = m_design->session();
+    const EditableSurface* surface = session ? session->surface() : nullptr;
+    if (!surface || surface->kind() != SurfaceKind::Nurbs) {
+        statusBar()->showMessage(tr("Nothing to save: the shown design is not a NURBS surface."), kStatusMessageMs);
+        return false;
+    }
+    try {
+        NurbsSurface edited = surface->definition().nurbs().surface;
+        const std::vector<glm::dvec3>& points = surface->controlPoints();
+        for (std::size_t i = 0; i < points.size(); ++i)
+            moveControlPoint(edited, i, points[i]);
+        saveNurbsJson(path.toStdString(), std::span(&edited, 1));
+    } catch (const std::exception& e) {
+        showMessage(QMessageBox::Critical, tr("Could not save the surface"), tr("Could not write %1.").arg(path),
+                    QString::fromStdString(e.what()));
+        return false;
+    }
+    statusBar()->showMessage(tr("Saved the NURBS surface to %1.").arg(QDir::toNativeSeparators(path)),
+                             kStatusMessageMs);
+    return true;
 }
 
 bool MainWindow::createSurfaceFromCageFile(const QString& path)

@@ -1,6 +1,8 @@
 // NURBS re-evaluation timings (not a test: it never fails on speed and is not registered
 // with CTest). Run by hand:
-//   build-nurbs/tests/core/bench_nurbs [segmentsU segmentsV] [--json]
+//   build-nurbs/tests/core/bench_nurbs [segmentsU segmentsV] [--json] [--obj sphere.obj]
+// (--obj also writes the sphere's tessellation, to time trimming it with `trimlab render
+// sphere.obj --repeat N`).
 // For the exact rational sphere and torus tessellated at segmentsU × segmentsV intervals
 // (default 256 × 200: ≥ 100k triangles) it prints, as the median of repeated runs:
 //  - build:        NurbsTessellation constructor (span search, basis tables, topology, first evaluation)
@@ -11,6 +13,7 @@
 //                  naive alternative the tables replace
 // and the moved-vertex count of the one-point edit, the table size and the agreement of the
 // sparse result with a tessellation built from scratch.
+#include "mesh/obj_writer.h"
 #include "surface/nurbs_primitives.h"
 #include "surface/nurbs_tessellation.h"
 
@@ -102,10 +105,13 @@ int main(int argc, char** argv)
 {
     int segmentsU = 256, segmentsV = 200;
     bool json = false;
+    const char* objPath = nullptr;
     std::vector<int> numbers;
     for (int a = 1; a < argc; ++a) {
         if (std::strcmp(argv[a], "--json") == 0)
             json = true;
+        else if (std::strcmp(argv[a], "--obj") == 0 && a + 1 < argc)
+            objPath = argv[++a];
         else
             numbers.push_back(std::atoi(argv[a]));
     }
@@ -123,6 +129,10 @@ int main(int argc, char** argv)
         std::printf("bench_nurbs: %s\n", e.what());
         return 1;
     }
+    // The sphere's tessellation for timing the trim renderer on it (trimlab render --repeat).
+    if (objPath != nullptr)
+        saveMeshObj(objPath, NurbsTessellation(makeNurbsSphere({0, 0, 0}, 1.0), segmentsU, segmentsV).mesh(), {},
+                    "NURBS unit sphere, " + std::to_string(segmentsU) + " x " + std::to_string(segmentsV) + " segments");
     std::printf("%-7s %8s %8s %9s %9s %8s %9s %11s %9s %8s %10s\n", "surface", "verts", "tris", "build", "edit one",
                 "moved", "edit all", "all sparse", "scratch", "tableKB", "|Δ| fresh");
     for (const Row& r : rows)

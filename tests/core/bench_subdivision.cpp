@@ -2,11 +2,13 @@
 // with CTest). Run by hand, e.g.
 //   build-subd/tests/core/bench_subdivision            (torus 16×8 cage, level 5, limit)
 //   build-subd/tests/core/bench_subdivision --ring 16 --tube 8 --level 5 --repeats 9
+//   ... --obj torus.obj   also writes the limit mesh, to time trimming it with trimlab render
 // For a torus cage it prints the output size, the time to build the stencil tables (once
 // per topology), one re-evaluation after moving one cage vertex (update(), only its
 // support) and after moving all (evaluate()), and, for comparison, re-running OpenSubdiv
 // from scratch per edit (TopologyRefiner + PrimvarRefiner uniform refinement, plus
 // PrimvarRefiner::Limit in limit mode) — medians of the repeats, with ratios.
+#include "mesh/obj_writer.h"
 #include "surface/cage_refiner.h"
 #include "surface/subdivision_cages.h"
 #include "surface/subdivision_surface.h"
@@ -125,6 +127,7 @@ int main(int argc, char** argv)
     parser.addOption({"level", "subdivision level (0-5)", "n", "5"});
     parser.addOption({"repeats", "repeats per measurement (median)", "n", "9"});
     parser.addOption({"uniform", "also time uniform mode"});
+    parser.addOption({"obj", "also write the limit surface's mesh (to time trimming it with trimlab render)", "file"});
     parser.process(app);
     try {
         const int ring = parser.value("ring").toInt(), tube = parser.value("tube").toInt();
@@ -132,6 +135,11 @@ int main(int argc, char** argv)
         run(ring, tube, level, SubdivisionMode::Limit, repeats);
         if (parser.isSet("uniform"))
             run(ring, tube, level, SubdivisionMode::Uniform, repeats);
+        if (parser.isSet("obj")) {
+            const SubdivisionSurface surface(torusCage(ring, tube), {level, SubdivisionMode::Limit});
+            saveMeshObj(parser.value("obj").toStdString(), surface.mesh(), {}, "torus cage limit surface, level " +
+                                                                                   std::to_string(level));
+        }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_subdivision: %s\n", e.what());
         return 1;

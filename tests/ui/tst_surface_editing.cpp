@@ -30,6 +30,7 @@
 #include <QPushButton>
 #include <QStatusBar>
 #include <QSpinBox>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
@@ -135,6 +136,7 @@ private slots:
     void alongNormalEditsAndDynamicRules();
     void rebuildWithEditsAsksAndProjectRoundTrip();
     void homogeneousConfluentRefusesTrimmedControlEdits();
+    void editedNurbsSavesAndReopensFromItsFile();
 
 private:
     [[nodiscard]] std::unique_ptr<MainWindow> showWindow(const QString& name);
@@ -568,6 +570,40 @@ void TestSurfaceEditing::homogeneousConfluentRefusesTrimmedControlEdits()
     QVERIFY2(session->timeline().frameCount() == 6, qPrintable(window->statusBar()->currentMessage()));
     QCOMPARE(session->timeline().setOfFrame(5), 2);
     QVERIFY(session->timeline().frame(5).controlMoves.size() > 1); // the pole's tied points
+}
+
+// Create ▸ NURBS ▸ Save NURBS Surface As… writes the edited control points; From NURBS
+// File… starts a new session whose surface has exactly them (the file stores doubles
+// with round-trip precision). Without a NURBS session there is nothing to save.
+void TestSurfaceEditing::editedNurbsSavesAndReopensFromItsFile()
+{
+    auto window = showWindow(QStringLiteral("nurbsfile"));
+    QVERIFY(create(*window, "createNurbsSphereAction"));
+    DesignSession* session = window->designWorkspace()->session();
+    auto* saveAction = window->findChild<QAction*>(QStringLiteral("saveNurbsAction"));
+    QVERIFY(saveAction && saveAction->isEnabled());
+    auto* step = test::child<QDoubleSpinBox>(window.get(), "surfaceNormalStepSpinBox");
+    auto* button = test::child<QPushButton>(window.get(), "surfaceMoveAlongNormalButton");
+    QVERIFY(clickCentralPoint(window->viewport(), *window->designWorkspace()->controlNetOverlay()));
+    step->setValue(0.2);
+    button->click();
+    QCOMPARE(session->timeline().frameCount(), 2);
+    const std::vector<glm::dvec3> edited = session->timeline().currentControlPoints();
+    QVERIFY(edited != session->timeline().surface()->controlPoints());
+
+    const QString path = m_dir.filePath(QStringLiteral("edited.nurbs.json"));
+    QVERIFY(window->saveNurbsSurface(path));
+    session->undoStack()->setClean(); // the reopen must not stop at "save changes?"
+    QVERIFY(window->createSurfaceFromNurbsFile(path));
+    const DesignSession* reopened = window->designWorkspace()->session();
+    QVERIFY(reopened != nullptr && reopened->surface() != nullptr);
+    QCOMPARE(reopened->timeline().frameCount(), 1);
+    QVERIFY(reopened->timeline().currentControlPoints() == edited);
+
+    QVERIFY(create(*window, "createSubdivision_cubeAction"));
+    QVERIFY(!saveAction->isEnabled());
+    QVERIFY(!window->saveNurbsSurface(m_dir.filePath(QStringLiteral("cube.nurbs.json"))));
+    QVERIFY(!QFileInfo::exists(m_dir.filePath(QStringLiteral("cube.nurbs.json"))));
 }
 
 QTEST_MAIN(TestSurfaceEditing)
