@@ -101,30 +101,32 @@ NurbsSample quotient(const glm::dvec4& a, const glm::dvec4& au, const glm::dvec4
     return sample;
 }
 
-double netSize(const NurbsSurface& s)
+} // namespace
+
+double nurbsDerivativeFloor(const NurbsSurface& surface)
 {
+    if (surface.points.empty())
+        return 0.0;
     glm::dvec3 lo(1e300), hi(-1e300);
-    for (const glm::dvec3& p : s.points) {
+    for (const glm::dvec3& p : surface.points) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
-    return s.points.empty() ? 0.0 : glm::length(hi - lo);
+    return 1e-10 * glm::length(hi - lo) /
+           std::max(parameterRangeU(surface).length(), parameterRangeV(surface).length());
 }
 
-// Su × Sv normalised, or nullopt where the cross product is degenerate.
-std::optional<glm::dvec3> regularNormal(const NurbsSample& sample, double derivativeFloor)
+std::optional<glm::dvec3> regularNurbsNormal(const glm::dvec3& du, const glm::dvec3& dv, double derivativeFloor)
 {
-    const double lu = glm::length(sample.du), lv = glm::length(sample.dv);
+    const double lu = glm::length(du), lv = glm::length(dv);
     if (!(lu > derivativeFloor) || !(lv > derivativeFloor))
         return std::nullopt;
-    const glm::dvec3 n = glm::cross(sample.du, sample.dv);
+    const glm::dvec3 n = glm::cross(du, dv);
     const double ln = glm::length(n);
     if (!(ln > 1e-10 * lu * lv) || !std::isfinite(ln))
         return std::nullopt;
     return n / ln;
 }
-
-} // namespace
 
 std::optional<NurbsProblem> findNurbsProblem(const NurbsSurface& surface)
 {
@@ -193,20 +195,24 @@ glm::dvec3 nurbsNormal(const NurbsSurface& s, double u, double v)
     const ParameterRange ru = parameterRangeU(s), rv = parameterRangeV(s);
     u = std::clamp(u, ru.begin, ru.end);
     v = std::clamp(v, rv.begin, rv.end);
-    const double floor = 1e-10 * netSize(s) / std::max(ru.length(), rv.length());
-    if (const auto n = regularNormal(evaluateNurbs(s, u, v), floor))
+    const double floor = nurbsDerivativeFloor(s);
+    const auto normalAt = [&](double pu, double pv) {
+        const NurbsSample sample = evaluateNurbs(s, pu, pv);
+        return regularNurbsNormal(sample.du, sample.dv, floor);
+    };
+    if (const auto n = normalAt(u, v))
         return *n;
     // Nudge towards the middle of the domain: the limit normal from inside.
     const double towardsU = u < 0.5 * (ru.begin + ru.end) ? 1.0 : -1.0;
     const double towardsV = v < 0.5 * (rv.begin + rv.end) ? 1.0 : -1.0;
     for (const double step : {1e-6, 1e-4, 1e-2}) {
         const double nudgedV = v + towardsV * step * rv.length();
-        if (const auto n = regularNormal(evaluateNurbs(s, u, nudgedV), floor))
+        if (const auto n = normalAt(u, nudgedV))
             return *n;
         const double nudgedU = u + towardsU * step * ru.length();
-        if (const auto n = regularNormal(evaluateNurbs(s, nudgedU, v), floor))
+        if (const auto n = normalAt(nudgedU, v))
             return *n;
-        if (const auto n = regularNormal(evaluateNurbs(s, nudgedU, nudgedV), floor))
+        if (const auto n = normalAt(nudgedU, nudgedV))
             return *n;
     }
     return glm::dvec3(0.0);

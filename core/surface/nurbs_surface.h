@@ -114,6 +114,16 @@ struct NurbsSample {
 /// surface has no normal anywhere near (u, v) (e.g. the whole net is one point).
 [[nodiscard]] glm::dvec3 nurbsNormal(const NurbsSurface& surface, double u, double v);
 
+/// The length below which ∂S/∂u or ∂S/∂v counts as vanished (a pole, a collapsed edge):
+/// 1e-10 of the control net's bounding-box diagonal per parameter length of the longer
+/// direction. 0 for an empty net.
+[[nodiscard]] double nurbsDerivativeFloor(const NurbsSurface& surface);
+/// normalize(du × dv), or nullopt where it is degenerate: a derivative not longer than
+/// `derivativeFloor`, |du × dv| <= 1e-10·|du|·|dv|, or a non-finite length. The test
+/// behind nurbsNormal and the tessellation's normals.
+[[nodiscard]] std::optional<glm::dvec3> regularNurbsNormal(const glm::dvec3& du, const glm::dvec3& dv,
+                                                           double derivativeFloor);
+
 /// The four boundary sides of the parameter rectangle.
 enum class NurbsSide { UBegin, UEnd, VBegin, VEnd };
 

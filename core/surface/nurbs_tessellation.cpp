@@ -40,16 +40,6 @@ bool sameShape(const NurbsSurface& a, const NurbsSurface& b)
            a.knotsU == b.knotsU && a.knotsV == b.knotsV && a.closedU == b.closedU && a.closedV == b.closedV;
 }
 
-double netSize(const NurbsSurface& s)
-{
-    glm::dvec3 lo(1e300), hi(-1e300);
-    for (const glm::dvec3& p : s.points) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    return s.points.empty() ? 0.0 : glm::length(hi - lo);
-}
-
 } // namespace
 
 NurbsTessellation::NurbsTessellation(const NurbsSurface& surface, int segmentsU, int segmentsV)
@@ -239,8 +229,7 @@ void NurbsTessellation::loadHomogeneous(const NurbsSurface& surface)
     m_homogeneous.resize(m_controlCount);
     for (std::size_t c = 0; c < m_controlCount; ++c)
         m_homogeneous[c] = glm::dvec4(surface.points[c] * surface.weights[c], surface.weights[c]);
-    m_derivativeFloor = 1e-10 * netSize(surface) /
-                        std::max(parameterRangeU(surface).length(), parameterRangeV(surface).length());
+    m_derivativeFloor = nurbsDerivativeFloor(surface);
 }
 
 std::size_t NurbsTessellation::tableBytes() const

@@ -13,20 +13,6 @@ namespace trimlab {
 
 namespace {
 
-// Su × Sv normalised, or nullopt where it is degenerate (same test as nurbsNormal).
-bool regularNormal(const glm::dvec3& du, const glm::dvec3& dv, double floor, glm::dvec3& normal)
-{
-    const double lu = glm::length(du), lv = glm::length(dv);
-    if (!(lu > floor) || !(lv > floor))
-        return false;
-    const glm::dvec3 n = glm::cross(du, dv);
-    const double ln = glm::length(n);
-    if (!(ln > 1e-10 * lu * lv) || !std::isfinite(ln))
-        return false;
-    normal = n / ln;
-    return true;
-}
-
 glm::dvec3 normalizedOrZero(const glm::dvec3& v)
 {
     const double l = glm::length(v);
@@ -161,8 +147,8 @@ void NurbsTessellation::updateNormal(std::uint32_t vertex)
             }
     } else {
         const std::size_t s = m_vertexSample[vertex];
-        if (!regularNormal(m_sampleDu[s], m_sampleDv[s], m_derivativeFloor, normal))
-            normal = normalizedOrZero(fanNormal(vertex, true));
+        const std::optional<glm::dvec3> regular = regularNurbsNormal(m_sampleDu[s], m_sampleDv[s], m_derivativeFloor);
+        normal = regular ? *regular : normalizedOrZero(fanNormal(vertex, true));
     }
     m_normals[vertex] = glm::vec3(normal);
 }
