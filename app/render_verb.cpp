@@ -6,6 +6,7 @@
 #include "trim_exports.h"
 #include "designed_frame.h"
 
+#include "gl/context_reset.h"
 #include "gl/gl_error.h"
 #include "gl/offscreen_gl_context.h"
 #include "scene/scene_source.h"
@@ -108,6 +109,21 @@ RenderOutcome renderWithGpu(const Scene& scene, const RenderOptions& options, co
     RenderOutcome outcome{renderer.readColor(), renderer.readTrimImage(), {}};
     outcome.statistics = gpuStatistics(renderer.lastStats(), parameters, gl.capabilities().renderer, times);
     return outcome;
+}
+
+// A GPU reset during the frames (gl/context_reset.h) takes the context and everything on
+// it, but is usually transient (another application's fault, a driver watchdog): the
+// frames are rendered once more on a new context, and a second reset is the error.
+template <class RenderOnce>
+RenderOutcome renderAgainAfterReset(RenderOnce&& renderOnce)
+{
+    try {
+        return renderOnce();
+    } catch (const render::GlContextLostError& e) {
+        printNote(QStringLiteral("%1 Rendering again on a new OpenGL context (--backend reference renders on the CPU).")
+                      .arg(QString::fromStdString(e.what())));
+        return renderOnce();
+    }
 }
 
 RenderOutcome renderWithReference(const Scene& scene, const RenderOptions& options, const Camera& camera)
@@ -231,11 +247,13 @@ int renderDesigned(const RenderOptions& options)
     if (options.classification == Classification::Static) {
         const Scene scene = timeline::frameScene(design.timeline, design.frame, design.model, design.displayName);
         camera = cameraFor(scene.worldBounds(), options);
-        outcome = gpu ? renderWithGpu(scene, options, camera) : renderWithReference(scene, options, camera);
+        outcome = gpu ? renderAgainAfterReset([&] { return renderWithGpu(scene, options, camera); })
+                      : renderWithReference(scene, options, camera);
     } else {
         const DynamicChain chain = timeline::frameChain(design.timeline, design.frame, options.trim.rule, design.model);
         camera = cameraFor(timeline::chainBounds(chain), options);
-        outcome = gpu ? renderDynamicWithGpu(chain, options, camera) : renderDynamicWithReference(chain, options, camera);
+        outcome = gpu ? renderAgainAfterReset([&] { return renderDynamicWithGpu(chain, options, camera); })
+                      : renderDynamicWithReference(chain, options, camera);
     }
     writeOutputs(outcome, options, camera);
     printLine(QStringLiteral("%1, frame %2 of %3: %4x%5, %6, %7 -> %8")
@@ -314,8 +332,10 @@ int renderLoaded(RenderOptions options)
     if (!fitInspection(loaded.scene, options))
         return 2;
     const Camera camera = cameraFor(loaded.scene.worldBounds(), options);
-    const RenderOutcome outcome = options.backend == Backend::KPlus ? renderWithGpu(loaded.scene, options, camera)
-                                                                     : renderWithReference(loaded.scene, options, camera);
+    const RenderOutcome outcome =
+        options.backend == Backend::KPlus
+            ? renderAgainAfterReset([&] { return renderWithGpu(loaded.scene, options, camera); })
+            : renderWithReference(loaded.scene, options, camera);
     writeOutputs(outcome, options, camera);
     printLine(QStringLiteral("%1: %2x%3, %4, %5 -> %6")
                   .arg(QString::fromStdString(loaded.displayName))

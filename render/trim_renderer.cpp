@@ -99,6 +99,7 @@ void checkInspection(const MethodInfo& info, const TrimMode& mode, const TrimSet
 TrimRenderer::TrimRenderer(QOpenGLContext& context)
     : m_capabilities(queryCapabilities(context)),
       m_gl(checkedFunctions(m_capabilities)),
+      m_resetWatch(context),
       m_shaders(std::make_unique<ShaderLibrary>(m_gl)),
       m_scene(std::make_unique<GpuScene>(m_gl)),
       m_target(std::make_unique<RenderTarget>(m_gl)),
@@ -183,7 +184,8 @@ void TrimRenderer::render(GpuScene& scene, const TrimMode& mode, const Camera& c
     m_gl.glEndQuery(GL_TIME_ELAPSED);
 
     GLuint64 elapsedNs = 0;
-    m_gl.glGetQueryObjectui64v(m_timer.id(), GL_QUERY_RESULT, &elapsedNs);
+    m_gl.glGetQueryObjectui64v(m_timer.id(), GL_QUERY_RESULT, &elapsedNs); // waits for the GPU
+    m_resetWatch.throwIfReset(); // after a reset the counters and the image are garbage
     m_stats.method = m_method->kind();
     m_stats.counts = m_counters->read();
     m_stats.methodStats = m_method->stats();

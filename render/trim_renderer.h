@@ -6,6 +6,7 @@
 /// and at destruction.
 
 #include "frame_counters.h"
+#include "gl/context_reset.h"
 #include "gl/gl_capabilities.h"
 #include "mfr/fragment_method.h"
 
@@ -99,7 +100,8 @@ public:
     /// two-pass method — the message names the buffer methods to pick instead; clip sets
     /// and capping work with every method; transparency likewise needs a buffer method), for a CSG expression naming an object the
     /// scene lacks, and for collision highlighting in a scene of more than
-    /// kMaxCsgOperands objects.
+    /// kMaxCsgOperands objects. Throws GlContextLostError when the GPU was reset during the
+    /// frame (gl/context_reset.h): the renderer and everything uploaded to it are gone.
     void render(const Camera& camera, const TrimSettings& settings, int width, int height);
     /// The same with another uploaded scene and a classification mode. Throws
     /// std::invalid_argument when the mode is dynamic and the method cannot run it, or
@@ -120,6 +122,9 @@ public:
 
     [[nodiscard]] const FrameStats& lastStats() const { return m_stats; }
     [[nodiscard]] const GlCapabilities& capabilities() const { return m_capabilities; }
+    /// Whether the driver tells this renderer's context about GPU resets
+    /// (gl/context_reset.h); without it a reset is seen only if Qt invalidates the context.
+    [[nodiscard]] bool detectsContextResets() const { return m_resetWatch.notifies(); }
 
 private:
     /// The defines and buffer the frame's inspection settings need (capping, per-object
@@ -129,6 +134,7 @@ private:
 
     GlCapabilities m_capabilities; // first: m_gl's initialisation checks it
     GlFunctions& m_gl;
+    ContextResetWatch m_resetWatch;
     std::unique_ptr<ShaderLibrary> m_shaders;
     std::unique_ptr<GpuScene> m_scene;
     std::unique_ptr<RenderTarget> m_target;

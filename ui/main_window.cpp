@@ -365,9 +365,10 @@ void MainWindow::connectParts()
     // Queued: the viewport reports from inside paintGL, where no dialog may open.
     connect(m_viewport, &ViewportWidget::renderError, this, &MainWindow::onRenderError, Qt::QueuedConnection);
     // Not an error dialog: the view still shows a correct image, rendered another way.
-    connect(m_viewport, &ViewportWidget::memoryFallback, this,
-            [this](const QString& message) { statusBar()->showMessage(message, 4 * kStatusMessageMs); },
-            Qt::QueuedConnection);
+    const auto showNotice = [this](const QString& message) { statusBar()->showMessage(message, 4 * kStatusMessageMs); };
+    connect(m_viewport, &ViewportWidget::memoryFallback, this, showNotice, Qt::QueuedConnection);
+    // Nor is a GPU reset: the view re-creates its context and shows the same frame.
+    connect(m_viewport, &ViewportWidget::contextLost, this, showNotice, Qt::QueuedConnection);
 }
 
 void MainWindow::connectAnimationParts()

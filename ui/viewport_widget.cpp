@@ -1,5 +1,6 @@
 #include "viewport_widget.h"
 
+#include "gl/context_reset.h"
 #include "gl/gl_error.h"
 #include "gl/offscreen_gl_context.h"
 #include "gpu_scene.h"
@@ -7,6 +8,8 @@
 #include "mfr/fragment_method.h"
 #include "trim/trim_shading.h"
 
+#include <QCoreApplication>
+#include <QEvent>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -27,6 +30,8 @@ namespace {
 constexpr int kMessageMargin = 24;
 /// QWheelEvent::angleDelta of one wheel notch (15° in eighths of a degree).
 constexpr double kAngleDeltaPerNotch = 120.0;
+/// GPU resets in a row (no frame between) after which the method is blamed.
+constexpr int kResetsBeforeFallback = 2;
 
 } // namespace
 
@@ -386,6 +391,7 @@ TrimImage ViewportWidget::readTrimImage()
 void ViewportWidget::initializeGL()
 {
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseGl, Qt::UniqueConnection);
+    ++m_contextsInitialized;
     m_sceneUploaded = false;
     try {
         m_renderer = std::make_unique<render::TrimRenderer>(*context());
@@ -412,6 +418,40 @@ void ViewportWidget::releaseGl()
     m_levelDirty = m_level != nullptr;
 }
 
+void ViewportWidget::recoverFromContextLoss(const QString& reason)
+{
+    m_lastFrame.reset();
+    m_trimCache = {};
+    ++m_lossesInARow;
+    const bool dynamic = m_chain && m_settings.trimEnabled;
+    const bool methodLeft =
+        render::memoryFallbackAfter(effectiveMethod(), dynamic, render::needsInspectionMethod(m_settings)).has_value();
+    if (m_lossesInARow >= kResetsBeforeFallback && (methodLeft || !dynamic) && !m_cpuStillMode) {
+        m_lossesInARow = 0;
+        const render::MethodInfo& info = render::methodInfo(effectiveMethod());
+        (void)fallBackFrom(tr("%1 It happened again while rendering with %2, so TrimLab re-created the OpenGL "
+                              "context and no longer uses that method here.")
+                               .arg(reason, QString::fromUtf8(info.displayName.data(), qsizetype(info.displayName.size()))));
+    } else {
+        emit contextLost(tr("%1 TrimLab re-created the OpenGL context and uploaded the scene again; nothing of your "
+                            "work was lost.")
+                             .arg(reason));
+    }
+    QMetaObject::invokeMethod(this, &ViewportWidget::recreateContext, Qt::QueuedConnection);
+}
+
+// What Qt itself does when a window's graphics device is lost: QOpenGLWidget drops its
+// context and framebuffer (aboutToBeDestroyed → releaseGl) and, shown, creates new ones
+// at once (initializeGL). Never from inside paintGL, hence queued.
+void ViewportWidget::recreateContext()
+{
+    QEvent aboutToChange(QEvent::WindowAboutToChangeInternal);
+    QCoreApplication::sendEvent(this, &aboutToChange);
+    QEvent changed(QEvent::WindowChangeInternal);
+    QCoreApplication::sendEvent(this, &changed);
+    update();
+}
+
 void ViewportWidget::resizeGL(int, int)
 {
     resetFallback(); // the chosen method may fit the new size
@@ -420,6 +460,11 @@ void ViewportWidget::resizeGL(int, int)
 
 void ViewportWidget::paintGL()
 {
+    if (m_renderer && !context()->isValid()) { // Qt saw the reset first (platforms with reset notification)
+        clearToBackground();
+        recoverFromContextLoss(QString::fromStdString(render::contextResetMessage(render::ContextReset::Unknown)));
+        return;
+    }
     if (!m_renderer) {
         clearToBackground();
         paintMessage(m_error.isEmpty() ? tr("OpenGL is not available.") : m_error);
@@ -440,6 +485,10 @@ void ViewportWidget::paintGL()
             paintCpuStill();
             return;
         }
+    } catch (const render::GlContextLostError& e) {
+        clearToBackground();
+        recoverFromContextLoss(QString::fromStdString(e.what()));
+        return;
     } catch (const render::GlError& e) {
         setError(QString::fromStdString(e.what()));
     } catch (const std::invalid_argument& e) {
@@ -454,6 +503,7 @@ void ViewportWidget::paintGL()
         paintMessage(m_error);
         return;
     }
+    m_lossesInARow = 0;
     emit frameRendered(m_lastFrame->stats);
 }
 

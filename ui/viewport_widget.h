@@ -28,6 +28,14 @@
 /// through memoryFallback(); when no GPU method is left it shows the CPU reference as a
 /// still image (cpu_still_render.h), rendered off the UI thread. Choosing a method,
 /// parameters or a scene tries the chosen method again.
+///
+/// A GPU reset (render/gl/context_reset.h: the renderer reports it after a frame, or Qt
+/// marks the context invalid) loses every GL object but nothing of the work: the view
+/// re-creates its OpenGL context the way Qt does when a window's graphics device is lost,
+/// uploads the scene, pose, colors and dynamic chain again and renders the same frame,
+/// and says so through contextLost(). A second reset before any frame succeeded blames
+/// the method (a frame that trips the driver's watchdog): the view moves on along the
+/// memory fallback chain as when memory runs out.
 
 #include "cpu_still_render.h"
 #include "dynamic_trim_renderer.h"
@@ -203,6 +211,15 @@ public:
     /// The CPU reference image shown in that mode (null before it is ready).
     [[nodiscard]] QImage cpuStillImage() const;
 
+    /// Recovers from a GPU reset that `reason` describes (what the driver said): drops the
+    /// last frame, reports contextLost() — or, for the second reset in a row without a
+    /// frame between, falls back to the next method (memoryFallback()) — and re-creates the
+    /// context from the event loop. paintGL() calls it when a frame reports the reset.
+    void recoverFromContextLoss(const QString& reason);
+    /// How many OpenGL contexts the view has initialized (1 after the first show; each
+    /// recovery adds one).
+    [[nodiscard]] int contextsInitialized() const { return m_contextsInitialized; }
+
 signals:
     /// After every successful frame.
     void frameRendered(const trimlab::render::FrameStats& stats);
@@ -210,9 +227,13 @@ signals:
     void renderError(const QString& message);
     /// The frame size in device pixels changed.
     void framePixelSizeChanged(QSize size);
-    /// The chosen method ran out of GPU memory: `message` says why and what is shown
-    /// instead (another method, or the CPU reference).
+    /// The chosen method ran out of GPU memory (or its frames reset the GPU twice in a
+    /// row): `message` says why and what is shown instead (another method, or the CPU
+    /// reference).
     void memoryFallback(const QString& message);
+    /// The GPU was reset and the view re-created its context: `message` says what happened
+    /// and that the scene was uploaded again.
+    void contextLost(const QString& message);
     /// Ctrl + left drag on object `object` (setObjectDragEnabled): the cursor moved the
     /// grabbed point by `worldDelta` (world units, in the view plane at the grabbed
     /// point's depth) since the previous report.
@@ -236,6 +257,7 @@ private:
     enum class Drag { None, Orbit, Pan, Tool, MoveObject };
 
     void releaseGl();
+    void recreateContext();
     void syncGpuScene();
     void applyPendingReset();
     void renderFrame();
@@ -284,6 +306,8 @@ private:
     TrimImage m_trimCache; ///< the last frame's trim image once read (empty: not read)
     std::optional<render::FragmentMethodKind> m_fallbackMethod; ///< used instead of m_method
     bool m_cpuStillMode = false;
+    int m_lossesInARow = 0;        ///< GPU resets since the last successful frame
+    int m_contextsInitialized = 0; ///< initializeGL() calls
     CpuStillRender* m_cpuStill = nullptr;
     std::shared_ptr<const Scene> m_cpuScene; ///< m_scene with the pose applied, for the CPU still
     Drag m_drag = Drag::None;

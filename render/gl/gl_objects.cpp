@@ -1,5 +1,6 @@
 #include "gl/gl_objects.h"
 
+#include "gl/context_reset.h"
 #include "gl/gl_error.h"
 
 #include <cstdio>
@@ -17,8 +18,13 @@ std::string megabytesText(double bytes)
 void checkAllocation(GlFunctions& gl, const char* what, double bytes)
 {
     bool outOfMemory = false;
-    for (GLenum e = gl.glGetError(); e != GL_NO_ERROR; e = gl.glGetError())
+    bool contextLost = false;
+    for (GLenum e = gl.glGetError(); e != GL_NO_ERROR; e = gl.glGetError()) {
         outOfMemory = outOfMemory || e == GL_OUT_OF_MEMORY;
+        contextLost = contextLost || e == kGlContextLost;
+    }
+    if (contextLost) // a reset, not a full GPU: the allocation may well fit again
+        throw GlContextLostError(ContextReset::Unknown);
     if (outOfMemory)
         throw GpuMemoryError("The GPU ran out of memory allocating the " + std::string(what) + " (" +
                              std::to_string(static_cast<long long>(bytes / (1024.0 * 1024.0) + 0.5)) +

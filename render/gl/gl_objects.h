@@ -48,8 +48,9 @@ using GlVertexArray = GlName<&GlFunctions::glGenVertexArrays, &GlFunctions::glDe
 using GlFramebuffer = GlName<&GlFunctions::glGenFramebuffers, &GlFunctions::glDeleteFramebuffers>;
 using GlQuery = GlName<&GlFunctions::glGenQueries, &GlFunctions::glDeleteQueries>;
 
-/// Drains the GL error queue after an allocation; throws GpuMemoryError naming `what`
-/// and its size in MB if GL_OUT_OF_MEMORY was among the errors.
+/// Drains the GL error queue after an allocation; throws GlContextLostError if
+/// GL_CONTEXT_LOST was among the errors (a GPU reset), else GpuMemoryError naming `what`
+/// and its size in MB if GL_OUT_OF_MEMORY was.
 void checkAllocation(GlFunctions& gl, const char* what, double bytes);
 
 } // namespace trimlab::render

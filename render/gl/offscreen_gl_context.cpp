@@ -14,6 +14,9 @@ QSurfaceFormat OffscreenGlContext::requestedFormat()
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
     format.setStencilBufferSize(8);
+    // Ask to be told about GPU resets (gl/context_reset.h); where the platform ignores
+    // the request (Qt 6.4 on GLX) the context is the same as without it.
+    format.setOption(QSurfaceFormat::ResetNotification);
     return format;
 }
 

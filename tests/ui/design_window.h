@@ -88,4 +88,15 @@ inline bool waitForNewFrame(ui::MainWindow& window, int& seen)
     return ok;
 }
 
+/// Returns once `viewport` rendered no frame for `quietMs` (updates still queued, e.g. the
+/// end of a drag, have arrived), so that its last frame is the one it keeps showing.
+inline void waitUntilViewIdle(ui::ViewportWidget& viewport, int quietMs = 300)
+{
+    QSignalSpy frames(&viewport, &ui::ViewportWidget::frameRendered);
+    do {
+        frames.clear();
+        QTest::qWait(quietMs);
+    } while (!frames.isEmpty());
+}
+
 } // namespace trimlab::test

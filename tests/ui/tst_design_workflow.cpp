@@ -300,8 +300,8 @@ void TestDesignWorkflow::brushRefusesEarlierFrames()
 }
 
 // Two sets under the dynamic rules render through the DynamicTrimRenderer (both levels),
-// a drag replaces only the shown level, and a peeling method explains why it cannot run
-// them instead of crashing.
+// a drag replaces only the shown level, a GPU reset re-creates everything and shows the
+// same frame, and a peeling method explains why it cannot run them instead of crashing.
 void TestDesignWorkflow::dynamicRulesRenderInTheViewport()
 {
     MessageBoxCloser closer;
@@ -328,6 +328,21 @@ void TestDesignWorkflow::dynamicRulesRenderInTheViewport()
     QCOMPARE(session->timeline().frameCount(), 4);
     QVERIFY(QTest::qWaitFor([&] { return viewport->lastDynamicStats().has_value() && viewport->errorMessage().isEmpty(); },
                             kWaitMs));
+
+    // A GPU reset takes the uploaded chain and its cached characterizations with the
+    // context: the view uploads and characterizes them again on the new context and shows
+    // the same frame (ViewportWidget::recoverFromContextLoss; tst_context_loss.cpp).
+    test::waitUntilViewIdle(*viewport); // the drag's last updates may still be on their way
+    const QImage beforeReset = viewport->readColorImage();
+    const int levels = viewport->lastDynamicStats()->levels;
+    const int contexts = viewport->contextsInitialized();
+    viewport->recoverFromContextLoss(QStringLiteral("The graphics driver reset the GPU (test)."));
+    QVERIFY(QTest::qWaitFor(
+        [&] { return viewport->contextsInitialized() == contexts + 1 && viewport->lastFrame() && viewport->lastDynamicStats(); },
+        kWaitMs));
+    QCOMPARE(viewport->lastDynamicStats()->levels, levels);
+    QCOMPARE(viewport->lastDynamicStats()->characterizedLevels, levels - 1);
+    QVERIFY(viewport->readColorImage() == beforeReset);
 
     auto* method = test::child<QComboBox>(window.get(), "methodComboBox");
     QVERIFY(method);

@@ -3,10 +3,9 @@
 // advice of the Frame statistics dock, "Measure all methods" and the persisted choice.
 // Every frame a method renders is checked against the exact CPU reference with the
 // viewport's own camera, size and settings.
+#include "demo_window.h"
 #include "gl_test_context.h"
-#include "image_artifacts.h"
 #include "test_paths.h"
-#include "trim_comparison.h"
 
 #include "frame_stats_panel.h"
 #include "frame_times.h"
@@ -39,8 +38,7 @@ using namespace trimlab::ui;
 namespace {
 
 constexpr QSize kViewportSize(256, 192);
-constexpr int kWaitMs = 30000;
-const QString kDemo = QStringLiteral("demo:pushed-sphere");
+constexpr int kWaitMs = test::kDemoWaitMs;
 
 template <class T>
 T* child(QObject* parent, const char* name)
@@ -73,9 +71,15 @@ private slots:
     void memoryBudgetFallsBackToLeanerMethods();
 
 private:
-    [[nodiscard]] std::unique_ptr<MainWindow> showWindow(const QString& settingsName);
+    [[nodiscard]] std::unique_ptr<MainWindow> showWindow(const QString& settingsName)
+    {
+        return test::showDemoWindow(m_dir.filePath(settingsName + QStringLiteral(".ini")), kViewportSize);
+    }
     [[nodiscard]] static bool waitForFrame(MainWindow& window, const std::function<bool(const ViewportFrame&)>& ready);
-    [[nodiscard]] static std::optional<QString> disagreement(MainWindow& window, const QString& name);
+    [[nodiscard]] static std::optional<QString> disagreement(MainWindow& window, const QString& name)
+    {
+        return test::lastFrameDisagreement(window, name);
+    }
 
     QTemporaryDir m_dir;
 };
@@ -86,21 +90,6 @@ void TestMethodPanel::initTestCase()
     QVERIFY(m_dir.isValid());
 }
 
-std::unique_ptr<MainWindow> TestMethodPanel::showWindow(const QString& settingsName)
-{
-    auto window = std::make_unique<MainWindow>(m_dir.filePath(settingsName + QStringLiteral(".ini")));
-    window->viewport()->setFixedSize(kViewportSize);
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get()))
-        qWarning("main window not exposed");
-    const bool loaded = QTest::qWaitFor(
-        [&] { return !window->isLoading() && window->scene() && window->scene()->source == kDemo.toStdString(); },
-        kWaitMs);
-    if (!loaded)
-        qWarning("the default demo did not load");
-    return window;
-}
-
 bool TestMethodPanel::waitForFrame(MainWindow& window, const std::function<bool(const ViewportFrame&)>& ready)
 {
     return QTest::qWaitFor(
@@ -109,32 +98,6 @@ bool TestMethodPanel::waitForFrame(MainWindow& window, const std::function<bool(
             return frame && ready(*frame);
         },
         kWaitMs);
-}
-
-// The last frame against the reference for its camera, size and settings, with the render
-// tests' criteria (core/trim/trim_agreement.h). nullopt when it agrees.
-std::optional<QString> TestMethodPanel::disagreement(MainWindow& window, const QString& name)
-{
-    const ViewportFrame frame = *window.viewport()->lastFrame();
-    const TrimImage actual = window.viewport()->readTrimImage();
-    const ReferenceRenderer reference(window.scene()->scene);
-    const int width = frame.pixelSize.width();
-    const int height = frame.pixelSize.height();
-    const ReferenceResult expected = reference.render(frame.camera, width, height, frame.settings);
-    const test::TrimComparison comparison =
-        test::compareTrimImages(actual, expected.trim, expected.diagnostics, {},
-                                test::referenceTieCheck(reference, frame.camera, width, height, frame.settings));
-    const bool bounded = render::methodInfo(frame.stats.method).bounded;
-    const auto violation = agreementViolation(comparison, {}, bounded, frame.stats.counts.fragmentsLost);
-    qInfo("%s: %s", qPrintable(name), qPrintable(comparison.summary()));
-    if (comparison.coveredPixels < width * height / 10)
-        return QStringLiteral("%1: only %2 pixels covered").arg(name).arg(comparison.coveredPixels);
-    if (!violation)
-        return std::nullopt;
-    const QString files = test::writeComparisonArtifacts(name, test::trimImageToPicture(actual),
-                                                         test::trimImageToPicture(expected.trim),
-                                                         comparison.disagreementMask);
-    return name + ": " + QString::fromStdString(*violation) + "; " + comparison.summary() + "; " + files;
 }
 
 // Down-arrow through the combo box: each step re-renders with that method, and the frame
