@@ -1,5 +1,7 @@
 #include "segmentation_settings_form.h"
 
+#include "form_controls.h"
+
 #include <QComboBox>
 #include <QFormLayout>
 #include <QSignalBlocker>
@@ -7,42 +9,21 @@
 
 namespace trimlab::ui {
 
-namespace {
-
-QComboBox* comboBox(const char* name, const QList<std::pair<QString, int>>& items, const QString& toolTip)
-{
-    auto* box = new QComboBox;
-    box->setObjectName(QString::fromLatin1(name));
-    for (const auto& [text, value] : items)
-        box->addItem(text, value);
-    box->setToolTip(toolTip);
-    return box;
-}
-
-void selectData(QComboBox* box, int value)
-{
-    const int index = box->findData(value);
-    if (index >= 0)
-        box->setCurrentIndex(index);
-}
-
-} // namespace
-
 SegmentationSettingsForm::SegmentationSettingsForm(QWidget* parent) : QWidget(parent)
 {
-    m_feature = comboBox("featureComboBox",
-                         {{tr("Rotation angle"), int(FeatureKind::RotationAngle)},
-                          {tr("Velocity"), int(FeatureKind::Velocity)},
-                          {tr("Acceleration"), int(FeatureKind::Acceleration)}},
-                         tr("What every pose is partitioned by: the rotation angle of the deformation gradients, or "
-                            "the vertex velocity or acceleration"));
-    m_reference = comboBox("referenceComboBox",
-                           {{tr("Rest pose"), int(ReferenceMode::Rest)}, {tr("Previous pose"), int(ReferenceMode::Previous)}},
-                           tr("The pose rotation angles are measured against"));
-    m_method = comboBox("clusteringComboBox",
-                        {{tr("Region growing"), int(PartitionMethod::RegionGrowing)},
-                         {tr("Hierarchical"), int(PartitionMethod::Hierarchical)}},
-                        tr("Region growing is fast; hierarchical splitting gives better clusters"));
+    m_feature = namedComboBox("featureComboBox",
+                              {{tr("Rotation angle"), int(FeatureKind::RotationAngle)},
+                               {tr("Velocity"), int(FeatureKind::Velocity)},
+                               {tr("Acceleration"), int(FeatureKind::Acceleration)}},
+                              tr("What every pose is partitioned by: the rotation angle of the deformation gradients, or "
+                                 "the vertex velocity or acceleration"));
+    m_reference = namedComboBox("referenceComboBox",
+                                {{tr("Rest pose"), int(ReferenceMode::Rest)}, {tr("Previous pose"), int(ReferenceMode::Previous)}},
+                                tr("The pose rotation angles are measured against"));
+    m_method = namedComboBox("clusteringComboBox",
+                             {{tr("Region growing"), int(PartitionMethod::RegionGrowing)},
+                              {tr("Hierarchical"), int(PartitionMethod::Hierarchical)}},
+                             tr("Region growing is fast; hierarchical splitting gives better clusters"));
     m_clusters = new QSpinBox;
     m_clusters->setObjectName(QStringLiteral("clustersSpinBox"));
     m_clusters->setRange(1, SegmentationChoices::kMaxClusters);
@@ -50,12 +31,12 @@ SegmentationSettingsForm::SegmentationSettingsForm(QWidget* parent) : QWidget(pa
     m_threads->setObjectName(QStringLiteral("threadsSpinBox"));
     m_threads->setRange(0, SegmentationChoices::kMaxThreads);
     m_threads->setSpecialValueText(tr("all cores"));
-    m_mode = comboBox("modeComboBox",
-                      {{tr("Global"), int(SegmentationMode::Global)},
-                       {tr("Real-time (stream poses)"), int(SegmentationMode::RealTime)},
-                       {tr("Variable (per pose)"), int(SegmentationMode::Variable)}},
-                      tr("Global: one segmentation of the whole animation. Real-time: built pose by pose as the "
-                         "timeline plays. Variable: each pose joined with the next, shown per pose."));
+    m_mode = namedComboBox("modeComboBox",
+                           {{tr("Global"), int(SegmentationMode::Global)},
+                            {tr("Real-time (stream poses)"), int(SegmentationMode::RealTime)},
+                            {tr("Variable (per pose)"), int(SegmentationMode::Variable)}},
+                           tr("Global: one segmentation of the whole animation. Real-time: built pose by pose as the "
+                              "timeline plays. Variable: each pose joined with the next, shown per pose."));
 
     auto* form = new QFormLayout(this);
     form->setContentsMargins(0, 0, 0, 0);
@@ -77,12 +58,12 @@ SegmentationSettingsForm::SegmentationSettingsForm(QWidget* parent) : QWidget(pa
 void SegmentationSettingsForm::setChoices(const SegmentationChoices& choices)
 {
     const QSignalBlocker b1(m_feature), b2(m_reference), b3(m_method), b4(m_clusters), b5(m_threads), b6(m_mode);
-    selectData(m_feature, int(choices.feature));
-    selectData(m_reference, int(choices.reference));
-    selectData(m_method, int(choices.method));
+    selectItemWithData(m_feature, int(choices.feature));
+    selectItemWithData(m_reference, int(choices.reference));
+    selectItemWithData(m_method, int(choices.method));
     m_clusters->setValue(choices.clusters);
     m_threads->setValue(choices.threads);
-    selectData(m_mode, int(choices.mode));
+    selectItemWithData(m_mode, int(choices.mode));
     updateReferenceEnabled();
 }
 

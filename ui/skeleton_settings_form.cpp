@@ -1,5 +1,7 @@
 #include "skeleton_settings_form.h"
 
+#include "form_controls.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -35,11 +37,6 @@ QSpinBox* intBox(const char* name, int lo, int hi, const QString& tip)
     box->setRange(lo, hi);
     box->setToolTip(tip);
     return box;
-}
-
-void selectData(QComboBox* box, int value)
-{
-    box->setCurrentIndex(std::max(0, box->findData(value)));
 }
 
 } // namespace
@@ -144,8 +141,8 @@ void SkeletonSettingsForm::setChoices(const SkeletonChoices& c)
     m_maxContraction->setValue(k.maxContractionWeight);
     m_maxAttraction->setValue(k.maxAttractionWeight);
     m_iterations->setValue(k.maxIterations);
-    selectData(m_ordering, int(k.ordering));
-    selectData(m_solver, int(k.backend));
+    selectItemWithData(m_ordering, int(k.ordering));
+    selectItemWithData(m_solver, int(k.backend));
     m_delta->setValue(c.extraction.simplification.preCollapseFraction);
     m_shapeWeight->setValue(c.extraction.simplification.shapeWeight);
     m_samplingWeight->setValue(c.extraction.simplification.samplingWeight);
@@ -153,7 +150,7 @@ void SkeletonSettingsForm::setChoices(const SkeletonChoices& c)
     m_nodes->setValue(c.extraction.targetNodes);
     m_root->setValue(c.extraction.rootJoint);
     m_heat->setValue(c.heatConstant);
-    selectData(m_skinning, int(c.skinning));
+    selectItemWithData(m_skinning, int(c.skinning));
 }
 
 void SkeletonSettingsForm::pickRootJoint(int joint)

@@ -1,5 +1,7 @@
 #include "skinning_settings_form.h"
 
+#include "form_controls.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
@@ -9,42 +11,13 @@
 
 namespace trimlab::ui {
 
-namespace {
-
-QComboBox* comboBox(const char* name, const QList<std::pair<QString, int>>& items, const QString& toolTip)
-{
-    auto* box = new QComboBox;
-    box->setObjectName(QString::fromLatin1(name));
-    for (const auto& [text, value] : items)
-        box->addItem(text, value);
-    box->setToolTip(toolTip);
-    return box;
-}
-
-void selectData(QComboBox* box, int value)
-{
-    const int index = box->findData(value);
-    if (index >= 0)
-        box->setCurrentIndex(index);
-}
-
-QCheckBox* checkBox(const QString& text, const char* name, const QString& toolTip)
-{
-    auto* box = new QCheckBox(text);
-    box->setObjectName(QString::fromLatin1(name));
-    box->setToolTip(toolTip);
-    return box;
-}
-
-} // namespace
-
 SkinningSettingsForm::SkinningSettingsForm(QWidget* parent) : QWidget(parent)
 {
-    m_boneSource = comboBox("skinningBoneSourceComboBox",
-                            {{tr("From the segmentation"), int(BoneSource::Segmentation)},
-                             {tr("Given count"), int(BoneSource::GivenCount)}},
-                            tr("One bone per segment of the segmentation shown, or the animation segmented anew "
-                               "into exactly the given number of segments"));
+    m_boneSource = namedComboBox("skinningBoneSourceComboBox",
+                                 {{tr("From the segmentation"), int(BoneSource::Segmentation)},
+                                  {tr("Given count"), int(BoneSource::GivenCount)}},
+                                 tr("One bone per segment of the segmentation shown, or the animation segmented anew "
+                                    "into exactly the given number of segments"));
     m_boneCount = new QSpinBox;
     m_boneCount->setObjectName(QStringLiteral("skinningBoneCountSpinBox"));
     m_boneCount->setRange(1, SkinningChoices::kMaxBones);
@@ -54,22 +27,22 @@ SkinningSettingsForm::SkinningSettingsForm(QWidget* parent) : QWidget(parent)
     m_bones->setWordWrap(true);
     m_bones->setToolTip(tr("One proxy bone per segment of the segmentation shown in the Segmentation panel "
                            "(its h included); weights blend across segment borders"));
-    m_method = comboBox("skinningMethodComboBox",
-                        {{tr("LBS (affine bones)"), int(SkinningMethod::Lbs)},
-                         {tr("DQS (rigid bones)"), int(SkinningMethod::Dqs)}},
-                        tr("Linear blend skinning with affine bone transforms, or dual quaternion skinning with "
-                           "rigid ones"));
-    m_chain = comboBox("skinningChainComboBox",
-                       {{tr("Pose to pose (p2p)"), int(SkinningChain::PoseToPose)},
-                        {tr("Rest to pose (classical)"), int(SkinningChain::RestToPose)}},
-                       tr("p2p-skinning fits each pose from the pose before it; the classical fit maps the rest "
-                          "pose to every pose"));
-    m_weightCorrections = checkBox(tr("Weight corrections"), "weightCorrectionsCheckBox",
-                                   tr("Re-estimate the weights from the fitted transforms and refit (kept only "
-                                      "when E_RMS does not rise)"));
-    m_vertexCorrections = checkBox(tr("Vertex corrections"), "vertexCorrectionsCheckBox",
-                                   tr("Move the rest-pose vertices to lower the error (kept only when E_RMS "
-                                      "does not rise)"));
+    m_method = namedComboBox("skinningMethodComboBox",
+                             {{tr("LBS (affine bones)"), int(SkinningMethod::Lbs)},
+                              {tr("DQS (rigid bones)"), int(SkinningMethod::Dqs)}},
+                             tr("Linear blend skinning with affine bone transforms, or dual quaternion skinning with "
+                                "rigid ones"));
+    m_chain = namedComboBox("skinningChainComboBox",
+                            {{tr("Pose to pose (p2p)"), int(SkinningChain::PoseToPose)},
+                             {tr("Rest to pose (classical)"), int(SkinningChain::RestToPose)}},
+                            tr("p2p-skinning fits each pose from the pose before it; the classical fit maps the rest "
+                               "pose to every pose"));
+    m_weightCorrections = namedCheckBox(tr("Weight corrections"), "weightCorrectionsCheckBox",
+                                        tr("Re-estimate the weights from the fitted transforms and refit (kept only "
+                                           "when E_RMS does not rise)"));
+    m_vertexCorrections = namedCheckBox(tr("Vertex corrections"), "vertexCorrectionsCheckBox",
+                                        tr("Move the rest-pose vertices to lower the error (kept only when E_RMS "
+                                           "does not rise)"));
     auto* form = new QFormLayout(this);
     form->setContentsMargins(0, 0, 0, 0);
     form->addRow(tr("Bones"), m_boneSource);
@@ -93,10 +66,10 @@ void SkinningSettingsForm::setChoices(const SkinningChoices& choices)
 {
     const QSignalBlocker b1(m_method), b2(m_chain), b3(m_weightCorrections), b4(m_vertexCorrections),
         b5(m_boneSource), b6(m_boneCount);
-    selectData(m_boneSource, int(choices.boneSource));
+    selectItemWithData(m_boneSource, int(choices.boneSource));
     m_boneCount->setValue(choices.boneCount);
-    selectData(m_method, int(choices.method));
-    selectData(m_chain, int(choices.chain));
+    selectItemWithData(m_method, int(choices.method));
+    selectItemWithData(m_chain, int(choices.chain));
     m_weightCorrections->setChecked(choices.weightCorrections);
     m_vertexCorrections->setChecked(choices.vertexCorrections);
     updateBoneCountEnabled();
