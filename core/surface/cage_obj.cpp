@@ -186,7 +186,7 @@ SubdivisionCage loadCageObj(const std::filesystem::path& path, SubdivisionScheme
     if (in.bad())
         throw MeshLoadError(name, "reading the file failed");
     if (bytes.empty())
-        throw MeshLoadError(name, "the file is empty");
+        throw MeshLoadError(name, "the file is empty (0 bytes)");
     if (bytes.size() > kMaxMeshInputBytes)
         throw MeshLoadError(name, "the file is larger than 2 GiB");
     if (hasGzipMagic(bytes))

@@ -1,5 +1,7 @@
 #include "timeline/project_file.h"
 
+#include "surface/control_edit.h"
+#include "surface/editable_surface.h"
 #include "timeline/atomic_write.h"
 #include "timeline/binary_array.h"
 #include "timeline/file_bytes.h"
@@ -198,8 +200,12 @@ Project readDocument(const json& document)
         surface = readSurfaceDefinition(*value, "surface");
     ProjectExtras extras = readExtras(document);
     try {
-        return Project{Timeline::restore(std::move(base), std::move(frames), std::move(sets), std::move(surface)),
-                       std::move(extras)};
+        Timeline timeline = Timeline::restore(std::move(base), std::move(frames), std::move(sets), std::move(surface));
+        // Editing goes on from the stored base mesh as if it were the surface's
+        // tessellation: a file where it is not is refused here, not at the first edit.
+        if (timeline.surface())
+            requireSurfaceMatchesTimeline(EditableSurface(*timeline.surface()), timeline);
+        return Project{std::move(timeline), std::move(extras)};
     } catch (const std::invalid_argument& error) {
         throw JsonPathError("", std::string("inconsistent history: ") + error.what());
     }

@@ -63,7 +63,9 @@ struct Project {
 /// missing or mistyped fields, damaged binary arrays (bad base64, wrong length, CRC
 /// mismatch), unknown rule names, and histories that are inconsistent (sets that do not
 /// cover the frames, 'before' positions that disagree with the previous frame, indices
-/// out of range). Nothing is returned unless the whole document is valid.
+/// out of range, a surface history whose base mesh is not the surface's tessellation —
+/// vertex count and triangles, requireSurfaceMatchesTimeline —, which costs one
+/// tessellation of the surface). Nothing is returned unless the whole document is valid.
 [[nodiscard]] Project parseProject(std::string_view bytes, const std::string& displayName);
 
 /// Writes projectJson(timeline, extras) to `path` atomically (atomic_write.h): on failure

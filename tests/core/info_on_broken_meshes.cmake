@@ -1,6 +1,9 @@
 # `trimlab info` on every broken mesh file of tests/data/README.md ("Broken files"
-# tables): each must exit with status 1 (malformed input; a crash or a signal is a
-# failure) and print the phrase the table gives. Run by CTest as app.info_broken_meshes:
+# tables) and every broken NURBS file (`*.nurbs.json` rows of the "Broken project files"
+# table; `info` and `render` read NURBS files as scenes): each must exit with status 1
+# (malformed input; a crash or a signal is a failure) and print the phrase the table
+# gives. Cages are not scene sources (a cage .obj is read as a mesh), skeleton files and
+# projects are not read by `info`. Run by CTest as app.info_broken_meshes:
 #   cmake -DTRIMLAB=<trimlab executable> -DDATA=<tests/data> -P info_on_broken_meshes.cmake
 # Read line by line with ';', '[' and ']' masked: CMake lists would split or join there.
 file(READ "${DATA}/README.md" text)
@@ -8,23 +11,30 @@ string(REPLACE ";" "<sc>" text "${text}")
 string(REPLACE "[" "<lb>" text "${text}")
 string(REPLACE "]" "<rb>" text "${text}")
 string(REPLACE "\n" ";" lines "${text}")
-set(inside FALSE)
+set(section "")
 set(checked 0)
+set(nurbs 0)
 set(failures "")
 foreach(line IN LISTS lines)
   if(line MATCHES "^## Broken files")
-    set(inside TRUE)
+    set(section meshes)
+  elseif(line MATCHES "^## Broken project files")
+    set(section documents)
   elseif(line MATCHES "^## ")
-    set(inside FALSE)
+    set(section "")
   endif()
-  if(NOT inside OR NOT line MATCHES "^\\| (`[^|]+`) \\| [^|]* \\| ([^|]+) \\|$")
+  if(section STREQUAL "" OR NOT line MATCHES "^\\| (`[^|]+`) \\| [^|]* \\| ([^|]+) \\|$")
     continue()
   endif()
+  set(files "${CMAKE_MATCH_1}")
   set(phrase "${CMAKE_MATCH_2}")
+  if(section STREQUAL "documents" AND NOT files MATCHES "^`[^`]+\\.nurbs\\.json`$")
+    continue()
+  endif()
   string(REPLACE "<sc>" ";" phrase "${phrase}")
   string(REPLACE "<lb>" "[" phrase "${phrase}")
   string(REPLACE "<rb>" "]" phrase "${phrase}")
-  string(REGEX MATCHALL "`[^`]+`" names "${CMAKE_MATCH_1}")
+  string(REGEX MATCHALL "`[^`]+`" names "${files}")
   foreach(quoted IN LISTS names)
     string(REPLACE "`" "" name "${quoted}")
     execute_process(COMMAND "${TRIMLAB}" info "${DATA}/broken/${name}"
@@ -33,13 +43,19 @@ foreach(line IN LISTS lines)
     if(NOT rc STREQUAL "1" OR at EQUAL -1)
       string(APPEND failures "\n${name}: exit '${rc}', expected 1 and '${phrase}'; output: ${out}${err}")
     endif()
-    math(EXPR checked "${checked} + 1")
+    if(section STREQUAL "documents")
+      math(EXPR nurbs "${nurbs} + 1")
+    else()
+      math(EXPR checked "${checked} + 1")
+    endif()
   endforeach()
 endforeach()
 if(failures)
-  message(FATAL_ERROR "trimlab info on broken meshes:${failures}")
+  message(FATAL_ERROR "trimlab info on broken meshes and NURBS files:${failures}")
 endif()
-if(checked LESS 84)
-  message(FATAL_ERROR "only ${checked} broken mesh files found in ${DATA}/README.md (expected at least 84)")
+if(checked LESS 84 OR nurbs LESS 11)
+  message(FATAL_ERROR "only ${checked} broken mesh files and ${nurbs} broken NURBS files found in "
+                      "${DATA}/README.md (expected at least 84 and 11)")
 endif()
-message(STATUS "trimlab info: ${checked} broken mesh files fail with the expected message")
+message(STATUS "trimlab info: ${checked} broken mesh files and ${nurbs} broken NURBS files fail with the "
+               "expected message")

@@ -10,7 +10,7 @@ trimlab_add_test(core save_kill LIBS trimlab::core TIMEOUT 120)
 target_compile_definitions(tst_core_save_kill PRIVATE SAVE_KILL_HELPER="$<TARGET_FILE:save_kill_helper>")
 add_dependencies(tst_core_save_kill save_kill_helper)
 
-# `trimlab info` on every broken mesh file (the batch verbs' load path; label app).
+# `trimlab info` on every broken mesh and NURBS file (the batch verbs' load path; label app).
 if(TARGET trimlab)
   add_test(NAME app.info_broken_meshes
            COMMAND ${CMAKE_COMMAND} -DTRIMLAB=$<TARGET_FILE:trimlab> -DDATA=${TRIMLAB_TEST_DATA_DIR}

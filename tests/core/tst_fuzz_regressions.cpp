@@ -3,8 +3,11 @@
 //   found, plus hand-picked hostile inputs) goes through the same loader as its fuzz
 //   target and must load or fail with that loader's typed error — never crash, hang or
 //   throw anything else;
-// - every broken project file, stroke script and animation in tests/data/broken/
-//   (make_broken_documents.py) must fail with the exact error of the table below.
+// - every broken project file (version 1 and 2), stroke script, animation, NURBS file,
+//   skeleton file and subdivision cage in tests/data/broken/ (make_broken_documents.py,
+//   the cages by hand) must fail through its public loader with the exact error of the
+//   table below; NURBS files also through loadScene, the path of `trimlab info` and
+//   `trimlab render`.
 #include "test_paths.h"
 
 #include "animation/animation_loader.h"
@@ -13,6 +16,9 @@
 #include "io/pfm_image.h"
 #include "mesh/gzip_input.h"
 #include "mesh/mesh_io.h"
+#include "scene/scene_source.h"
+#include "surface/cage_obj.h"
+#include "surface/nurbs_json.h"
 #include "timeline/file_bytes.h"
 #include "timeline/project_file.h"
 #include "timeline/stroke_script.h"
@@ -26,8 +32,11 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <typeinfo>
+#include <utility>
 
 using namespace trimlab;
 using trimlab::test::testDataPath;
@@ -137,28 +146,84 @@ bool isTypedError(const std::exception& error, const std::string& target)
     return dynamic_cast<const MeshLoadError*>(&error) != nullptr;
 }
 
+// The loader a broken document of tests/data/broken/ goes to, told by its name.
+enum class DocumentKind { Project, StrokeScript, Animation, Nurbs, Skeleton, Cage };
+
+std::optional<DocumentKind> documentKind(const std::string& name)
+{
+    static constexpr std::pair<std::string_view, DocumentKind> kPrefixes[] = {
+        {"script_", DocumentKind::StrokeScript}, {"anim_", DocumentKind::Animation},
+        {"nurbs_", DocumentKind::Nurbs},         {"skeleton_", DocumentKind::Skeleton},
+        {"cage_", DocumentKind::Cage},
+    };
+    if (name.ends_with(".trimlab"))
+        return DocumentKind::Project;
+    for (const auto& [prefix, kind] : kPrefixes)
+        if (name.starts_with(prefix))
+            return kind;
+    return std::nullopt; // a broken mesh: tst_mesh_io.cpp's table
+}
+
+void loadDocument(const std::filesystem::path& path, DocumentKind kind)
+{
+    switch (kind) {
+    case DocumentKind::Project: (void)timeline::readProject(path); return;
+    case DocumentKind::StrokeScript: (void)timeline::loadStrokeScript(path); return;
+    case DocumentKind::Animation: (void)loadAnimation(path.string(), {}, {}); return;
+    case DocumentKind::Nurbs: (void)loadNurbsJson(path); return;
+    case DocumentKind::Skeleton: (void)loadSkeletonJson(path); return;
+    case DocumentKind::Cage: (void)loadCageObj(path); return;
+    }
+}
+
+// Whether `error` is the typed error the loader of `kind` documents.
+bool isDocumentError(const std::exception& error, DocumentKind kind)
+{
+    switch (kind) {
+    case DocumentKind::Project: return dynamic_cast<const timeline::ProjectFileError*>(&error) != nullptr;
+    case DocumentKind::StrokeScript: return dynamic_cast<const timeline::StrokeScriptError*>(&error) != nullptr;
+    case DocumentKind::Nurbs: return dynamic_cast<const NurbsFileError*>(&error) != nullptr;
+    case DocumentKind::Skeleton: return dynamic_cast<const SkeletonFileError*>(&error) != nullptr;
+    case DocumentKind::Animation:
+    case DocumentKind::Cage: return dynamic_cast<const MeshLoadError*>(&error) != nullptr;
+    }
+    return false;
+}
+
 // Loads a broken document the way the GUI and the batch verbs do; returns the message
 // of the typed error, or a description of what happened instead.
-std::string brokenDocumentError(const std::filesystem::path& path)
+std::string brokenDocumentError(const std::filesystem::path& path, DocumentKind kind)
 {
-    const std::string name = path.filename().string();
     try {
-        if (name.ends_with(".trimlab"))
-            (void)timeline::readProject(path);
-        else if (name.starts_with("script_"))
-            (void)timeline::loadStrokeScript(path);
-        else
-            (void)loadAnimation(path.string(), {}, {});
-    } catch (const timeline::ProjectFileError& error) {
-        return name.ends_with(".trimlab") ? error.what() : std::string("wrong type: ") + error.what();
-    } catch (const timeline::StrokeScriptError& error) {
-        return name.starts_with("script_") ? error.what() : std::string("wrong type: ") + error.what();
-    } catch (const MeshLoadError& error) {
-        return name.starts_with("anim_") ? error.what() : std::string("wrong type: ") + error.what();
+        loadDocument(path, kind);
     } catch (const std::exception& error) {
-        return std::string("unexpected ") + typeid(error).name() + ": " + error.what();
+        if (isDocumentError(error, kind))
+            return error.what();
+        return std::string("wrong type ") + typeid(error).name() + ": " + error.what();
     }
     return "loaded without an error";
+}
+
+// The message of loadScene's MeshLoadError (`trimlab info` / `render` on a NURBS file).
+std::string sceneError(const std::filesystem::path& path)
+{
+    try {
+        (void)loadScene(path.string());
+    } catch (const MeshLoadError& error) {
+        return error.what();
+    } catch (const std::exception& error) {
+        return std::string("wrong type ") + typeid(error).name() + ": " + error.what();
+    }
+    return "loaded without an error";
+}
+
+// Messages start with the file name as given; compare from the file name on.
+QString withoutFolder(std::string message, const std::filesystem::path& path)
+{
+    const std::string prefix = path.parent_path().string() + "/";
+    if (message.starts_with(prefix))
+        message.erase(0, prefix.size());
+    return QString::fromStdString(message);
 }
 
 } // namespace
@@ -210,8 +275,9 @@ void TestFuzzRegressions::regressionFilesLoadOrFailTyped()
 
 namespace {
 
-// tests/data/broken/ project files, stroke scripts and animations with the exact error
-// each must produce (tests/data/README.md lists them with their contents).
+// tests/data/broken/ project files, stroke scripts, animations, NURBS files, cages and
+// skeleton files with the exact error each must produce (tests/data/README.md lists them
+// with their contents).
 const std::vector<std::pair<const char*, const char*>> kBrokenDocuments = {
     {"anim_bad_channel_node.gltf",
      "anim_bad_channel_node.gltf: animation 0 channel 0: the target node 9 does not exist"},
@@ -239,6 +305,50 @@ const std::vector<std::pair<const char*, const char*>> kBrokenDocuments = {
      "anim_seq_truncated_pose/pose_1.obj:6: a vertex needs 3 coordinates (v x y z), but this line has 2"},
     {"anim_weights_count.gltf",
      "anim_weights_count.gltf: animation 0 sampler 0: has 3 keyframe times but 2 output numbers; expected 3"},
+    {"cage_crease_not_edge.obj",
+     "cage_crease_not_edge.obj:16: crease 0 (0-2) is not an edge of the cage; a crease must join two corners that follow each other in a face"},
+    {"cage_empty.obj",
+     "cage_empty.obj: the file is empty (0 bytes)"},
+    {"cage_huge_tag.obj",
+     "cage_huge_tag.obj:16: tag 'crease' declares 2000000000 integers and 1 numbers, but the line ends after 3"},
+    {"cage_inconsistent_orientation.obj",
+     "cage_inconsistent_orientation.obj:12: cage edge 4-5 runs the same way in faces 1 and 2 (inconsistent orientation); reverse one of them so neighbours agree"},
+    {"cage_nan.obj",
+     "cage_nan.obj:4: vertex 3 has a non-finite coordinate (nan); coordinates must be finite numbers"},
+    {"cage_negative_index.obj",
+     "cage_negative_index.obj:15: face references vertex -9 (counting back), but only 8 vertices are defined before this line"},
+    {"cage_nonmanifold.obj",
+     "cage_nonmanifold.obj:17: cage edge 0-1 is used by 3 faces (non-manifold; first faces 0, 2, 6); each edge may border at most two faces"},
+    {"cage_out_of_range.obj",
+     "cage_out_of_range.obj:15: face 6 references vertex 9, but the file has only 8 vertices"},
+    {"cage_repeated_corner.obj",
+     "cage_repeated_corner.obj:15: cage face 5 repeats vertex 4; remove the repeated corner"},
+    {"cage_truncated.obj",
+     "cage_truncated.obj:9: a vertex needs 3 coordinates (v x y z), but this line has 2"},
+    {"cage_two_corners.obj",
+     "cage_two_corners.obj:15: the face has 2 vertices; a face needs at least 3"},
+    {"nurbs_count_text.nurbs.json",
+     "nurbs_count_text.nurbs.json: surfaces[0].countU: must be an integer in [2, 1000000], not a string"},
+    {"nurbs_decreasing_knots.nurbs.json",
+     "nurbs_decreasing_knots.nurbs.json: surfaces[0].knotsU[4]: knots must not decrease (0.25 after 0.5); sort the knot vector"},
+    {"nurbs_degree_out_of_range.nurbs.json",
+     "nurbs_degree_out_of_range.nurbs.json: surfaces[0].degreeU: must be an integer in [1, 7], not 9"},
+    {"nurbs_empty.nurbs.json",
+     "nurbs_empty.nurbs.json: invalid JSON at line 1, column 1: the document is empty"},
+    {"nurbs_huge_count.nurbs.json",
+     "nurbs_huge_count.nurbs.json: surfaces[0].countV: countU·countV = 10000000000 control points are more than the limit of 1000000; split the surface"},
+    {"nurbs_nan.nurbs.json",
+     "nurbs_nan.nurbs.json: invalid JSON at line 65, column 6: syntax error while parsing value - invalid literal; last read: '1.0,<U+000A>     N'"},
+    {"nurbs_newer_version.nurbs.json",
+     "nurbs_newer_version.nurbs.json: version: version 2 is newer than this TrimLab (1); update TrimLab to open it"},
+    {"nurbs_overflow.nurbs.json",
+     "nurbs_overflow.nurbs.json: invalid JSON at line 113, column 5: the number 1e999 does not fit a double; use finite values"},
+    {"nurbs_points_count.nurbs.json",
+     "nurbs_points_count.nurbs.json: surfaces[0].points: 14 entries, but countU·countV = 15; give exactly that many"},
+    {"nurbs_truncated.nurbs.json",
+     "nurbs_truncated.nurbs.json: truncated JSON at line 56, column 7: syntax error while parsing array - unexpected end of input; expected ']'"},
+    {"nurbs_zero_weight.nurbs.json",
+     "nurbs_zero_weight.nurbs.json: surfaces[0].weights[7]: weights must be finite and > 0 (rational surfaces need positive weights)"},
     {"project_bad_base64.trimlab",
      "project_bad_base64.trimlab: frames[0].after.base64: damaged base64: character '#' at offset 2 is not base64"},
     {"project_bad_fovy.trimlab",
@@ -269,6 +379,18 @@ const std::vector<std::pair<const char*, const char*>> kBrokenDocuments = {
      "project_radius_zero.trimlab: frames[0].stroke.radius: must be > 0"},
     {"project_sets_do_not_cover.trimlab",
      "project_sets_do_not_cover.trimlab: inconsistent history: the sets hold 2 frames but there are 1"},
+    {"project_surface_base_mismatch.trimlab",
+     "project_surface_base_mismatch.trimlab: inconsistent history: the history's base mesh has 9 vertices, the surface's tessellation 8"},
+    {"project_surface_before_differs.trimlab",
+     "project_surface_before_differs.trimlab: inconsistent history: frames[0]: control move 0: the 'before' position (1.000000, 1.000000, 0.250000) of control point 2 differs from its current position (1.000000, 1.000000, 0.000000)"},
+    {"project_surface_control_out_of_range.trimlab",
+     "project_surface_control_out_of_range.trimlab: inconsistent history: frames[0]: control move 0: control point 8 is out of range (the surface has 8 control points)"},
+    {"project_surface_huge_count.trimlab",
+     "project_surface_huge_count.trimlab: surface.positions: holds 192 bytes, but count 2000000000 needs 16000000000"},
+    {"project_surface_level_too_deep.trimlab",
+     "project_surface_level_too_deep.trimlab: surface.level: must be an integer in [0, 5], not 6"},
+    {"project_surface_nan_after.trimlab",
+     "project_surface_nan_after.trimlab: inconsistent history: frames[0]: control move 0: the 'after' position of control point 2 is not finite"},
     {"project_triangle_out_of_range.trimlab",
      "project_triangle_out_of_range.trimlab: inconsistent history: base triangle 0 references vertex 7, but the mesh has only 3 vertices"},
     {"project_truncated.trimlab",
@@ -309,6 +431,18 @@ const std::vector<std::pair<const char*, const char*>> kBrokenDocuments = {
      "script_unknown_rule.json: sets[0].rule: unknown rule 'sideways' (known: additive, subtractive, intersection, confluent, homogeneous-confluent)"},
     {"script_wrong_format.json",
      "script_wrong_format.json: format: must be \"trimlab-stroke-script\", not \"trimlab-project\": not a TrimLab stroke script"},
+    {"skeleton_edges_differ.json",
+     "skeleton_edges_differ.json: edges[1]: is [2, 1] but bone 1 runs from joint 1 to 2"},
+    {"skeleton_empty.json",
+     "skeleton_empty.json: invalid JSON at line 1, column 1: the document is empty"},
+    {"skeleton_negative_vertex_joint.json",
+     "skeleton_negative_vertex_joint.json: vertex_joint[1]: must be an integer in [0, 2147483647], not -1"},
+    {"skeleton_newer_version.json",
+     "skeleton_newer_version.json: version: version 2 is newer than this TrimLab (1); update TrimLab to open it"},
+    {"skeleton_parent_out_of_range.json",
+     "skeleton_parent_out_of_range.json: parent[2]: parent 7 is not another joint of the 3 (only the root has none)"},
+    {"skeleton_truncated.json",
+     "skeleton_truncated.json: truncated JSON at line 27, column 2: syntax error while parsing array - unexpected end of input; expected ']'"},
 };
 
 } // namespace
@@ -326,20 +460,19 @@ void TestFuzzRegressions::brokenDocumentsFailExactly()
     QFETCH(QString, file);
     QFETCH(QString, expected);
     const std::filesystem::path path = testDataPath("broken/" + file.toStdString());
-    // Messages start with the file name as given; compare from the file name on.
-    std::string message = brokenDocumentError(path);
-    const std::string prefix = path.parent_path().string() + "/";
-    if (message.starts_with(prefix))
-        message.erase(0, prefix.size());
-    QCOMPARE(QString::fromStdString(message), expected);
+    const std::optional<DocumentKind> kind = documentKind(file.toStdString());
+    QVERIFY2(kind, "no loader known for this name");
+    QVERIFY2(std::filesystem::exists(path), path.c_str());
+    QCOMPARE(withoutFolder(brokenDocumentError(path, *kind), path), expected);
+    if (*kind == DocumentKind::Nurbs)
+        QCOMPARE(withoutFolder(sceneError(path), path), expected);
 }
 
 void TestFuzzRegressions::everyBrokenDocumentIsListed()
 {
     for (const auto& entry : std::filesystem::directory_iterator(testDataPath("broken"))) {
         const std::string name = entry.path().filename().string();
-        const bool document = name.ends_with(".trimlab") || name.starts_with("script_") || name.starts_with("anim_");
-        if (!document)
+        if (!documentKind(name))
             continue;
         const bool listed = std::any_of(kBrokenDocuments.begin(), kBrokenDocuments.end(),
                                         [&](const auto& row) { return name == row.first; });

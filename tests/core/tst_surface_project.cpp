@@ -81,6 +81,7 @@ private slots:
     void subdivisionHistoryRoundTripsBitExactly();
     void plainHistoriesStayVersionOne();
     void versionOneFilesStillLoad();
+    void versionTwoExampleLoads();
     void malformedControlMovesGiveExactErrors_data();
     void malformedControlMovesGiveExactErrors();
 };
@@ -125,6 +126,26 @@ void TestSurfaceProject::versionOneFilesStillLoad()
     QVERIFY(!loaded.frame(1).isControlEdit());
     QCOMPARE(loaded.frame(1).stroke.drag, glm::dvec3(0.0, 0.0, 0.5));
     QVERIFY(loaded.currentControlPoints().empty());
+}
+
+// The valid file the broken version-2 projects of tests/data/broken start from
+// (make_broken_documents.py): its base mesh and its edit frame must be exactly what the
+// surface gives, or the broken variants would test the wrong thing.
+void TestSurfaceProject::versionTwoExampleLoads()
+{
+    const Timeline loaded = loadProject(test::testDataPath("projects/v2_cube_cage.trimlab"));
+    QCOMPARE(loaded.frameCount(), 2);
+    QVERIFY(loaded.hasSurface());
+    QVERIFY(loaded.surface()->kind() == SurfaceKind::Subdivision);
+    QVERIFY(loaded.frame(1).isControlEdit());
+    QCOMPARE(loaded.frame(1).controlMoves.size(), std::size_t(1));
+    QCOMPARE(loaded.frame(1).controlMoves[0].index, 2u);
+    QCOMPARE(loaded.frame(1).controlMoves[0].after, glm::dvec3(1.0, 1.0, 0.5));
+    EditableSurface surface(*loaded.surface());
+    requireSurfaceMatchesTimeline(surface, loaded);
+    QVERIFY(sameBytes(surface.mesh().positions, loaded.base().positions));
+    surface.setControlPoints(loaded.currentControlPoints());
+    QVERIFY(sameBytes(surface.mesh().positions, loaded.currentPositions()));
 }
 
 void TestSurfaceProject::malformedControlMovesGiveExactErrors_data()

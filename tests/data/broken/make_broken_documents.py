@@ -1,8 +1,12 @@
 #!/usr/bin/env python3
-"""Writes the broken project files (*.trimlab), stroke scripts (script_*.json) and
-animations (anim_*) of tests/data/broken/ (Python 3, standard library only,
-deterministic). Each has one defect; tests/core/tst_fuzz_regressions.cpp checks the exact
-error each must produce (table in tests/data/README.md). Rerun after changing it:
+"""Writes the broken project files (*.trimlab, version-1 mesh histories and version-2
+surface histories), stroke scripts (script_*.json), animations (anim_*), NURBS files
+(nurbs_*.nurbs.json) and skeleton files (skeleton_*.json) of tests/data/broken/, and the
+valid version-2 project tests/data/projects/v2_cube_cage.trimlab the surface variants
+start from (Python 3, standard library only, deterministic). Each broken file has one
+defect; tests/core/tst_fuzz_regressions.cpp checks the exact error each must produce
+(table in tests/data/README.md). The broken cages (cage_*.obj) are written by hand.
+Rerun after changing it:
 
     python3 tests/data/broken/make_broken_documents.py
 """
@@ -15,10 +19,12 @@ import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ANIMATIONS = os.path.join(HERE, "..", "animations")
+PROJECTS = os.path.join(HERE, "..", "projects")
+PACKING = {"float32": "f", "float64": "d", "uint32": "I"}
 
 
 def array(kind, values):
-    data = struct.pack("<" + ("f" if kind == "float32" else "I") * len(values), *values)
+    data = struct.pack("<" + PACKING[kind] * len(values), *values)
     return {"base64": base64.b64encode(data).decode(), "count": len(values), "crc32": zlib.crc32(data), "type": kind}
 
 
@@ -198,8 +204,135 @@ def sequences():
     }
 
 
+# The unit cube of tests/data/README.md as a Catmull-Clark cage: 8 vertices, 6 quads,
+# counter-clockwise seen from outside.
+CUBE_POSITIONS = [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1]
+CUBE_QUADS = [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]]
+
+
+def surface_project():
+    """A version-2 history (docs/project-format.md, "Editable surfaces"): the cube cage at
+    level 0, whose tessellation is the cage itself with each quad (a, b, c, d) split into
+    (a, b, c) and (a, c, d); one control-point edit lifts cage vertex 2 from (1, 1, 0) to
+    (1, 1, 0.5), which moves mesh vertex 2 the same way."""
+    triangles = [i for q in CUBE_QUADS for i in (q[0], q[1], q[2], q[0], q[2], q[3])]
+    return {
+        "base_mesh": {"positions": array("float32", CUBE_POSITIONS), "triangles": array("uint32", triangles)},
+        "format": "trimlab-project",
+        "frames": [{"after": array("float32", [1, 1, 0.5]), "before": array("float32", [1, 1, 0]),
+                    "control_moves": {"after": array("float64", [1, 1, 0.5]),
+                                      "before": array("float64", [1, 1, 0]),
+                                      "indices": array("uint32", [2])},
+                    "vertices": array("uint32", [2])}],
+        "generator": "TrimLab",
+        "sets": [{"first_frame": 1, "frame_count": 1, "rule": "confluent"}],
+        "surface": {"boundary": "edges-only", "corners": [], "creases": [],
+                    "face_indices": array("uint32", [i for q in CUBE_QUADS for i in q]),
+                    "face_sizes": array("uint32", [4] * 6), "kind": "subdivision", "level": 0, "mode": "uniform",
+                    "positions": array("float64", CUBE_POSITIONS), "scheme": "catmull-clark"},
+        "version": 2,
+    }
+
+
+def surface_projects():
+    out = {}
+
+    def variant(name, change):
+        p = surface_project()
+        change(p)
+        out[name] = dump(p)
+
+    moves = lambda p: p["frames"][0]["control_moves"]  # noqa: E731
+    # A ninth vertex no triangle uses: the stored base mesh is no longer the surface's
+    # tessellation, so editing could not go on from it.
+    variant("project_surface_base_mismatch.trimlab",
+            lambda p: p["base_mesh"].update(positions=array("float32", CUBE_POSITIONS + [2, 2, 2])))
+    variant("project_surface_control_out_of_range.trimlab",
+            lambda p: moves(p).update(indices=array("uint32", [8])))
+    variant("project_surface_before_differs.trimlab",
+            lambda p: moves(p).update(before=array("float64", [1, 1, 0.25])))
+    variant("project_surface_nan_after.trimlab",
+            lambda p: moves(p).update(after=array("float64", [1, float("nan"), 0.5])))
+    variant("project_surface_huge_count.trimlab",
+            lambda p: p["surface"]["positions"].update(count=2000000000))
+    variant("project_surface_level_too_deep.trimlab", lambda p: p["surface"].update(level=6))
+    return out
+
+
+def nurbs():
+    """A valid trimlab-nurbs document (docs/nurbs-json.md): one biquadratic 5 × 3 patch in
+    z = 0 with its three inner points of the middle row raised to z = 0.5, the centre one
+    with weight 0.5."""
+    points, weights = [], []
+    for j in range(3):
+        for i in range(5):
+            points.append([float(i), float(j), 0.5 if j == 1 and 0 < i < 4 else 0.0])
+            weights.append(0.5 if (i, j) == (2, 1) else 1.0)
+    return {"format": "trimlab-nurbs", "version": 1, "generator": "TrimLab",
+            "surfaces": [{"name": "patch", "degreeU": 2, "degreeV": 2, "countU": 5, "countV": 3,
+                          "closedU": False, "closedV": False,
+                          "knotsU": [0.0, 0.0, 0.0, 0.25, 0.5, 1.0, 1.0, 1.0],
+                          "knotsV": [0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+                          "points": points, "weights": weights}]}
+
+
+def nurbs_files():
+    valid = json.dumps(nurbs(), indent=1) + "\n"
+    out = {"nurbs_empty.nurbs.json": "", "nurbs_truncated.nurbs.json": valid[: len(valid) // 2]}
+
+    def variant(name, change, text=lambda t: t):
+        d = nurbs()
+        change(d)
+        out[name] = text(json.dumps(d, indent=1) + "\n")
+
+    first = lambda d: d["surfaces"][0]  # noqa: E731
+    # json.dumps writes NaN as the literal NaN, which JSON does not have.
+    variant("nurbs_nan.nurbs.json", lambda d: first(d)["points"][6].__setitem__(1, float("nan")))
+    # 1e999 is valid JSON syntax but overflows a double (Python would print Infinity).
+    variant("nurbs_overflow.nurbs.json", lambda d: first(d)["weights"].__setitem__(3, 12345.5),
+            lambda t: t.replace("12345.5", "1e999"))
+    variant("nurbs_huge_count.nurbs.json", lambda d: first(d).update(countU=100000, countV=100000))
+    variant("nurbs_points_count.nurbs.json", lambda d: first(d)["points"].pop())
+    variant("nurbs_decreasing_knots.nurbs.json",
+            lambda d: first(d).update(knotsU=[0.0, 0.0, 0.0, 0.5, 0.25, 1.0, 1.0, 1.0]))
+    variant("nurbs_degree_out_of_range.nurbs.json", lambda d: first(d).update(degreeU=9))
+    variant("nurbs_zero_weight.nurbs.json", lambda d: first(d)["weights"].__setitem__(7, 0.0))
+    variant("nurbs_newer_version.nurbs.json", lambda d: d.update(version=2))
+    variant("nurbs_count_text.nurbs.json", lambda d: first(d).update(countU="5"))
+    return out
+
+
+def skeleton():
+    """A valid trimlab-skeleton document (docs/skeleton.md): a chain of 3 joints along x,
+    2 bones, one mesh vertex per joint."""
+    return {"format": "trimlab-skeleton", "version": 1, "generator": "TrimLab",
+            "nodes": [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0]], "root": 0, "parent": [-1, 0, 1],
+            "edges": [[0, 1], [1, 2]],
+            "bones": [{"head": 0, "tail": 1, "parent_bone": -1}, {"head": 1, "tail": 2, "parent_bone": 0}],
+            "vertex_joint": [0, 1, 2]}
+
+
+def skeleton_files():
+    valid = json.dumps(skeleton(), indent=1) + "\n"
+    out = {"skeleton_empty.json": "", "skeleton_truncated.json": valid[: len(valid) // 2]}
+
+    def variant(name, change):
+        d = skeleton()
+        change(d)
+        out[name] = json.dumps(d, indent=1) + "\n"
+
+    variant("skeleton_newer_version.json", lambda d: d.update(version=2))
+    variant("skeleton_parent_out_of_range.json", lambda d: d.update(parent=[-1, 0, 7]))
+    variant("skeleton_negative_vertex_joint.json", lambda d: d.update(vertex_joint=[0, -1, 2]))
+    variant("skeleton_edges_differ.json", lambda d: d["edges"].__setitem__(1, [2, 1]))
+    return out
+
+
 def main():
-    for name, text in {**projects(), **scripts(), **animations()}.items():
+    with open(os.path.join(PROJECTS, "v2_cube_cage.trimlab"), "w", newline="\n") as f:
+        f.write(dump(surface_project()))
+    documents = {**projects(), **surface_projects(), **scripts(), **animations(), **nurbs_files(), **skeleton_files()}
+    for name, text in documents.items():
         with open(os.path.join(HERE, name), "w", newline="\n") as f:
             f.write(text)
     for folder, files in sequences().items():
