@@ -67,16 +67,20 @@ inline std::unique_ptr<ui::MainWindow> showDesignWindow(const QString& ini, QSiz
     return window;
 }
 
-/// Opens `source` and waits until its design session exists and a frame was shown.
+/// Opens `source` and waits until its design session exists and a frame was shown, and
+/// the window is active again: a slow load shows a progress dialog, which takes the
+/// activation, and the shortcuts the tests press next go to the active window only.
 inline bool openDesignAndWait(ui::MainWindow& window, const QString& source)
 {
     window.openSource(source);
-    return QTest::qWaitFor(
+    const bool opened = QTest::qWaitFor(
         [&] {
             return !window.isLoading() && window.scene() && window.scene()->source == source.toStdString() &&
                    window.designWorkspace()->session() && window.viewport()->lastFrame().has_value();
         },
         kWaitMs);
+    window.activateWindow();
+    return opened && QTest::qWaitForWindowActive(&window);
 }
 
 /// Waits for the viewport's next frame; adds the frames seen to `seen`.
