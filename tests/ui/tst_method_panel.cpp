@@ -4,6 +4,8 @@
 // Every frame a method renders is checked against the exact CPU reference with the
 // viewport's own camera, size and settings.
 #include "gl_test_context.h"
+#include "named_child.h"
+#include "shown_main_window.h"
 #include "image_artifacts.h"
 #include "test_paths.h"
 #include "trim_comparison.h"
@@ -35,21 +37,13 @@
 
 using namespace trimlab;
 using namespace trimlab::ui;
+using trimlab::test::child;
 
 namespace {
 
 constexpr QSize kViewportSize(256, 192);
 constexpr int kWaitMs = 30000;
 const QString kDemo = QStringLiteral("demo:pushed-sphere");
-
-template <class T>
-T* child(QObject* parent, const char* name)
-{
-    T* found = parent->findChild<T*>(QString::fromLatin1(name));
-    if (!found)
-        qWarning("no child named %s", name);
-    return found;
-}
 
 bool frameOverflowed(const ViewportFrame& frame)
 {
@@ -88,11 +82,7 @@ void TestMethodPanel::initTestCase()
 
 std::unique_ptr<MainWindow> TestMethodPanel::showWindow(const QString& settingsName)
 {
-    auto window = std::make_unique<MainWindow>(m_dir.filePath(settingsName + QStringLiteral(".ini")));
-    window->viewport()->setFixedSize(kViewportSize);
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get()))
-        qWarning("main window not exposed");
+    auto window = test::showMainWindow(m_dir.filePath(settingsName + QStringLiteral(".ini")), kViewportSize);
     const bool loaded = QTest::qWaitFor(
         [&] { return !window->isLoading() && window->scene() && window->scene()->source == kDemo.toStdString(); },
         kWaitMs);
