@@ -17,27 +17,22 @@ QString undoTexts(const QString& text)
 
 SetCsgCommand::SetCsgCommand(InspectScene& scene, const CsgSettings& before, const CsgSettings& after,
                              const QString& text, int typingSession)
-    : m_scene(scene), m_before(before), m_after(after), m_typingSession(typingSession)
+    : InspectSceneValueCommand(scene, before, after, typingSession)
 {
     setText(undoTexts(text));
 }
 
-void SetCsgCommand::redo()
+void SetCsgCommand::apply(const CsgSettings& csg)
 {
-    m_scene.applyCsg(m_after);
-}
-
-void SetCsgCommand::undo()
-{
-    m_scene.applyCsg(m_before);
+    m_scene.applyCsg(csg);
 }
 
 bool SetCsgCommand::mergeWith(const QUndoCommand* other)
 {
     const auto* next = static_cast<const SetCsgCommand*>(other); // same id(): same type
-    if (m_typingSession < 0 || next->m_typingSession != m_typingSession)
+    if (!sameSession(*next))
         return false;
-    m_after = next->m_after;
+    takeAfter(*next);
     setText(undoTexts(next->text()));
     return true;
 }

@@ -35,20 +35,15 @@ int changedTransformComponent(const ObjectTransform& a, const ObjectTransform& b
 
 SetObjectTransformCommand::SetObjectTransformCommand(InspectScene& scene, int object, const ObjectTransform& before,
                                                      const ObjectTransform& after, int dragSession)
-    : m_scene(scene), m_object(object), m_before(before), m_after(after),
-      m_component(changedTransformComponent(before, after)), m_dragSession(dragSession)
+    : InspectSceneValueCommand(scene, before, after, dragSession), m_object(object),
+      m_component(changedTransformComponent(before, after))
 {
     setText(QCoreApplication::translate("SetObjectTransformCommand", "Move object %1").arg(object));
 }
 
-void SetObjectTransformCommand::redo()
+void SetObjectTransformCommand::apply(const ObjectTransform& transform)
 {
-    m_scene.applyTransform(m_object, m_after);
-}
-
-void SetObjectTransformCommand::undo()
-{
-    m_scene.applyTransform(m_object, m_before);
+    m_scene.applyTransform(m_object, transform);
 }
 
 bool SetObjectTransformCommand::mergeWith(const QUndoCommand* other)
@@ -56,12 +51,12 @@ bool SetObjectTransformCommand::mergeWith(const QUndoCommand* other)
     const auto* next = static_cast<const SetObjectTransformCommand*>(other); // same id(): same type
     if (next->m_object != m_object)
         return false;
-    const bool sameDrag = m_dragSession >= 0 && next->m_dragSession == m_dragSession;
-    const bool sameField = m_dragSession < 0 && next->m_dragSession < 0 && m_component >= 0 &&
-                           next->m_component == m_component;
+    const bool sameDrag = sameSession(*next);
+    const bool sameField =
+        session() < 0 && next->session() < 0 && m_component >= 0 && next->m_component == m_component;
     if (!sameDrag && !sameField)
         return false;
-    m_after = next->m_after;
+    takeAfter(*next);
     return true;
 }
 

@@ -5,35 +5,26 @@
 /// of the same object merge, so that stepping a spin box is one undo step; so do the
 /// commands of one drag in the viewport (the same drag session).
 
+#include "inspect_scene_value_command.h"
 #include "scene/object_transform.h"
-
-#include <QUndoCommand>
 
 namespace trimlab::ui {
 
-class InspectScene;
-
-class SetObjectTransformCommand : public QUndoCommand {
+/// kId 0x7472: QUndoCommand::id(), the merge key of this command type.
+class SetObjectTransformCommand : public InspectSceneValueCommand<ObjectTransform, 0x7472> {
 public:
-    static constexpr int kId = 0x7472; // QUndoCommand::id(): merge key of this command type
-
     /// `dragSession` >= 0: a step of that drag, merging with the drag's next steps; −1:
     /// a field edit, merging by component.
     SetObjectTransformCommand(InspectScene& scene, int object, const ObjectTransform& before,
                               const ObjectTransform& after, int dragSession = -1);
 
-    void redo() override;
-    void undo() override;
-    [[nodiscard]] int id() const override { return kId; }
     bool mergeWith(const QUndoCommand* other) override;
 
 private:
-    InspectScene& m_scene;
+    void apply(const ObjectTransform& transform) override;
+
     int m_object;
-    ObjectTransform m_before;
-    ObjectTransform m_after;
     int m_component; ///< the one component (0..6: tx ty tz rx ry rz scale) changed, else −1
-    int m_dragSession;
 };
 
 /// The component (0..6: translation x, y, z, rotation x, y, z, scale) in which `a` and `b`

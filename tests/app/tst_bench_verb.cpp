@@ -2,14 +2,13 @@
 // table has one row per method of this build, the JSON file holds the same fields, every
 // method agrees with the CPU reference (>= 99.9 %), ratios are numbers or "n/a", and bad
 // arguments or missing shared data are reported as documented.
+#include "run_trimlab.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
-#include "run_trimlab.h"
-
 #include <QtTest>
 
 using trimlab::test::Run;
@@ -22,8 +21,6 @@ Run runBench(const QStringList& arguments)
 {
     return runTrimlab(arguments, 300000);
 }
-
-
 
 bool glRequired()
 {

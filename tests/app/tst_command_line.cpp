@@ -2,6 +2,8 @@
 // bad arguments and files, the info report, and `render` with both backends producing
 // images whose ids and depths agree with the in-process CPU reference.
 #include "gl_test_context.h"
+#include "ids_png.h"
+#include "run_trimlab.h"
 #include "test_paths.h"
 #include "trim_comparison.h"
 
@@ -14,55 +16,24 @@
 #include "trim/dynamic_reference_renderer.h"
 #include "trim/reference_renderer.h"
 
-#include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
-#include "run_trimlab.h"
-
 #include <QtTest>
 
 #include <cmath>
 
 using namespace trimlab;
 
+using trimlab::test::decodeIdsPng;
+using trimlab::test::idsOnly;
 using trimlab::test::Run;
 using trimlab::test::runTrimlab;
 
 namespace {
 
-
-
 QString data(const QString& relative)
 {
     return QString::fromStdString(test::testDataPath(relative.toStdString()).string());
-}
-
-// Decodes the --ids PNG (docs/file-formats.md) into primitive and object ids.
-TrimImage decodeIds(const QImage& png)
-{
-    const QImage image = png.convertToFormat(QImage::Format_RGBA64);
-    TrimImage trim(image.width(), image.height());
-    for (int y = 0; y < image.height(); ++y) {
-        const auto* row = reinterpret_cast<const QRgba64*>(image.constScanLine(y));
-        for (int x = 0; x < image.width(); ++x) {
-            if (row[x].red() == 0)
-                continue;
-            trim.at(x, y).objectId = row[x].red() - 1;
-            trim.at(x, y).primitiveId = row[x].green() + (int(row[x].blue()) << 16);
-        }
-    }
-    return trim;
-}
-
-// The reference's answer reduced to what the ids file holds.
-TrimImage idsOnly(const TrimImage& full)
-{
-    TrimImage reduced(full.width, full.height);
-    for (std::size_t i = 0; i < full.pixels.size(); ++i) {
-        reduced.pixels[i].primitiveId = full.pixels[i].primitiveId;
-        reduced.pixels[i].objectId = full.pixels[i].objectId;
-    }
-    return reduced;
 }
 
 const QStringList kPushedSphereView = {"render", "demo:pushed-sphere", "--rule", "alternating-border", "--clip", "0,0,-1,0",
@@ -125,10 +96,7 @@ void TestCommandLine::badArgumentsExitWithTwo()
 {
     QFETCH(QStringList, arguments);
     QFETCH(QString, message);
-    const Run run = runTrimlab(arguments);
-    QCOMPARE(run.exitCode, 2);
-    QVERIFY2(run.err.startsWith("trimlab: error: ") && run.err.contains(message), qPrintable(run.err));
-    QCOMPARE(run.err.trimmed().count('\n'), 0);
+    TRIMLAB_VERIFY_ONE_LINE_ERROR(runTrimlab(arguments), 2, message);
 }
 
 void TestCommandLine::badInputsExitWithOne_data()
@@ -197,7 +165,7 @@ void TestCommandLine::referenceBackendMatchesInProcessReference()
     TrimSettings settings;
     settings.clip = ClipPlane{true, {0.0, 0.0, -1.0}, 0.0};
     const ReferenceResult reference = ReferenceRenderer(loaded.scene).render(camera, 256, 192, settings);
-    const TrimImage fromFile = decodeIds(QImage(ids));
+    const TrimImage fromFile = decodeIdsPng(QImage(ids));
     const FloatImage distances = readPfm(depth.toStdString());
     int idMismatches = 0;
     int depthMismatches = 0;
@@ -220,12 +188,7 @@ void TestCommandLine::referenceBackendMatchesInProcessReference()
 // agree on >= 99.9 % of covered pixels.
 void TestCommandLine::kplusBackendAgreesWithReference()
 {
-    QString why;
-    if (!test::tryCreateGlContext(&why)) {
-        if (test::glRequired())
-            QFAIL(qPrintable("TRIMLAB_REQUIRE_GL=1 but no OpenGL 4.3 context: " + why));
-        QSKIP(qPrintable("no OpenGL 4.3 context: " + why));
-    }
+    TRIMLAB_SKIP_WITHOUT_GL();
     const QString gpuIds = m_dir.filePath("gpu-ids.png");
     const Run run = runTrimlab(kPushedSphereView + QStringList{"--ids", gpuIds, "-o", m_dir.filePath("gpu.png")});
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
@@ -237,7 +200,7 @@ void TestCommandLine::kplusBackendAgreesWithReference()
     settings.clip = ClipPlane{true, {0.0, 0.0, -1.0}, 0.0};
     const ReferenceResult reference = ReferenceRenderer(loaded.scene).render(camera, 256, 192, settings);
     const test::TrimComparison comparison =
-        test::compareTrimImages(decodeIds(QImage(gpuIds)), idsOnly(reference.trim), reference.diagnostics);
+        test::compareTrimImages(decodeIdsPng(QImage(gpuIds)), idsOnly(reference.trim), reference.diagnostics);
     qInfo("%s", qPrintable(comparison.summary()));
     QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05, qPrintable(comparison.summary()));
 }
@@ -246,12 +209,7 @@ void TestCommandLine::kplusBackendAgreesWithReference()
 // geometry passes and stored and lost fragments.
 void TestCommandLine::everyMethodRendersAndReportsItsStatistics()
 {
-    QString why;
-    if (!test::tryCreateGlContext(&why)) {
-        if (test::glRequired())
-            QFAIL(qPrintable("TRIMLAB_REQUIRE_GL=1 but no OpenGL 4.3 context: " + why));
-        QSKIP(qPrintable("no OpenGL 4.3 context: " + why));
-    }
+    TRIMLAB_SKIP_WITHOUT_GL();
     for (const render::MethodInfo& info : render::fragmentMethods()) {
         const QString id = QString::fromLatin1(info.id.data(), qsizetype(info.id.size()));
         const QString out = m_dir.filePath(id + ".png");
@@ -270,12 +228,7 @@ void TestCommandLine::everyMethodRendersAndReportsItsStatistics()
 // rendered by the GPU and written as ids, agrees with the in-process dynamic reference.
 void TestCommandLine::scriptReplayRendersTheDynamicRulesLikeTheReference()
 {
-    QString why;
-    if (!test::tryCreateGlContext(&why)) {
-        if (test::glRequired())
-            QFAIL(qPrintable("TRIMLAB_REQUIRE_GL=1 but no OpenGL 4.3 context: " + why));
-        QSKIP(qPrintable("no OpenGL 4.3 context: " + why));
-    }
+    TRIMLAB_SKIP_WITHOUT_GL();
     const QString script = data("scripts/fig8_7_extended_tip.json");
     const QString ids = m_dir.filePath("design-ids.png");
     const Run run = runTrimlab({"render", "demo:sphere", "--script", script, "--frame", "2", "--clip", "0,0,-1,0",
@@ -296,7 +249,7 @@ void TestCommandLine::scriptReplayRendersTheDynamicRulesLikeTheReference()
     const ReferenceResult reference = DynamicReferenceRenderer(chain).render(camera, 200, 150, settings);
     const TrimImage expected = withMeshIds(reference.trim, chain.levels.back().frame);
     const test::TrimComparison comparison =
-        test::compareTrimImages(decodeIds(QImage(ids)), idsOnly(expected), reference.diagnostics);
+        test::compareTrimImages(decodeIdsPng(QImage(ids)), idsOnly(expected), reference.diagnostics);
     qInfo("%s", qPrintable(comparison.summary()));
     QVERIFY(comparison.coveredPixels > 2000);
     QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05, qPrintable(comparison.summary()));

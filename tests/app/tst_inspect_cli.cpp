@@ -3,6 +3,7 @@
 // both backends' ids and depths agree with the in-process CPU reference.
 #include "color_check.h"
 #include "gl_test_context.h"
+#include "ids_png.h"
 #include "run_trimlab.h"
 #include "trim_comparison.h"
 
@@ -18,6 +19,8 @@
 #include <cmath>
 
 using namespace trimlab;
+using trimlab::test::decodeIdsPng;
+using trimlab::test::idsOnly;
 using trimlab::test::Run;
 using trimlab::test::runTrimlab;
 
@@ -45,33 +48,6 @@ TrimSettings trioSettings()
 const QStringList kTrioView = {"render", "demo:csg-trio", "--rule", "positive-index", "--clip", "0,0,-1,0.2",
                                "--clip", "0,-1,0,0.5", "--cap", "--csg", "0 | 1 - 2", "--object-rule",
                                "0=alternating-border", "--highlight", "collisions", "--size", "160x120"};
-
-// Decodes the --ids PNG (docs/file-formats.md) into primitive and object ids.
-TrimImage decodeIds(const QImage& png)
-{
-    const QImage image = png.convertToFormat(QImage::Format_RGBA64);
-    TrimImage trim(image.width(), image.height());
-    for (int y = 0; y < image.height(); ++y) {
-        const auto* row = reinterpret_cast<const QRgba64*>(image.constScanLine(y));
-        for (int x = 0; x < image.width(); ++x) {
-            if (row[x].red() == 0)
-                continue;
-            trim.at(x, y).objectId = row[x].red() - 1;
-            trim.at(x, y).primitiveId = row[x].green() + (int(row[x].blue()) << 16);
-        }
-    }
-    return trim;
-}
-
-TrimImage idsOnly(const TrimImage& full)
-{
-    TrimImage reduced(full.width, full.height);
-    for (std::size_t i = 0; i < full.pixels.size(); ++i) {
-        reduced.pixels[i].primitiveId = full.pixels[i].primitiveId;
-        reduced.pixels[i].objectId = full.pixels[i].objectId;
-    }
-    return reduced;
-}
 
 ReferenceResult trioReference(Camera* cameraOut = nullptr)
 {
@@ -140,10 +116,7 @@ void TestInspectCli::badArgumentsExitWithTwo()
 {
     QFETCH(QStringList, arguments);
     QFETCH(QString, message);
-    const Run run = runTrimlab(arguments);
-    QCOMPARE(run.exitCode, 2);
-    QVERIFY2(run.err.contains(message), qPrintable(run.err));
-    QCOMPARE(run.err.trimmed().count(QLatin1Char('\n')), 0);
+    TRIMLAB_VERIFY_ONE_LINE_ERROR(runTrimlab(arguments), 2, message);
 }
 
 // The reference backend is the in-process reference: identical ids, and the depth image
@@ -160,7 +133,7 @@ void TestInspectCli::referenceBackendWritesCapsAndCsg()
              qPrintable(run.out));
     Camera camera;
     const ReferenceResult reference = trioReference(&camera);
-    const TrimImage fromFile = decodeIds(QImage(ids));
+    const TrimImage fromFile = decodeIdsPng(QImage(ids));
     const FloatImage distances = readPfm(depth.toStdString());
     int idMismatches = 0, depthMismatches = 0, caps = 0;
     for (int y = 0; y < kHeight; ++y) {
@@ -183,12 +156,7 @@ void TestInspectCli::referenceBackendWritesCapsAndCsg()
 
 void TestInspectCli::gpuBackendAgreesWithReference()
 {
-    QString why;
-    if (!test::tryCreateGlContext(&why)) {
-        if (test::glRequired())
-            QFAIL(qPrintable("TRIMLAB_REQUIRE_GL=1 but no OpenGL 4.3 context: " + why));
-        QSKIP(qPrintable("no OpenGL 4.3 context: " + why));
-    }
+    TRIMLAB_SKIP_WITHOUT_GL();
     Camera camera;
     const ReferenceResult reference = trioReference(&camera);
     for (const char* method : {"abuffer-linked-list", "kplus-array"}) {
@@ -200,7 +168,7 @@ void TestInspectCli::gpuBackendAgreesWithReference()
         QVERIFY2(run.out.contains("0 overflowed pixels") && run.out.contains("cap pixels"), qPrintable(run.out));
         // The shown surfaces, by their ids (a cap has none: it is empty in the ids image).
         const test::TrimComparison comparison =
-            test::compareTrimImages(decodeIds(QImage(ids)), idsOnly(reference.trim), reference.diagnostics);
+            test::compareTrimImages(decodeIdsPng(QImage(ids)), idsOnly(reference.trim), reference.diagnostics);
         qInfo("%s: %s", method, qPrintable(comparison.summary()));
         QVERIFY(comparison.coveredPixels > 300);
         QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05,
@@ -208,7 +176,7 @@ void TestInspectCli::gpuBackendAgreesWithReference()
         // The caps, by the depth image: where the reference shows a cap, the file holds the
         // distance to the clipping plane (float rounding: 1e-4 relative) and no ids.
         const FloatImage distances = readPfm(depth.toStdString());
-        const TrimImage fromIds = decodeIds(QImage(ids));
+        const TrimImage fromIds = decodeIdsPng(QImage(ids));
         int caps = 0, capsAgreeing = 0;
         for (int y = 0; y < kHeight; ++y) {
             for (int x = 0; x < kWidth; ++x) {
@@ -245,12 +213,7 @@ void TestInspectCli::transparencyColorsAgreeWithReference()
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
     QVERIFY2(run.out.contains("X-ray translucent"), qPrintable(run.out));
     QCOMPARE(QImage(cpu).convertToFormat(QImage::Format_RGBA8888), test::rgbaToImage(reference.color));
-    QString why;
-    if (!test::tryCreateGlContext(&why)) {
-        if (test::glRequired())
-            QFAIL(qPrintable("TRIMLAB_REQUIRE_GL=1 but no OpenGL 4.3 context: " + why));
-        QSKIP(qPrintable("no OpenGL 4.3 context: " + why));
-    }
+    TRIMLAB_SKIP_WITHOUT_GL();
     const QString gpu = m_dir.filePath("xray-gpu.png");
     const Run gpuRun = runTrimlab(view + QStringList{"--method", "s-buffer", "-o", gpu});
     QVERIFY2(gpuRun.exitCode == 0, qPrintable(gpuRun.err));

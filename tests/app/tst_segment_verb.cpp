@@ -1,23 +1,19 @@
 // `trimlab segment` as scripts call it: bad arguments exit 2 and bad input exits 1, each
 // with one "trimlab: error: ..." line; a run prints the segment count and the per-stage
 // times and writes JSON (the documented fields), CSV or glTF.
+#include "run_trimlab.h"
 #include "test_paths.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
-#include "run_trimlab.h"
-
 #include <QtTest>
 
 using trimlab::test::Run;
 using trimlab::test::runTrimlab;
 
 namespace {
-
-
 
 QString animation(const QString& relative)
 {
@@ -82,10 +78,7 @@ void TestSegmentVerb::badArgumentsExitWithTwo()
 {
     QFETCH(QStringList, arguments);
     QFETCH(QString, message);
-    const Run run = runTrimlab(arguments);
-    QCOMPARE(run.exitCode, 2);
-    QVERIFY2(run.err.startsWith("trimlab: error: ") && run.err.contains(message), qPrintable(run.err));
-    QCOMPARE(run.err.trimmed().count('\n'), 0);
+    TRIMLAB_VERIFY_ONE_LINE_ERROR(runTrimlab(arguments), 2, message);
 }
 
 void TestSegmentVerb::badInputsExitWithOne_data()
@@ -114,10 +107,7 @@ void TestSegmentVerb::badInputsExitWithOne()
 {
     QFETCH(QStringList, arguments);
     QFETCH(QString, message);
-    const Run run = runTrimlab(arguments);
-    QCOMPARE(run.exitCode, 1);
-    QVERIFY2(run.err.startsWith("trimlab: error: ") && run.err.contains(message), qPrintable(run.err));
-    QCOMPARE(run.err.trimmed().count('\n'), 0);
+    TRIMLAB_VERIFY_ONE_LINE_ERROR(runTrimlab(arguments), 1, message);
 }
 
 void TestSegmentVerb::writesDocumentedJson()

@@ -2,18 +2,15 @@
 // one "trimlab: error: ..." line; a run prints sizes, bones, method, the E_RMS of the fit
 // and of the exported file and per-stage times, and writes a glTF that the Khronos glTF
 // Validator accepts and that, loaded back, has exactly the printed exported E_RMS.
+#include "gltf_validation.h"
+#include "run_trimlab.h"
 #include "test_paths.h"
 
 #include "animation/animation_loader.h"
 #include "animation/skinning_error.h"
 
-#include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
-#include "gltf_validation.h"
-
-#include "run_trimlab.h"
-
 #include <QtTest>
 
 using namespace trimlab;
@@ -22,8 +19,6 @@ using trimlab::test::Run;
 using trimlab::test::runTrimlab;
 
 namespace {
-
-
 
 QString animation(const QString& relative)
 {
@@ -108,10 +103,7 @@ void TestSkinVerb::badArgumentsExitWithTwo()
 {
     QFETCH(QStringList, arguments);
     QFETCH(QString, message);
-    const Run run = runTrimlab(arguments);
-    QCOMPARE(run.exitCode, 2);
-    QVERIFY2(run.err.startsWith("trimlab: error: ") && run.err.contains(message), qPrintable(run.err));
-    QCOMPARE(run.err.trimmed().count('\n'), 0);
+    TRIMLAB_VERIFY_ONE_LINE_ERROR(runTrimlab(arguments), 2, message);
 }
 
 void TestSkinVerb::badInputsExitWithOne_data()
@@ -138,10 +130,7 @@ void TestSkinVerb::badInputsExitWithOne()
 {
     QFETCH(QStringList, arguments);
     QFETCH(QString, message);
-    const Run run = runTrimlab(arguments);
-    QCOMPARE(run.exitCode, 1);
-    QVERIFY2(run.err.startsWith("trimlab: error: ") && run.err.contains(message), qPrintable(run.err));
-    QCOMPARE(run.err.trimmed().count('\n'), 0);
+    TRIMLAB_VERIFY_ONE_LINE_ERROR(runTrimlab(arguments), 1, message);
 }
 
 void TestSkinVerb::writesValidRigidGlb()

@@ -8,12 +8,11 @@
 // support) and after moving all (evaluate()), and, for comparison, re-running OpenSubdiv
 // from scratch per edit (TopologyRefiner + PrimvarRefiner uniform refinement, plus
 // PrimvarRefiner::Limit in limit mode) — medians of the repeats, with ratios.
+#include "uniform_refinement.h"
+
 #include "mesh/obj_writer.h"
-#include "surface/cage_refiner.h"
 #include "surface/subdivision_cages.h"
 #include "surface/subdivision_surface.h"
-
-#include <opensubdiv/far/primvarRefiner.h>
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -29,14 +28,6 @@
 using namespace trimlab;
 
 namespace {
-
-namespace Far = OpenSubdiv::Far;
-
-struct Point {
-    glm::dvec3 p{0.0};
-    void Clear(void* = nullptr) { p = glm::dvec3(0.0); }
-    void AddWithWeight(const Point& source, double weight) { p += weight * source.p; }
-};
 
 double medianMs(int repeats, const std::function<void(int)>& run)
 {
@@ -56,25 +47,10 @@ double medianMs(int repeats, const std::function<void(int)>& run)
 // (PrimvarRefiner::Limit: the same points as limit mode on smooth cages).
 std::size_t refineFromScratch(const SubdivisionCage& cage, int level, bool limit)
 {
-    const std::unique_ptr<Far::TopologyRefiner> refiner = createCageRefiner(cage);
-    Far::TopologyRefiner::UniformOptions options(level);
-    options.fullTopologyInLastLevel = limit;
-    refiner->RefineUniform(options);
-    std::vector<Point> current(cage.vertexCount());
-    for (std::size_t v = 0; v < cage.vertexCount(); ++v)
-        current[v].p = cage.positions[v];
-    const Far::PrimvarRefinerReal<double> primvars(*refiner);
-    for (int l = 1; l <= level; ++l) {
-        std::vector<Point> next(std::size_t(refiner->GetLevel(l).GetNumVertices()));
-        Point* destination = next.data();
-        primvars.Interpolate(l, current.data(), destination);
-        current = std::move(next);
-    }
-    if (limit) {
-        std::vector<Point> position(current.size()), du(current.size()), dv(current.size());
-        primvars.Limit(current, position, du, dv);
-    }
-    return current.size();
+    const test::UniformRefinement refined = test::refineUniformly(cage, level, limit);
+    if (limit)
+        (void)test::limitOfRefined(refined);
+    return refined.points.size();
 }
 
 void run(int ring, int tube, int level, SubdivisionMode mode, int repeats)

@@ -1,41 +1,19 @@
 #pragma once
 // Small generated closed meshes with hand-built rigs for the bone-heat, posing and export
-// tests: a capsule with a chain of bones along its axis, and a T-shaped tube made of
-// voxels (exact inside test, so visibility can be checked without the code under test).
+// tests: a chain of bones along the y axis (the axis of skeleton_shapes.h's axisCapsule),
+// and a T-shaped tube made of voxels (exact inside test, so visibility can be checked
+// without the code under test).
 #include "mesh/triangle_mesh.h"
-#include "scene/shape_generators.h"
 #include "skeleton/skeleton.h"
 
-#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <array>
-#include <cmath>
 #include <map>
 #include <tuple>
 #include <vector>
 
 namespace trimlab::test {
-
-// A capsule around the y axis: radius `radius`, cylinder part y ∈ [−halfLength, halfLength],
-// hemispherical caps, `rings` profile points per cap quarter, `segments` around.
-inline TriangleMesh makeCapsule(double radius, double halfLength, int capRings, int bodyRings, int segments)
-{
-    std::vector<glm::dvec2> profile;
-    for (int i = 0; i <= capRings; ++i) { // south pole up to the equator of the lower cap
-        const double a = -M_PI / 2 + (M_PI / 2) * i / capRings;
-        profile.emplace_back(radius * std::cos(a), -halfLength + radius * std::sin(a));
-    }
-    for (int i = 1; i < bodyRings; ++i)
-        profile.emplace_back(radius, -halfLength + 2.0 * halfLength * i / bodyRings);
-    for (int i = 0; i <= capRings; ++i) {
-        const double a = (M_PI / 2) * i / capRings;
-        profile.emplace_back(radius * std::cos(a), halfLength + radius * std::sin(a));
-    }
-    profile.front().x = 0.0;
-    profile.back().x = 0.0;
-    return makeSurfaceOfRevolution(profile, segments);
-}
 
 // A chain rig along the y axis: joints at the given heights, root = joint 0, bone b from
 // joint b to joint b+1 (parent bone b−1).

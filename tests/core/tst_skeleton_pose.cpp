@@ -7,6 +7,7 @@
 #include "scene/shape_generators.h"
 
 #include "skeleton_rig_fixtures.h"
+#include "skeleton_shapes.h"
 
 #include <QElapsedTimer>
 #include <QtTest>
@@ -77,7 +78,7 @@ void TestSkeletonPose::identityPoseReproducesTheRestMesh()
         const std::vector<glm::vec3> posed = posePositions(m_t.positions, m_rig, m_weights, restPose(m_rig), method);
         QCOMPARE(posed, m_t.positions); // bit for bit
     }
-    const TriangleMesh capsule = test::makeCapsule(1.0, 4.0, 6, 16, 24);
+    const TriangleMesh capsule = test::axisCapsule(1.0, 4.0, 6, 16, 24);
     const SkeletonRig chain = test::chainRig({-4.5, -1.5, 1.5, 4.5});
     const BoneWeights w = boneHeatWeights(capsule, chain);
     QCOMPARE(posePositions(capsule.positions, chain, w, restPose(chain), SkinningMethod::Dqs), capsule.positions);

@@ -9,6 +9,7 @@
 #include "scene/shape_generators.h"
 
 #include "skeleton_rig_fixtures.h"
+#include "skeleton_shapes.h"
 
 #include <QtTest>
 
@@ -104,7 +105,7 @@ private slots:
 
 void TestSkeletonWeights::laplacianAreasSumToSurfaceArea()
 {
-    const TriangleMesh capsule = test::makeCapsule(1.0, 3.0, 6, 12, 24);
+    const TriangleMesh capsule = test::axisCapsule(1.0, 3.0, 6, 12, 24);
     const MeyerLaplacian l = meyerLaplacian(doublePositions(capsule), capsule.triangles);
     double total = 0.0;
     for (const double a : l.area) {
@@ -261,7 +262,7 @@ void TestSkeletonWeights::tiedNearestPointAtAJoint()
 
 void TestSkeletonWeights::capsuleWeightsAreConvexAndFollowTheChain()
 {
-    const TriangleMesh capsule = test::makeCapsule(1.0, 4.0, 8, 32, 32);
+    const TriangleMesh capsule = test::axisCapsule(1.0, 4.0, 8, 32, 32);
     const SkeletonRig rig = test::chainRig({-4.5, -1.5, 1.5, 4.5});
     const BoneHeatSolver solver(capsule, rig);
     const BoneWeights& w = solver.weights();
@@ -334,7 +335,7 @@ void TestSkeletonWeights::componentWithoutHeatFallsBackToNearestBone()
     // A capsule and, far to its side, a small sphere: every segment from the sphere to a
     // bone crosses the capsule's surface or leaves the sphere through the air, so the
     // sphere has no heat source; its equations are pinned to the nearest bone.
-    TriangleMesh mesh = test::makeCapsule(1.0, 4.0, 6, 16, 24);
+    TriangleMesh mesh = test::axisCapsule(1.0, 4.0, 6, 16, 24);
     const std::size_t capsuleVertices = mesh.vertexCount();
     appendMesh(mesh, makeIcosphere({6.0, 4.0, 0.0}, 0.5, 1));
     const SkeletonRig rig = test::chainRig({-4.5, 0.0, 4.5});
@@ -375,7 +376,7 @@ void TestSkeletonWeights::orderingsAndBackendsAgree()
 
 void TestSkeletonWeights::badRigsAreRefused()
 {
-    const TriangleMesh capsule = test::makeCapsule(1.0, 2.0, 4, 4, 12);
+    const TriangleMesh capsule = test::axisCapsule(1.0, 2.0, 4, 4, 12);
     SkeletonRig single;
     single.joints = {{0, 0, 0}};
     single.parent = {-1};

@@ -3,6 +3,8 @@
 // and EvaluateBasis at the same (ptex face, u, v), and the limit masks of the uniformly
 // refined vertices (PrimvarRefiner::Limit). Plus counts, closedness and orientation,
 // edits restricted to stencil supports, sharp features and the refusals.
+#include "uniform_refinement.h"
+
 #include "surface/cage_refiner.h"
 #include "surface/subdivision_cages.h"
 #include "surface/subdivision_surface.h"
@@ -33,12 +35,7 @@ Q_DECLARE_METATYPE(trimlab::SubdivisionCage)
 
 namespace {
 
-// A position OpenSubdiv's refiners and stencil tables blend.
-struct Point {
-    glm::dvec3 p{0.0};
-    void Clear(void* = nullptr) { p = glm::dvec3(0.0); }
-    void AddWithWeight(const Point& source, double weight) { p += weight * source.p; }
-};
+using test::OsdPoint;
 
 struct ReferencePoint {
     glm::dvec3 position, du, dv;
@@ -54,13 +51,13 @@ std::vector<ReferencePoint> patchTableEvaluation(const SubdivisionCage& cage, co
     refiner->RefineAdaptive(options.GetRefineAdaptiveOptions());
     const std::unique_ptr<Far::PatchTable> patches(Far::PatchTableFactory::Create(*refiner, options));
     const int refined = refiner->GetNumVerticesTotal();
-    std::vector<Point> points(std::size_t(refined + patches->GetNumLocalPoints()));
+    std::vector<OsdPoint> points(std::size_t(refined + patches->GetNumLocalPoints()));
     for (std::size_t v = 0; v < cage.vertexCount(); ++v)
         points[v].p = cage.positions[v];
     const Far::PrimvarRefinerReal<double> primvars(*refiner);
-    Point* source = points.data();
+    OsdPoint* source = points.data();
     for (int level = 1; level <= refiner->GetMaxLevel(); ++level) {
-        Point* destination = source + refiner->GetLevel(level - 1).GetNumVertices();
+        OsdPoint* destination = source + refiner->GetLevel(level - 1).GetNumVertices();
         primvars.Interpolate(level, source, destination);
         source = destination;
     }
@@ -90,25 +87,11 @@ std::vector<ReferencePoint> patchTableEvaluation(const SubdivisionCage& cage, co
 // vertices by OpenSubdiv's limit masks (PrimvarRefiner::Limit).
 std::vector<ReferencePoint> limitMaskEvaluation(const SubdivisionCage& cage, int level)
 {
-    const std::unique_ptr<Far::TopologyRefiner> refiner = createCageRefiner(cage);
-    Far::TopologyRefiner::UniformOptions options(level);
-    options.fullTopologyInLastLevel = true;
-    refiner->RefineUniform(options);
-    std::vector<Point> current(cage.vertexCount());
-    for (std::size_t v = 0; v < cage.vertexCount(); ++v)
-        current[v].p = cage.positions[v];
-    const Far::PrimvarRefinerReal<double> primvars(*refiner);
-    for (int l = 1; l <= level; ++l) {
-        std::vector<Point> next(std::size_t(refiner->GetLevel(l).GetNumVertices()));
-        Point* destination = next.data();
-        primvars.Interpolate(l, current.data(), destination);
-        current = std::move(next);
-    }
-    std::vector<Point> limit(current.size()), tan1(current.size()), tan2(current.size());
-    primvars.Limit(current, limit, tan1, tan2);
+    const test::UniformRefinement refined = test::refineUniformly(cage, level, true);
+    const test::LimitPoints limit = test::limitOfRefined(refined);
     std::vector<ReferencePoint> result;
-    for (std::size_t v = 0; v < current.size(); ++v)
-        result.push_back({limit[v].p, tan1[v].p, tan2[v].p});
+    for (std::size_t v = 0; v < refined.points.size(); ++v)
+        result.push_back({limit.position[v].p, limit.du[v].p, limit.dv[v].p});
     return result;
 }
 

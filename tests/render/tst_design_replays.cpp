@@ -4,18 +4,15 @@
 // results differ, only where the last set's strokes are (the figures' bump and notch).
 #include "gl_test_context.h"
 #include "method_check.h"
+#include "replay_check.h"
 #include "test_paths.h"
 
-#include "dynamic_trim_renderer.h"
 #include "scene/scene_source.h"
 #include "timeline/frame_chain.h"
 #include "timeline/stroke_replay.h"
 #include "timeline/stroke_script.h"
-#include "trim/dynamic_reference_renderer.h"
 
 #include <QtTest>
-
-#include <set>
 
 using namespace trimlab;
 using namespace trimlab::render;
@@ -114,15 +111,9 @@ void TestDesignReplays::gpuAgreesWithReference()
     const Replayed replayed = replay(r);
     test::MethodCase testCase{QString::fromLatin1(r.script), replayed.camera, r.settings, {}, kWidth, kHeight};
     testCase.parameters.k = 32;
-    m_renderer->setMethod(method);
-    m_renderer->setParameters(testCase.parameters);
-    DynamicTrimRenderer dynamic(*m_renderer);
-    dynamic.setChain(replayed.chain);
-    dynamic.render(testCase.camera, testCase.settings, kWidth, kHeight);
-    const ReferenceResult reference =
-        DynamicReferenceRenderer(replayed.chain).render(testCase.camera, kWidth, kHeight, testCase.settings);
     QString summary;
-    if (const auto failure = test::checkFrameAgainstReference(*m_renderer, testCase, reference, {}, &summary))
+    if (const auto failure =
+            test::checkDynamicChainAgainstReference(*m_renderer, method, replayed.chain, testCase, &summary))
         QFAIL(qPrintable(*failure));
     qInfo("%s", qPrintable(summary));
 }
@@ -140,25 +131,10 @@ void TestDesignReplays::staticAndDynamicDifferOnlyAtTheLastSet()
     QFETCH(int, replayIndex);
     const Replay r = replays()[std::size_t(replayIndex)];
     const Replayed replayed = replay(r);
-    const DynamicFrameScene& shown = replayed.chain.levels.back().frame;
-    const TrimImage dynamic = withMeshIds(
-        DynamicReferenceRenderer(replayed.chain).render(replayed.camera, kWidth, kHeight, r.settings).trim, shown);
-    const Scene current = timeline::frameScene(replayed.timeline, replayed.timeline.frameCount() - 1);
-    const TrimImage staticImage = ReferenceRenderer(current).render(replayed.camera, kWidth, kHeight, r.settings).trim;
-    // The triangles the last set moved, at their current position.
-    const std::vector<std::uint32_t>& movedList = shown.meshTriangle[kDynamicObjectCurrentOnly];
-    const std::set<std::int32_t> moved(movedList.begin(), movedList.end());
-    int differing = 0;
-    int elsewhere = 0;
-    for (std::size_t i = 0; i < dynamic.pixels.size(); ++i) {
-        const TrimPixel& d = dynamic.pixels[i];
-        const TrimPixel& s = staticImage.pixels[i];
-        if (d.primitiveId == s.primitiveId)
-            continue;
-        ++differing;
-        if (!moved.count(d.primitiveId) && !moved.count(s.primitiveId))
-            ++elsewhere;
-    }
+    const test::StaticDynamicDifference difference =
+        test::compareStaticAndDynamic(replayed.timeline, replayed.chain, replayed.camera, kWidth, kHeight, r.settings);
+    const int differing = difference.differing;
+    const int elsewhere = difference.elsewhere;
     qInfo("%d pixels differ between the static and the dynamic rule, %d of them away from the last set", differing,
           elsewhere);
     QVERIFY2(differing >= r.minimumDiffering, qPrintable(QString("only %1 pixels differ").arg(differing)));

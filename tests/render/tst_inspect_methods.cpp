@@ -6,6 +6,7 @@
 // of the methods that cannot carry the per-object walk.
 #include "gl_test_context.h"
 #include "method_check.h"
+#include "reference_scene_cache.h"
 #include "test_paths.h"
 
 #include "scene/demo_scenes.h"
@@ -15,8 +16,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <QtTest>
-
-#include <map>
 
 using namespace trimlab;
 using namespace trimlab::render;
@@ -120,17 +119,11 @@ private slots:
     void framesCountCapsAndCollisions();
 
 private:
-    struct Prepared {
-        Scene scene;
-        std::unique_ptr<ReferenceRenderer> reference;
-    };
-    Prepared& prepare(const std::string& name);
+    test::ReferenceSceneCache::Entry& prepare(const std::string& name) { return m_scenes.prepare(*m_renderer, name); }
 
     std::unique_ptr<OffscreenGlContext> m_context;
     std::unique_ptr<TrimRenderer> m_renderer;
-    std::map<std::string, Prepared> m_scenes;
-    std::map<std::string, ReferenceResult> m_results;
-    std::string m_uploaded;
+    test::ReferenceSceneCache m_scenes{sceneNamed};
 };
 
 void TestInspectMethods::initTestCase()
@@ -169,27 +162,12 @@ void TestInspectMethods::agreesWithReference_data()
                     << QString(c.scene) << QString(c.settings) << info.kind;
 }
 
-TestInspectMethods::Prepared& TestInspectMethods::prepare(const std::string& name)
-{
-    auto it = m_scenes.find(name);
-    if (it == m_scenes.end()) {
-        Prepared prepared{sceneNamed(name), nullptr};
-        prepared.reference = std::make_unique<ReferenceRenderer>(prepared.scene);
-        it = m_scenes.emplace(name, std::move(prepared)).first;
-    }
-    if (m_uploaded != name) {
-        m_renderer->setScene(it->second.scene);
-        m_uploaded = name;
-    }
-    return it->second;
-}
-
 void TestInspectMethods::agreesWithReference()
 {
     QFETCH(QString, scene);
     QFETCH(QString, settings);
     QFETCH(FragmentMethodKind, method);
-    Prepared& prepared = prepare(scene.toStdString());
+    test::ReferenceSceneCache::Entry& prepared = prepare(scene.toStdString());
     const Bounds bounds = prepared.scene.worldBounds();
     Camera camera = fitCamera(bounds, double(kWidth) / kHeight);
     if (settings == "intersection") { // the common part is small: move closer to it
@@ -199,15 +177,11 @@ void TestInspectMethods::agreesWithReference()
     test::MethodCase testCase{QTest::currentDataTag(), camera, {}, {}, kWidth, kHeight};
     testCase.settings = caseSettings(settings, bounds);
     testCase.parameters.k = 32; // the nested sheets of csg-trio exceed 16 in places
-    const std::string key = scene.toStdString() + "/" + settings.toStdString();
-    auto result = m_results.find(key);
-    if (result == m_results.end())
-        result = m_results
-                     .emplace(key, prepared.reference->render(testCase.camera, kWidth, kHeight, testCase.settings))
-                     .first;
+    const ReferenceResult& reference = m_scenes.referenceResult(scene.toStdString(), settings.toStdString(),
+                                                                testCase.camera, kWidth, kHeight, testCase.settings);
     QString summary;
-    const auto failure = test::checkMethodAgainstReference(*m_renderer, method, testCase, *prepared.reference,
-                                                           result->second, &summary);
+    const auto failure =
+        test::checkMethodAgainstReference(*m_renderer, method, testCase, prepared.reference, reference, &summary);
     qInfo("%s; %llu caps, %llu collisions", qPrintable(summary),
           static_cast<unsigned long long>(m_renderer->lastStats().counts.capPixels),
           static_cast<unsigned long long>(m_renderer->lastStats().counts.collisionPixels));
@@ -216,8 +190,7 @@ void TestInspectMethods::agreesWithReference()
 
 void TestInspectMethods::peelingMethodsRefuseThePerObjectWalk()
 {
-    prepare("csg-trio");
-    const Camera camera = fitCamera(m_scenes.at("csg-trio").scene.worldBounds(), double(kWidth) / kHeight);
+    const Camera camera = fitCamera(prepare("csg-trio").scene.worldBounds(), double(kWidth) / kHeight);
     TrimSettings settings;
     settings.csg.expression = expression("0 | 1");
     for (FragmentMethodKind kind : {FragmentMethodKind::PeelingF2B, FragmentMethodKind::PeelingDual,
@@ -248,8 +221,8 @@ void TestInspectMethods::peelingMethodsRefuseThePerObjectWalk()
 
 void TestInspectMethods::badExpressionsAreRefused()
 {
-    prepare("pushed-sphere"); // one object
-    const Camera camera = fitCamera(m_scenes.at("pushed-sphere").scene.worldBounds(), double(kWidth) / kHeight);
+    const Scene& oneObject = prepare("pushed-sphere").scene;
+    const Camera camera = fitCamera(oneObject.worldBounds(), double(kWidth) / kHeight);
     m_renderer->setMethod(FragmentMethodKind::KPlusArray);
     TrimSettings settings;
     settings.csg.expression = expression("0 - 2");
@@ -264,7 +237,7 @@ void TestInspectMethods::badExpressionsAreRefused()
 void TestInspectMethods::framesCountCapsAndCollisions()
 {
     // The frame counters the status bar shows equal the counts of the read-back image.
-    Prepared& prepared = prepare("csg-trio");
+    const test::ReferenceSceneCache::Entry& prepared = prepare("csg-trio");
     const Bounds bounds = prepared.scene.worldBounds();
     const Camera camera = fitCamera(bounds, double(kWidth) / kHeight);
     const TrimSettings settings = caseSettings("tree box capped", bounds);

@@ -6,6 +6,7 @@
 // wrong. tests/support/method_check.h holds the criteria.
 #include "gl_test_context.h"
 #include "method_check.h"
+#include "reference_scene_cache.h"
 
 #include "scene/demo_scenes.h"
 #include "scene/shape_generators.h"
@@ -13,8 +14,6 @@
 #include <glm/geometric.hpp>
 
 #include <QtTest>
-
-#include <map>
 
 using namespace trimlab;
 using namespace trimlab::render;
@@ -73,17 +72,9 @@ private slots:
     void agreesWithReference();
 
 private:
-    struct Prepared {
-        Scene scene;
-        std::unique_ptr<ReferenceRenderer> reference;
-        std::map<std::string, ReferenceResult> results;
-    };
-    Prepared& prepare(const std::string& name);
-
     std::unique_ptr<OffscreenGlContext> m_context;
     std::unique_ptr<TrimRenderer> m_renderer;
-    std::map<std::string, Prepared> m_scenes;
-    std::string m_uploaded;
+    test::ReferenceSceneCache m_scenes{sceneNamed};
 };
 
 void TestMethodMatrix::initTestCase()
@@ -109,42 +100,24 @@ void TestMethodMatrix::agreesWithReference_data()
                         << QString(scene) << rule << plane << info.kind;
 }
 
-TestMethodMatrix::Prepared& TestMethodMatrix::prepare(const std::string& name)
-{
-    auto it = m_scenes.find(name);
-    if (it == m_scenes.end()) {
-        Prepared prepared{sceneNamed(name), nullptr, {}};
-        prepared.reference = std::make_unique<ReferenceRenderer>(prepared.scene);
-        it = m_scenes.emplace(name, std::move(prepared)).first;
-    }
-    if (m_uploaded != name) {
-        m_renderer->setScene(it->second.scene);
-        m_uploaded = name;
-    }
-    return it->second;
-}
-
 void TestMethodMatrix::agreesWithReference()
 {
     QFETCH(QString, scene);
     QFETCH(StaticRule, rule);
     QFETCH(int, plane);
     QFETCH(FragmentMethodKind, method);
-    Prepared& prepared = prepare(scene.toStdString());
+    const test::ReferenceSceneCache::Entry& prepared = m_scenes.prepare(*m_renderer, scene.toStdString());
     const Bounds bounds = prepared.scene.worldBounds();
     test::MethodCase testCase{QTest::currentDataTag(), fitCamera(bounds, double(kWidth) / kHeight), {}, {}, kWidth,
                               kHeight};
     testCase.settings.rule = rule;
     testCase.settings.clip = clipPlane(plane, bounds);
     const std::string key = std::string(ruleName(rule)) + std::to_string(plane);
-    auto result = prepared.results.find(key);
-    if (result == prepared.results.end())
-        result = prepared.results
-                     .emplace(key, prepared.reference->render(testCase.camera, kWidth, kHeight, testCase.settings))
-                     .first;
+    const ReferenceResult& reference =
+        m_scenes.referenceResult(scene.toStdString(), key, testCase.camera, kWidth, kHeight, testCase.settings);
     QString summary;
-    const auto failure = test::checkMethodAgainstReference(*m_renderer, method, testCase, *prepared.reference,
-                                                           result->second, &summary);
+    const auto failure =
+        test::checkMethodAgainstReference(*m_renderer, method, testCase, prepared.reference, reference, &summary);
     qInfo("%s", qPrintable(summary));
     QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
 }

@@ -8,15 +8,12 @@
 #include "gl_test_context.h"
 #include "image_artifacts.h"
 #include "method_check.h"
+#include "replay_check.h"
 
-#include "dynamic_trim_renderer.h"
 #include "surface/fig8_13_history.h"
 #include "timeline/frame_chain.h"
-#include "trim/dynamic_reference_renderer.h"
 
 #include <QtTest>
-
-#include <set>
 
 using namespace trimlab;
 using namespace trimlab::render;
@@ -116,15 +113,8 @@ void TestSurfaceReplays::dynamicRulesAgreeWithReference()
     const Prepared p = prepare(c);
     test::MethodCase testCase{QString::fromLatin1(c.name), p.camera, p.settings, {}, kWidth, kHeight};
     testCase.parameters.k = 32;
-    m_renderer->setMethod(method);
-    m_renderer->setParameters(testCase.parameters);
-    DynamicTrimRenderer dynamic(*m_renderer);
-    dynamic.setChain(p.chain);
-    dynamic.render(testCase.camera, testCase.settings, kWidth, kHeight);
-    const ReferenceResult reference =
-        DynamicReferenceRenderer(p.chain).render(testCase.camera, kWidth, kHeight, testCase.settings);
     QString summary;
-    if (const auto failure = test::checkFrameAgainstReference(*m_renderer, testCase, reference, {}, &summary))
+    if (const auto failure = test::checkDynamicChainAgainstReference(*m_renderer, method, p.chain, testCase, &summary))
         QFAIL(qPrintable(*failure));
     qInfo("%s", qPrintable(summary));
 }
@@ -160,28 +150,9 @@ void TestSurfaceReplays::staticShowsABumpWhereDynamicCarvesAHole()
         if (c.history != 0)
             continue;
         const Prepared p = prepare(c);
-        const DynamicFrameScene& shown = p.chain.levels.back().frame;
-        const TrimImage dynamic = withMeshIds(
-            DynamicReferenceRenderer(p.chain).render(p.camera, kWidth, kHeight, p.settings).trim, shown);
-        const Scene current = timeline::frameScene(p.history, p.history.frameCount() - 1);
-        const TrimImage staticImage = ReferenceRenderer(current).render(p.camera, kWidth, kHeight, p.settings).trim;
-        // The triangles the last set moved, at their current position.
-        const std::vector<std::uint32_t>& movedList = shown.meshTriangle[kDynamicObjectCurrentOnly];
-        const std::set<std::int32_t> moved(movedList.begin(), movedList.end());
-        int differing = 0;
-        int elsewhere = 0;
-        int deeper = 0; // the dynamic rule shows something farther away, or nothing: a hole
-        for (std::size_t i = 0; i < dynamic.pixels.size(); ++i) {
-            const TrimPixel& d = dynamic.pixels[i];
-            const TrimPixel& s = staticImage.pixels[i];
-            if (d.primitiveId == s.primitiveId)
-                continue;
-            ++differing;
-            if (!moved.count(d.primitiveId) && !moved.count(s.primitiveId))
-                ++elsewhere;
-            if (s.primitiveId >= 0 && d.viewDepth > s.viewDepth)
-                ++deeper;
-        }
+        // deeper: the dynamic rule shows something farther away, or nothing: a hole.
+        const auto [dynamic, staticImage, differing, elsewhere, deeper] =
+            test::compareStaticAndDynamic(p.history, p.chain, p.camera, kWidth, kHeight, p.settings);
         const QString counts = QString("%1: %2 pixels differ between the static and the dynamic rule, %3 of them "
                                        "away from the pushed part, %4 show a hole under the dynamic rule where the "
                                        "static one shows the bump")

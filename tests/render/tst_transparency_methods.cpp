@@ -17,6 +17,7 @@
 #include "color_check.h"
 #include "gl_test_context.h"
 #include "method_check.h"
+#include "reference_scene_cache.h"
 #include "test_paths.h"
 
 #include "scene/demo_scenes.h"
@@ -27,7 +28,6 @@
 #include <QtTest>
 
 #include <cstring>
-#include <map>
 
 using namespace trimlab;
 using namespace trimlab::render;
@@ -93,38 +93,17 @@ private slots:
     void peelingAndTwoPassRefuse();
 
 private:
-    struct Prepared {
-        Scene scene;
-        std::unique_ptr<ReferenceRenderer> reference;
-    };
-    Prepared& prepare(const std::string& name);
+    test::ReferenceSceneCache::Entry& prepare(const std::string& name) { return m_scenes.prepare(*m_renderer, name); }
 
     std::unique_ptr<OffscreenGlContext> m_context;
     std::unique_ptr<TrimRenderer> m_renderer;
-    std::map<std::string, Prepared> m_scenes;
-    std::map<std::string, ReferenceResult> m_results;
-    std::string m_uploaded;
+    test::ReferenceSceneCache m_scenes{sceneNamed};
 };
 
 void TestTransparencyMethods::initTestCase()
 {
     TRIMLAB_INIT_GL_CONTEXT(m_context);
     m_renderer = std::make_unique<TrimRenderer>(m_context->context());
-}
-
-TestTransparencyMethods::Prepared& TestTransparencyMethods::prepare(const std::string& name)
-{
-    auto it = m_scenes.find(name);
-    if (it == m_scenes.end()) {
-        Prepared prepared{sceneNamed(name), nullptr};
-        prepared.reference = std::make_unique<ReferenceRenderer>(prepared.scene);
-        it = m_scenes.emplace(name, std::move(prepared)).first;
-    }
-    if (m_uploaded != name) {
-        m_renderer->setScene(it->second.scene);
-        m_uploaded = name;
-    }
-    return it->second;
 }
 
 void TestTransparencyMethods::agreesWithReference_data()
@@ -164,30 +143,26 @@ void TestTransparencyMethods::agreesWithReference()
     QFETCH(QString, scene);
     QFETCH(QString, settings);
     QFETCH(FragmentMethodKind, method);
-    Prepared& prepared = prepare(scene.toStdString());
+    test::ReferenceSceneCache::Entry& prepared = prepare(scene.toStdString());
     const Bounds bounds = prepared.scene.worldBounds();
     test::MethodCase testCase{QTest::currentDataTag(), fitCamera(bounds, double(kWidth) / kHeight), {}, {}, kWidth,
                               kHeight};
     testCase.settings = caseSettings(settings, bounds);
     QVERIFY(testCase.settings.xray());
     testCase.parameters.k = 32;
-    const std::string key = scene.toStdString() + "/" + settings.toStdString();
-    auto result = m_results.find(key);
-    if (result == m_results.end())
-        result = m_results
-                     .emplace(key, prepared.reference->render(testCase.camera, kWidth, kHeight, testCase.settings))
-                     .first;
+    const ReferenceResult& reference = m_scenes.referenceResult(scene.toStdString(), settings.toStdString(),
+                                                                testCase.camera, kWidth, kHeight, testCase.settings);
     QString summary;
-    const auto failure = test::checkMethodAgainstReference(*m_renderer, method, testCase, *prepared.reference,
-                                                           result->second, &summary);
+    const auto failure =
+        test::checkMethodAgainstReference(*m_renderer, method, testCase, prepared.reference, reference, &summary);
     QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
     const QImage color = m_renderer->readColor();
-    const test::ColorComparison colors = test::compareColors(color, m_renderer->readTrimImage(), result->second.color,
-                                                             result->second.diagnostics, kTolerance);
+    const test::ColorComparison colors =
+        test::compareColors(color, m_renderer->readTrimImage(), reference.color, reference.diagnostics, kTolerance);
     qInfo("%s; %s", qPrintable(summary), qPrintable(colors.summary()));
     QString name = QString::fromLatin1(methodInfo(method).id.data()) + "-xray-" + scene + "-" + settings;
     name.replace(' ', '_');
-    const auto violation = test::colorViolation(colors, color, result->second.color, name, 0.999,
+    const auto violation = test::colorViolation(colors, color, reference.color, name, 0.999,
                                                 std::uint64_t(0.05 * kWidth * kHeight));
     QVERIFY2(!violation, violation ? qPrintable(*violation) : "");
 }
@@ -197,19 +172,19 @@ void TestTransparencyMethods::xrayChangesColorsOnly()
     // Opaque display with ghosts on the pushed sphere: the ids and depths stay those of the
     // plain frame, and the colors change on the pixels where the reference's change (where
     // the trim removed fragments in front of the shown point).
-    Prepared& prepared = prepare("pushed-sphere");
+    const test::ReferenceSceneCache::Entry& prepared = prepare("pushed-sphere");
     const Camera camera = fitCamera(prepared.scene.worldBounds(), double(kWidth) / kHeight);
     m_renderer->setMethod(FragmentMethodKind::ABufferLinkedList);
     TrimSettings settings;
     m_renderer->render(camera, settings, kWidth, kHeight);
     const QImage plainColor = m_renderer->readColor();
     const TrimImage plainIds = m_renderer->readTrimImage();
-    const ReferenceResult plainReference = prepared.reference->render(camera, kWidth, kHeight, settings);
+    const ReferenceResult plainReference = prepared.reference.render(camera, kWidth, kHeight, settings);
     settings.transparency = xray(TrimDisplay::Opaque, 0.4, 0.4);
     m_renderer->render(camera, settings, kWidth, kHeight);
     const QImage ghostColor = m_renderer->readColor();
     const TrimImage ghostIds = m_renderer->readTrimImage();
-    const ReferenceResult ghostReference = prepared.reference->render(camera, kWidth, kHeight, settings);
+    const ReferenceResult ghostReference = prepared.reference.render(camera, kWidth, kHeight, settings);
     int changed = 0;
     int referenceChanged = 0;
     for (int y = 0; y < kHeight; ++y)
@@ -227,8 +202,7 @@ void TestTransparencyMethods::xrayChangesColorsOnly()
 
 void TestTransparencyMethods::peelingAndTwoPassRefuse()
 {
-    Prepared& prepared = prepare("pushed-sphere");
-    const Camera camera = fitCamera(prepared.scene.worldBounds(), double(kWidth) / kHeight);
+    const Camera camera = fitCamera(prepare("pushed-sphere").scene.worldBounds(), double(kWidth) / kHeight);
     TrimSettings settings;
     settings.transparency = xray(TrimDisplay::Translucent, 0.4, 0.2);
     for (FragmentMethodKind kind : {FragmentMethodKind::PeelingF2B, FragmentMethodKind::PeelingDual,

@@ -32,6 +32,19 @@ namespace trimlab::test {
         }                                                                                                  \
     } while (false)
 
+/// In a test function whose work needs OpenGL elsewhere (a trimlab child process that
+/// renders): checks that a 4.3 context can be made here, then releases it; without one
+/// the function skips — or fails under TRIMLAB_REQUIRE_GL=1 — with the reason.
+#define TRIMLAB_SKIP_WITHOUT_GL()                                                                          \
+    do {                                                                                                   \
+        QString why_;                                                                                      \
+        if (!trimlab::test::tryCreateGlContext(&why_)) {                                                   \
+            if (trimlab::test::glRequired())                                                               \
+                QFAIL(qPrintable("TRIMLAB_REQUIRE_GL=1 but no OpenGL 4.3 context: " + why_));              \
+            QSKIP(qPrintable("no OpenGL 4.3 context: " + why_));                                           \
+        }                                                                                                  \
+    } while (false)
+
 /// In initTestCase() of a widget test: standard paths in test mode (settings, recovery
 /// files and caches never touch the user's) and the OpenGL 4.3 check of
 /// TRIMLAB_INIT_GL_CONTEXT (skip, or fail under TRIMLAB_REQUIRE_GL=1), which the viewport

@@ -5,6 +5,7 @@
 /// the renderer through the window (tst_method_panel.cpp, tst_context_loss.cpp).
 
 #include "image_artifacts.h"
+#include "shown_main_window.h"
 #include "trim_comparison.h"
 
 #include "main_window.h"
@@ -25,11 +26,7 @@ inline const QString kDefaultDemo = QStringLiteral("demo:pushed-sphere");
 /// `viewportSize`, shown, once the default demo has loaded (a warning when it did not).
 inline std::unique_ptr<ui::MainWindow> showDemoWindow(const QString& ini, QSize viewportSize)
 {
-    auto window = std::make_unique<ui::MainWindow>(ini);
-    window->viewport()->setFixedSize(viewportSize);
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get()))
-        qWarning("main window not exposed");
+    auto window = showMainWindow(ini, viewportSize);
     const bool loaded = QTest::qWaitFor(
         [&] { return !window->isLoading() && window->scene() && window->scene()->source == kDefaultDemo.toStdString(); },
         kDemoWaitMs);

@@ -3,6 +3,10 @@
 /// The main window set up for the designer workflow, shared by the design tests
 /// (tst_design_workflow.cpp) and the drag benchmark (bench_design_drag.cpp).
 
+#include "named_child.h"
+#include "plain_obj.h"
+#include "shown_main_window.h"
+
 #include "design_workspace.h"
 #include "main_window.h"
 #include "viewport_widget.h"
@@ -14,36 +18,11 @@
 #include <QString>
 #include <QtTest>
 
-#include <cstdio>
-#include <fstream>
 #include <memory>
 
 namespace trimlab::test {
 
 inline constexpr int kWaitMs = 30000;
-
-/// Writes `mesh` as a plain OBJ (for opening it like a user would).
-inline void writeObj(const TriangleMesh& mesh, const QString& path)
-{
-    std::ofstream out(path.toStdString());
-    char line[128];
-    for (const glm::vec3& p : mesh.positions) {
-        std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", double(p.x), double(p.y), double(p.z));
-        out << line;
-    }
-    for (const glm::uvec3& t : mesh.triangles)
-        out << "f " << t.x + 1 << ' ' << t.y + 1 << ' ' << t.z + 1 << '\n';
-}
-
-/// The child of `parent` named `name`, with a warning when there is none.
-template <class T>
-T* child(QObject* parent, const char* name)
-{
-    T* found = parent->findChild<T*>(QString::fromLatin1(name));
-    if (!found)
-        qWarning("no child named %s", name);
-    return found;
-}
 
 /// A main window with its settings in the INI file `ini`, shown and active, its viewport
 /// fixed at `viewportSize`. No clipping plane (the brush grabs the outside of the mesh)
@@ -55,11 +34,7 @@ inline std::unique_ptr<ui::MainWindow> showDesignWindow(const QString& ini, QSiz
         settings.setValue(QStringLiteral("render/clipEnabled"), false);
         settings.setValue(QStringLiteral("brush/radiusFraction"), 0.4);
     }
-    auto window = std::make_unique<ui::MainWindow>(ini);
-    window->viewport()->setFixedSize(viewportSize);
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get()))
-        qWarning("main window not exposed");
+    auto window = showMainWindow(ini, viewportSize);
     // Shortcuts (B, N, Ctrl+Z) go to the active window only.
     window->activateWindow();
     if (!QTest::qWaitForWindowActive(window.get()))

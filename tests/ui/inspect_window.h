@@ -7,6 +7,8 @@
 
 #include "gl_test_context.h"
 #include "image_artifacts.h"
+#include "named_child.h"
+#include "plain_obj.h"
 #include "trim_comparison.h"
 
 #include "main_window.h"
@@ -22,8 +24,6 @@
 #include <QString>
 #include <QtTest>
 
-#include <cstdio>
-#include <fstream>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -32,16 +32,6 @@ namespace trimlab::test {
 
 inline constexpr QSize kInspectViewportSize(160, 120);
 inline constexpr int kInspectWaitMs = 20000;
-
-/// The child of `parent` named `name`, with a warning when there is none.
-template <class T>
-T* namedChild(QObject* parent, const char* name)
-{
-    T* found = parent->findChild<T*>(QString::fromLatin1(name));
-    if (!found)
-        qWarning("no child named %s", name);
-    return found;
-}
 
 /// Brings `widget` on screen as a user would before clicking it: raises the tab of its
 /// dock and scrolls its panel to it (a click lands where the widget is drawn, so a
@@ -62,19 +52,6 @@ T* revealed(T* widget)
     if (!widget->isVisible())
         qWarning("%s is not visible", qPrintable(widget->objectName()));
     return widget;
-}
-
-/// Writes `mesh` as a plain OBJ (9 significant digits: floats round-trip).
-inline void writeInspectObj(const TriangleMesh& mesh, const QString& path)
-{
-    std::ofstream out(path.toStdString());
-    char line[128];
-    for (const glm::vec3& p : mesh.positions) {
-        std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", double(p.x), double(p.y), double(p.z));
-        out << line;
-    }
-    for (const glm::uvec3& t : mesh.triangles)
-        out << "f " << t.x + 1 << ' ' << t.y + 1 << ' ' << t.z + 1 << '\n';
 }
 
 /// Waits until the viewport's last frame satisfies `ready`.

@@ -5,8 +5,13 @@
 // three modes, color by segment, export — and compare what it shows with the core run
 // directly. Settings go to INI files in a temporary folder, never the user's.
 #include "gl_test_context.h"
+#include "held_background_task.h"
 #include "image_artifacts.h"
 #include "message_box_closer.h"
+#include "named_child.h"
+#include "shown_main_window.h"
+#include "widget_test_main.h"
+#include "posed_frame_check.h"
 #include "test_paths.h"
 #include "trim_comparison.h"
 
@@ -38,8 +43,6 @@
 #include <QMimeData>
 #include <QProgressDialog>
 #include <QPushButton>
-#include <QScopeGuard>
-#include <QSemaphore>
 #include <QSlider>
 #include <QSpinBox>
 #include <QStandardPaths>
@@ -47,7 +50,6 @@
 #include <QThreadPool>
 #include <QToolButton>
 
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -56,6 +58,7 @@
 
 using namespace trimlab;
 using namespace trimlab::ui;
+using trimlab::test::child;
 using trimlab::test::MessageBoxCloser;
 
 namespace {
@@ -71,15 +74,6 @@ QString testAnimation(const char* name)
 QString walkingCat()
 {
     return QString::fromStdString(test::sharedDataPath("anim/walking-cat").string());
-}
-
-template <class T>
-T* child(QObject* parent, const char* name)
-{
-    T* found = parent->findChild<T*>(QString::fromLatin1(name));
-    if (!found)
-        qWarning("no child named %s", name);
-    return found;
 }
 
 /// Types `value` into a spin box as a user would and confirms with Return.
@@ -156,13 +150,7 @@ void TestAnimationPanel::initTestCase()
 
 std::unique_ptr<MainWindow> TestAnimationPanel::showWindow(const QString& settingsName, QSize viewport)
 {
-    auto window = std::make_unique<MainWindow>(m_dir.filePath(settingsName + QStringLiteral(".ini")));
-    if (viewport.isValid())
-        window->viewport()->setFixedSize(viewport);
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get()))
-        qWarning("main window not exposed");
-    return window;
+    return test::showMainWindow(m_dir.filePath(settingsName + QStringLiteral(".ini")), viewport);
 }
 
 bool TestAnimationPanel::openAndWait(MainWindow& window, const QString& source)
@@ -190,38 +178,17 @@ std::unique_ptr<MainWindow> TestAnimationPanel::segmentedCat(const QString& sett
 // Runs `action` and waits for a frame rendered after it.
 bool TestAnimationPanel::waitForNewFrame(MainWindow& window, const std::function<void()>& action)
 {
-    QSignalSpy frames(window.viewport(), &ViewportWidget::frameRendered);
-    action();
-    return QTest::qWaitFor([&] { return !frames.isEmpty(); }, kWaitMs);
+    return test::waitForFrameAfter(window, action, kWaitMs);
 }
 
-// The viewport's last frame against the CPU reference of the scene at pose `pose`, with
-// the frame's own camera, size and settings (render tests' criteria).
+// The viewport's last frame against the CPU reference of the scene at pose `pose`
+// (posed_frame_check.h); the frame's picture is kept in the test output either way.
 std::optional<QString> TestAnimationPanel::poseDisagreement(MainWindow& window, int pose)
 {
-    const ViewportFrame frame = *window.viewport()->lastFrame();
-    const TrimImage actual = window.viewport()->readTrimImage();
-    Scene posed = window.scene()->scene;
-    posed.objects.front().mesh.positions = window.animation()->animation->poses[std::size_t(pose)];
-    const ReferenceRenderer reference(posed);
-    const int width = frame.pixelSize.width();
-    const int height = frame.pixelSize.height();
-    const ReferenceResult expected = reference.render(frame.camera, width, height, frame.settings);
-    const test::TrimComparison comparison = test::compareTrimImages(
-        actual, expected.trim, expected.diagnostics, {},
-        test::referenceTieCheck(reference, frame.camera, width, height, frame.settings));
     const QString name = QStringLiteral("animation-pose-%1").arg(pose);
-    qInfo("%s: %s", qPrintable(name), qPrintable(comparison.summary()));
     const std::filesystem::path picture = test::outputDir() / (name + QStringLiteral(".png")).toStdString();
     window.viewport()->readColorImage().save(QString::fromStdString(picture.string()));
-    if (comparison.coveredPixels < width * height / 40)
-        return QStringLiteral("%1: only %2 pixels covered").arg(name).arg(comparison.coveredPixels);
-    if (comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05)
-        return std::nullopt;
-    const QString files = test::writeComparisonArtifacts(name, test::trimImageToPicture(actual),
-                                                         test::trimImageToPicture(expected.trim),
-                                                         comparison.disagreementMask);
-    return name + ": " + comparison.summary() + "; " + files;
+    return test::posedFrameDisagreement(window, window.animation()->animation->poses[std::size_t(pose)], name);
 }
 
 // The folding box (three poses of a closed tube, the last one folded through itself): the
@@ -480,24 +447,9 @@ void TestAnimationPanel::cancelKeepsThePreviousResult()
     const std::shared_ptr<const SegmentationResult> previous = panel->result();
     typeInto(child<QSpinBox>(panel, "clustersSpinBox"), 12);
 
-    QSemaphore held;
-    QSemaphore resume;
-    std::atomic<bool> first{true};
-    const QMetaObject::Connection hold = connect(
-        panel->runTask(), &BackgroundTask::progressed, panel->runTask(),
-        [&](const QString&, qint64, qint64) {
-            if (!first.exchange(false))
-                return;
-            held.release();
-            resume.acquire(); // the worker waits here until the test lets it go
-        },
-        Qt::DirectConnection);
-    const auto release = qScopeGuard([&] {
-        resume.release();
-        disconnect(hold);
-    });
+    test::HeldBackgroundTask held(panel->runTask());
     QTest::mouseClick(child<QPushButton>(panel, "runSegmentationButton"), Qt::LeftButton);
-    QVERIFY(held.tryAcquire(1, kWaitMs));
+    QVERIFY(held.waitUntilHeld(kWaitMs));
     auto* cancel = child<QPushButton>(panel, "cancelSegmentationButton");
     QVERIFY(cancel->isEnabled());
     QTest::mouseClick(cancel, Qt::LeftButton);
@@ -510,7 +462,7 @@ void TestAnimationPanel::cancelKeepsThePreviousResult()
     const VertexLabeling expected = previous->segmenter->segment(panel->choices().h);
     QVERIFY(QTest::qWaitFor([&] { return panel->shownLabeling() && *panel->shownLabeling() == expected; }, kWaitMs));
 
-    resume.release();
+    held.release();
     QVERIFY(QTest::qWaitFor([&] { return !panel->isRunning(); }, kWaitMs));
     QCOMPARE(panel->result(), previous);
     QVERIFY(child<QLabel>(panel, "segmentationStatusLabel")->text().contains(QStringLiteral("Canceled")));
@@ -712,17 +664,5 @@ void TestAnimationPanel::screenshot()
     qInfo("screenshot: %s", qPrintable(shot));
 }
 
-int main(int argc, char** argv)
-{
-    // As tst_main_window: without a display, the offscreen platform lets initTestCase
-    // skip (or fail under TRIMLAB_REQUIRE_GL=1) with the reason.
-    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
-        qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-        qputenv("QT_QPA_PLATFORM", "offscreen");
-    QApplication app(argc, argv);
-    app.setAttribute(Qt::AA_Use96Dpi, true);
-    TestAnimationPanel test;
-    QTEST_SET_MAIN_SOURCE_PATH
-    return QTest::qExec(&test, argc, argv);
-}
+TRIMLAB_WIDGET_TEST_MAIN(TestAnimationPanel)
 #include "tst_animation_panel.moc"

@@ -133,7 +133,7 @@ void TestDesignWorkflow::initTestCase()
     TRIMLAB_INIT_WIDGET_TEST();
     QVERIFY(m_dir.isValid());
     m_sphereObj = path(QStringLiteral("sphere.obj"));
-    test::writeObj(makeIcosphere(glm::dvec3(0.0), 1.0, 3), m_sphereObj); // 642 vertices
+    QVERIFY(test::writePlainObj(makeIcosphere(glm::dvec3(0.0), 1.0, 3), m_sphereObj)); // 642 vertices
 }
 
 

@@ -17,7 +17,6 @@
 #include <QLocale>
 #include <QPushButton>
 #include <QRadioButton>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 
 using namespace trimlab;
@@ -64,10 +63,7 @@ private:
 
 void TestInspectClip::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    std::unique_ptr<render::OffscreenGlContext> probe;
-    TRIMLAB_INIT_GL_CONTEXT(probe);
-    probe.reset();
+    TRIMLAB_INIT_WIDGET_TEST();
     QVERIFY(m_dir.isValid());
 }
 
@@ -76,8 +72,8 @@ void TestInspectClip::initTestCase()
 void TestInspectClip::boxShrunkThroughTheEditorMatchesTheReference()
 {
     auto window = showInspectWindow(m_dir.filePath(QStringLiteral("box.ini")), kTrio);
-    auto* none = namedChild<QPushButton>(window.get(), "clipNoneButton");
-    auto* box = namedChild<QPushButton>(window.get(), "clipBoxButton");
+    auto* none = child<QPushButton>(window.get(), "clipNoneButton");
+    auto* box = child<QPushButton>(window.get(), "clipBoxButton");
     QVERIFY(none && box);
     QTest::mouseClick(revealed(none), Qt::LeftButton);
     QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return enabledPlanes(f) == 0; }));
@@ -86,7 +82,7 @@ void TestInspectClip::boxShrunkThroughTheEditorMatchesTheReference()
     QTest::mouseClick(revealed(box), Qt::LeftButton);
     QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return enabledPlanes(f) == 6; }));
     for (int i = 0; i < kMaxClipPlanes; ++i)
-        QVERIFY(namedChild<QCheckBox>(window.get(), qPrintable(QStringLiteral("clipPlaneEnabled%1").arg(i)))
+        QVERIFY(child<QCheckBox>(window.get(), qPrintable(QStringLiteral("clipPlaneEnabled%1").arg(i)))
                     ->isChecked());
     QVERIFY2(changedPixels(window->viewport()->readTrimImage(), whole) < 20, "the box must not cut the scene");
     auto failure = inspectDisagreement(*window, QStringLiteral("box-whole"));
@@ -94,14 +90,14 @@ void TestInspectClip::boxShrunkThroughTheEditorMatchesTheReference()
 
     // Plane 1 keeps x >= lower: move it to x >= 0.2 (n = +x, offset -0.2). Plane 6 keeps
     // z <= upper: move it to z <= 0.3 (n = -z, offset 0.3).
-    auto* offset = namedChild<QDoubleSpinBox>(window.get(), "clipOffsetSpin");
+    auto* offset = child<QDoubleSpinBox>(window.get(), "clipOffsetSpin");
     QVERIFY(offset);
     QCOMPARE(window->renderPanel()->clipSetEditor()->selectedPlane(), 0);
     typeValue(offset, QStringLiteral("-0.2"));
-    clickButton(namedChild<QRadioButton>(window.get(), "clipPlaneSelect5"));
+    clickButton(child<QRadioButton>(window.get(), "clipPlaneSelect5"));
     QCOMPARE(window->renderPanel()->clipSetEditor()->selectedPlane(), 5);
     typeValue(offset, QStringLiteral("0.3"));
-    clickButton(namedChild<QCheckBox>(window.get(), "capCheckBox"));
+    clickButton(child<QCheckBox>(window.get(), "capCheckBox"));
     const auto shrunk = [](const ViewportFrame& f) {
         const ClipSet set = f.settings.clipSet();
         return set.planes[0].offset == -0.2 && set.planes[5].offset == 0.3 && set.planes[5].normal.z == -1.0 &&
@@ -124,10 +120,10 @@ void TestInspectClip::boxShrunkThroughTheEditorMatchesTheReference()
 void TestInspectClip::highlightCountsReachTheStatusBar()
 {
     auto window = showInspectWindow(m_dir.filePath(QStringLiteral("highlight.ini")), kTrio);
-    auto* label = namedChild<QLabel>(window.get(), "highlightLabel");
+    auto* label = child<QLabel>(window.get(), "highlightLabel");
     QVERIFY(label);
     QVERIFY(!label->isVisibleTo(window.get()));
-    clickButton(namedChild<QCheckBox>(window.get(), "highlightCollisionsCheckBox"));
+    clickButton(child<QCheckBox>(window.get(), "highlightCollisionsCheckBox"));
     QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return f.settings.highlight.collisions; }));
     const std::uint64_t collisions = window->viewport()->lastFrame()->stats.counts.collisionPixels;
     QVERIFY(collisions > 0);
@@ -140,7 +136,7 @@ void TestInspectClip::highlightCountsReachTheStatusBar()
     auto failure = inspectDisagreement(*window, QStringLiteral("highlight-collisions"));
     QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
 
-    clickButton(namedChild<QCheckBox>(window.get(), "highlightCoplanarCheckBox"));
+    clickButton(child<QCheckBox>(window.get(), "highlightCoplanarCheckBox"));
     QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return f.settings.highlight.coplanar; }));
     QVERIFY2(label->text().contains(QStringLiteral("coplanar")), qPrintable(label->text()));
     failure = inspectDisagreement(*window, QStringLiteral("highlight-both"));
@@ -154,12 +150,12 @@ void TestInspectClip::inspectionChoicesPersist()
     const QString ini = m_dir.filePath(QStringLiteral("persist.ini"));
     {
         auto window = showInspectWindow(ini, kTrio);
-        QTest::mouseClick(revealed(namedChild<QPushButton>(window.get(), "clipBoxButton")), Qt::LeftButton);
-        clickButton(namedChild<QCheckBox>(window.get(), "capCheckBox"));
-        auto* pattern = namedChild<QComboBox>(window.get(), "capPatternComboBox");
+        QTest::mouseClick(revealed(child<QPushButton>(window.get(), "clipBoxButton")), Qt::LeftButton);
+        clickButton(child<QCheckBox>(window.get(), "capCheckBox"));
+        auto* pattern = child<QComboBox>(window.get(), "capPatternComboBox");
         QTest::keyClick(revealed(pattern), Qt::Key_Down); // hatched -> striped
-        typeValue(namedChild<QDoubleSpinBox>(window.get(), "capSpacingSpin"), QStringLiteral("7.5"));
-        clickButton(namedChild<QCheckBox>(window.get(), "highlightCoplanarCheckBox"));
+        typeValue(child<QDoubleSpinBox>(window.get(), "capSpacingSpin"), QStringLiteral("7.5"));
+        clickButton(child<QCheckBox>(window.get(), "highlightCoplanarCheckBox"));
         QCOMPARE(window->viewport()->trimSettings().cap.pattern, CapPattern::Striped);
         window->close();
     }
@@ -173,7 +169,7 @@ void TestInspectClip::inspectionChoicesPersist()
     QCOMPARE(restored.trim.clipSet().enabledCount(), 6);
     const double radius = window->scene()->scene.worldBounds().radius();
     QVERIFY(std::abs(window->viewport()->trimSettings().cap.spacing - 0.075 * radius) < 1e-12);
-    QCOMPARE(namedChild<QComboBox>(window.get(), "capPatternComboBox")->currentText(), QStringLiteral("Striped"));
+    QCOMPARE(child<QComboBox>(window.get(), "capPatternComboBox")->currentText(), QStringLiteral("Striped"));
 }
 
 QTEST_MAIN(TestInspectClip)

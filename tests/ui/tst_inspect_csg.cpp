@@ -17,7 +17,6 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
-#include <QStandardPaths>
 #include <QTableWidget>
 #include <QTemporaryDir>
 
@@ -77,10 +76,7 @@ private:
 
 void TestInspectCsg::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    std::unique_ptr<render::OffscreenGlContext> probe;
-    TRIMLAB_INIT_GL_CONTEXT(probe);
-    probe.reset();
+    TRIMLAB_INIT_WIDGET_TEST();
     QVERIFY(m_dir.isValid());
 }
 
@@ -96,7 +92,7 @@ void TestInspectCsg::builtAndTypedExpressionsMatchTheReference()
     const ReferenceResult plainReference = referenceOfLastFrame(*window);
 
     selectRows(*panel, {0, 1});
-    auto* difference = namedChild<QPushButton>(window.get(), "csgDifferenceButton");
+    auto* difference = child<QPushButton>(window.get(), "csgDifferenceButton");
     QVERIFY(difference && difference->isEnabled());
     QTest::mouseClick(revealed(difference), Qt::LeftButton);
     QCOMPARE(window->inspectScene()->csg().expression, parsed("0 - 1"));
@@ -147,9 +143,9 @@ void TestInspectCsg::addObjectGrowsTheSceneForCsg()
     const QString first = m_dir.filePath(QStringLiteral("first.obj"));
     const QString second = m_dir.filePath(QStringLiteral("second.obj"));
     const QString third = m_dir.filePath(QStringLiteral("third.obj"));
-    writeInspectObj(makeIcosphere(glm::dvec3(0.0), 1.0, 3), first);
-    writeInspectObj(makeIcosphere(glm::dvec3(0.7, 0.2, 0.3), 0.6, 3), second);
-    writeInspectObj(makeIcosphere(glm::dvec3(-0.6, -0.1, 0.2), 0.5, 3), third);
+    QVERIFY(writePlainObj(makeIcosphere(glm::dvec3(0.0), 1.0, 3), first));
+    QVERIFY(writePlainObj(makeIcosphere(glm::dvec3(0.7, 0.2, 0.3), 0.6, 3), second));
+    QVERIFY(writePlainObj(makeIcosphere(glm::dvec3(-0.6, -0.1, 0.2), 0.5, 3), third));
     auto window = showInspectWindow(m_dir.filePath(QStringLiteral("added.ini")), first);
     QVERIFY(!window->scenePanel()->transformForm()->isEnabled()); // the single mesh is designed
     const Camera before = window->viewport()->camera();

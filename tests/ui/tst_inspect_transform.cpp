@@ -16,7 +16,6 @@
 
 #include <QDoubleSpinBox>
 #include <QLineEdit>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QUndoStack>
 
@@ -74,10 +73,7 @@ private:
 
 void TestInspectTransform::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    std::unique_ptr<render::OffscreenGlContext> probe;
-    TRIMLAB_INIT_GL_CONTEXT(probe);
-    probe.reset();
+    TRIMLAB_INIT_WIDGET_TEST();
     QVERIFY(m_dir.isValid());
 }
 
@@ -91,7 +87,7 @@ void TestInspectTransform::typedTransformsRerenderAndUndo()
     // The ball (object 1) 0.6 along x.
     panel->setCurrentObject(1);
     QVERIFY(panel->transformForm()->isEnabled());
-    typeValue(namedChild<QDoubleSpinBox>(window.get(), "translateX"), QStringLiteral("0.6"));
+    typeValue(child<QDoubleSpinBox>(window.get(), "translateX"), QStringLiteral("0.6"));
     QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return translationOf(f, 1).x == 0.6; }));
     QCOMPARE(window->scene()->scene.objects[1].modelMatrix[3][0], 0.6);
     QCOMPARE(window->scene()->scene.objects[0].modelMatrix, glm::dmat4(1.0)); // the others stay
@@ -103,7 +99,7 @@ void TestInspectTransform::typedTransformsRerenderAndUndo()
     // The ring (object 2) rotated 40° about z by typing, then two arrow steps of 5°
     // (consecutive edits of one component: one undo step), under a CSG difference.
     panel->setCurrentObject(2);
-    auto* rotateZ = namedChild<QDoubleSpinBox>(window.get(), "rotateZ");
+    auto* rotateZ = child<QDoubleSpinBox>(window.get(), "rotateZ");
     typeValue(rotateZ, QStringLiteral("40"));
     QTest::keyClick(rotateZ, Qt::Key_Up);
     QTest::keyClick(rotateZ, Qt::Key_Up);

@@ -140,9 +140,9 @@ void TestInspectXray::xrayThroughTheWidgetsMatchesTheReference()
     const TrimImage opaqueIds = window->viewport()->readTrimImage();
 
     // Off -> Opaque trim + ghosts, with the keyboard; ghost opacity typed.
-    auto* mode = namedChild<QComboBox>(window.get(), "xrayModeComboBox");
+    auto* mode = child<QComboBox>(window.get(), "xrayModeComboBox");
     QTest::keyClick(revealed(mode), Qt::Key_Down);
-    typeValue(namedChild<QDoubleSpinBox>(window.get(), "xrayGhostAlphaSpin"), 0.5);
+    typeValue(child<QDoubleSpinBox>(window.get(), "xrayGhostAlphaSpin"), 0.5);
     QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) {
         return f.settings.transparency.enabled && f.settings.transparency.display == TrimDisplay::Opaque &&
                f.settings.transparency.ghostAlpha == 0.5;
@@ -158,8 +158,8 @@ void TestInspectXray::xrayThroughTheWidgetsMatchesTheReference()
 
     // -> Translucent with density and Fresnel.
     QTest::keyClick(revealed(mode), Qt::Key_Down);
-    typeValue(namedChild<QDoubleSpinBox>(window.get(), "xrayDensitySpin"), 0.75);
-    typeValue(namedChild<QDoubleSpinBox>(window.get(), "xrayFresnelSpin"), 2.0);
+    typeValue(child<QDoubleSpinBox>(window.get(), "xrayDensitySpin"), 0.75);
+    typeValue(child<QDoubleSpinBox>(window.get(), "xrayFresnelSpin"), 2.0);
     QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) {
         return f.settings.transparency.display == TrimDisplay::Translucent && f.settings.transparency.density == 0.75 &&
                f.settings.transparency.fresnelExponent == 2.0;

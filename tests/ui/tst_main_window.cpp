@@ -5,6 +5,10 @@
 #include "gl_test_context.h"
 #include "image_artifacts.h"
 #include "message_box_closer.h"
+#include "named_child.h"
+#include "shown_main_window.h"
+#include "widget_test_main.h"
+#include "plain_obj.h"
 #include "test_paths.h"
 #include "trim_comparison.h"
 
@@ -39,25 +43,13 @@
 
 using namespace trimlab;
 using namespace trimlab::ui;
+using trimlab::test::child;
 using trimlab::test::MessageBoxCloser;
 
 namespace {
 
 constexpr QSize kViewportSize(256, 192);
 constexpr int kWaitMs = 20000;
-
-/// Writes `mesh` as a Wavefront OBJ (positions with 9 significant digits: floats round-trip).
-void writeObj(const TriangleMesh& mesh, const QString& path)
-{
-    std::ofstream out(path.toStdString());
-    char line[128];
-    for (const glm::vec3& p : mesh.positions) {
-        std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", double(p.x), double(p.y), double(p.z));
-        out << line;
-    }
-    for (const glm::uvec3& t : mesh.triangles)
-        out << "f " << t.x + 1 << ' ' << t.y + 1 << ' ' << t.z + 1 << '\n';
-}
 
 void writeText(const QString& path, const char* text)
 {
@@ -68,15 +60,6 @@ void writeText(const QString& path, const char* text)
 const char* kOpenTetrahedron = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 4\nf 1 4 2\nf 2 4 3\n";
 /// Line 3 references vertex 7 of 2.
 const char* kBrokenObj = "v 0 0 0\nv 1 0 0\nf 1 2 7\n";
-
-template <class T>
-T* findChildNamed(QObject* parent, const char* name)
-{
-    T* child = parent->findChild<T*>(QString::fromLatin1(name));
-    if (!child)
-        qWarning("no child named %s", name);
-    return child;
-}
 
 } // namespace
 
@@ -111,18 +94,12 @@ void TestMainWindow::initTestCase()
     TRIMLAB_INIT_WIDGET_TEST();
     QVERIFY(m_dir.isValid());
     m_pushedSphereObj = path(QStringLiteral("pushed-sphere.obj"));
-    writeObj(makeDemoScene("pushed-sphere")->objects.front().mesh, m_pushedSphereObj);
+    QVERIFY(test::writePlainObj(makeDemoScene("pushed-sphere")->objects.front().mesh, m_pushedSphereObj));
 }
 
 std::unique_ptr<MainWindow> TestMainWindow::showWindow(const QString& settingsName, QSize viewportSize)
 {
-    auto window = std::make_unique<MainWindow>(path(settingsName + QStringLiteral(".ini")));
-    if (viewportSize.isValid())
-        window->viewport()->setFixedSize(viewportSize);
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get()))
-        qWarning("main window not exposed");
-    return window;
+    return test::showMainWindow(path(settingsName + QStringLiteral(".ini")), viewportSize);
 }
 
 bool TestMainWindow::waitForScene(MainWindow& window, const QString& source)
@@ -179,7 +156,7 @@ void TestMainWindow::ruleChangeRerendersAndMatchesReference()
     QCOMPARE(window->viewport()->lastFrame()->pixelSize, kViewportSize);
     const QImage before = window->viewport()->grabFramebuffer();
 
-    auto* rule = findChildNamed<QComboBox>(window.get(), "ruleComboBox");
+    auto* rule = child<QComboBox>(window.get(), "ruleComboBox");
     QVERIFY(rule);
     QTest::keyClick(rule, Qt::Key_Home); // alternating border → parity
     QCOMPARE(rule->currentData().toString(), QStringLiteral("parity"));
@@ -246,9 +223,9 @@ void TestMainWindow::openSurfaceDisablesTrimControls()
     QVERIFY(waitForScene(*window, open));
     QVERIFY(waitForFrame(*window));
     QVERIFY(!window->scene()->trimmable());
-    auto* trim = findChildNamed<QCheckBox>(window.get(), "trimCheckBox");
-    auto* rule = findChildNamed<QComboBox>(window.get(), "ruleComboBox");
-    auto* reason = findChildNamed<QLabel>(window.get(), "trimUnavailableLabel");
+    auto* trim = child<QCheckBox>(window.get(), "trimCheckBox");
+    auto* rule = child<QComboBox>(window.get(), "ruleComboBox");
+    auto* reason = child<QLabel>(window.get(), "trimUnavailableLabel");
     QVERIFY(trim && rule && reason);
     QVERIFY(!trim->isEnabled());
     QVERIFY(!rule->isEnabled());
@@ -276,18 +253,18 @@ void TestMainWindow::settingsRoundTrip()
     const QString settings = QStringLiteral("round-trip");
     {
         auto window = showWindow(settings);
-        QTest::keyClick(findChildNamed<QComboBox>(window.get(), "ruleComboBox"), Qt::Key_Up); // → positive index
-        auto* k = findChildNamed<QSpinBox>(window.get(), "kSpinBox");
+        QTest::keyClick(child<QComboBox>(window.get(), "ruleComboBox"), Qt::Key_Up); // → positive index
+        auto* k = child<QSpinBox>(window.get(), "kSpinBox");
         QTest::keyClick(k, Qt::Key_A, Qt::ControlModifier);
         QTest::keyClicks(k, QStringLiteral("24"));
         QTest::keyClick(k, Qt::Key_Return);
         QCOMPARE(k->value(), 24);
-        QTest::mouseClick(findChildNamed<QToolButton>(window.get(), "clipPreset+X"), Qt::LeftButton);
-        auto* offset = findChildNamed<QDoubleSpinBox>(window.get(), "clipOffsetSpin");
+        QTest::mouseClick(child<QToolButton>(window.get(), "clipPreset+X"), Qt::LeftButton);
+        auto* offset = child<QDoubleSpinBox>(window.get(), "clipOffsetSpin");
         QTest::keyClick(offset, Qt::Key_A, Qt::ControlModifier);
         QTest::keyClicks(offset, QStringLiteral("0.25"));
         QTest::keyClick(offset, Qt::Key_Return);
-        QTest::keyClick(findChildNamed<QCheckBox>(window.get(), "trimCheckBox"), Qt::Key_Space);
+        QTest::keyClick(child<QCheckBox>(window.get(), "trimCheckBox"), Qt::Key_Space);
         QVERIFY(!window->viewport()->trimSettings().trimEnabled);
         QCOMPARE(window->viewport()->k(), 24);
         window->close();
@@ -388,7 +365,7 @@ void TestMainWindow::slowLoadShowsProgressAndCancelDiscards()
         appendMesh(big, shifted);
     }
     const QString slow = path(QStringLiteral("slow.obj"));
-    writeObj(big, slow);
+    QVERIFY(test::writePlainObj(big, slow));
 
     QSignalSpy loaded(window.get(), &MainWindow::sceneLoaded);
     QSignalSpy canceled(window->sceneLoader(), &SceneLoader::canceled);
@@ -495,18 +472,5 @@ void TestMainWindow::aboutNamesTheOpenGLRenderer()
     QVERIFY(text.contains(QStringLiteral(TRIMLAB_VERSION_FOR_TEST)));
 }
 
-int main(int argc, char** argv)
-{
-    // Without any display, QApplication would abort on the xcb platform before the test can
-    // report why; the offscreen platform lets initTestCase skip (or fail under
-    // TRIMLAB_REQUIRE_GL=1) with the reason instead.
-    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
-        qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-        qputenv("QT_QPA_PLATFORM", "offscreen");
-    QApplication app(argc, argv);
-    app.setAttribute(Qt::AA_Use96Dpi, true);
-    TestMainWindow test;
-    QTEST_SET_MAIN_SOURCE_PATH
-    return QTest::qExec(&test, argc, argv);
-}
+TRIMLAB_WIDGET_TEST_MAIN(TestMainWindow)
 #include "tst_main_window.moc"

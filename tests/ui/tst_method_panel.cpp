@@ -5,6 +5,7 @@
 // viewport's own camera, size and settings.
 #include "demo_window.h"
 #include "gl_test_context.h"
+#include "named_child.h"
 #include "test_paths.h"
 
 #include "frame_stats_panel.h"
@@ -34,20 +35,12 @@
 
 using namespace trimlab;
 using namespace trimlab::ui;
+using trimlab::test::child;
 
 namespace {
 
 constexpr QSize kViewportSize(256, 192);
 constexpr int kWaitMs = test::kDemoWaitMs;
-
-template <class T>
-T* child(QObject* parent, const char* name)
-{
-    T* found = parent->findChild<T*>(QString::fromLatin1(name));
-    if (!found)
-        qWarning("no child named %s", name);
-    return found;
-}
 
 bool frameOverflowed(const ViewportFrame& frame)
 {

@@ -7,6 +7,9 @@
 #include "gl_test_context.h"
 #include "gltf_validation.h"
 #include "message_box_closer.h"
+#include "named_child.h"
+#include "shown_main_window.h"
+#include "plain_obj.h"
 #include "skeleton_shapes.h"
 
 #include "background_task.h"
@@ -49,6 +52,7 @@
 
 using namespace trimlab;
 using namespace trimlab::ui;
+using trimlab::test::child;
 using trimlab::test::MessageBoxCloser;
 
 namespace {
@@ -57,35 +61,12 @@ constexpr QSize kViewportSize(256, 192);
 constexpr int kWaitMs = 30000;
 constexpr double kStarCell = 0.07;
 
-template <class T>
-T* child(QObject* parent, const char* name)
-{
-    T* found = parent->findChild<T*>(QString::fromLatin1(name));
-    if (!found)
-        qWarning("no child named %s", name);
-    return found;
-}
-
 template <class SpinBox>
 void typeInto(SpinBox* box, double value)
 {
     QTest::keyClick(box, Qt::Key_A, Qt::ControlModifier);
     QTest::keyClicks(box, QString::number(value));
     QTest::keyClick(box, Qt::Key_Return);
-}
-
-bool writeObj(const TriangleMesh& mesh, const QString& path)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
-        return false;
-    QTextStream out(&file);
-    out.setRealNumberPrecision(9);
-    for (const glm::vec3& p : mesh.positions)
-        out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
-    for (const glm::uvec3& t : mesh.triangles)
-        out << "f " << t.x + 1 << ' ' << t.y + 1 << ' ' << t.z + 1 << '\n';
-    return out.status() == QTextStream::Ok;
 }
 
 /// The bones below `bone` (its descendants) and itself.
@@ -137,22 +118,17 @@ void TestSkeletonPanel::initTestCase()
     m_starVertices = star.vertexCount();
     qInfo("star: %zu vertices, %zu triangles", star.vertexCount(), star.triangleCount());
     m_star = m_dir.filePath(QStringLiteral("star.obj"));
-    QVERIFY(writeObj(star, m_star));
+    QVERIFY(test::writePlainObj(star, m_star));
     TriangleMesh open = test::axisCapsule(0.5, 1.0, 6, 10, 16);
     open.triangles.resize(open.triangles.size() - 3); // a hole at one cap
     m_open = m_dir.filePath(QStringLiteral("open-capsule.obj"));
-    QVERIFY(writeObj(open, m_open));
+    QVERIFY(test::writePlainObj(open, m_open));
     TRIMLAB_INIT_WIDGET_TEST();
 }
 
 std::unique_ptr<MainWindow> TestSkeletonPanel::showWindow(const QString& settingsName)
 {
-    auto window = std::make_unique<MainWindow>(m_dir.filePath(settingsName + QStringLiteral(".ini")));
-    window->viewport()->setFixedSize(kViewportSize);
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get()))
-        qWarning("main window not exposed");
-    return window;
+    return test::showMainWindow(m_dir.filePath(settingsName + QStringLiteral(".ini")), kViewportSize);
 }
 
 bool TestSkeletonPanel::openAndWait(MainWindow& window, const QString& path)

@@ -7,8 +7,12 @@
 // and the keyboard, cancel a running fit, and export the result as glTF. Settings go to
 // INI files in a temporary folder, never the user's.
 #include "gl_test_context.h"
+#include "held_background_task.h"
 #include "image_artifacts.h"
 #include "message_box_closer.h"
+#include "named_child.h"
+#include "shown_main_window.h"
+#include "posed_frame_check.h"
 #include "test_paths.h"
 #include "trim_comparison.h"
 
@@ -38,8 +42,6 @@
 #include <QListWidget>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QScopeGuard>
-#include <QSemaphore>
 #include <QSlider>
 #include <QSpinBox>
 #include <QStandardPaths>
@@ -49,12 +51,12 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 
 using namespace trimlab;
 using namespace trimlab::ui;
+using trimlab::test::child;
 using trimlab::test::MessageBoxCloser;
 
 namespace {
@@ -65,15 +67,6 @@ constexpr int kWaitMs = 30000;
 QString testAnimation(const char* name)
 {
     return QString::fromStdString(test::testDataPath(std::string("animations/") + name).string());
-}
-
-template <class T>
-T* child(QObject* parent, const char* name)
-{
-    T* found = parent->findChild<T*>(QString::fromLatin1(name));
-    if (!found)
-        qWarning("no child named %s", name);
-    return found;
 }
 
 /// Types `value` into a spin box as a user would and confirms with Return.
@@ -146,12 +139,7 @@ void TestSkinningPanel::initTestCase()
 
 std::unique_ptr<MainWindow> TestSkinningPanel::showWindow(const QString& settingsName)
 {
-    auto window = std::make_unique<MainWindow>(m_dir.filePath(settingsName + QStringLiteral(".ini")));
-    window->viewport()->setFixedSize(kViewportSize);
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get()))
-        qWarning("main window not exposed");
-    return window;
+    return test::showMainWindow(m_dir.filePath(settingsName + QStringLiteral(".ini")), kViewportSize);
 }
 
 bool TestSkinningPanel::openAndWait(MainWindow& window, const QString& source)
@@ -187,9 +175,7 @@ bool TestSkinningPanel::fitAndWait(SkinningPanel* panel)
 
 bool TestSkinningPanel::waitForNewFrame(MainWindow& window, const std::function<void()>& action)
 {
-    QSignalSpy frames(window.viewport(), &ViewportWidget::frameRendered);
-    action();
-    return QTest::qWaitFor([&] { return !frames.isEmpty(); }, kWaitMs);
+    return test::waitForFrameAfter(window, action, kWaitMs);
 }
 
 std::optional<QString> TestSkinningPanel::frameDisagreement(MainWindow& window, const std::vector<glm::vec3>& positions,
@@ -198,26 +184,7 @@ std::optional<QString> TestSkinningPanel::frameDisagreement(MainWindow& window, 
     // A frame already reported may have been painted while the change was being made.
     if (!waitForNewFrame(window, [&] { window.viewport()->update(); }))
         return name + QStringLiteral(": no frame rendered");
-    const ViewportFrame frame = *window.viewport()->lastFrame();
-    const TrimImage actual = window.viewport()->readTrimImage();
-    Scene posed = window.scene()->scene;
-    posed.objects.front().mesh.positions = positions;
-    const ReferenceRenderer reference(posed);
-    const int width = frame.pixelSize.width();
-    const int height = frame.pixelSize.height();
-    const ReferenceResult expected = reference.render(frame.camera, width, height, frame.settings);
-    const test::TrimComparison comparison = test::compareTrimImages(
-        actual, expected.trim, expected.diagnostics, {},
-        test::referenceTieCheck(reference, frame.camera, width, height, frame.settings));
-    qInfo("%s: %s", qPrintable(name), qPrintable(comparison.summary()));
-    if (comparison.coveredPixels < width * height / 40)
-        return QStringLiteral("%1: only %2 pixels covered").arg(name).arg(comparison.coveredPixels);
-    if (comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05)
-        return std::nullopt;
-    const QString files = test::writeComparisonArtifacts(name, test::trimImageToPicture(actual),
-                                                         test::trimImageToPicture(expected.trim),
-                                                         comparison.disagreementMask);
-    return name + ": " + comparison.summary() + "; " + files;
+    return test::posedFrameDisagreement(window, positions, name);
 }
 
 // Fit with the bones from the segmentation: one bone per segment, one chart point per
@@ -431,33 +398,18 @@ void TestSkinningPanel::cancelDuringFitLeavesNoResult()
     auto window = segmentedBox(QStringLiteral("cancel"));
     QVERIFY(window);
     SkinningPanel* panel = window->skinningPanel();
-    QSemaphore held;
-    QSemaphore resume;
-    std::atomic<bool> first{true};
-    const QMetaObject::Connection hold = connect(
-        panel->fitTask(), &BackgroundTask::progressed, panel->fitTask(),
-        [&](const QString&, qint64, qint64) {
-            if (!first.exchange(false))
-                return;
-            held.release();
-            resume.acquire(); // the worker waits here until the test lets it go
-        },
-        Qt::DirectConnection);
-    const auto release = qScopeGuard([&] {
-        resume.release();
-        disconnect(hold);
-    });
+    test::HeldBackgroundTask held(panel->fitTask());
     auto* fit = child<QPushButton>(panel, "fitSkinningButton");
     auto* cancel = child<QPushButton>(panel, "cancelSkinningButton");
     QTest::mouseClick(fit, Qt::LeftButton);
-    QVERIFY(held.tryAcquire(1, kWaitMs));
+    QVERIFY(held.waitUntilHeld(kWaitMs));
     QVERIFY(panel->isRunning());
     QVERIFY(!fit->isEnabled());
     QVERIFY(child<QProgressBar>(panel, "skinningProgressBar")->isVisible());
     QVERIFY(cancel->isEnabled());
     QTest::mouseClick(cancel, Qt::LeftButton);
     QVERIFY(!cancel->isEnabled()); // canceling
-    resume.release();
+    held.release();
     QVERIFY(QTest::qWaitFor([&] { return !panel->isRunning(); }, kWaitMs));
     QVERIFY(!panel->session());
     QVERIFY(fit->isEnabled());
@@ -466,7 +418,7 @@ void TestSkinningPanel::cancelDuringFitLeavesNoResult()
     QVERIFY(panel->errorChart()->points().isEmpty());
     QVERIFY(!child<QComboBox>(panel, "skinningViewComboBox")->isEnabled());
 
-    disconnect(hold);
+    held.stop();
     QVERIFY(fitAndWait(panel));
     QCOMPARE(panel->errorChart()->points().size(), qsizetype(window->animation()->animation->poseCount()));
 }
