@@ -105,6 +105,7 @@ void ViewportWidget::setTool(ViewportTool* tool)
 void ViewportWidget::setDynamicChain(std::shared_ptr<const DynamicChain> chain)
 {
     m_chain = std::move(chain);
+    m_resetsStopped = false;
     m_level.reset();
     m_chainDirty = m_chain != nullptr;
     m_levelDirty = false;
@@ -423,21 +424,37 @@ void ViewportWidget::recoverFromContextLoss(const QString& reason)
     m_lastFrame.reset();
     m_trimCache = {};
     ++m_lossesInARow;
-    const bool dynamic = m_chain && m_settings.trimEnabled;
-    const bool methodLeft =
-        render::memoryFallbackAfter(effectiveMethod(), dynamic, render::needsInspectionMethod(m_settings)).has_value();
-    if (m_lossesInARow >= kResetsBeforeFallback && (methodLeft || !dynamic) && !m_cpuStillMode) {
-        m_lossesInARow = 0;
-        const render::MethodInfo& info = render::methodInfo(effectiveMethod());
-        (void)fallBackFrom(tr("%1 It happened again while rendering with %2, so TrimLab re-created the OpenGL "
-                              "context and no longer uses that method here.")
-                               .arg(reason, QString::fromUtf8(info.displayName.data(), qsizetype(info.displayName.size()))));
-    } else {
+    if (m_lossesInARow >= kResetsBeforeFallback && !m_cpuStillMode)
+        blameMethodForResets(reason);
+    else
         emit contextLost(tr("%1 TrimLab re-created the OpenGL context and uploaded the scene again; nothing of your "
                             "work was lost.")
                              .arg(reason));
-    }
     QMetaObject::invokeMethod(this, &ViewportWidget::recreateContext, Qt::QueuedConnection);
+}
+
+// Resets in a row: the method's own frames are the likely cause (a watchdog timeout), so
+// the next method of the memory fallback chain takes over. Under the dynamic rules with
+// none left, rendering stops until the user changes something, rather than resetting the
+// GPU again every frame.
+void ViewportWidget::blameMethodForResets(const QString& reason)
+{
+    m_lossesInARow = 0;
+    const bool dynamic = m_chain && m_settings.trimEnabled;
+    const bool methodLeft =
+        render::memoryFallbackAfter(effectiveMethod(), dynamic, render::needsInspectionMethod(m_settings)).has_value();
+    const render::MethodInfo& info = render::methodInfo(effectiveMethod());
+    const QString method = QString::fromUtf8(info.displayName.data(), qsizetype(info.displayName.size()));
+    if (methodLeft || !dynamic) {
+        (void)fallBackFrom(tr("%1 It happened again while rendering with %2, so TrimLab re-created the OpenGL "
+                              "context and no longer uses that method here.")
+                               .arg(reason, method));
+        return;
+    }
+    m_resetsStopped = true;
+    setError(tr("%1 It keeps happening under the dynamic rules with %2, the leanest method that runs them, so TrimLab "
+                "stopped rendering. Lower the view size, switch to the static rule or choose a method to try again.")
+                 .arg(reason, method));
 }
 
 // What Qt itself does when a window's graphics device is lost: QOpenGLWidget drops its
@@ -465,7 +482,7 @@ void ViewportWidget::paintGL()
         recoverFromContextLoss(QString::fromStdString(render::contextResetMessage(render::ContextReset::Unknown)));
         return;
     }
-    if (!m_renderer) {
+    if (!m_renderer || m_resetsStopped) {
         clearToBackground();
         paintMessage(m_error.isEmpty() ? tr("OpenGL is not available.") : m_error);
         return;
@@ -567,6 +584,7 @@ void ViewportWidget::resetFallback()
 {
     m_fallbackMethod.reset();
     m_cpuStillMode = false;
+    m_resetsStopped = false;
 }
 
 QImage ViewportWidget::cpuStillImage() const

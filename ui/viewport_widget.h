@@ -35,7 +35,9 @@
 /// uploads the scene, pose, colors and dynamic chain again and renders the same frame,
 /// and says so through contextLost(). A second reset before any frame succeeded blames
 /// the method (a frame that trips the driver's watchdog): the view moves on along the
-/// memory fallback chain as when memory runs out.
+/// memory fallback chain as when memory runs out; under the dynamic rules, where the
+/// chain ends at the S-buffer, it then stops rendering with a message until the method,
+/// its parameters, the dynamic chain, the scene or the size change.
 
 #include "cpu_still_render.h"
 #include "dynamic_trim_renderer.h"
@@ -258,6 +260,7 @@ private:
 
     void releaseGl();
     void recreateContext();
+    void blameMethodForResets(const QString& reason);
     void syncGpuScene();
     void applyPendingReset();
     void renderFrame();
@@ -307,6 +310,7 @@ private:
     std::optional<render::FragmentMethodKind> m_fallbackMethod; ///< used instead of m_method
     bool m_cpuStillMode = false;
     int m_lossesInARow = 0;        ///< GPU resets since the last successful frame
+    bool m_resetsStopped = false;  ///< resets in a row left no method: no frame until a change
     int m_contextsInitialized = 0; ///< initializeGL() calls
     CpuStillRender* m_cpuStill = nullptr;
     std::shared_ptr<const Scene> m_cpuScene; ///< m_scene with the pose applied, for the CPU still

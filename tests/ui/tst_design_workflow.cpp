@@ -301,7 +301,8 @@ void TestDesignWorkflow::brushRefusesEarlierFrames()
 
 // Two sets under the dynamic rules render through the DynamicTrimRenderer (both levels),
 // a drag replaces only the shown level, a GPU reset re-creates everything and shows the
-// same frame, and a peeling method explains why it cannot run them instead of crashing.
+// same frame, a peeling method explains why it cannot run them instead of crashing, and
+// resets in a row end in a message, not in a loop.
 void TestDesignWorkflow::dynamicRulesRenderInTheViewport()
 {
     MessageBoxCloser closer;
@@ -356,6 +357,33 @@ void TestDesignWorkflow::dynamicRulesRenderInTheViewport()
     QVERIFY(QTest::qWaitFor([&] { return !closer.seen().isEmpty(); }, kWaitMs));
     method->setCurrentIndex(buffer);
     QVERIFY(QTest::qWaitFor([&] { return viewport->errorMessage().isEmpty() && viewport->lastFrame(); }, kWaitMs));
+
+    // Resets in a row: the S-buffer takes over; when it resets in a row too, no leaner
+    // method runs the dynamic rules, so rendering stops with a message instead of
+    // resetting the GPU every frame, until a method is chosen again.
+    const render::FragmentMethodKind chosen = viewport->method();
+    const QString reset = QStringLiteral("The graphics driver reset the GPU (test).");
+    const int before = viewport->contextsInitialized();
+    viewport->recoverFromContextLoss(reset);
+    viewport->recoverFromContextLoss(reset);
+    QVERIFY(QTest::qWaitFor(
+        [&] {
+            return viewport->contextsInitialized() == before + 2 && viewport->lastFrame() &&
+                   viewport->lastFrame()->stats.method == render::FragmentMethodKind::SBuffer;
+        },
+        kWaitMs));
+    viewport->recoverFromContextLoss(reset);
+    viewport->recoverFromContextLoss(reset);
+    QVERIFY2(viewport->errorMessage().contains(QStringLiteral("stopped rendering")), qPrintable(viewport->errorMessage()));
+    QVERIFY(QTest::qWaitFor([&] { return viewport->contextsInitialized() == before + 4; }, kWaitMs));
+    QTest::qWait(500);
+    QCOMPARE(viewport->contextsInitialized(), before + 4); // no reset loop
+    QVERIFY(!viewport->lastFrame());
+    viewport->setMethod(chosen);
+    QVERIFY(QTest::qWaitFor(
+        [&] { return viewport->errorMessage().isEmpty() && viewport->lastFrame() && viewport->lastDynamicStats(); },
+        kWaitMs));
+    QCOMPARE(viewport->lastFrame()->stats.method, chosen);
     classification->setCurrentIndex(0); // back to the static rule for the next tests' settings
 }
 
