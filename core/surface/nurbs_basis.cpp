@@ -44,7 +44,7 @@ std::optional<KnotVectorProblem> findOrderProblem(std::span<const double> knots,
     return std::nullopt;
 }
 
-// First degree+1 and last degree+1 knots equal (clamped ends).
+// First degree+1 and last degree+1 knots equal (clamped ends), and no more than those.
 std::optional<KnotVectorProblem> findClampProblem(std::span<const double> knots, int degree)
 {
     const std::size_t p = std::size_t(degree);
@@ -60,6 +60,15 @@ std::optional<KnotVectorProblem> findClampProblem(std::span<const double> knots,
     }
     if (!(knots[last] > knots[0]))
         return problem(std::nullopt, "the parameter domain is empty (all knots equal); use increasing knots");
+    // More than degree+1 copies at an end: the outermost basis function vanishes
+    // everywhere, and at that end of the domain no basis function is left (the point
+    // would be 0/0).
+    if (knots[p + 1] == knots[0])
+        return problem(p + 1, "the first knot is repeated more than degree+1 = " + std::to_string(p + 1) +
+                                  " times; repeat it exactly degree+1 times");
+    if (knots[last - p - 1] == knots[last])
+        return problem(last - p - 1, "the last knot is repeated more than degree+1 = " + std::to_string(p + 1) +
+                                         " times; repeat it exactly degree+1 times");
     return std::nullopt;
 }
 

@@ -34,7 +34,8 @@ struct KnotVectorProblem {
 
 /// Checks a knot vector for `count` control points of `degree`: 1 <= degree <=
 /// kMaxNurbsDegree, count >= degree+1, size == count+degree+1, every knot finite, knots
-/// non-decreasing, clamped ends (first degree+1 knots equal, last degree+1 knots equal),
+/// non-decreasing, clamped ends (first degree+1 knots equal, last degree+1 knots equal, and
+/// no more copies of the end knots),
 /// no interior knot repeated more than `degree` times (the curve would break apart), and
 /// a domain of positive length. Returns nullopt when the vector is valid.
 [[nodiscard]] std::optional<KnotVectorProblem> findKnotVectorProblem(std::span<const double> knots, int degree,

@@ -19,6 +19,7 @@
 #include "scene/scene_source.h"
 #include "surface/cage_obj.h"
 #include "surface/nurbs_json.h"
+#include "surface/nurbs_surface.h"
 #include "timeline/file_bytes.h"
 #include "timeline/project_file.h"
 #include "timeline/stroke_script.h"
@@ -27,6 +28,8 @@
 #include "view/camera.h"
 
 #include <QtTest>
+
+#include <cmath>
 
 #include <algorithm>
 #include <filesystem>
@@ -46,6 +49,26 @@ namespace {
 std::string readAll(const std::filesystem::path& path)
 {
     return timeline::readFileBytes(path, std::size_t(1) << 26);
+}
+
+// Throws std::logic_error (an untyped failure: the regression fails) when the surface
+// evaluates to a non-finite point or normal on a 3×3 grid of its domain, ends included.
+void requireFiniteNurbsSamples(const NurbsSurface& surface)
+{
+    const ParameterRange ru = parameterRangeU(surface);
+    const ParameterRange rv = parameterRangeV(surface);
+    for (int i = 0; i <= 2; ++i) {
+        for (int j = 0; j <= 2; ++j) {
+            const double u = ru.begin + ru.length() * i / 2.0;
+            const double v = rv.begin + rv.length() * j / 2.0;
+            const glm::dvec3 p = evaluateNurbsPoint(surface, u, v);
+            const glm::dvec3 n = nurbsNormal(surface, u, v);
+            for (int c = 0; c < 3; ++c) {
+                if (!std::isfinite(p[c]) || !std::isfinite(n[c]))
+                    throw std::logic_error("the surface evaluates to a non-finite point or normal");
+            }
+        }
+    }
 }
 
 // The sequence fuzz input ("EXT\n" + poses joined by "~~~\n") written as pose files.
@@ -121,6 +144,13 @@ const std::map<std::string, std::function<void(const std::filesystem::path&)>>& 
         {"stroke_script", [](const auto& p) { (void)timeline::parseStrokeScript(readAll(p), p.string()); }},
         {"pfm", [](const auto& p) { (void)readPfm(p); }},
         {"skeleton_json", [](const auto& p) { (void)parseSkeletonJson(readAll(p), p.string()); }},
+        {"nurbs_json", [](const auto& p) {
+             // As fuzz_nurbs_json: a surface that loads evaluates to finite points and
+             // normals on a 3×3 parameter grid, ends included.
+             for (const NurbsSurface& surface : parseNurbsJson(readAll(p), p.string()))
+                 requireFiniteNurbsSamples(surface);
+         }},
+        {"cage_obj", [](const auto& p) { (void)loadCageObj(p); }},
         {"cli_values", [](const auto& p) {
              const std::string text = readAll(p);
              std::string error;
@@ -141,6 +171,8 @@ bool isTypedError(const std::exception& error, const std::string& target)
         return dynamic_cast<const std::runtime_error*>(&error) != nullptr;
     if (target == "skeleton_json")
         return dynamic_cast<const SkeletonFileError*>(&error) != nullptr;
+    if (target == "nurbs_json")
+        return dynamic_cast<const NurbsFileError*>(&error) != nullptr;
     if (target == "cli_values")
         return false;
     return dynamic_cast<const MeshLoadError*>(&error) != nullptr;

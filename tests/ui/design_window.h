@@ -55,7 +55,9 @@ inline bool openDesignAndWait(ui::MainWindow& window, const QString& source)
         },
         kWaitMs);
     window.activateWindow();
-    return opened && QTest::qWaitForWindowActive(&window);
+    if (opened && !QTest::qWaitForWindowActive(&window, kWaitMs))
+        qWarning("the main window is not active after opening %s; shortcuts will not reach it", qPrintable(source));
+    return opened;
 }
 
 /// Waits for the viewport's next frame; adds the frames seen to `seen`.
