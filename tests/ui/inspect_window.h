@@ -79,9 +79,6 @@ inline std::unique_ptr<ui::MainWindow> showInspectWindow(const QString& ini, con
     window->show();
     if (!QTest::qWaitForWindowExposed(window.get()))
         qWarning("main window not exposed");
-    window->activateWindow(); // Ctrl+Z goes to the active window only
-    if (!QTest::qWaitForWindowActive(window.get()))
-        qWarning("main window not active");
     const bool shown = QTest::qWaitFor(
         [&] {
             const auto& frame = window->viewport()->lastFrame();
@@ -91,6 +88,11 @@ inline std::unique_ptr<ui::MainWindow> showInspectWindow(const QString& ini, con
         kInspectWaitMs);
     if (!shown)
         qWarning("%s was not shown", qPrintable(source));
+    // Ctrl+Z goes to the active window only; activated after the load, whose progress
+    // dialog (shown when loading is slow) takes the activation.
+    window->activateWindow();
+    if (!QTest::qWaitForWindowActive(window.get(), kInspectWaitMs))
+        qWarning("main window not active");
     return window;
 }
 
