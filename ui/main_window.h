@@ -233,6 +233,7 @@ private:
     void showSurfaceInPanel();
     void createNurbsPrimitive(NurbsPrimitive primitive);
     void createSubdivisionFromCage(SubdivisionCage cage, const QString& label);
+    [[nodiscard]] QString askSurfaceFile(const QString& title, const QString& filter);
     void showCreateFromCageDialog();
     bool createSurfaceSession(const SurfaceDefinition& definition, const QString& name, bool askToSave);
     void rebuildSurface();

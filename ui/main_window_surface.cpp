@@ -166,26 +166,31 @@ void MainWindow::createSubdivisionFromCage(SubdivisionCage cage, const QString& 
                          label, true);
 }
 
+// The surface file chosen in an Open dialog starting in the last folder used for surface
+// files (remembered); "" when the user cancels.
+QString MainWindow::askSurfaceFile(const QString& title, const QString& filter)
+{
+    const QString path =
+        QFileDialog::getOpenFileName(this, title, m_settings->value(kCageDirectoryKey).toString(), filter);
+    if (!path.isEmpty())
+        m_settings->setValue(kCageDirectoryKey, QFileInfo(path).absolutePath());
+    return path;
+}
+
 void MainWindow::showCreateFromCageDialog()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Subdivision Surface from Cage"),
-                                                      m_settings->value(kCageDirectoryKey).toString(),
-                                                      tr("OBJ cages (*.obj *.obj.gz);;All files (*)"));
-    if (path.isEmpty())
-        return;
-    m_settings->setValue(kCageDirectoryKey, QFileInfo(path).absolutePath());
-    createSurfaceFromCageFile(path);
+    const QString path =
+        askSurfaceFile(tr("Subdivision Surface from Cage"), tr("OBJ cages (*.obj *.obj.gz);;All files (*)"));
+    if (!path.isEmpty())
+        createSurfaceFromCageFile(path);
 }
 
 void MainWindow::showCreateFromNurbsDialog()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Create NURBS Surface from File"),
-                                                      m_settings->value(kCageDirectoryKey).toString(),
-                                                      tr("NURBS files (*.nurbs.json *.nurbs *.json);;All files (*)"));
-    if (path.isEmpty())
-        return;
-    m_settings->setValue(kCageDirectoryKey, QFileInfo(path).absolutePath());
-    createSurfaceFromNurbsFile(path);
+    const QString path = askSurfaceFile(tr("Create NURBS Surface from File"),
+                                        tr("NURBS files (*.nurbs.json *.nurbs *.json);;All files (*)"));
+    if (!path.isEmpty())
+        createSurfaceFromNurbsFile(path);
 }
 
 // A file may hold several surfaces (trimlab render shows them all as objects); a design
