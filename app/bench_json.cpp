@@ -1,4 +1,4 @@
-#include "bench_json.h"
+#include "app/bench_json.h"
 
 #include <QFile>
 #include <QJsonArray>

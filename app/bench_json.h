@@ -18,7 +18,7 @@
 ///                  (null: n/a) } ] }
 /// Cells that did not render carry only the identity fields, status and error.
 
-#include "bench_results.h"
+#include "app/bench_results.h"
 
 #include <QByteArray>
 #include <QString>

@@ -1,10 +1,10 @@
-#include "bench_options.h"
+#include "app/bench_options.h"
 
-#include "cli_messages.h"
+#include "app/cli_messages.h"
 
-#include "bench_scenes.h"
-#include "render_choices.h"
-#include "render_options.h"
+#include "app/bench_scenes.h"
+#include "ui/render_panel/render_choices.h"
+#include "app/render_options.h"
 
 #include <QCommandLineParser>
 #include <QFileInfo>

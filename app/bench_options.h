@@ -3,7 +3,7 @@
 /// The options of `trimlab bench`, parsed before any scene is loaded or any OpenGL context
 /// exists, so that bad arguments fail fast with one line (exit code 2).
 
-#include "mfr/fragment_method.h"
+#include "render/mfr/fragment_method.h"
 
 #include <QSize>
 #include <QString>

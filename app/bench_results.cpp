@@ -1,4 +1,4 @@
-#include "bench_results.h"
+#include "app/bench_results.h"
 
 namespace trimlab::app {
 

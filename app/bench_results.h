@@ -4,9 +4,9 @@
 /// header (OpenGL, CPU, date, parameters) and the scenes it had to skip. Shared by the
 /// text table (bench_table.h) and the JSON file (bench_json.h).
 
-#include "frame_times.h"
-#include "mfr/fragment_method.h"
-#include "trim/trim_agreement.h"
+#include "render/frame_times.h"
+#include "render/mfr/fragment_method.h"
+#include "core/trim/trim_agreement.h"
 
 #include <QSize>
 #include <QString>

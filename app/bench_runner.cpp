@@ -1,10 +1,10 @@
-#include "bench_runner.h"
+#include "app/bench_runner.h"
 
-#include "bench_views.h"
-#include "cli_messages.h"
+#include "app/bench_views.h"
+#include "app/cli_messages.h"
 
-#include "gl/gl_error.h"
-#include "trim/reference_renderer.h"
+#include "render/gl/gl_error.h"
+#include "core/trim/reference_renderer.h"
 
 #include <QElapsedTimer>
 

@@ -7,11 +7,11 @@
 /// the render tests' criteria). A method that throws is recorded with its error and the
 /// run goes on.
 
-#include "bench_options.h"
-#include "bench_results.h"
-#include "bench_scenes.h"
+#include "app/bench_options.h"
+#include "app/bench_results.h"
+#include "app/bench_scenes.h"
 
-#include "trim_renderer.h"
+#include "render/trim_renderer.h"
 
 namespace trimlab::app {
 

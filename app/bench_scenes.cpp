@@ -1,6 +1,6 @@
-#include "bench_scenes.h"
+#include "app/bench_scenes.h"
 
-#include "mesh/mesh_validation.h"
+#include "core/mesh/mesh_validation.h"
 
 #include <algorithm>
 #include <array>

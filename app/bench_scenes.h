@@ -13,8 +13,8 @@
 /// file only skips its scene. Any other demo:NAME or mesh file is accepted too and drawn
 /// with the alternating border rule (untrimmed when the mesh is not a closed surface).
 
-#include "scene/scene_source.h"
-#include "trim/trim_settings.h"
+#include "core/catalog/scene_source.h"
+#include "core/trim/trim_settings.h"
 
 #include <filesystem>
 #include <optional>

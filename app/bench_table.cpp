@@ -1,4 +1,4 @@
-#include "bench_table.h"
+#include "app/bench_table.h"
 
 #include <array>
 

@@ -7,7 +7,7 @@
 /// reference and the time ratios against F2B and AB_LL of the same run ("n/a" when those
 /// did not run).
 
-#include "bench_results.h"
+#include "app/bench_results.h"
 
 #include <QStringList>
 

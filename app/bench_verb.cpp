@@ -1,14 +1,14 @@
-#include "bench_verb.h"
+#include "app/bench_verb.h"
 
-#include "bench_json.h"
-#include "bench_options.h"
-#include "bench_runner.h"
-#include "bench_table.h"
-#include "cli_messages.h"
-#include "display_available.h"
+#include "app/bench_json.h"
+#include "app/bench_options.h"
+#include "app/bench_runner.h"
+#include "app/bench_table.h"
+#include "app/cli_messages.h"
+#include "app/display_available.h"
 
-#include "gl/offscreen_gl_context.h"
-#include "trim_renderer.h"
+#include "render/gl/offscreen_gl_context.h"
+#include "render/trim_renderer.h"
 
 #include <QDateTime>
 #include <QGuiApplication>

@@ -1,4 +1,4 @@
-#include "bench_views.h"
+#include "app/bench_views.h"
 
 #include <glm/trigonometric.hpp>
 

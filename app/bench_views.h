@@ -4,8 +4,8 @@
 /// scene's vertical (y) axis, looking down at the centre, each framed like the GUI's
 /// fitCamera. Deterministic: the same scene, count and aspect give the same cameras.
 
-#include "mesh/triangle_mesh.h"
-#include "view/camera.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/view/camera.h"
 
 #include <vector>
 

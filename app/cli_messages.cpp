@@ -1,4 +1,4 @@
-#include "cli_messages.h"
+#include "app/cli_messages.h"
 
 #include <QCommandLineParser>
 #include <QRegularExpression>

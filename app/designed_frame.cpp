@@ -1,12 +1,12 @@
-#include "designed_frame.h"
+#include "app/designed_frame.h"
 
-#include "cli_messages.h"
+#include "app/cli_messages.h"
 
-#include "scene/scene_source.h"
-#include "surface/surface_scenes.h"
-#include "timeline/project_file.h"
-#include "timeline/stroke_replay.h"
-#include "timeline/stroke_script.h"
+#include "core/catalog/scene_source.h"
+#include "core/catalog/surface_scenes.h"
+#include "core/timeline/project_file.h"
+#include "core/timeline/stroke_replay.h"
+#include "core/timeline/stroke_script.h"
 
 #include <filesystem>
 #include <optional>

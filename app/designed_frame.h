@@ -3,9 +3,9 @@
 /// A frame of a design for `trimlab render`: a stroke script replayed on a mesh, or a
 /// .trimlab project, and which of its frames to show.
 
-#include "render_options.h"
+#include "app/render_options.h"
 
-#include "timeline/timeline.h"
+#include "core/timeline/timeline.h"
 
 #include <glm/mat4x4.hpp>
 

@@ -1,4 +1,4 @@
-#include "display_available.h"
+#include "app/display_available.h"
 
 #include <cstdlib>
 #include <initializer_list>

@@ -1,14 +1,13 @@
-#include "gui_launcher.h"
+#include "app/gui_launcher.h"
 
-#include "cli_messages.h"
-#include "display_available.h"
+#include "app/cli_messages.h"
+#include "app/display_available.h"
 
-#include "gl/offscreen_gl_context.h"
-#include "main_window.h"
+#include "render/gl/offscreen_gl_context.h"
+#include "ui/window/main_window.h"
 
 #include <QApplication>
 #include <QSurfaceFormat>
-
 
 namespace trimlab::app {
 
@@ -24,6 +23,7 @@ int runGui(int argc, char** argv)
     QApplication::setOrganizationName(QStringLiteral("TrimLab"));
     QApplication::setApplicationName(QStringLiteral("TrimLab"));
     QApplication::setApplicationVersion(QStringLiteral(TRIMLAB_VERSION));
+    QApplication::setDesktopFileName(QStringLiteral("trimlab")); // resources/trimlab.desktop
     ui::MainWindow window;
     window.show();
     if (argc > 1)

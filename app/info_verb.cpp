@@ -1,8 +1,8 @@
-#include "info_verb.h"
+#include "app/info_verb.h"
 
-#include "cli_messages.h"
+#include "app/cli_messages.h"
 
-#include "scene/scene_source.h"
+#include "core/catalog/scene_source.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -6,15 +6,18 @@
 //   trimlab segment ANIMATION --clusters N --h H -o labels.json
 //   trimlab skin ANIMATION --bones B --method lbs|dqs -o out.glb
 //   trimlab skeleton MESH [--nodes N] -o rig.glb --json skeleton.json
-#include "bench_verb.h"
-#include "cli_messages.h"
-#include "gui_launcher.h"
-#include "info_verb.h"
-#include "render_verb.h"
-#include "segment_verb.h"
-#include "skeleton_verb.h"
-#include "skin_verb.h"
+#include "app/bench_verb.h"
+#include "app/cli_messages.h"
+#include "app/gui_launcher.h"
+#include "app/info_verb.h"
+#include "app/render_verb.h"
+#include "app/segment_verb.h"
+#include "app/skeleton_verb.h"
+#include "app/skin_verb.h"
 
+#include "core/catalog/scene_source.h"
+
+#include <QString>
 #include <QStringList>
 
 #include <cstring>
@@ -44,8 +47,13 @@ void printUsage()
         "  trimlab skeleton MESH [--nodes N] [-o rig.glb] [--json skeleton.json]\n"
         "                                    extract a skeleton and skinning weights, export a rigged glTF\n"
         "                                    (see trimlab skeleton --help)\n"
-        "SOURCE is a mesh file (.obj .ply .stl .off .gltf .glb, optionally .gz) or a built-in demo:\n"
-        "  demo:pushed-sphere, demo:crossing-loop, demo:nested-spheres, demo:sphere");
+        "SOURCE is a mesh file (.obj .ply .stl .off .gltf .glb, optionally .gz), a NURBS file\n"
+        "(.nurbs.json), a .trimlab project (render) or a built-in demo:");
+    // The demos come from the scene registry, so a new demo is listed without editing this.
+    for (const trimlab::DemoEntry& demo : trimlab::builtInDemos())
+        trimlab::app::printLine(QStringLiteral("  %1  %2")
+                                    .arg(QString::fromStdString(demo.source).leftJustified(26))
+                                    .arg(QString::fromUtf8(demo.description.data(), qsizetype(demo.description.size()))));
 }
 
 struct BatchVerb {

@@ -1,4 +1,4 @@
-#include "option_values.h"
+#include "app/option_values.h"
 
 #include <QCommandLineParser>
 

@@ -1,15 +1,15 @@
-#include "render_options.h"
+#include "app/render_options.h"
 
-#include "cli_messages.h"
-#include "option_values.h"
+#include "app/cli_messages.h"
+#include "app/option_values.h"
 
-#include "mfr/fragment_method.h"
-#include "render_choices.h"
-#include "scene/scene_source.h"
-#include "surface/surface_scenes.h"
-#include "trim/clip_plane.h"
-#include "trim/clip_set.h"
-#include "trim/csg_expression.h"
+#include "render/mfr/fragment_method.h"
+#include "ui/render_panel/render_choices.h"
+#include "core/catalog/scene_source.h"
+#include "core/catalog/surface_scenes.h"
+#include "core/trim/clip_plane.h"
+#include "core/trim/clip_set.h"
+#include "core/trim/csg_expression.h"
 
 #include <QCommandLineParser>
 #include <QRegularExpression>

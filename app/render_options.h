@@ -3,9 +3,9 @@
 /// The options of `trimlab render`, parsed without touching the scene or OpenGL so that
 /// bad arguments fail fast with one line.
 
-#include "mfr/fragment_method.h"
-#include "trim/trim_settings.h"
-#include "view/camera.h"
+#include "render/mfr/fragment_method.h"
+#include "core/trim/trim_settings.h"
+#include "core/view/camera.h"
 
 #include <QString>
 #include <QStringList>

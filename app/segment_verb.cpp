@@ -1,11 +1,11 @@
-#include "segment_verb.h"
+#include "app/segment_verb.h"
 
-#include "cli_messages.h"
-#include "option_values.h"
+#include "app/cli_messages.h"
+#include "app/option_values.h"
 
-#include "animation/animation_loader.h"
-#include "animation/animation_segmenter.h"
-#include "animation/segmentation_record.h"
+#include "core/animation/animation_loader.h"
+#include "core/animation/animation_segmenter.h"
+#include "core/animation/segmentation_record.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

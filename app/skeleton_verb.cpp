@@ -1,17 +1,17 @@
-#include "skeleton_verb.h"
+#include "app/skeleton_verb.h"
 
-#include "cli_messages.h"
-#include "option_values.h"
-#include "terminal_progress.h"
+#include "app/cli_messages.h"
+#include "app/option_values.h"
+#include "app/terminal_progress.h"
 
-#include "mesh/loop_subdivision.h"
-#include "scene/scene_source.h"
-#include "scene/world_geometry.h"
-#include "skeleton/bone_heat_weights.h"
-#include "skeleton/rigged_gltf.h"
-#include "skeleton/skeleton_extraction.h"
-#include "skeleton/skeleton_input.h"
-#include "skeleton/skeleton_json.h"
+#include "core/mesh/loop_subdivision.h"
+#include "core/catalog/scene_source.h"
+#include "core/scene/world_geometry.h"
+#include "core/skeleton/bone_heat_weights.h"
+#include "core/skeleton/rigged_gltf.h"
+#include "core/skeleton/skeleton_extraction.h"
+#include "core/skeleton/skeleton_input.h"
+#include "core/skeleton/skeleton_json.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -1,14 +1,14 @@
-#include "skin_verb.h"
+#include "app/skin_verb.h"
 
-#include "cli_messages.h"
-#include "option_values.h"
-#include "terminal_progress.h"
+#include "app/cli_messages.h"
+#include "app/option_values.h"
+#include "app/terminal_progress.h"
 
-#include "animation/animation_loader.h"
-#include "animation/animation_segmenter.h"
-#include "animation/segment_count_search.h"
-#include "animation/skinning_fitter.h"
-#include "animation/skinning_gltf.h"
+#include "core/animation/animation_loader.h"
+#include "core/animation/animation_segmenter.h"
+#include "core/animation/segment_count_search.h"
+#include "core/skinning/skinning_fitter.h"
+#include "core/skinning/skinning_gltf.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -1,4 +1,4 @@
-#include "terminal_progress.h"
+#include "app/terminal_progress.h"
 
 #include <QElapsedTimer>
 

@@ -3,7 +3,7 @@
 /// What the long batch verbs (skin, skeleton) share about time: progress lines for a
 /// person watching a terminal, and the lap times their summaries print.
 
-#include "animation/task_control.h"
+#include "core/util/task_control.h"
 
 class QElapsedTimer;
 

@@ -1,4 +1,4 @@
-#include "trim_exports.h"
+#include "app/trim_exports.h"
 
 #include <QImageWriter>
 

@@ -7,9 +7,9 @@
 /// - ids: a 16-bit RGBA PNG, R = object id + 1 (0: no surface), G = primitive id & 0xFFFF,
 ///   B = primitive id >> 16, A = 65535.
 
-#include "io/pfm_image.h"
-#include "trim/trim_image.h"
-#include "view/camera.h"
+#include "core/io/pfm_image.h"
+#include "core/trim/trim_image.h"
+#include "core/view/camera.h"
 
 #include <QImage>
 #include <QString>

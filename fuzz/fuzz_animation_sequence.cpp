@@ -6,8 +6,8 @@
 // for bad data: MeshLoadError.
 #include "fuzz_support.h"
 
-#include "animation/sequence_loader.h"
-#include "mesh/mesh_load_error.h"
+#include "core/animation/sequence_loader.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include <vector>
 

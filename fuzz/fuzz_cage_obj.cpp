@@ -5,9 +5,9 @@
 // SubdivisionError from the surface (a topology OpenSubdiv or our checks refuse).
 #include "fuzz_support.h"
 
-#include "mesh/mesh_load_error.h"
-#include "surface/cage_obj.h"
-#include "surface/subdivision_surface.h"
+#include "core/mesh/mesh_load_error.h"
+#include "core/surface/cage_obj.h"
+#include "core/surface/subdivision_surface.h"
 
 #include <cmath>
 

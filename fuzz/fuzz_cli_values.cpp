@@ -3,10 +3,10 @@
 // text and must never throw.
 #include "fuzz_support.h"
 
-#include "trim/clip_plane.h"
-#include "trim/dynamic_rule.h"
-#include "trim/static_rule.h"
-#include "view/camera.h"
+#include "core/trim/clip_plane.h"
+#include "core/trim/dynamic_rule.h"
+#include "core/trim/static_rule.h"
+#include "core/view/camera.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

@@ -4,8 +4,8 @@
 // Expected outcome for bad data: MeshLoadError.
 #include "fuzz_support.h"
 
-#include "animation/gltf_animation.h"
-#include "mesh/mesh_load_error.h"
+#include "core/animation/gltf_animation.h"
+#include "core/mesh/mesh_load_error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

@@ -4,8 +4,8 @@
 // outcome for bad data: MeshLoadError.
 #include "fuzz_support.h"
 
-#include "mesh/gzip_input.h"
-#include "mesh/mesh_io.h"
+#include "core/mesh/gzip_input.h"
+#include "core/mesh/mesh_io.h"
 
 #include <array>
 

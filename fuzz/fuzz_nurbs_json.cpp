@@ -4,8 +4,8 @@
 // round-trip precision, so bit-equal), and each surface must evaluate to finite points.
 #include "fuzz_support.h"
 
-#include "surface/nurbs_json.h"
-#include "surface/nurbs_surface.h"
+#include "core/surface/nurbs_json.h"
+#include "core/surface/nurbs_surface.h"
 
 #include <cmath>
 

@@ -2,7 +2,7 @@
 // bad data: MeshLoadError.
 #include "fuzz_support.h"
 
-#include "mesh/mesh_io.h"
+#include "core/mesh/mesh_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

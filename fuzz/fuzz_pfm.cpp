@@ -3,7 +3,7 @@
 // std::runtime_error for bad files.
 #include "fuzz_support.h"
 
-#include "io/pfm_image.h"
+#include "core/io/pfm_image.h"
 
 #include <stdexcept>
 

@@ -3,7 +3,7 @@
 // back with projectJson and must parse again (round trip).
 #include "fuzz_support.h"
 
-#include "timeline/project_file.h"
+#include "core/timeline/project_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

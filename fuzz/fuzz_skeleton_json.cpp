@@ -3,7 +3,7 @@
 // back with skeletonJson and must parse again to the same rig.
 #include "fuzz_support.h"
 
-#include "skeleton/skeleton_json.h"
+#include "core/skeleton/skeleton_json.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

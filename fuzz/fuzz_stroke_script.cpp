@@ -3,7 +3,7 @@
 // strokeScriptJson and must parse again.
 #include "fuzz_support.h"
 
-#include "timeline/stroke_script.h"
+#include "core/timeline/stroke_script.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

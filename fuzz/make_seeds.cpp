@@ -2,11 +2,11 @@
 // only argument: small valid .trimlab projects (project/), PFM images (pfm/) and skeleton
 // files (skeleton_json/). Built in
 // the fuzz tree; scripts/fuzz runs it before fuzzing.
-#include "io/pfm_image.h"
-#include "skeleton/skeleton_json.h"
-#include "surface/nurbs_json.h"
-#include "surface/nurbs_primitives.h"
-#include "timeline/project_file.h"
+#include "core/io/pfm_image.h"
+#include "core/skeleton/skeleton_json.h"
+#include "core/surface/nurbs_json.h"
+#include "core/surface/nurbs_primitives.h"
+#include "core/timeline/project_file.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -1,8 +1,8 @@
-#include "dynamic_trim_renderer.h"
+#include "render/dynamic_trim_renderer.h"
 
-#include "gl/gl_error.h"
-#include "gpu_scene.h"
-#include "mfr/bindings.h"
+#include "render/gl/gl_error.h"
+#include "render/frame/gpu_scene.h"
+#include "render/gl/bindings.h"
 
 #include <QElapsedTimer>
 

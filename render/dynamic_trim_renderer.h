@@ -8,10 +8,10 @@
 /// frame. While the view and the earlier levels stay the same (a designer dragging the
 /// brush), a frame costs one pass over the reference and current geometry.
 
-#include "gl/gl_objects.h"
-#include "trim_renderer.h"
+#include "render/gl/gl_objects.h"
+#include "render/trim_renderer.h"
 
-#include "trim/dynamic_chain.h"
+#include "core/trim/dynamic_chain.h"
 
 #include <memory>
 #include <vector>

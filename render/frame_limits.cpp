@@ -1,6 +1,6 @@
-#include "frame_limits.h"
+#include "render/frame_limits.h"
 
-#include "gl/gl_error.h"
+#include "render/gl/gl_error.h"
 
 #include <string>
 

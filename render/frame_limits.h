@@ -8,8 +8,8 @@
 /// GpuMemoryError with what was asked, the limit, and what to change — before any
 /// allocation, so the previous frame's storage stays as it was.
 
-#include "gl/gl_capabilities.h"
-#include "mfr/fragment_method.h"
+#include "render/gl/gl_capabilities.h"
+#include "render/mfr/fragment_method.h"
 
 #include <cstddef>
 #include <optional>

@@ -1,4 +1,4 @@
-#include "frame_times.h"
+#include "render/frame_times.h"
 
 #include <algorithm>
 

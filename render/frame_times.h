@@ -5,7 +5,7 @@
 /// (GL_TIME_ELAPSED) when the driver gave a plausible one for every frame, else of the
 /// wall-clock time of TrimRenderer::render (which includes waiting for the GPU).
 
-#include "trim_renderer.h"
+#include "render/trim_renderer.h"
 
 #include <string_view>
 #include <vector>

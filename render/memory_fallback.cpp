@@ -1,4 +1,4 @@
-#include "memory_fallback.h"
+#include "render/memory_fallback.h"
 
 namespace trimlab::render {
 

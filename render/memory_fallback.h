@@ -15,7 +15,7 @@
 /// highlights: MethodInfo::inspection): peeling would refuse them, so the CPU still,
 /// which does everything, follows the S-buffer.
 
-#include "mfr/fragment_method.h"
+#include "render/mfr/fragment_method.h"
 
 #include <optional>
 

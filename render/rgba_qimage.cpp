@@ -1,4 +1,4 @@
-#include "rgba_qimage.h"
+#include "render/rgba_qimage.h"
 
 #include <algorithm>
 

@@ -3,7 +3,7 @@
 /// The CPU reference's color image (core/image/rgba_image.h) as a QImage, for PNG output
 /// and for showing it in the view when no GPU method can render a frame.
 
-#include "image/rgba_image.h"
+#include "core/image/rgba_image.h"
 
 #include <QImage>
 

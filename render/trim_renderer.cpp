@@ -1,16 +1,16 @@
-#include "trim_renderer.h"
+#include "render/trim_renderer.h"
 
-#include "frame_limits.h"
+#include "render/frame_limits.h"
 
-#include "gl/gl_error.h"
-#include "gl/shader_library.h"
-#include "gpu_scene.h"
-#include "mfr/method_factory.h"
-#include "mfr/trim_frame.h"
-#include "passes/object_windings.h"
-#include "render_target.h"
+#include "render/gl/gl_error.h"
+#include "render/gl/shader_library.h"
+#include "render/frame/gpu_scene.h"
+#include "render/mfr/method_factory.h"
+#include "render/mfr/trim_frame.h"
+#include "render/passes/object_windings.h"
+#include "render/frame/render_target.h"
 
-#include "trim/csg_expression.h"
+#include "core/trim/csg_expression.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLContext>

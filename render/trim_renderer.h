@@ -5,15 +5,15 @@
 /// GL object it uses; the caller owns the context and must keep it current across calls
 /// and at destruction.
 
-#include "frame_counters.h"
-#include "gl/context_reset.h"
-#include "gl/gl_capabilities.h"
-#include "mfr/fragment_method.h"
+#include "render/frame/frame_counters.h"
+#include "render/gl/context_reset.h"
+#include "render/gl/gl_capabilities.h"
+#include "render/mfr/fragment_method.h"
 
-#include "scene/scene.h"
-#include "trim/trim_image.h"
-#include "trim/trim_settings.h"
-#include "view/camera.h"
+#include "core/scene/scene.h"
+#include "core/trim/trim_image.h"
+#include "core/trim/trim_settings.h"
+#include "core/view/camera.h"
 
 #include <QImage>
 #include <QStringList>

@@ -8,7 +8,6 @@
 // is shown only when its trim fragment lies strictly in front of the nearest lost one
 // (then provably right); otherwise it is unresolved (counted, magenta).
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/fragment_pack.glsl"
 #include "common/static_rule.glsl"

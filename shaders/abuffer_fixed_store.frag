@@ -6,9 +6,8 @@
 // ~floatBits(depth) under imageAtomicMax (depths are positive, so a larger code is a
 // nearer depth and 0 means nothing lost). The resolve needs it to decide whether the
 // arbitrary k fragments it kept can still prove the trim point (abuffer_fixed_resolve.frag).
-// The same pass counts the exact winding index. No color; ends in discard (PLATFORM.md).
+// The same pass counts the exact winding index. No color; ends in discard (docs/llvmpipe-notes.md).
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/fragment_pack.glsl"
 #include "common/clip.glsl"

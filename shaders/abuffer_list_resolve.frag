@@ -9,7 +9,6 @@
 // node buffer grew) is never shown but reported unresolved: its list may miss fragments
 // at any depth. Lists are walked at most `count` nodes deep.
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/fragment_pack.glsl"
 #include "common/static_rule.glsl"

@@ -5,9 +5,8 @@
 // but the counter still counts it: the renderer reads the counter back, grows the buffer
 // to what the frame needs and renders the frame again (render/mfr/abuffer_linked_list.h).
 // The pass also counts the exact winding index and the pixel's fragments (the resolve
-// and readOccupancy use the count). No color; ends in discard (PLATFORM.md).
+// and readOccupancy use the count). No color; ends in discard (docs/llvmpipe-notes.md).
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/fragment_pack.glsl"
 #include "common/clip.glsl"

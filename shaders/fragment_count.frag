@@ -4,9 +4,8 @@
 // and every fragment behind the span start updates the exact winding index. The counter
 // is not bounded by k here: K+B-SB's referencing pass allocates min(f(p), k) and knows
 // from f(p) > k, exactly, which pixels overflow.
-// No color is written and the shader ends in discard (PLATFORM.md).
+// No color is written and the shader ends in discard (docs/llvmpipe-notes.md).
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/clip.glsl"
 #include "common/winding_count.glsl"

@@ -2,7 +2,6 @@
 // Clears the per-pixel head image of the linked-list A-buffer: 0 is the empty list
 // (heads and links hold node index + 1).
 
-#include "common/bindings.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 

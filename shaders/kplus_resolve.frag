@@ -5,7 +5,6 @@
 // point is among the k nearest; otherwise it is unresolved (counted, painted magenta).
 // With KPLUS_NODE_REGION it resolves K+B-SB, whose slots are a node-buffer region.
 
-#include "common/bindings.glsl"
 #define KPLUS_ACCESS readonly
 #include "common/kplus_storage.glsl"
 #include "common/frame_counters.glsl"

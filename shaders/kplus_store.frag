@@ -10,7 +10,7 @@
 // winding index and the fragments of the span.
 //
 // No color is written and the shader ends in discard: llvmpipe drops earlier fragments
-// of a tile that a later triangle fully covers when the shader looks opaque (PLATFORM.md).
+// of a tile that a later triangle fully covers when the shader looks opaque (docs/llvmpipe-notes.md).
 
 #if defined(KPLUS_INTERLOCK_ARB)
 #extension GL_ARB_fragment_shader_interlock : require
@@ -19,7 +19,6 @@ layout(pixel_interlock_ordered) in;
 #define CRITICAL_END endInvocationInterlockARB()
 #endif
 
-#include "common/bindings.glsl"
 #define KPLUS_ACCESS coherent
 #include "common/kplus_storage.glsl"
 #include "common/frame_counters.glsl"

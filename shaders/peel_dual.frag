@@ -10,9 +10,8 @@
 // fragments and their facing sum (which gives the index at the span's far end); it peels
 // nothing yet, it only finds the nearest and the farthest depth.
 //
-// No color is written and the shader ends in discard (PLATFORM.md, covered tiles).
+// No color is written and the shader ends in discard (docs/llvmpipe-notes.md, "Covered tiles").
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/fragment_pack.glsl"
 #include "common/clip.glsl"

@@ -19,7 +19,6 @@
 // the occlusion query over this pass decides by conditional rendering whether another
 // pass runs. No color is written (the capture state masks it).
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/fragment_pack.glsl"
 #include "common/static_rule.glsl"

@@ -7,9 +7,8 @@
 // The first pass also counts the exact winding index at the span start and the span's
 // fragments; it peels nothing yet, it only finds the nearest depth.
 //
-// No color is written and the shader ends in discard (PLATFORM.md, covered tiles).
+// No color is written and the shader ends in discard (docs/llvmpipe-notes.md, "Covered tiles").
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/fragment_pack.glsl"
 #include "common/clip.glsl"

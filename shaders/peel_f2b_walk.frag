@@ -7,7 +7,6 @@
 // (GL_ANY_SAMPLES_PASSED) decides by conditional rendering whether another pass runs.
 // No color is written (the capture state masks it).
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/fragment_pack.glsl"
 #include "common/static_rule.glsl"

@@ -3,7 +3,6 @@
 // its initial value and every trim walk to "not started". The per-pixel counter,
 // winding and overflow images have their own clear (pixel_state_clear.comp).
 
-#include "common/bindings.glsl"
 #include "common/peel_state.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;

@@ -6,7 +6,6 @@
 // UNRESOLVED_COLOR, never shown wrong. With CAPPING a pixel whose span starts inside the
 // solid at a clipping plane shows the cap (cap.glsl).
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/fragment_pack.glsl"
 #include "common/static_rule.glsl"

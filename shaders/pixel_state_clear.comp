@@ -3,7 +3,6 @@
 // index and overflow flags back to zero. Fragment slots need no clearing: only the
 // first `counter` of a pixel are ever read. Shared by every method that keeps such state.
 
-#include "common/bindings.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 

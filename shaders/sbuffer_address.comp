@@ -4,7 +4,6 @@
 // p.address = atomicAdd(C(H(p)), n), and keeps the address in the head image. n is the
 // pixel's fragment count f(p), bounded by u_regionLimit (k for K+B-SB).
 
-#include "common/bindings.glsl"
 #define SHARED_COUNTERS_ACCESS coherent
 #include "common/shared_counters.glsl"
 

@@ -8,7 +8,6 @@
 // guide the store pass (Algorithm 7.8, REFERENCING); pixels with f(p) > u_regionLimit
 // are flagged overflowed (K+B-SB keeps only their k nearest fragments).
 
-#include "common/bindings.glsl"
 #define SHARED_COUNTERS_ACCESS readonly
 #include "common/shared_counters.glsl"
 

@@ -5,7 +5,6 @@
 // inverse, from the end, Cpr(i) = C(i+1) + .. + C(S-1). The two halves run at once,
 // which is the factor of two the thesis gains; the total follows from both.
 
-#include "common/bindings.glsl"
 #define SHARED_COUNTERS_ACCESS coherent
 #include "common/shared_counters.glsl"
 

@@ -8,7 +8,6 @@
 // driver's loop limit (llvmpipe, resolve_budget.glsl: lists of thousands of fragments)
 // is the pixel reported unresolved (counted, magenta) instead of shown half sorted.
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/fragment_pack.glsl"
 #include "common/static_rule.glsl"

@@ -6,9 +6,8 @@
 // same vertex shader (scene.vert's gl_Position is invariant), so it never overflows; a
 // node beyond the buffer would still be counted as lost and its pixel flagged, never
 // written out of bounds.
-// No color is written and the shader ends in discard (PLATFORM.md).
+// No color is written and the shader ends in discard (docs/llvmpipe-notes.md).
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/fragment_pack.glsl"
 #include "common/clip.glsl"

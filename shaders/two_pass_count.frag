@@ -13,7 +13,6 @@
 // Also counts each pixel's span fragments, so the resolve can report how many the two
 // passes could not look at. No color is written and the shader ends in discard.
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/clip.glsl"
 #include "common/winding_count.glsl"

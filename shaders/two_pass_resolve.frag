@@ -7,7 +7,6 @@
 // other fragments, which the method never looked at, are counted as lost. With CAPPING a
 // pixel whose span starts inside the solid at a clipping plane shows the cap (cap.glsl).
 
-#include "common/bindings.glsl"
 #include "common/frame_counters.glsl"
 #include "common/fragment_pack.glsl"
 #include "common/static_rule.glsl"

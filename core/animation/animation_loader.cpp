@@ -1,8 +1,8 @@
-#include "animation/animation_loader.h"
+#include "core/animation/animation_loader.h"
 
-#include "animation/sequence_files.h"
-#include "animation/sequence_loader.h"
-#include "mesh/mesh_load_error.h"
+#include "core/animation/sequence_files.h"
+#include "core/animation/sequence_loader.h"
+#include "core/mesh/mesh_load_error.h"
 
 namespace trimlab {
 

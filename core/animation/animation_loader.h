@@ -3,9 +3,9 @@
 /// The one entry point for loading a mesh animation: a mesh sequence (folder or
 /// pattern) or a glTF file, with a chosen rest pose.
 
-#include "animation/gltf_animation.h"
-#include "animation/mesh_animation.h"
-#include "animation/task_control.h"
+#include "core/animation/gltf_animation.h"
+#include "core/animation/mesh_animation.h"
+#include "core/util/task_control.h"
 
 #include <cstddef>
 #include <string>

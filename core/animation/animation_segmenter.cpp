@@ -1,8 +1,8 @@
-#include "animation/animation_segmenter.h"
+#include "core/animation/animation_segmenter.h"
 
-#include "animation/over_segmentation.h"
-#include "animation/parallel_for.h"
-#include "animation/vertex_areas.h"
+#include "core/animation/over_segmentation.h"
+#include "core/util/parallel_for.h"
+#include "core/animation/vertex_areas.h"
 
 #include <algorithm>
 #include <chrono>

@@ -18,13 +18,13 @@
 ///   s.appendPose(p) / s.editPose(i, p) / s.repartition(settings.partition, control);
 ///   segmentationJson / segmentationCsv / writeSegmentationGltf  // export
 
-#include "animation/mesh_animation.h"
-#include "animation/p2p_cleaning.h"
-#include "animation/pose_features.h"
-#include "animation/pose_join.h"
-#include "animation/pose_partition.h"
-#include "animation/task_control.h"
-#include "animation/vertex_graph.h"
+#include "core/animation/mesh_animation.h"
+#include "core/animation/p2p_cleaning.h"
+#include "core/animation/pose_features.h"
+#include "core/animation/pose_join.h"
+#include "core/animation/pose_partition.h"
+#include "core/util/task_control.h"
+#include "core/animation/vertex_graph.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,4 +1,4 @@
-#include "animation/color_wheel.h"
+#include "core/animation/color_wheel.h"
 
 #include <array>
 #include <cmath>

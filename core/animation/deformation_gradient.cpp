@@ -1,4 +1,4 @@
-#include "animation/deformation_gradient.h"
+#include "core/animation/deformation_gradient.h"
 
 #include <Eigen/Dense>
 #include <Eigen/SVD>

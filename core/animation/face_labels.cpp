@@ -1,4 +1,4 @@
-#include "animation/face_labels.h"
+#include "core/animation/face_labels.h"
 
 namespace trimlab {
 

@@ -2,7 +2,7 @@
 /// \file
 /// Per-face labels from per-vertex labels, for displays and exports that colour faces.
 
-#include "animation/vertex_graph.h"
+#include "core/animation/vertex_graph.h"
 
 #include <glm/vec3.hpp>
 

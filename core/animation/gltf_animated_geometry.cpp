@@ -1,7 +1,7 @@
-#include "animation/gltf_animated_geometry.h"
+#include "core/animation/gltf_animated_geometry.h"
 
-#include "mesh/gltf_accessor.h"
-#include "mesh/mesh_load_error.h"
+#include "core/mesh/gltf_accessor.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include <tiny_gltf.h>
 

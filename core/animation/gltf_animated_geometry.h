@@ -5,7 +5,7 @@
 /// and linear blend skinning (glTF 2.0 §3.7.3 and §3.8). Internal to the glTF animation
 /// loader.
 
-#include "animation/gltf_node_transforms.h"
+#include "core/animation/gltf_node_transforms.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>

@@ -1,14 +1,14 @@
-#include "animation/gltf_animation.h"
+#include "core/animation/gltf_animation.h"
 
-#include "animation/gltf_animated_geometry.h"
-#include "animation/gltf_animation_clip.h"
-#include "animation/gltf_node_transforms.h"
-#include "animation/pose_welding.h"
-#include "mesh/gltf_document.h"
-#include "mesh/gzip_input.h"
-#include "mesh/mesh_io.h"
-#include "mesh/mesh_load_error.h"
-#include "mesh/reader_support.h"
+#include "core/animation/gltf_animated_geometry.h"
+#include "core/animation/gltf_animation_clip.h"
+#include "core/animation/gltf_node_transforms.h"
+#include "core/animation/pose_welding.h"
+#include "core/mesh/gltf_document.h"
+#include "core/mesh/gzip_input.h"
+#include "core/mesh/mesh_io.h"
+#include "core/mesh/mesh_load_error.h"
+#include "core/mesh/reader_support.h"
 
 #include <cmath>
 #include <cstdio>

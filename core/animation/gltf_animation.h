@@ -4,8 +4,8 @@
 /// mesh animation: the scene's triangle meshes sampled at the animation's keyframe times
 /// or at a fixed frame rate.
 
-#include "animation/mesh_animation.h"
-#include "animation/task_control.h"
+#include "core/animation/mesh_animation.h"
+#include "core/util/task_control.h"
 
 #include <filesystem>
 #include <string>

@@ -1,6 +1,6 @@
-#include "animation/gltf_animation_clip.h"
+#include "core/animation/gltf_animation_clip.h"
 
-#include "mesh/mesh_load_error.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include <tiny_gltf.h>
 

@@ -4,8 +4,8 @@
 /// node's translation, rotation, scale or morph weights. Internal to the glTF animation
 /// loader.
 
-#include "animation/gltf_keyframes.h"
-#include "animation/gltf_node_transforms.h"
+#include "core/animation/gltf_keyframes.h"
+#include "core/animation/gltf_node_transforms.h"
 
 #include <cstddef>
 #include <string>

@@ -1,7 +1,7 @@
-#include "animation/gltf_keyframes.h"
+#include "core/animation/gltf_keyframes.h"
 
-#include "mesh/gltf_accessor.h"
-#include "mesh/mesh_load_error.h"
+#include "core/mesh/gltf_accessor.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include <tiny_gltf.h>
 

@@ -1,6 +1,6 @@
-#include "animation/gltf_node_transforms.h"
+#include "core/animation/gltf_node_transforms.h"
 
-#include "mesh/mesh_load_error.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include <tiny_gltf.h>
 

@@ -1,4 +1,4 @@
-#include "animation/hierarchical_partition.h"
+#include "core/animation/hierarchical_partition.h"
 
 #include <Eigen/Dense>
 

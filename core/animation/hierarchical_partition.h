@@ -5,8 +5,8 @@
 /// time, the cluster whose feature varies most, until the requested number of clusters
 /// exists.
 
-#include "animation/seeded_region_growing.h"
-#include "animation/vertex_graph.h"
+#include "core/animation/seeded_region_growing.h"
+#include "core/animation/vertex_graph.h"
 
 #include <cstddef>
 #include <span>

@@ -1,4 +1,4 @@
-#include "animation/label_adjacency.h"
+#include "core/animation/label_adjacency.h"
 
 #include <algorithm>
 

@@ -4,7 +4,7 @@
 /// edge joins vertices carrying them — N(S) in thesis 3.1.2 and the cluster graph the
 /// colouring of 3.2.1 walks.
 
-#include "animation/vertex_graph.h"
+#include "core/animation/vertex_graph.h"
 
 #include <cstdint>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "animation/mesh_animation.h"
+#include "core/animation/mesh_animation.h"
 
 #include <stdexcept>
 

@@ -4,7 +4,7 @@
 /// of one mesh with constant connectivity): the shared triangles, one position array per
 /// pose, and which pose is the rest pose.
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <glm/vec3.hpp>
 

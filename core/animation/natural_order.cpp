@@ -1,4 +1,4 @@
-#include "animation/natural_order.h"
+#include "core/animation/natural_order.h"
 
 #include <cctype>
 

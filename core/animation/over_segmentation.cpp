@@ -1,4 +1,4 @@
-#include "animation/over_segmentation.h"
+#include "core/animation/over_segmentation.h"
 
 #include <stdexcept>
 

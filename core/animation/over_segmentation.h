@@ -4,7 +4,7 @@
 /// Algorithm 3.1): the maximal connected sets of vertices whose clustering animation
 /// vectors cav(v) = (m_1, …, m_k) — the cluster of v in every pose partition — are equal.
 
-#include "animation/vertex_graph.h"
+#include "core/animation/vertex_graph.h"
 
 #include <span>
 #include <vector>

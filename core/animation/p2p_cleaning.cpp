@@ -1,6 +1,6 @@
-#include "animation/p2p_cleaning.h"
+#include "core/animation/p2p_cleaning.h"
 
-#include "animation/vertex_areas.h"
+#include "core/animation/vertex_areas.h"
 
 #include <algorithm>
 #include <numeric>

@@ -7,7 +7,7 @@
 /// S_A) and a(S_A) ≤ h·a(segment(S_A, i−1))) — a sliver made by slightly different
 /// cluster borders rather than a part with its own motion.
 
-#include "animation/pose_join.h"
+#include "core/animation/pose_join.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "animation/pose_features.h"
+#include "core/animation/pose_features.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -5,8 +5,8 @@
 /// angle θ_v of the deformation gradients, or the vertex velocity or acceleration
 /// (thesis 3.2.5).
 
-#include "animation/deformation_gradient.h"
-#include "animation/mesh_animation.h"
+#include "core/animation/deformation_gradient.h"
+#include "core/animation/mesh_animation.h"
 
 #include <cstddef>
 #include <string_view>

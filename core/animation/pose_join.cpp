@@ -1,6 +1,6 @@
-#include "animation/pose_join.h"
+#include "core/animation/pose_join.h"
 
-#include "animation/over_segmentation.h"
+#include "core/animation/over_segmentation.h"
 
 #include <algorithm>
 #include <stdexcept>

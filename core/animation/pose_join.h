@@ -5,7 +5,7 @@
 /// prefix, the over-segmentation OS(p_1 … p_i) — the segments segment(v, i) of
 /// Definition 3.3 — which p2p-cleaning reads.
 
-#include "animation/vertex_graph.h"
+#include "core/animation/vertex_graph.h"
 
 #include <cstddef>
 #include <memory>

@@ -1,7 +1,7 @@
-#include "animation/pose_partition.h"
+#include "core/animation/pose_partition.h"
 
-#include "animation/hierarchical_partition.h"
-#include "animation/region_growing_partition.h"
+#include "core/animation/hierarchical_partition.h"
+#include "core/animation/region_growing_partition.h"
 
 #include <algorithm>
 

@@ -4,8 +4,8 @@
 /// precomputed in parallel using any of the numerous available features and clustering
 /// methods"): the clusters C_i of pose p_i.
 
-#include "animation/pose_features.h"
-#include "animation/vertex_graph.h"
+#include "core/animation/pose_features.h"
+#include "core/animation/vertex_graph.h"
 
 #include <cstddef>
 #include <optional>

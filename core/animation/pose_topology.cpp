@@ -1,6 +1,6 @@
-#include "animation/pose_topology.h"
+#include "core/animation/pose_topology.h"
 
-#include "mesh/mesh_load_error.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include <algorithm>
 #include <cstdint>

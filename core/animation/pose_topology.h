@@ -2,7 +2,7 @@
 /// \file
 /// Checking that a loaded pose has the connectivity of the first pose of its sequence.
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "animation/pose_welding.h"
+#include "core/animation/pose_welding.h"
 
 #include <bit>
 #include <cstdint>

@@ -3,7 +3,7 @@
 /// Joining the vertices that glTF exporters split at normal and UV seams, consistently
 /// over all poses of an animation.
 
-#include "animation/mesh_animation.h"
+#include "core/animation/mesh_animation.h"
 
 namespace trimlab {
 

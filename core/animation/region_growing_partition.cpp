@@ -1,4 +1,4 @@
-#include "animation/region_growing_partition.h"
+#include "core/animation/region_growing_partition.h"
 
 #include <algorithm>
 

@@ -4,8 +4,8 @@
 /// real-time segmentation): seeds spread uniformly over the surface, regions grown by
 /// feature similarity, seeds moved to their region's mean feature and regrown.
 
-#include "animation/seeded_region_growing.h"
-#include "animation/vertex_graph.h"
+#include "core/animation/seeded_region_growing.h"
+#include "core/animation/vertex_graph.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "animation/seeded_region_growing.h"
+#include "core/animation/seeded_region_growing.h"
 
 #include <cmath>
 #include <limits>

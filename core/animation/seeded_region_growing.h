@@ -5,7 +5,7 @@
 /// time taking the unassigned boundary vertex whose feature is closest to the centre of
 /// the region it borders. Regions are connected by construction.
 
-#include "animation/vertex_graph.h"
+#include "core/animation/vertex_graph.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,7 +1,7 @@
-#include "animation/segment_coloring.h"
+#include "core/animation/segment_coloring.h"
 
-#include "animation/label_adjacency.h"
-#include "animation/vertex_areas.h"
+#include "core/animation/label_adjacency.h"
+#include "core/animation/vertex_areas.h"
 
 #include <algorithm>
 #include <cmath>

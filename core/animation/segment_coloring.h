@@ -5,8 +5,8 @@
 /// and every later segmentation inherits colours from the one before by overlap area.
 /// The same propagation recolours a segmentation after h changes.
 
-#include "animation/color_wheel.h"
-#include "animation/vertex_graph.h"
+#include "core/animation/color_wheel.h"
+#include "core/animation/vertex_graph.h"
 
 #include <glm/vec3.hpp>
 

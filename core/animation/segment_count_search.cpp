@@ -1,7 +1,7 @@
-#include "animation/segment_count_search.h"
+#include "core/animation/segment_count_search.h"
 
-#include "animation/label_adjacency.h"
-#include "animation/vertex_areas.h"
+#include "core/animation/label_adjacency.h"
+#include "core/animation/vertex_areas.h"
 
 #include <algorithm>
 #include <numeric>

@@ -6,9 +6,9 @@
 /// neither gives a segment count directly; this searches them, then closes any remaining
 /// gap by merging the smallest segments.
 
-#include "animation/animation_segmenter.h"
-#include "animation/task_control.h"
-#include "animation/vertex_graph.h"
+#include "core/animation/animation_segmenter.h"
+#include "core/util/task_control.h"
+#include "core/animation/vertex_graph.h"
 
 #include <cstddef>
 #include <span>

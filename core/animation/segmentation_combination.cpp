@@ -1,7 +1,7 @@
-#include "animation/segmentation_combination.h"
+#include "core/animation/segmentation_combination.h"
 
-#include "animation/p2p_cleaning.h"
-#include "animation/pose_join.h"
+#include "core/animation/p2p_cleaning.h"
+#include "core/animation/pose_join.h"
 
 #include <stdexcept>
 

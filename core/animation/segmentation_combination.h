@@ -4,9 +4,9 @@
 /// different features, or of different animations of the same mesh (through a vertex
 /// bijection), are joined like pose partitions and cleaned with p2p-cleaning.
 
-#include "animation/pose_features.h"
-#include "animation/pose_partition.h"
-#include "animation/vertex_graph.h"
+#include "core/animation/pose_features.h"
+#include "core/animation/pose_partition.h"
+#include "core/animation/vertex_graph.h"
 
 #include <memory>
 #include <span>

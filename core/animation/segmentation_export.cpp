@@ -1,4 +1,4 @@
-#include "animation/segmentation_export.h"
+#include "core/animation/segmentation_export.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -4,10 +4,10 @@
 /// document described in docs/segmentation-format.md (settings, counts, per-segment
 /// colours, per-vertex labels, per-stage times).
 
-#include "animation/color_wheel.h"
-#include "animation/pose_features.h"
-#include "animation/pose_partition.h"
-#include "animation/vertex_graph.h"
+#include "core/animation/color_wheel.h"
+#include "core/animation/pose_features.h"
+#include "core/animation/pose_partition.h"
+#include "core/animation/vertex_graph.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,6 +1,6 @@
-#include "animation/segmentation_gltf.h"
+#include "core/animation/segmentation_gltf.h"
 
-#include "io/gltf_builder.h"
+#include "core/io/gltf_builder.h"
 
 #include <tiny_gltf.h>
 
@@ -19,18 +19,7 @@ namespace {
 
 int addPositions(tinygltf::Model& model, const TriangleMesh& mesh)
 {
-    const int view = addGltfBufferView(model, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3),
-                             TINYGLTF_TARGET_ARRAY_BUFFER);
-    const int accessor = addGltfAccessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, mesh.positions.size());
-    glm::vec3 low = mesh.positions.front();
-    glm::vec3 high = low;
-    for (const glm::vec3& p : mesh.positions) {
-        low = glm::min(low, p);
-        high = glm::max(high, p);
-    }
-    model.accessors[std::size_t(accessor)].minValues = {low.x, low.y, low.z};
-    model.accessors[std::size_t(accessor)].maxValues = {high.x, high.y, high.z};
-    return accessor;
+    return addGltfVec3Accessor(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER, true);
 }
 
 tinygltf::Model buildModel(const TriangleMesh& mesh, const VertexLabeling& segmentation, std::span<const WheelColor> colors)

@@ -3,9 +3,9 @@
 /// Writing a segmentation as glTF 2.0 so that other tools can show and read it: the rest
 /// pose as a triangle mesh with the segment label and colour of every vertex.
 
-#include "animation/color_wheel.h"
-#include "animation/vertex_graph.h"
-#include "mesh/triangle_mesh.h"
+#include "core/animation/color_wheel.h"
+#include "core/animation/vertex_graph.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <filesystem>
 #include <span>

@@ -1,8 +1,8 @@
-#include "animation/segmentation_record.h"
+#include "core/animation/segmentation_record.h"
 
-#include "animation/segment_coloring.h"
-#include "animation/segmentation_gltf.h"
-#include "animation/vertex_areas.h"
+#include "core/animation/segment_coloring.h"
+#include "core/animation/segmentation_gltf.h"
+#include "core/animation/vertex_areas.h"
 
 #include <algorithm>
 #include <cctype>

@@ -4,9 +4,9 @@
 /// a SegmentationRecord (segmentation_export.h) and write it in the format the output
 /// file's extension names (docs/segmentation-format.md).
 
-#include "animation/animation_segmenter.h"
-#include "animation/color_wheel.h"
-#include "animation/segmentation_export.h"
+#include "core/animation/animation_segmenter.h"
+#include "core/animation/color_wheel.h"
+#include "core/animation/segmentation_export.h"
 
 #include <filesystem>
 #include <optional>

@@ -1,7 +1,7 @@
-#include "animation/sequence_files.h"
+#include "core/animation/sequence_files.h"
 
-#include "animation/natural_order.h"
-#include "mesh/mesh_load_error.h"
+#include "core/animation/natural_order.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,8 +1,8 @@
-#include "animation/sequence_loader.h"
+#include "core/animation/sequence_loader.h"
 
-#include "animation/parallel_for.h"
-#include "animation/pose_topology.h"
-#include "mesh/mesh_io.h"
+#include "core/util/parallel_for.h"
+#include "core/animation/pose_topology.h"
+#include "core/mesh/mesh_io.h"
 
 #include <exception>
 #include <stdexcept>

@@ -2,8 +2,8 @@
 /// \file
 /// Loading a mesh sequence (one mesh file per pose) into a MeshAnimation.
 
-#include "animation/mesh_animation.h"
-#include "animation/task_control.h"
+#include "core/animation/mesh_animation.h"
+#include "core/util/task_control.h"
 
 #include <filesystem>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "animation/vertex_areas.h"
+#include "core/animation/vertex_areas.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,4 +1,4 @@
-#include "animation/vertex_graph.h"
+#include "core/animation/vertex_graph.h"
 
 #include <algorithm>
 #include <unordered_map>

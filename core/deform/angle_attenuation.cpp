@@ -1,4 +1,4 @@
-#include "deform/angle_attenuation.h"
+#include "core/deform/angle_attenuation.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -1,4 +1,4 @@
-#include "deform/brush_settings_check.h"
+#include "core/deform/brush_settings_check.h"
 
 #include <cmath>
 #include <stdexcept>

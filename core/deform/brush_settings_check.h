@@ -3,7 +3,7 @@
 /// Which BrushSettings a stroke accepts, as a message (for script and project loaders
 /// that report errors) or as an exception (for BrushStroke, applyStroke).
 
-#include "deform/stroke.h"
+#include "core/deform/stroke.h"
 
 #include <optional>
 #include <string>

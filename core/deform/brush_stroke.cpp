@@ -1,12 +1,12 @@
-#include "deform/brush_stroke.h"
+#include "core/deform/brush_stroke.h"
 
-#include "deform/angle_attenuation.h"
-#include "deform/brush_settings_check.h"
-#include "deform/closest_surface_point.h"
-#include "deform/falloff.h"
-#include "deform/local_geodesics.h"
-#include "deform/region_normals.h"
-#include "deform/region_smoothing.h"
+#include "core/deform/angle_attenuation.h"
+#include "core/deform/brush_settings_check.h"
+#include "core/deform/closest_surface_point.h"
+#include "core/deform/falloff.h"
+#include "core/deform/local_geodesics.h"
+#include "core/deform/region_normals.h"
+#include "core/deform/region_smoothing.h"
 
 #include <glm/geometric.hpp>
 

@@ -5,9 +5,9 @@
 /// around the anchor only (never the whole mesh), so a drag update stays interactive on
 /// meshes of 100k vertices.
 
-#include "deform/brush_topology.h"
-#include "deform/region_patch.h"
-#include "deform/stroke.h"
+#include "core/deform/brush_topology.h"
+#include "core/deform/region_patch.h"
+#include "core/deform/stroke.h"
 
 #include <glm/vec3.hpp>
 

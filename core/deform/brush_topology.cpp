@@ -1,4 +1,4 @@
-#include "deform/brush_topology.h"
+#include "core/deform/brush_topology.h"
 
 #include <algorithm>
 #include <stdexcept>

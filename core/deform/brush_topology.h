@@ -3,7 +3,7 @@
 /// Connectivity the brush needs, built once per mesh topology (positions may change
 /// freely afterwards): vertex one-rings, vertex-to-triangle incidence and edges.
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <cstdint>
 #include <vector>

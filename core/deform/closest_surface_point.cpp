@@ -1,4 +1,4 @@
-#include "deform/closest_surface_point.h"
+#include "core/deform/closest_surface_point.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -1,4 +1,4 @@
-#include "deform/falloff.h"
+#include "core/deform/falloff.h"
 
 namespace trimlab::deform {
 

@@ -3,7 +3,7 @@
 /// The falloff profiles f(t), t = d/r: how the warp fades with geodesic distance d from
 /// the anchor within the brush radius r.
 
-#include "deform/stroke.h"
+#include "core/deform/stroke.h"
 
 namespace trimlab::deform {
 

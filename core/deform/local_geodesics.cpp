@@ -1,6 +1,6 @@
-#include "deform/local_geodesics.h"
+#include "core/deform/local_geodesics.h"
 
-#include "deform/local_vertex_map.h"
+#include "core/deform/local_vertex_map.h"
 
 #include <glm/geometric.hpp>
 

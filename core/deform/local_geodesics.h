@@ -3,7 +3,7 @@
 /// Geodesic distances from a surface point within a radius, computed on the local region
 /// only: the cost grows with the number of vertices within the radius, not with the mesh.
 
-#include "deform/brush_topology.h"
+#include "core/deform/brush_topology.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,7 +1,7 @@
-#include "deform/region_normals.h"
+#include "core/deform/region_normals.h"
 
-#include "deform/local_vertex_map.h"
-#include "mesh/corner_angle.h"
+#include "core/deform/local_vertex_map.h"
+#include "core/mesh/corner_angle.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

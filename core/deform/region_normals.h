@@ -4,7 +4,7 @@
 /// UI refreshes the normals its region can have changed instead of the whole mesh (thesis
 /// 8.2's "weighted vertex normal recomputation" step).
 
-#include "deform/brush_topology.h"
+#include "core/deform/brush_topology.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,6 +1,6 @@
-#include "deform/region_patch.h"
+#include "core/deform/region_patch.h"
 
-#include "deform/local_vertex_map.h"
+#include "core/deform/local_vertex_map.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -4,7 +4,7 @@
 /// the per-drag work (warp, smoothing) runs on small dense arrays instead of #V-sized
 /// ones. Built once per stroke.
 
-#include "deform/brush_topology.h"
+#include "core/deform/brush_topology.h"
 
 #include <cstdint>
 #include <span>

@@ -1,4 +1,4 @@
-#include "deform/region_smoothing.h"
+#include "core/deform/region_smoothing.h"
 
 #include <glm/geometric.hpp>
 

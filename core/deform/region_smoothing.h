@@ -3,8 +3,8 @@
 /// Iterative Laplacian smoothing restricted to a stroke's region (thesis 8.2: it removes
 /// the lumps and creases an extreme stretch leaves on coarse meshes).
 
-#include "deform/region_patch.h"
-#include "deform/stroke.h"
+#include "core/deform/region_patch.h"
+#include "core/deform/stroke.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,4 +1,4 @@
-#include "deform/stroke.h"
+#include "core/deform/stroke.h"
 
 namespace trimlab::deform {
 

@@ -1,4 +1,4 @@
-#include "io/pfm_image.h"
+#include "core/io/pfm_image.h"
 
 #include <bit>
 #include <cmath>

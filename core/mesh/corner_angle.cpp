@@ -1,4 +1,4 @@
-#include "mesh/corner_angle.h"
+#include "core/mesh/corner_angle.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,8 +1,8 @@
-#include "mesh/gltf_accessor.h"
+#include "core/mesh/gltf_accessor.h"
 
-#include "mesh/byte_cursor.h"
-#include "mesh/mesh_load_error.h"
-#include "mesh/reader_support.h"
+#include "core/mesh/byte_cursor.h"
+#include "core/mesh/mesh_load_error.h"
+#include "core/mesh/reader_support.h"
 
 #include <tiny_gltf.h>
 

@@ -1,9 +1,9 @@
-#include "mesh/gltf_document.h"
+#include "core/mesh/gltf_document.h"
 
-#include "util/json_nesting.h"
+#include "core/io/json_nesting.h"
 
-#include "mesh/byte_cursor.h"
-#include "mesh/mesh_load_error.h"
+#include "core/mesh/byte_cursor.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include <algorithm>
 #include <array>

@@ -1,10 +1,10 @@
-#include "mesh/gltf_reader.h"
+#include "core/mesh/gltf_reader.h"
 
-#include "mesh/gltf_accessor.h"
-#include "mesh/gltf_document.h"
-#include "mesh/mesh_load_error.h"
-#include "mesh/reader_support.h"
-#include "mesh/vertex_welding.h"
+#include "core/mesh/gltf_accessor.h"
+#include "core/mesh/gltf_document.h"
+#include "core/mesh/mesh_load_error.h"
+#include "core/mesh/reader_support.h"
+#include "core/mesh/vertex_welding.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>

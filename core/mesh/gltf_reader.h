@@ -2,7 +2,7 @@
 /// \file
 /// glTF 2.0 reader (.gltf JSON and .glb binary) on top of Debian's tinygltf.
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <filesystem>
 #include <string>

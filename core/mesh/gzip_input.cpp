@@ -1,6 +1,6 @@
-#include "mesh/gzip_input.h"
+#include "core/mesh/gzip_input.h"
 
-#include "mesh/mesh_load_error.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include <zlib.h>
 

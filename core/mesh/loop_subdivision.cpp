@@ -1,4 +1,4 @@
-#include "mesh/loop_subdivision.h"
+#include "core/mesh/loop_subdivision.h"
 
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>

@@ -9,7 +9,7 @@
 /// interpolation). The skeleton verb uses it to reach the paper's mesh sizes; surface
 /// modelling reuses it.
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <cstddef>
 

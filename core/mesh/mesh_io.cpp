@@ -1,11 +1,11 @@
-#include "mesh/mesh_io.h"
+#include "core/mesh/mesh_io.h"
 
-#include "mesh/gltf_reader.h"
-#include "mesh/gzip_input.h"
-#include "mesh/obj_reader.h"
-#include "mesh/off_reader.h"
-#include "mesh/ply_reader.h"
-#include "mesh/stl_reader.h"
+#include "core/mesh/gltf_reader.h"
+#include "core/mesh/gzip_input.h"
+#include "core/mesh/obj_reader.h"
+#include "core/mesh/off_reader.h"
+#include "core/mesh/ply_reader.h"
+#include "core/mesh/stl_reader.h"
 
 #include <algorithm>
 #include <array>

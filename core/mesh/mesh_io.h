@@ -12,8 +12,8 @@
 /// Per-format details: obj_reader.h, off_reader.h, ply_reader.h, stl_reader.h,
 /// gltf_reader.h; polygons are triangulated as polygon_triangulation.h describes.
 
-#include "mesh/mesh_load_error.h"
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/mesh_load_error.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <cstddef>
 #include <filesystem>

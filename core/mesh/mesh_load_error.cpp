@@ -1,4 +1,4 @@
-#include "mesh/mesh_load_error.h"
+#include "core/mesh/mesh_load_error.h"
 
 namespace trimlab {
 

@@ -1,4 +1,4 @@
-#include "mesh/mesh_validation.h"
+#include "core/mesh/mesh_validation.h"
 
 #include <glm/geometric.hpp>
 

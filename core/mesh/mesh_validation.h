@@ -5,7 +5,7 @@
 /// represent, is analysed too. The report decides whether the trim modes are available:
 /// the winding index is defined only for closed, consistently oriented surfaces.
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,7 +1,7 @@
 // The wording of mesh_validation.h: trimUnavailableReason and formatReport.
-#include "mesh/mesh_validation.h"
+#include "core/mesh/mesh_validation.h"
 
-#include "mesh/reader_support.h"
+#include "core/mesh/reader_support.h"
 
 #include <iomanip>
 #include <sstream>

@@ -1,8 +1,8 @@
-#include "mesh/obj_line_parser.h"
+#include "core/mesh/obj_line_parser.h"
 
-#include "mesh/mesh_load_error.h"
-#include "mesh/reader_support.h"
-#include "mesh/text_scanner.h"
+#include "core/mesh/mesh_load_error.h"
+#include "core/mesh/reader_support.h"
+#include "core/mesh/text_scanner.h"
 
 namespace trimlab {
 

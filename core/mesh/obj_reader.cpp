@@ -1,10 +1,10 @@
-#include "mesh/obj_reader.h"
+#include "core/mesh/obj_reader.h"
 
-#include "mesh/mesh_load_error.h"
-#include "mesh/obj_line_parser.h"
-#include "mesh/polygon_triangulation.h"
-#include "mesh/reader_support.h"
-#include "mesh/text_scanner.h"
+#include "core/mesh/mesh_load_error.h"
+#include "core/mesh/obj_line_parser.h"
+#include "core/mesh/polygon_triangulation.h"
+#include "core/mesh/reader_support.h"
+#include "core/mesh/text_scanner.h"
 
 namespace trimlab {
 

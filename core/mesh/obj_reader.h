@@ -2,7 +2,7 @@
 /// \file
 /// Wavefront OBJ reader (geometry only).
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <string>
 #include <string_view>

@@ -1,6 +1,6 @@
-#include "mesh/obj_writer.h"
+#include "core/mesh/obj_writer.h"
 
-#include "timeline/atomic_write.h"
+#include "core/io/atomic_write.h"
 
 #include <algorithm>
 #include <cstdio>

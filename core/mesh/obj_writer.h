@@ -5,7 +5,7 @@
 /// (`f a//a b//b c//c` with normals). Floats are printed with "%.9g", enough digits to
 /// read back the same float (TrimLab's OBJ reader does).
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <filesystem>
 #include <span>

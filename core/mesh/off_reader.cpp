@@ -1,9 +1,9 @@
-#include "mesh/off_reader.h"
+#include "core/mesh/off_reader.h"
 
-#include "mesh/mesh_load_error.h"
-#include "mesh/polygon_triangulation.h"
-#include "mesh/reader_support.h"
-#include "mesh/text_scanner.h"
+#include "core/mesh/mesh_load_error.h"
+#include "core/mesh/polygon_triangulation.h"
+#include "core/mesh/reader_support.h"
+#include "core/mesh/text_scanner.h"
 
 namespace trimlab {
 

@@ -2,7 +2,7 @@
 /// \file
 /// Object File Format (OFF) reader, as written by CGAL, libigl and Geomview.
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <string>
 #include <string_view>

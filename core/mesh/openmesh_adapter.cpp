@@ -1,4 +1,4 @@
-#include "mesh/openmesh_adapter.h"
+#include "core/mesh/openmesh_adapter.h"
 
 #include <OpenMesh/Core/System/omstream.hh>
 

@@ -6,7 +6,7 @@
 /// trimlab_core links OpenMesh privately, so a target including this header links
 /// `OpenMeshCore` itself (as tests/core/mesh_tests.cmake does).
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 

@@ -1,7 +1,7 @@
-#include "mesh/ply_header.h"
+#include "core/mesh/ply_header.h"
 
-#include "mesh/mesh_load_error.h"
-#include "mesh/text_scanner.h"
+#include "core/mesh/mesh_load_error.h"
+#include "core/mesh/text_scanner.h"
 
 #include <array>
 #include <optional>

@@ -1,10 +1,10 @@
-#include "mesh/ply_reader.h"
+#include "core/mesh/ply_reader.h"
 
-#include "mesh/mesh_load_error.h"
-#include "mesh/ply_header.h"
-#include "mesh/ply_value_source.h"
-#include "mesh/polygon_triangulation.h"
-#include "mesh/reader_support.h"
+#include "core/mesh/mesh_load_error.h"
+#include "core/mesh/ply_header.h"
+#include "core/mesh/ply_value_source.h"
+#include "core/mesh/polygon_triangulation.h"
+#include "core/mesh/reader_support.h"
 
 #include <cmath>
 

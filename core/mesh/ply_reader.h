@@ -2,7 +2,7 @@
 /// \file
 /// PLY reader (ASCII, binary little endian, binary big endian).
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <string>
 #include <string_view>

@@ -1,4 +1,4 @@
-#include "mesh/ply_value_source.h"
+#include "core/mesh/ply_value_source.h"
 
 #include <cstdint>
 

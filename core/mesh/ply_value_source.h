@@ -3,9 +3,9 @@
 /// Reads the values of a PLY body one at a time, hiding the encoding (ASCII tokens or
 /// little/big-endian binary) from the element walker in ply_reader.cpp.
 
-#include "mesh/byte_cursor.h"
-#include "mesh/ply_header.h"
-#include "mesh/text_scanner.h"
+#include "core/mesh/byte_cursor.h"
+#include "core/mesh/ply_header.h"
+#include "core/mesh/text_scanner.h"
 
 #include <cstddef>
 #include <string>

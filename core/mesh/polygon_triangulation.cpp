@@ -1,4 +1,4 @@
-#include "mesh/polygon_triangulation.h"
+#include "core/mesh/polygon_triangulation.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>

@@ -1,6 +1,6 @@
-#include "mesh/reader_support.h"
+#include "core/mesh/reader_support.h"
 
-#include "mesh/mesh_load_error.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include <algorithm>
 #include <cfloat>

@@ -1,11 +1,11 @@
-#include "mesh/stl_reader.h"
+#include "core/mesh/stl_reader.h"
 
-#include "mesh/byte_cursor.h"
-#include "mesh/mesh_load_error.h"
-#include "mesh/polygon_triangulation.h"
-#include "mesh/reader_support.h"
-#include "mesh/text_scanner.h"
-#include "mesh/vertex_welding.h"
+#include "core/mesh/byte_cursor.h"
+#include "core/mesh/mesh_load_error.h"
+#include "core/mesh/polygon_triangulation.h"
+#include "core/mesh/reader_support.h"
+#include "core/mesh/text_scanner.h"
+#include "core/mesh/vertex_welding.h"
 
 #include <algorithm>
 #include <cctype>

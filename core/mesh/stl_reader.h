@@ -2,7 +2,7 @@
 /// \file
 /// STL reader (ASCII and binary).
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <string>
 #include <string_view>

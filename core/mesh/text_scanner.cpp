@@ -1,4 +1,4 @@
-#include "mesh/text_scanner.h"
+#include "core/mesh/text_scanner.h"
 
 #include <charconv>
 #include <cstdlib>

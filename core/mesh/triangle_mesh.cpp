@@ -1,6 +1,6 @@
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
-#include "mesh/corner_angle.h"
+#include "core/mesh/corner_angle.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,4 +1,4 @@
-#include "mesh/vertex_welding.h"
+#include "core/mesh/vertex_welding.h"
 
 #include <bit>
 #include <cstdint>

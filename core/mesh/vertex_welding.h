@@ -4,7 +4,7 @@
 /// own three corners, and glTF splits vertices along UV seams; welding restores the
 /// shared vertices so that a closed surface is recognised as closed.
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 namespace trimlab {
 

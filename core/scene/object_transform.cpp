@@ -1,4 +1,4 @@
-#include "scene/object_transform.h"
+#include "core/scene/object_transform.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>

@@ -1,4 +1,4 @@
-#include "scene/scene.h"
+#include "core/scene/scene.h"
 
 #include <cmath>
 

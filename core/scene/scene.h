@@ -4,7 +4,7 @@
 /// over all objects (the scene is one self-crossing surface); per-object classification
 /// arrives with CSG.
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <glm/mat4x4.hpp>
 

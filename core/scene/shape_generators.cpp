@@ -1,4 +1,4 @@
-#include "scene/shape_generators.h"
+#include "core/scene/shape_generators.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>

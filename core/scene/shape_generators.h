@@ -7,7 +7,7 @@
 /// signed volume is positive), clockwise otherwise. Computation is in double precision;
 /// the results are the same on every run. Invalid parameters give an empty mesh.
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

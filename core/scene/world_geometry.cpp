@@ -1,4 +1,4 @@
-#include "scene/world_geometry.h"
+#include "core/scene/world_geometry.h"
 
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>

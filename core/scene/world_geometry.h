@@ -4,7 +4,7 @@
 /// object vertices go through SceneObject::modelMatrix, so the BVH, the shading and the
 /// diagnostics of the CPU reference all see bitwise identical world positions.
 
-#include "scene/scene.h"
+#include "core/scene/scene.h"
 
 #include <glm/vec3.hpp>
 

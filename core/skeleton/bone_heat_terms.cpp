@@ -1,8 +1,8 @@
-#include "skeleton/bone_heat_terms.h"
+#include "core/skeleton/bone_heat_terms.h"
 
-#include "animation/parallel_for.h"
-#include "scene/scene.h"
-#include "trim/ray_hit.h"
+#include "core/util/parallel_for.h"
+#include "core/scene/scene.h"
+#include "core/trim/ray_hit.h"
 
 #include <glm/geometric.hpp>
 

@@ -14,12 +14,12 @@
 /// - with none visible, H_jj = 0 and p_j = 0: the vertex gets its weights from diffusion
 ///   alone (bone_heat_weights.h).
 
-#include "mesh/triangle_mesh.h"
-#include "skeleton/skeleton.h"
-#include "trim/ray_hit.h"
-#include "trim/triangle_bvh.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/skeleton/skeleton.h"
+#include "core/trim/ray_hit.h"
+#include "core/trim/triangle_bvh.h"
 
-#include "animation/task_control.h"
+#include "core/util/task_control.h"
 
 #include <glm/vec3.hpp>
 

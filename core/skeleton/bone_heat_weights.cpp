@@ -1,7 +1,7 @@
-#include "skeleton/bone_heat_weights.h"
+#include "core/skeleton/bone_heat_weights.h"
 
-#include "skeleton/meyer_laplacian.h"
-#include "skeleton/sparse_cholesky.h"
+#include "core/skeleton/meyer_laplacian.h"
+#include "core/skeleton/sparse_cholesky.h"
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>

@@ -25,12 +25,12 @@
 /// equidistant nearest bones whether visible or not. The same fallback applies to a
 /// vertex whose four largest weights are all ≤ 0 (in practice never: they sum to 1).
 
-#include "mesh/triangle_mesh.h"
-#include "skeleton/bone_heat_terms.h"
-#include "skeleton/contraction_options.h"
-#include "skeleton/skeleton.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/skeleton/bone_heat_terms.h"
+#include "core/skeleton/contraction_options.h"
+#include "core/skeleton/skeleton.h"
 
-#include "animation/task_control.h"
+#include "core/util/task_control.h"
 
 #include <array>
 #include <cstddef>

@@ -1,4 +1,4 @@
-#include "skeleton/collapse_complex.h"
+#include "core/skeleton/collapse_complex.h"
 
 #include <algorithm>
 
@@ -35,12 +35,6 @@ bool CollapseComplex::edgeHasTriangle(int a, int b) const
             return true;
     }
     return false;
-}
-
-bool CollapseComplex::hasTriangle(int v) const
-{
-    const std::vector<int>& list = m_vertexTriangles[static_cast<std::size_t>(v)];
-    return std::any_of(list.begin(), list.end(), [&](int f) { return m_triangleAlive[static_cast<std::size_t>(f)] != 0; });
 }
 
 void CollapseComplex::removeNeighbour(int v, int gone)

@@ -30,8 +30,6 @@ public:
     [[nodiscard]] const std::vector<int>& neighbours(int v) const { return m_neighbours[static_cast<std::size_t>(v)]; }
     /// Whether the edge (a, b) exists and at least one live triangle contains it.
     [[nodiscard]] bool edgeHasTriangle(int a, int b) const;
-    /// Whether `v` belongs to at least one live triangle.
-    [[nodiscard]] bool hasTriangle(int v) const;
     [[nodiscard]] std::size_t liveTriangleCount() const { return m_liveTriangles; }
     [[nodiscard]] std::size_t liveVertexCount() const { return m_liveVertices; }
 

@@ -1,8 +1,8 @@
-#include "skeleton/contraction_solver.h"
+#include "core/skeleton/contraction_solver.h"
 
-#include "skeleton/cotangent_laplacian.h"
-#include "skeleton/normal_equations.h"
-#include "skeleton/sparse_cholesky.h"
+#include "core/skeleton/cotangent_laplacian.h"
+#include "core/skeleton/normal_equations.h"
+#include "core/skeleton/sparse_cholesky.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>

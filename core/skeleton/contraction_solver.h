@@ -20,9 +20,9 @@
 /// happens after 17–19 iterations, the area down to 11–36 %, when the limbs are curves
 /// already but wide parts (a palm, a thick hub) are still sheets or blobs.
 
-#include "animation/task_control.h"
-#include "mesh/triangle_mesh.h"
-#include "skeleton/contraction_options.h"
+#include "core/util/task_control.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/skeleton/contraction_options.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,4 +1,4 @@
-#include "skeleton/cotangent_laplacian.h"
+#include "core/skeleton/cotangent_laplacian.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,4 +1,4 @@
-#include "skeleton/meyer_laplacian.h"
+#include "core/skeleton/meyer_laplacian.h"
 
 #include <glm/geometric.hpp>
 

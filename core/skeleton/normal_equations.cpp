@@ -1,4 +1,4 @@
-#include "skeleton/normal_equations.h"
+#include "core/skeleton/normal_equations.h"
 
 #include <algorithm>
 

@@ -6,7 +6,7 @@
 /// two-ring of every vertex) the connectivity fixes: it is built once and only the
 /// values are refreshed per iteration. Internal to core/skeleton (Eigen types).
 
-#include "skeleton/cotangent_laplacian.h"
+#include "core/skeleton/cotangent_laplacian.h"
 
 #include <Eigen/Core>
 #include <glm/vec3.hpp>

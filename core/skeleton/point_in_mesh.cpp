@@ -1,6 +1,6 @@
-#include "skeleton/point_in_mesh.h"
+#include "core/skeleton/point_in_mesh.h"
 
-#include "scene/scene.h"
+#include "core/scene/scene.h"
 
 #include <glm/geometric.hpp>
 

@@ -4,8 +4,8 @@
 /// recentred skeleton node stays inside the model (Berenguer & Moreno III.C) and for
 /// tests that check where skeleton nodes lie.
 
-#include "mesh/triangle_mesh.h"
-#include "trim/triangle_bvh.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/trim/triangle_bvh.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,4 +1,4 @@
-#include "skeleton/rig_hierarchy.h"
+#include "core/skeleton/rig_hierarchy.h"
 
 #include <glm/geometric.hpp>
 

@@ -4,8 +4,8 @@
 /// joints with one parent each (the root has none) and one bone per non-root joint,
 /// parents first — the hierarchy posing and export walk.
 
-#include "skeleton/skeleton.h"
-#include "skeleton/skeleton_selection.h"
+#include "core/skeleton/skeleton.h"
+#include "core/skeleton/skeleton_selection.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,4 +1,4 @@
-#include "skeleton/rig_validation.h"
+#include "core/skeleton/rig_validation.h"
 
 #include <cmath>
 #include <cstdint>

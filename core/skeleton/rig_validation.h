@@ -5,7 +5,7 @@
 /// glTF export and the skeleton JSON loader all rely on these invariants; the extraction
 /// produces them, hand-built or loaded rigs are checked here.
 
-#include "skeleton/skeleton.h"
+#include "core/skeleton/skeleton.h"
 
 #include <cstddef>
 #include <optional>

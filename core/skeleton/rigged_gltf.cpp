@@ -1,9 +1,9 @@
-#include "skeleton/rigged_gltf.h"
+#include "core/skeleton/rigged_gltf.h"
 
-#include "animation/skinning_gltf_parts.h"
-#include "io/gltf_builder.h"
-#include "skeleton/rig_validation.h"
-#include "timeline/atomic_write.h"
+#include "core/skinning/skinning_gltf_parts.h"
+#include "core/io/gltf_builder.h"
+#include "core/skeleton/rig_validation.h"
+#include "core/io/atomic_write.h"
 
 #include <tiny_gltf.h>
 
@@ -133,9 +133,9 @@ tinygltf::Model meshModel(const TriangleMesh& mesh)
     tinygltf::Primitive primitive;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
     primitive.attributes["POSITION"] =
-        skinning_gltf::addVec3Accessor(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+        addGltfVec3Accessor(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER, true);
     primitive.attributes["NORMAL"] =
-        skinning_gltf::addVec3Accessor(model, exportNormals(mesh), TINYGLTF_TARGET_ARRAY_BUFFER, false);
+        addGltfVec3Accessor(model, exportNormals(mesh), TINYGLTF_TARGET_ARRAY_BUFFER, false);
     primitive.indices = addGltfTriangleIndices(model, mesh.triangles);
     addGltfSingleMeshScene(model, primitive, "mesh", 0);
     return model;
@@ -222,7 +222,7 @@ void addSkin(tinygltf::Model& model, const SkeletonRig& rig)
     const std::vector<float> inverseBind = addJointNodes(model, rig, restFrames(rig));
     for (std::size_t b = 0; b < rig.bones.size(); ++b)
         skin.joints.push_back(skin.skeleton + 1 + int(b));
-    skin.inverseBindMatrices = skinning_gltf::addFloatAccessor(model, inverseBind, TINYGLTF_TYPE_MAT4, false);
+    skin.inverseBindMatrices = addGltfFloatAccessor(model, inverseBind, TINYGLTF_TYPE_MAT4, false);
     model.skins.push_back(skin);
 }
 
@@ -231,7 +231,7 @@ void addChannel(tinygltf::Model& model, tinygltf::Animation& animation, int inpu
 {
     tinygltf::AnimationSampler sampler;
     sampler.input = input;
-    sampler.output = skinning_gltf::addFloatAccessor(model, values, type, false);
+    sampler.output = addGltfFloatAccessor(model, values, type, false);
     sampler.interpolation = "LINEAR";
     tinygltf::AnimationChannel channel;
     channel.sampler = int(animation.samplers.size());
@@ -250,7 +250,7 @@ void addPoseAnimation(tinygltf::Model& model, const SkeletonRig& rig, const Skel
     const std::vector<Frame> frames = restFrames(rig);
     tinygltf::Animation animation;
     animation.name = "pose";
-    const int input = skinning_gltf::addFloatAccessor(model, {0.0f, 1.0f}, TINYGLTF_TYPE_SCALAR, true);
+    const int input = addGltfFloatAccessor(model, {0.0f, 1.0f}, TINYGLTF_TYPE_SCALAR, true);
     const int skeletonNode = model.skins[0].skeleton;
     const glm::vec3 rest(frames[0].position), moved(frames[0].position + pose.rootTranslation);
     addChannel(model, animation, input, skeletonNode, "translation", {rest.x, rest.y, rest.z, moved.x, moved.y, moved.z},

@@ -36,10 +36,10 @@
 ///   translation, LINEAR. A glTF viewer then shows at 1 s exactly the LBS of
 ///   skeleton_pose.h with those weights (joint matrix = bone motion).
 
-#include "mesh/triangle_mesh.h"
-#include "skeleton/bone_heat_weights.h"
-#include "skeleton/skeleton.h"
-#include "skeleton/skeleton_pose.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/skeleton/bone_heat_weights.h"
+#include "core/skeleton/skeleton.h"
+#include "core/skeleton/skeleton_pose.h"
 
 #include <filesystem>
 #include <string>

@@ -1,10 +1,10 @@
-#include "skeleton/skeleton_extraction.h"
+#include "core/skeleton/skeleton_extraction.h"
 
-#include "skeleton/contraction_solver.h"
-#include "skeleton/point_in_mesh.h"
-#include "skeleton/rig_hierarchy.h"
-#include "skeleton/skeleton_refinement.h"
-#include "skeleton/skeleton_selection.h"
+#include "core/skeleton/contraction_solver.h"
+#include "core/skeleton/point_in_mesh.h"
+#include "core/skeleton/rig_hierarchy.h"
+#include "core/skeleton/skeleton_refinement.h"
+#include "core/skeleton/skeleton_selection.h"
 
 #include <glm/geometric.hpp>
 

@@ -6,12 +6,12 @@
 /// (skeleton_selection.h, rig_hierarchy.h). The bone-heat weights, posing and export
 /// (stages E–F) consume the SkeletonRig this produces.
 
-#include "animation/task_control.h"
-#include "mesh/triangle_mesh.h"
-#include "skeleton/contraction_options.h"
-#include "skeleton/skeleton.h"
-#include "skeleton/skeleton_input.h"
-#include "skeleton/skeleton_simplification.h"
+#include "core/util/task_control.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/skeleton/contraction_options.h"
+#include "core/skeleton/skeleton.h"
+#include "core/skeleton/skeleton_input.h"
+#include "core/skeleton/skeleton_simplification.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,7 +1,7 @@
-#include "skeleton/skeleton_input.h"
+#include "core/skeleton/skeleton_input.h"
 
-#include "mesh/mesh_validation.h"
-#include "mesh/reader_support.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/mesh/reader_support.h"
 
 #include <algorithm>
 #include <cstdint>

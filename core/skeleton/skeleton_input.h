@@ -6,7 +6,7 @@
 /// edge-collapse simplification needs manifold one-rings, and a second component would
 /// contract into a second skeleton that no rig can join.
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <stdexcept>
 #include <string>

@@ -1,9 +1,9 @@
-#include "skeleton/skeleton_json.h"
+#include "core/skeleton/skeleton_json.h"
 
-#include "skeleton/rig_validation.h"
-#include "timeline/atomic_write.h"
-#include "timeline/file_bytes.h"
-#include "timeline/json_fields.h"
+#include "core/skeleton/rig_validation.h"
+#include "core/io/atomic_write.h"
+#include "core/io/file_bytes.h"
+#include "core/io/json_fields.h"
 
 #include <nlohmann/json.hpp>
 

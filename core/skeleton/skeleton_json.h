@@ -18,8 +18,8 @@
 ///         "nodes": [[x, y, z], ...], "edges": [[a, b], ...], "vertex_node": [...] }
 ///     }
 
-#include "skeleton/skeleton.h"
-#include "util/document_file_error.h"
+#include "core/skeleton/skeleton.h"
+#include "core/io/document_file_error.h"
 
 #include <filesystem>
 #include <optional>

@@ -1,7 +1,7 @@
-#include "skeleton/skeleton_pose.h"
+#include "core/skeleton/skeleton_pose.h"
 
-#include "animation/parallel_for.h"
-#include "skeleton/rig_validation.h"
+#include "core/util/parallel_for.h"
+#include "core/skeleton/rig_validation.h"
 
 #include <array>
 #include <cmath>

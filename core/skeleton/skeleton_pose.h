@@ -15,11 +15,11 @@
 /// (h_b the rest position of the head), so a child follows its parent (paper III.F: "the
 /// transformation applied to a parent bone is inherited by its child").
 
-#include "animation/dual_quaternion.h"
-#include "animation/skinning_affine.h"
-#include "animation/skinning_model.h"
-#include "skeleton/bone_heat_weights.h"
-#include "skeleton/skeleton.h"
+#include "core/skinning/dual_quaternion.h"
+#include "core/skinning/skinning_affine.h"
+#include "core/skinning/skinning_model.h"
+#include "core/skeleton/bone_heat_weights.h"
+#include "core/skeleton/skeleton.h"
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>

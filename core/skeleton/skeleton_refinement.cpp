@@ -1,4 +1,4 @@
-#include "skeleton/skeleton_refinement.h"
+#include "core/skeleton/skeleton_refinement.h"
 
 #include <stdexcept>
 #include <vector>

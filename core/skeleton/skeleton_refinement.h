@@ -5,8 +5,8 @@
 /// eq. 11), but only when that centroid lies inside the mesh — the paper's fix for
 /// regions whose centroid falls outside the model (Au et al. move unconditionally).
 
-#include "skeleton/point_in_mesh.h"
-#include "skeleton/skeleton.h"
+#include "core/skeleton/point_in_mesh.h"
+#include "core/skeleton/skeleton.h"
 
 #include <glm/vec3.hpp>
 

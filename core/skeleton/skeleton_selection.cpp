@@ -1,4 +1,4 @@
-#include "skeleton/skeleton_selection.h"
+#include "core/skeleton/skeleton_selection.h"
 
 #include <glm/geometric.hpp>
 

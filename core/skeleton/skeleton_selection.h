@@ -27,7 +27,7 @@
 ///   junctions), else the larger region, else the lower index. The survivor keeps its
 ///   position (inside the mesh wherever the refinement could put it there).
 
-#include "skeleton/skeleton.h"
+#include "core/skeleton/skeleton.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,6 +1,6 @@
-#include "skeleton/skeleton_simplification.h"
+#include "core/skeleton/skeleton_simplification.h"
 
-#include "skeleton/collapse_complex.h"
+#include "core/skeleton/collapse_complex.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>

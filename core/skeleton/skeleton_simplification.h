@@ -6,8 +6,8 @@
 /// the sampling cost (eq. 9), until no triangle is left. Every collapse records which
 /// original vertices each surviving node absorbed (the skeleton–mesh correspondence).
 
-#include "animation/task_control.h"
-#include "skeleton/skeleton.h"
+#include "core/util/task_control.h"
+#include "core/skeleton/skeleton.h"
 
 #include <glm/vec3.hpp>
 

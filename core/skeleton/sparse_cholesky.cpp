@@ -1,4 +1,4 @@
-#include "skeleton/sparse_cholesky.h"
+#include "core/skeleton/sparse_cholesky.h"
 
 #include <iostream> // Eigen/MetisSupport reports METIS errors on std::cerr without including it
 

@@ -6,8 +6,8 @@
 /// The caller analyzes the pattern once and factorizes as often as the values change.
 /// Internal to core/skeleton (exposes Eigen types; trimlab_core links Eigen privately).
 
-#include "skeleton/contraction_options.h"
-#include "skeleton/cotangent_laplacian.h"
+#include "core/skeleton/contraction_options.h"
+#include "core/skeleton/cotangent_laplacian.h"
 
 #include <Eigen/Core>
 

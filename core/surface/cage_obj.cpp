@@ -1,11 +1,11 @@
-#include "surface/cage_obj.h"
+#include "core/surface/cage_obj.h"
 
-#include "mesh/gzip_input.h"
-#include "mesh/mesh_io.h"
-#include "mesh/mesh_load_error.h"
-#include "mesh/obj_line_parser.h"
-#include "mesh/reader_support.h"
-#include "mesh/text_scanner.h"
+#include "core/mesh/gzip_input.h"
+#include "core/mesh/mesh_io.h"
+#include "core/mesh/mesh_load_error.h"
+#include "core/mesh/obj_line_parser.h"
+#include "core/mesh/reader_support.h"
+#include "core/mesh/text_scanner.h"
 
 #include <fstream>
 #include <iterator>

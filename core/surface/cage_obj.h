@@ -3,7 +3,7 @@
 /// Reading a subdivision cage from a Wavefront OBJ file, keeping its polygons (the mesh
 /// loaders triangulate; a cage must not be), plus OpenSubdiv's shape-file sharpness tags.
 
-#include "surface/subdivision_cage.h"
+#include "core/surface/subdivision_cage.h"
 
 #include <filesystem>
 #include <string>

@@ -1,6 +1,6 @@
-#include "surface/cage_refiner.h"
+#include "core/surface/cage_refiner.h"
 
-#include "surface/subdivision_surface.h"
+#include "core/surface/subdivision_surface.h"
 
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>

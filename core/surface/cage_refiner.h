@@ -5,7 +5,7 @@
 /// and by checks that evaluate the surface through OpenSubdiv directly. Including this
 /// header requires OpenSubdiv's include path (link OpenSubdiv::osdCPU).
 
-#include "surface/subdivision_cage.h"
+#include "core/surface/subdivision_cage.h"
 
 #include <opensubdiv/far/patchTableFactory.h>
 #include <opensubdiv/far/topologyRefiner.h>

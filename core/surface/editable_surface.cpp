@@ -1,7 +1,7 @@
-#include "surface/editable_surface.h"
+#include "core/surface/editable_surface.h"
 
-#include "surface/nurbs_tessellation.h"
-#include "surface/subdivision_surface.h"
+#include "core/surface/nurbs_tessellation.h"
+#include "core/surface/subdivision_surface.h"
 
 #include <algorithm>
 #include <cmath>

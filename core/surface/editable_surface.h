@@ -12,8 +12,8 @@
 ///
 /// Not thread-safe: evaluation updates internal tables (one surface per thread).
 
-#include "mesh/triangle_mesh.h"
-#include "surface/surface_definition.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/surface/surface_definition.h"
 
 #include <glm/vec3.hpp>
 

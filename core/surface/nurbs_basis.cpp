@@ -1,4 +1,4 @@
-#include "surface/nurbs_basis.h"
+#include "core/surface/nurbs_basis.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "surface/nurbs_json.h"
+#include "core/surface/nurbs_json.h"
 
-#include "surface/nurbs_basis.h"
+#include "core/surface/nurbs_basis.h"
 
-#include "timeline/atomic_write.h"
-#include "timeline/file_bytes.h"
-#include "timeline/json_fields.h"
+#include "core/io/atomic_write.h"
+#include "core/io/file_bytes.h"
+#include "core/io/json_fields.h"
 
 #include <nlohmann/json.hpp>
 

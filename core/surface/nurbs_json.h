@@ -18,11 +18,11 @@
 ///       }]
 ///     }
 
-#include "surface/nurbs_surface.h"
+#include "core/surface/nurbs_surface.h"
 
 #include <filesystem>
 #include <span>
-#include "util/document_file_error.h"
+#include "core/io/document_file_error.h"
 
 #include <stdexcept>
 #include <string>

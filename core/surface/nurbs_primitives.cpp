@@ -1,4 +1,4 @@
-#include "surface/nurbs_primitives.h"
+#include "core/surface/nurbs_primitives.h"
 
 #include <cmath>
 #include <stdexcept>

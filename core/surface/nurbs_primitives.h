@@ -13,7 +13,7 @@
 /// non-positive radii or height, minor radius >= major radius, patch counts outside
 /// 4..1000) throw std::invalid_argument naming the function and the parameter.
 
-#include "surface/nurbs_surface.h"
+#include "core/surface/nurbs_surface.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,4 +1,4 @@
-#include "surface/nurbs_sampling.h"
+#include "core/surface/nurbs_sampling.h"
 
 #include <algorithm>
 #include <cmath>

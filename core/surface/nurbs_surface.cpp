@@ -1,6 +1,6 @@
-#include "surface/nurbs_surface.h"
+#include "core/surface/nurbs_surface.h"
 
-#include "surface/nurbs_basis.h"
+#include "core/surface/nurbs_basis.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>

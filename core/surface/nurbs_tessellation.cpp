@@ -1,7 +1,7 @@
-#include "surface/nurbs_tessellation.h"
+#include "core/surface/nurbs_tessellation.h"
 
-#include "surface/nurbs_basis.h"
-#include "surface/nurbs_sampling.h"
+#include "core/surface/nurbs_basis.h"
+#include "core/surface/nurbs_sampling.h"
 
 #include <glm/geometric.hpp>
 

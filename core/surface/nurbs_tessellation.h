@@ -56,8 +56,8 @@
 /// (a degenerate point of an edited surface) gets the normalised sum of the unit normals
 /// of its incident triangles, or (0, 0, 0) when those are degenerate too — never NaN.
 
-#include "mesh/triangle_mesh.h"
-#include "surface/nurbs_surface.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/surface/nurbs_surface.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -1,6 +1,6 @@
 // The re-evaluation half of NurbsTessellation: sparse mat-vecs over the tables that
 // nurbs_tessellation.cpp builds, normals (regular, pole limit, fallback), and supports.
-#include "surface/nurbs_tessellation.h"
+#include "core/surface/nurbs_tessellation.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,4 +1,4 @@
-#include "surface/subdivision_cage.h"
+#include "core/surface/subdivision_cage.h"
 
 #include <algorithm>
 #include <cmath>

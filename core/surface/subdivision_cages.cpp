@@ -1,4 +1,4 @@
-#include "surface/subdivision_cages.h"
+#include "core/surface/subdivision_cages.h"
 
 #include <array>
 #include <cmath>

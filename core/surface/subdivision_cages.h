@@ -3,7 +3,7 @@
 /// Built-in closed cages for "Create > Subdivision from cage" and for tests. All are
 /// closed, manifold and oriented with faces counter-clockwise seen from outside.
 
-#include "surface/subdivision_cage.h"
+#include "core/surface/subdivision_cage.h"
 
 #include <string>
 #include <vector>

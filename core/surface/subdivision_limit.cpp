@@ -1,5 +1,5 @@
-#include "surface/cage_refiner.h"
-#include "surface/subdivision_refinement.h"
+#include "core/surface/cage_refiner.h"
+#include "core/surface/subdivision_refinement.h"
 
 #include <opensubdiv/far/patchTable.h>
 #include <opensubdiv/far/patchTableFactory.h>

@@ -1,6 +1,6 @@
-#include "surface/subdivision_refinement.h"
+#include "core/surface/subdivision_refinement.h"
 
-#include "surface/cage_refiner.h"
+#include "core/surface/cage_refiner.h"
 
 #include <opensubdiv/far/ptexIndices.h>
 #include <opensubdiv/far/stencilTable.h>

@@ -4,8 +4,8 @@
 /// SubdivisionSurface (topology refinement, stencil tables, ptex locations). Kept apart so
 /// that only these sources include OpenSubdiv headers.
 
-#include "surface/subdivision_cage.h"
-#include "surface/subdivision_surface.h"
+#include "core/surface/subdivision_cage.h"
+#include "core/surface/subdivision_surface.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,8 +1,8 @@
-#include "surface/subdivision_surface.h"
+#include "core/surface/subdivision_surface.h"
 
-#include "surface/subdivision_refinement.h"
+#include "core/surface/subdivision_refinement.h"
 
-#include "mesh/corner_angle.h"
+#include "core/mesh/corner_angle.h"
 
 #include <glm/geometric.hpp>
 

@@ -7,8 +7,8 @@
 /// no patch evaluation per edit. Nothing geometric (self-intersections) is computed, so
 /// the trim modes can re-run on every frame.
 
-#include "mesh/triangle_mesh.h"
-#include "surface/subdivision_cage.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/surface/subdivision_cage.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,6 +1,6 @@
-#include "surface/surface_definition.h"
+#include "core/surface/surface_definition.h"
 
-#include "surface/nurbs_tessellation.h"
+#include "core/surface/nurbs_tessellation.h"
 
 #include <limits>
 #include <stdexcept>

@@ -14,9 +14,9 @@
 ///    control points that must always hold equal positions (edits move them together).
 ///  - Subdivision: `cage.positions` (index = cage vertex).
 
-#include "surface/nurbs_surface.h"
-#include "surface/subdivision_cage.h"
-#include "surface/subdivision_surface.h"
+#include "core/surface/nurbs_surface.h"
+#include "core/surface/subdivision_cage.h"
+#include "core/surface/subdivision_surface.h"
 
 #include <glm/vec3.hpp>
 

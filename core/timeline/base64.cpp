@@ -1,4 +1,4 @@
-#include "timeline/base64.h"
+#include "core/timeline/base64.h"
 
 #include <array>
 #include <stdexcept>

@@ -1,7 +1,7 @@
-#include "timeline/binary_array.h"
+#include "core/timeline/binary_array.h"
 
-#include "timeline/base64.h"
-#include "timeline/json_fields.h"
+#include "core/timeline/base64.h"
+#include "core/io/json_fields.h"
 
 #include <zlib.h>
 

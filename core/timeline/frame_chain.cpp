@@ -1,4 +1,4 @@
-#include "timeline/frame_chain.h"
+#include "core/timeline/frame_chain.h"
 
 namespace trimlab::timeline {
 
@@ -26,6 +26,15 @@ Bounds chainBounds(const DynamicChain& chain)
     Bounds bounds;
     for (const DynamicChainLevel& level : chain.levels)
         bounds.extend(level.frame.scene.worldBounds());
+    return bounds;
+}
+
+Bounds historyBounds(const Timeline& history)
+{
+    Bounds bounds = computeBounds(history.base());
+    for (int f = 1; f < history.frameCount(); ++f)
+        for (const glm::vec3& p : history.frame(f).after)
+            bounds.extend(glm::dvec3(p));
     return bounds;
 }
 

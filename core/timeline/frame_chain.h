@@ -4,10 +4,10 @@
 /// static rules) or the chain of reference frames to it (the dynamic rules). Shared by
 /// the GUI and `trimlab render --script/--frame`.
 
-#include "scene/scene.h"
-#include "timeline/timeline.h"
-#include "trim/dynamic_chain.h"
-#include "trim/static_rule.h"
+#include "core/scene/scene.h"
+#include "core/timeline/timeline.h"
+#include "core/trim/dynamic_chain.h"
+#include "core/trim/static_rule.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -27,5 +27,9 @@ namespace trimlab::timeline {
 /// World bounds of everything the chain rasterises (all its levels), which the camera's
 /// depth range must enclose: the winding indices are counted from the far side.
 [[nodiscard]] Bounds chainBounds(const DynamicChain& chain);
+
+/// Object-space bounds of every frame of `history`: the base mesh and every position a
+/// frame moved to — what a view of the whole history must enclose.
+[[nodiscard]] Bounds historyBounds(const Timeline& history);
 
 } // namespace trimlab::timeline

@@ -1,6 +1,6 @@
-#include "timeline/frame_export.h"
+#include "core/timeline/frame_export.h"
 
-#include "mesh/obj_writer.h"
+#include "core/mesh/obj_writer.h"
 
 #include <cstdio>
 #include <stdexcept>

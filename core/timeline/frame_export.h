@@ -4,7 +4,7 @@
 /// TrimLab's own mesh-sequence loader reads back) and one glTF 2.0 file whose morph-target
 /// animation steps through the frames.
 
-#include "timeline/timeline.h"
+#include "core/timeline/timeline.h"
 
 #include <filesystem>
 #include <string>

@@ -1,12 +1,10 @@
 // exportMorphGltf / morphGltf (declared in frame_export.h): the timeline as a glTF 2.0
 // morph-target animation.
-#include "timeline/frame_export.h"
+#include "core/timeline/frame_export.h"
 
-#include "io/gltf_builder.h"
+#include "core/io/gltf_builder.h"
 
 #include <tiny_gltf.h>
-
-#include <glm/common.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -22,95 +20,18 @@ namespace trimlab::timeline {
 
 namespace {
 
-// Exact componentwise min/max: glTF validators compare them with the data bit for bit.
-void setBounds(tinygltf::Accessor& accessor, std::span<const glm::vec3> values)
-{
-    glm::vec3 low = values.empty() ? glm::vec3(0.0f) : values.front();
-    glm::vec3 high = low;
-    for (const glm::vec3& v : values) {
-        low = glm::min(low, v);
-        high = glm::max(high, v);
-    }
-    accessor.minValues = {low.x, low.y, low.z};
-    accessor.maxValues = {high.x, high.y, high.z};
-}
-
 int addBasePositions(tinygltf::Model& model, const std::vector<glm::vec3>& positions)
 {
-    const int view = addGltfBufferView(model, positions.data(), positions.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
-    const int accessor = addGltfAccessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, positions.size());
-    setBounds(model.accessors[std::size_t(accessor)], positions);
-    return accessor;
+    return addGltfVec3Accessor(model, positions, TINYGLTF_TARGET_ARRAY_BUFFER, true);
 }
 
-// A morph target POSITION accessor: `displacement` (#V, mostly zero) stored sparsely.
-int addDisplacements(tinygltf::Model& model, const std::vector<glm::vec3>& displacement)
-{
-    std::vector<std::uint32_t> indices;
-    std::vector<glm::vec3> values;
-    for (std::size_t v = 0; v < displacement.size(); ++v) {
-        if (displacement[v] != glm::vec3(0.0f)) {
-            indices.push_back(std::uint32_t(v));
-            values.push_back(displacement[v]);
-        }
-    }
-    // Without a buffer view the accessor is all zeros; sparse parts need >= 1 element.
-    const int accessor = addGltfAccessor(model, -1, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, displacement.size());
-    if (!indices.empty()) {
-        const int indexView = addGltfBufferView(model, indices.data(), indices.size() * sizeof(std::uint32_t), 0);
-        const int valueView = addGltfBufferView(model, values.data(), values.size() * sizeof(glm::vec3), 0);
-        tinygltf::Accessor& a = model.accessors[std::size_t(accessor)];
-        a.sparse.isSparse = true;
-        a.sparse.count = int(indices.size());
-        a.sparse.indices.bufferView = indexView;
-        a.sparse.indices.byteOffset = 0;
-        a.sparse.indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-        a.sparse.values.bufferView = valueView;
-        a.sparse.values.byteOffset = 0;
-    }
-    // min/max cover the whole accessor, zeros included unless every vertex moved.
-    if (indices.size() < displacement.size())
-        values.emplace_back(0.0f);
-    setBounds(model.accessors[std::size_t(accessor)], values);
-    return accessor;
-}
-
-int addScalars(tinygltf::Model& model, const std::vector<float>& values, bool bounds)
-{
-    const int view = addGltfBufferView(model, values.data(), values.size() * sizeof(float), 0);
-    const int accessor = addGltfAccessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, values.size());
-    if (bounds && !values.empty()) {
-        const auto [low, high] = std::minmax_element(values.begin(), values.end());
-        model.accessors[std::size_t(accessor)].minValues = {*low};
-        model.accessors[std::size_t(accessor)].maxValues = {*high};
-    }
-    return accessor;
-}
-
-// Keyframe f at f/fps; weights are row-major [keyframe][target], target f−1 = 1 at f.
+// Keyframe f at f/fps shows frame f: the base, then morph target f−1 alone.
 void addAnimation(tinygltf::Model& model, int frameCount, double fps)
 {
-    const int targets = frameCount - 1;
     std::vector<float> times(static_cast<std::size_t>(frameCount));
-    std::vector<float> weights(std::size_t(frameCount) * std::size_t(targets), 0.0f);
-    for (int f = 0; f < frameCount; ++f) {
+    for (int f = 0; f < frameCount; ++f)
         times[std::size_t(f)] = float(f / fps);
-        if (f > 0)
-            weights[std::size_t(f) * std::size_t(targets) + std::size_t(f - 1)] = 1.0f;
-    }
-    tinygltf::AnimationSampler sampler;
-    sampler.input = addScalars(model, times, true);
-    sampler.output = addScalars(model, weights, false);
-    sampler.interpolation = "STEP";
-    tinygltf::AnimationChannel channel;
-    channel.sampler = 0;
-    channel.target_node = 0;
-    channel.target_path = "weights";
-    tinygltf::Animation animation;
-    animation.name = "frames";
-    animation.samplers.push_back(sampler);
-    animation.channels.push_back(channel);
-    model.animations.push_back(animation);
+    addGltfMorphStepAnimation(model, "frames", times, 1);
 }
 
 void addMorphTargets(tinygltf::Model& model, const Timeline& timeline, tinygltf::Primitive& primitive,
@@ -125,7 +46,7 @@ void addMorphTargets(tinygltf::Model& model, const Timeline& timeline, tinygltf:
             positions[frame.vertices[k]] = frame.after[k];
         for (std::size_t v = 0; v < base.size(); ++v)
             displacement[v] = positions[v] - base[v];
-        primitive.targets.push_back({{"POSITION", addDisplacements(model, displacement)}});
+        primitive.targets.push_back({{"POSITION", addGltfSparseVec3Accessor(model, displacement)}});
         mesh.weights.push_back(0.0);
     }
 }

@@ -1,13 +1,13 @@
-#include "timeline/project_file.h"
+#include "core/timeline/project_file.h"
 
-#include "surface/control_edit.h"
-#include "surface/editable_surface.h"
-#include "timeline/atomic_write.h"
-#include "timeline/binary_array.h"
-#include "timeline/file_bytes.h"
-#include "timeline/json_fields.h"
-#include "timeline/stroke_json.h"
-#include "timeline/surface_json.h"
+#include "core/timeline/control_edit.h"
+#include "core/surface/editable_surface.h"
+#include "core/io/atomic_write.h"
+#include "core/timeline/binary_array.h"
+#include "core/io/file_bytes.h"
+#include "core/io/json_fields.h"
+#include "core/timeline/stroke_json.h"
+#include "core/timeline/surface_json.h"
 
 #include <nlohmann/json.hpp>
 

@@ -6,9 +6,9 @@
 /// restores the Timeline exactly — bit for bit — and saving replaces the file atomically.
 /// The format is documented in docs/project-format.md.
 
-#include "timeline/project_file_error.h"
-#include "timeline/timeline.h"
-#include "trim/static_rule.h"
+#include "core/timeline/project_file_error.h"
+#include "core/timeline/timeline.h"
+#include "core/trim/static_rule.h"
 
 #include <glm/vec3.hpp>
 

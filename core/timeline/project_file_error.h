@@ -2,7 +2,7 @@
 /// \file
 /// The typed exception project file loading throws: which file, where in it, and why.
 
-#include "util/document_file_error.h"
+#include "core/io/document_file_error.h"
 
 namespace trimlab::timeline {
 

@@ -1,7 +1,7 @@
-#include "timeline/stroke_json.h"
+#include "core/timeline/stroke_json.h"
 
-#include "timeline/json_fields.h"
-#include "timeline/stroke_validation.h"
+#include "core/io/json_fields.h"
+#include "core/timeline/stroke_validation.h"
 
 #include <limits>
 #include <stdexcept>

@@ -9,7 +9,7 @@
 /// text that reads back to the same double), so a written stroke reads back bit-exactly.
 /// Internal to core/timeline; docs/project-format.md documents the schema.
 
-#include "deform/stroke.h"
+#include "core/deform/stroke.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,9 +1,9 @@
-#include "timeline/stroke_replay.h"
+#include "core/timeline/stroke_replay.h"
 
-#include "deform/brush_stroke.h"
-#include "deform/brush_topology.h"
-#include "timeline/float_bits.h"
-#include "timeline/json_fields.h"
+#include "core/deform/brush_stroke.h"
+#include "core/deform/brush_topology.h"
+#include "core/util/float_bits.h"
+#include "core/io/json_fields.h"
 
 #include <stdexcept>
 

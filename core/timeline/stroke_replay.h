@@ -3,10 +3,10 @@
 /// Replaying a stroke script on a mesh: the headless counterpart of the designer's brush
 /// (`trimlab render --script S.json --frame N`).
 
-#include "animation/task_control.h"
-#include "mesh/triangle_mesh.h"
-#include "timeline/stroke_script.h"
-#include "timeline/timeline.h"
+#include "core/util/task_control.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/timeline/stroke_script.h"
+#include "core/timeline/timeline.h"
 
 #include <string>
 

@@ -1,9 +1,9 @@
-#include "timeline/stroke_script.h"
+#include "core/timeline/stroke_script.h"
 
-#include "timeline/atomic_write.h"
-#include "timeline/file_bytes.h"
-#include "timeline/json_fields.h"
-#include "timeline/stroke_json.h"
+#include "core/io/atomic_write.h"
+#include "core/io/file_bytes.h"
+#include "core/io/json_fields.h"
+#include "core/timeline/stroke_json.h"
 
 #include <nlohmann/json.hpp>
 

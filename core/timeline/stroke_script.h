@@ -10,9 +10,9 @@
 /// Only "anchor" and "drag" are required in a stroke; omitted fields take BrushSettings'
 /// defaults, an omitted rule is "confluent".
 
-#include "deform/stroke.h"
-#include "timeline/timeline.h"
-#include "trim/dynamic_rule.h"
+#include "core/deform/stroke.h"
+#include "core/timeline/timeline.h"
+#include "core/trim/dynamic_rule.h"
 
 #include <cstddef>
 #include <filesystem>

@@ -1,4 +1,4 @@
-#include "timeline/stroke_validation.h"
+#include "core/timeline/stroke_validation.h"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 /// What makes a stroke storable and replayable, checked where strokes enter the
 /// timeline so that every saved project loads again.
 
-#include "deform/stroke.h"
+#include "core/deform/stroke.h"
 
 #include <cstdint>
 #include <string>

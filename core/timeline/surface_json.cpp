@@ -1,8 +1,8 @@
-#include "timeline/surface_json.h"
+#include "core/timeline/surface_json.h"
 
-#include "surface/nurbs_json.h"
-#include "timeline/binary_array.h"
-#include "timeline/json_fields.h"
+#include "core/surface/nurbs_json.h"
+#include "core/timeline/binary_array.h"
+#include "core/io/json_fields.h"
 
 #include <limits>
 #include <stdexcept>

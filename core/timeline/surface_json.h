@@ -7,8 +7,8 @@
 /// (binary_array.h). Internal to core/timeline (project_file.cpp); errors are
 /// JsonPathError naming the JSON path.
 
-#include "surface/surface_definition.h"
-#include "timeline/timeline.h"
+#include "core/surface/surface_definition.h"
+#include "core/timeline/timeline.h"
 
 #include <nlohmann/json.hpp>
 

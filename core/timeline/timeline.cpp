@@ -1,7 +1,7 @@
-#include "timeline/timeline.h"
+#include "core/timeline/timeline.h"
 
-#include "timeline/float_bits.h"
-#include "timeline/stroke_validation.h"
+#include "core/util/float_bits.h"
+#include "core/timeline/stroke_validation.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -16,10 +16,10 @@
 /// the dynamic rules see them exactly like strokes (the tessellation's connectivity is
 /// fixed) and controlPointsAt(f) is bit-exact like positionsAt(f).
 
-#include "deform/stroke.h"
-#include "mesh/triangle_mesh.h"
-#include "surface/surface_definition.h"
-#include "trim/dynamic_rule.h"
+#include "core/deform/stroke.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/surface/surface_definition.h"
+#include "core/trim/dynamic_rule.h"
 
 #include <glm/vec3.hpp>
 
@@ -82,7 +82,7 @@ public:
     explicit Timeline(TriangleMesh base, DynamicRule firstRule = DynamicRule::Confluent);
     /// Starts the history of an editable surface: `base` must be the tessellation of
     /// `surface` at its own control points (EditableSurface(surface).mesh(); use
-    /// surfaceTimeline() in core/surface/control_edit.h, which guarantees it — this
+    /// surfaceTimeline() in core/timeline/control_edit.h, which guarantees it — this
     /// constructor does not tessellate). Throws std::invalid_argument "Timeline: ..." for
     /// an invalid definition (requireValidSurfaceDefinition).
     Timeline(TriangleMesh base, SurfaceDefinition surface, DynamicRule firstRule = DynamicRule::Confluent);
@@ -143,7 +143,7 @@ public:
     /// A history with a surface takes control edits only: a stroke frame is refused
     /// ("this history edits a NURBS surface through its control points; ..."), since the
     /// mesh must stay the surface evaluated at its control points (use the control-point
-    /// brush, core/surface/control_brush.h).
+    /// brush, core/design/control_brush.h).
     void appendFrame(Frame frame);
     /// Removes the last frame (undo of a stroke or control edit) and returns it. The set it belonged to is
     /// kept even if it becomes empty; empty sets after it then start at the new last

@@ -1,6 +1,6 @@
-#include "trim/clip_plane.h"
+#include "core/trim/clip_plane.h"
 
-#include "util/parse_numbers.h"
+#include "core/util/parse_numbers.h"
 
 #include <glm/geometric.hpp>
 

@@ -2,7 +2,7 @@
 /// \file
 /// A clipping plane and the part of a pixel ray it keeps.
 
-#include "view/camera.h"
+#include "core/view/camera.h"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>

@@ -1,4 +1,4 @@
-#include "trim/clip_set.h"
+#include "core/trim/clip_set.h"
 
 #include <glm/geometric.hpp>
 

@@ -6,8 +6,8 @@
 /// camera's [zNear, zFar], which is convex, so every ray keeps one interval (KeptSpan).
 /// The GLSL twin is shaders/common/clip.glsl.
 
-#include "trim/clip_plane.h"
-#include "view/camera.h"
+#include "core/trim/clip_plane.h"
+#include "core/view/camera.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,4 +1,4 @@
-#include "trim/csg_expression.h"
+#include "core/trim/csg_expression.h"
 
 #include <algorithm>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "trim/dynamic_chain.h"
+#include "core/trim/dynamic_chain.h"
 
 #include <stdexcept>
 

@@ -7,9 +7,9 @@
 /// The first level's reference is the base mesh, classified by a static rule; every later
 /// level's reference classification is the characterization the level before produced.
 
-#include "trim/dynamic_frame_scene.h"
-#include "trim/dynamic_rule.h"
-#include "trim/static_rule.h"
+#include "core/trim/dynamic_frame_scene.h"
+#include "core/trim/dynamic_rule.h"
+#include "core/trim/static_rule.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>

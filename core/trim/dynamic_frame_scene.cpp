@@ -1,4 +1,4 @@
-#include "trim/dynamic_frame_scene.h"
+#include "core/trim/dynamic_frame_scene.h"
 
 #include <cstring>
 #include <stdexcept>

@@ -9,9 +9,9 @@
 /// without a change to its fragment format:
 ///   object 0: both (frame.class 2), object 1: current only (1), object 2: reference only (0).
 
-#include "mesh/triangle_mesh.h"
-#include "scene/scene.h"
-#include "trim/trim_image.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/scene/scene.h"
+#include "core/trim/trim_image.h"
 
 #include <glm/mat4x4.hpp>
 

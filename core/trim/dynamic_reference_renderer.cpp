@@ -1,6 +1,6 @@
-#include "trim/dynamic_reference_renderer.h"
+#include "core/trim/dynamic_reference_renderer.h"
 
-#include "trim/dynamic_walk.h"
+#include "core/trim/dynamic_walk.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -50,20 +50,6 @@ ReferenceResult DynamicReferenceRenderer::render(const Camera& camera, int width
         return result.walk;
     };
     return m_levels[last]->render(camera, width, height, settings, threads, walker);
-}
-
-PartitionCharacterization DynamicReferenceRenderer::characterizePixel(const Camera& camera, int width, int height,
-                                                                      int x, int y) const
-{
-    const std::size_t last = m_levels.size() - 1;
-    std::vector<RayHit> hits;
-    const PixelRay ray = pixelRay(camera, width, height, x, y);
-    const PartitionCharacterization characterization = referenceOfLevel(last, ray, camera.zNear, camera.zFar, hits);
-    hits.clear();
-    m_levels[last]->bvh().intersectAll(ray, camera.zNear, camera.zFar, hits);
-    std::sort(hits.begin(), hits.end(), walkOrder);
-    const ReferenceClassification reference{last == 0 ? nullptr : &characterization, m_baseRule};
-    return characterizeDynamicRay(hits, m_rules[last], reference);
 }
 
 DynamicWalkResult DynamicReferenceRenderer::walkRay(const PixelRay& ray, double tMin, double tMax,

@@ -5,10 +5,10 @@
 /// shown level walked with walkDynamicRay — the decision the GPU makes with its bit
 /// vectors, in double precision and without fragment limits.
 
-#include "trim/dynamic_chain.h"
-#include "trim/dynamic_walk.h"
-#include "trim/partition_characterization.h"
-#include "trim/reference_renderer.h"
+#include "core/trim/dynamic_chain.h"
+#include "core/trim/dynamic_walk.h"
+#include "core/trim/partition_characterization.h"
+#include "core/trim/reference_renderer.h"
 
 #include <memory>
 #include <vector>
@@ -24,11 +24,6 @@ public:
     /// last level's DynamicFrameScene (as the GPU's do).
     [[nodiscard]] ReferenceResult render(const Camera& camera, int width, int height, const TrimSettings& settings,
                                          unsigned threads = 0) const;
-
-    /// The characterization the last level produces for pixel (x, y): what the next set
-    /// would take as its reference there.
-    [[nodiscard]] PartitionCharacterization characterizePixel(const Camera& camera, int width, int height, int x,
-                                                              int y) const;
 
     /// The shown level's dynamic walk along any ray, over hits with tMin <= t <= tMax
     /// (the span starts at tMin, trimming on, no clip); `hits` receives the shown

@@ -1,4 +1,4 @@
-#include "trim/dynamic_rule.h"
+#include "core/trim/dynamic_rule.h"
 
 namespace trimlab {
 

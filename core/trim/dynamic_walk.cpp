@@ -1,6 +1,6 @@
-#include "trim/dynamic_walk.h"
+#include "core/trim/dynamic_walk.h"
 
-#include "trim/dynamic_frame_scene.h"
+#include "core/trim/dynamic_frame_scene.h"
 
 namespace trimlab {
 

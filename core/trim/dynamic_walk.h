@@ -18,12 +18,12 @@
 /// - Trimming on: the shown hit is the first current hit whose two sides classify
 ///   differently; off: the first current hit. Reference-only hits are never shown.
 
-#include "trim/dynamic_rule.h"
-#include "trim/partition_characterization.h"
-#include "trim/ray_hit.h"
-#include "trim/static_rule.h"
-#include "trim/trim_settings.h"
-#include "trim/trim_walk.h"
+#include "core/trim/dynamic_rule.h"
+#include "core/trim/partition_characterization.h"
+#include "core/trim/ray_hit.h"
+#include "core/trim/static_rule.h"
+#include "core/trim/trim_settings.h"
+#include "core/trim/trim_walk.h"
 
 #include <span>
 

@@ -1,4 +1,4 @@
-#include "trim/inspect_settings.h"
+#include "core/trim/inspect_settings.h"
 
 namespace trimlab {
 

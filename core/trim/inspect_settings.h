@@ -5,8 +5,8 @@
 /// and coplanar fragments, and transparency (X-ray). Plain values shared by the GPU backends, the CPU
 /// reference, the GUI panels and the command line (TrimSettings holds one of each).
 
-#include "trim/csg_expression.h"
-#include "trim/static_rule.h"
+#include "core/trim/csg_expression.h"
+#include "core/trim/static_rule.h"
 
 #include <array>
 #include <optional>

@@ -1,7 +1,7 @@
 // Compiled with -ffp-contract=off (see trim/sources.cmake): the watertightness argument
 // needs every vertex sheared by the same rounded operations in every triangle, and the
 // exact sign code needs plain IEEE additions and products.
-#include "trim/ray_triangle.h"
+#include "core/trim/ray_triangle.h"
 
 #include <glm/geometric.hpp>
 

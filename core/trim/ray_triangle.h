@@ -15,7 +15,7 @@
 /// projection covers a neighbourhood of the ray once per sheet (shared edges, vertex fans)
 /// exactly one triangle per sheet is hit — the winding index is never off by one.
 
-#include "view/camera.h"
+#include "core/view/camera.h"
 
 #include <glm/vec3.hpp>
 

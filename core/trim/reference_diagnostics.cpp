@@ -1,4 +1,4 @@
-#include "trim/reference_diagnostics.h"
+#include "core/trim/reference_diagnostics.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

@@ -4,10 +4,10 @@
 /// flipping, so GPU-vs-reference tests can define ambiguous pixels honestly (a float
 /// rasteriser may decide those either way) instead of using blanket tolerances.
 
-#include "trim/clip_plane.h"
-#include "trim/ray_hit.h"
-#include "trim/trim_walk.h"
-#include "view/camera.h"
+#include "core/trim/clip_plane.h"
+#include "core/trim/ray_hit.h"
+#include "core/trim/trim_walk.h"
+#include "core/view/camera.h"
 
 #include <glm/vec3.hpp>
 

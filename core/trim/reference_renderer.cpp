@@ -1,8 +1,8 @@
-#include "trim/reference_renderer.h"
+#include "core/trim/reference_renderer.h"
 
-#include "scene/world_geometry.h"
-#include "trim/transparency.h"
-#include "trim/trim_shading.h"
+#include "core/scene/world_geometry.h"
+#include "core/trim/transparency.h"
+#include "core/trim/trim_shading.h"
 
 #include <glm/geometric.hpp>
 

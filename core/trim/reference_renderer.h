@@ -5,16 +5,16 @@
 /// precision watertight BVH, sorted with walkOrder and decided by walkTrimRay — the same
 /// rule, clip and winding semantics as the GPU, without fragment limits or float depth.
 
-#include "image/rgba_image.h"
-#include "scene/scene.h"
-#include "trim/clip_plane.h"
-#include "trim/ray_hit.h"
-#include "trim/reference_diagnostics.h"
-#include "trim/triangle_bvh.h"
-#include "trim/trim_image.h"
-#include "trim/trim_settings.h"
-#include "trim/trim_walk.h"
-#include "view/camera.h"
+#include "core/image/rgba_image.h"
+#include "core/scene/scene.h"
+#include "core/trim/clip_plane.h"
+#include "core/trim/ray_hit.h"
+#include "core/trim/reference_diagnostics.h"
+#include "core/trim/triangle_bvh.h"
+#include "core/trim/trim_image.h"
+#include "core/trim/trim_settings.h"
+#include "core/trim/trim_walk.h"
+#include "core/view/camera.h"
 
 #include <glm/vec3.hpp>
 

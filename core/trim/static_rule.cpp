@@ -1,4 +1,4 @@
-#include "trim/static_rule.h"
+#include "core/trim/static_rule.h"
 
 namespace trimlab {
 

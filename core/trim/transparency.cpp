@@ -1,4 +1,4 @@
-#include "trim/transparency.h"
+#include "core/trim/transparency.h"
 
 #include <algorithm>
 #include <cmath>

@@ -16,7 +16,7 @@
 ///     role ends the walk;
 ///  4. the pixel is C + T·background.
 
-#include "trim/inspect_settings.h"
+#include "core/trim/inspect_settings.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,8 +1,8 @@
 // Compiled with -ffp-contract=off (see trim/sources.cmake), like ray_triangle.cpp.
-#include "trim/triangle_bvh.h"
+#include "core/trim/triangle_bvh.h"
 
-#include "scene/world_geometry.h"
-#include "trim/ray_triangle.h"
+#include "core/scene/world_geometry.h"
+#include "core/trim/ray_triangle.h"
 
 #include <glm/geometric.hpp>
 

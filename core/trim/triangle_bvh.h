@@ -4,9 +4,9 @@
 /// precision, answering "all hits of this ray in [tMin, tMax]" — the CPU reference needs
 /// every surface crossing of a pixel ray, not just the closest one.
 
-#include "scene/scene.h"
-#include "trim/ray_hit.h"
-#include "view/camera.h"
+#include "core/scene/scene.h"
+#include "core/trim/ray_hit.h"
+#include "core/view/camera.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,4 +1,4 @@
-#include "trim/trim_agreement.h"
+#include "core/trim/trim_agreement.h"
 
 #include <algorithm>
 #include <cstdio>

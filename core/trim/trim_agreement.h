@@ -21,9 +21,9 @@
 /// - overflowed: a capacity-bounded method flags the pixel as having lost fragments (or
 ///   unresolved). It is not compared; a wrong pixel without the flag is disagreeing.
 
-#include "trim/reference_diagnostics.h"
-#include "trim/reference_renderer.h"
-#include "trim/trim_image.h"
+#include "core/trim/reference_diagnostics.h"
+#include "core/trim/reference_renderer.h"
+#include "core/trim/trim_image.h"
 
 #include <cstdint>
 #include <functional>

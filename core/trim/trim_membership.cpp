@@ -1,6 +1,6 @@
-#include "trim/trim_membership.h"
+#include "core/trim/trim_membership.h"
 
-#include "trim/dynamic_frame_scene.h"
+#include "core/trim/dynamic_frame_scene.h"
 
 #include <glm/geometric.hpp>
 

@@ -5,7 +5,7 @@
 /// confluent rule (thesis 8.1.1) forbids deforming surface parts that were trimmed off;
 /// the brush asks this before a stroke starts.
 
-#include "trim/dynamic_reference_renderer.h"
+#include "core/trim/dynamic_reference_renderer.h"
 
 #include <glm/vec3.hpp>
 

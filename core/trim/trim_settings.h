@@ -3,10 +3,10 @@
 /// What the user asked the trim renderer to show. Shared by the GPU backends, the CPU
 /// reference, the GUI and the command line so that all of them mean the same thing.
 
-#include "trim/clip_plane.h"
-#include "trim/clip_set.h"
-#include "trim/inspect_settings.h"
-#include "trim/static_rule.h"
+#include "core/trim/clip_plane.h"
+#include "core/trim/clip_set.h"
+#include "core/trim/inspect_settings.h"
+#include "core/trim/static_rule.h"
 
 #include <array>
 

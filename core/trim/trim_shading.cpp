@@ -1,4 +1,4 @@
-#include "trim/trim_shading.h"
+#include "core/trim/trim_shading.h"
 
 #include <glm/geometric.hpp>
 

@@ -3,7 +3,7 @@
 /// How a shown trim point is colored. The GLSL twin is shaders/common/trim_shading.glsl;
 /// keep the two identical (render tests compare colors against the CPU reference).
 
-#include "trim/inspect_settings.h"
+#include "core/trim/inspect_settings.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,4 +1,4 @@
-#include "trim/trim_walk.h"
+#include "core/trim/trim_walk.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -36,11 +36,11 @@
 ///   composites them.
 /// Without these settings the walk is the static walk above, unchanged.
 
-#include "trim/clip_plane.h"
-#include "trim/csg_expression.h"
-#include "trim/ray_hit.h"
-#include "trim/trim_image.h"
-#include "trim/trim_settings.h"
+#include "core/trim/clip_plane.h"
+#include "core/trim/csg_expression.h"
+#include "core/trim/ray_hit.h"
+#include "core/trim/trim_image.h"
+#include "core/trim/trim_settings.h"
 
 #include <array>
 #include <cstddef>

@@ -1,6 +1,6 @@
-#include "trim/winding_number.h"
+#include "core/trim/winding_number.h"
 
-#include "scene/world_geometry.h"
+#include "core/scene/world_geometry.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>

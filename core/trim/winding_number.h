@@ -5,7 +5,7 @@
 /// number). For a closed oriented surface and p off the surface it is an integer; it is an
 /// independent check of ray-counted indices (tests) and works for any point.
 
-#include "scene/scene.h"
+#include "core/scene/scene.h"
 
 #include <glm/vec3.hpp>
 

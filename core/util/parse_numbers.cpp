@@ -1,4 +1,4 @@
-#include "util/parse_numbers.h"
+#include "core/util/parse_numbers.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include "view/camera.h"
+#include "core/view/camera.h"
 
-#include "util/parse_numbers.h"
+#include "core/util/parse_numbers.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>

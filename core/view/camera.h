@@ -3,7 +3,7 @@
 /// The pinhole camera shared by the GPU renderer and the CPU reference. Both derive every
 /// pixel's ray from the same numbers, so their images can be compared pixel by pixel.
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>

@@ -1,4 +1,4 @@
-#include "view/orbit_controller.h"
+#include "core/view/orbit_controller.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

@@ -12,7 +12,7 @@
 /// at half-integers). Only the ratio of a drag to the viewport height matters, so
 /// logical and device pixels work alike as long as one call does not mix them.
 
-#include "view/camera.h"
+#include "core/view/camera.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,4 +1,4 @@
-#include "gl/context_reset.h"
+#include "render/gl/context_reset.h"
 
 #include <QOpenGLFunctions>
 

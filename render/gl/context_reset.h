@@ -13,7 +13,7 @@
 /// into GlContextLostError; the viewport then re-creates its context and uploads the
 /// scene again, the batch verbs render the frame again once.
 
-#include "gl/gl_error.h"
+#include "render/gl/gl_error.h"
 
 #include <QOpenGLContext>
 

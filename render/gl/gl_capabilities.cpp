@@ -1,4 +1,4 @@
-#include "gl/gl_capabilities.h"
+#include "render/gl/gl_capabilities.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>

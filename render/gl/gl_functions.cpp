@@ -1,6 +1,6 @@
-#include "gl/gl_functions.h"
+#include "render/gl/gl_functions.h"
 
-#include "gl/gl_error.h"
+#include "render/gl/gl_error.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLVersionFunctionsFactory>

@@ -1,7 +1,7 @@
-#include "gl/gl_objects.h"
+#include "render/gl/gl_objects.h"
 
-#include "gl/context_reset.h"
-#include "gl/gl_error.h"
+#include "render/gl/context_reset.h"
+#include "render/gl/gl_error.h"
 
 #include <cstdio>
 #include <string>

@@ -3,7 +3,7 @@
 /// Move-only owners of OpenGL object names (buffers, textures, vertex arrays,
 /// framebuffers, queries). The context that created them must be current when they die.
 
-#include "gl/gl_functions.h"
+#include "render/gl/gl_functions.h"
 
 #include <utility>
 

@@ -1,6 +1,6 @@
-#include "gl/offscreen_gl_context.h"
+#include "render/gl/offscreen_gl_context.h"
 
-#include "gl/gl_error.h"
+#include "render/gl/gl_error.h"
 
 #include <QGuiApplication>
 

@@ -1,9 +1,9 @@
 #pragma once
 /// \file
 /// An OpenGL 4.3 core context without a window, for the `render`/`bench` verbs and tests.
-/// Needs a QGuiApplication; on this platform also an X display (Xvfb), see PLATFORM.md.
+/// Needs a QGuiApplication; on this platform also an X display (Xvfb), see docs/llvmpipe-notes.md.
 
-#include "gl/gl_capabilities.h"
+#include "render/gl/gl_capabilities.h"
 
 #include <QOffscreenSurface>
 #include <QOpenGLContext>

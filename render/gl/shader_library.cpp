@@ -1,7 +1,7 @@
-#include "gl/shader_library.h"
+#include "render/gl/shader_library.h"
 
-#include "gl/gl_error.h"
-#include "gl/shader_source.h"
+#include "render/gl/gl_error.h"
+#include "render/gl/shader_source.h"
 
 #include <QRegularExpression>
 

@@ -4,7 +4,7 @@
 /// A compile or link failure throws ShaderBuildError with the info log and the numbered
 /// source around each reported line; a link result is never ignored.
 
-#include "gl/gl_functions.h"
+#include "render/gl/gl_functions.h"
 
 #include <QHash>
 #include <QString>

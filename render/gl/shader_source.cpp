@@ -1,6 +1,7 @@
-#include "gl/shader_source.h"
+#include "render/gl/shader_source.h"
 
-#include "gl/gl_error.h"
+#include "render/gl/bindings.h"
+#include "render/gl/gl_error.h"
 
 #include <QDirIterator>
 #include <QFile>
@@ -68,7 +69,7 @@ AssembledShader assembleShader(const QString& file, const QStringList& defines)
     a.out.file = file;
     a.included.insert(file);
     a.appendLine(lines.first(), file, 1);
-    for (const QString& d : defines)
+    for (const QString& d : binding::glslBindingDefines() + defines)
         a.appendLine(QStringLiteral("#define ") + d, QStringLiteral("<define>"), 0);
     a.appendLines(file, lines, 1);
     return a.out;

@@ -1,8 +1,10 @@
 #pragma once
 /// \file
 /// Turns a shader file from the embedded resources into the text handed to the GL
-/// compiler: `#define` lines after `#version`, `#include "common/x.glsl"` expanded once
-/// per file. No OpenGL needed, so the same text can also be checked by glslangValidator.
+/// compiler: `#define` lines after `#version` — first every binding point
+/// (bindings.h: the one source of those numbers), then the variant's —, `#include
+/// "common/x.glsl"` expanded once per file. No OpenGL needed, so the same text can also
+/// be checked by glslangValidator.
 
 #include <QByteArray>
 #include <QString>
@@ -31,8 +33,8 @@ struct AssembledShader {
 /// Root of the embedded shader files (a Qt resource path, ":/shaders").
 [[nodiscard]] QString shaderResourceRoot();
 
-/// Assembles `file` (relative to shaderResourceRoot()). `defines` are "NAME" or
-/// "NAME VALUE" strings. Throws ShaderBuildError when a file or include is missing or the
+/// Assembles `file` (relative to shaderResourceRoot()) with the binding defines and
+/// `defines`, "NAME" or "NAME VALUE" strings. Throws ShaderBuildError when a file or include is missing or the
 /// file does not start with a #version line.
 [[nodiscard]] AssembledShader assembleShader(const QString& file, const QStringList& defines = {});
 

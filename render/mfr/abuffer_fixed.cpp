@@ -1,10 +1,10 @@
-#include "mfr/abuffer_fixed.h"
+#include "render/mfr/abuffer_fixed.h"
 
-#include "frame_counters.h"
-#include "gl/shader_library.h"
-#include "gpu_scene.h"
-#include "mfr/trim_frame.h"
-#include "passes/trim_pass_state.h"
+#include "render/frame/frame_counters.h"
+#include "render/gl/shader_library.h"
+#include "render/frame/gpu_scene.h"
+#include "render/mfr/trim_frame.h"
+#include "render/mfr/trim_pass_state.h"
 
 #include <algorithm>
 

@@ -12,10 +12,10 @@
 /// to there. An overflowed pixel is shown only when its trim fragment lies strictly in
 /// front of the nearest lost fragment (provably right); otherwise it is unresolved.
 
-#include "gl/gl_objects.h"
-#include "mfr/fragment_method.h"
-#include "mfr/pixel_state.h"
-#include "mfr/slot_array.h"
+#include "render/gl/gl_objects.h"
+#include "render/mfr/fragment_method.h"
+#include "render/mfr/pixel_state.h"
+#include "render/mfr/slot_array.h"
 
 namespace trimlab::render {
 

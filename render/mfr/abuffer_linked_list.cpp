@@ -1,13 +1,13 @@
-#include "mfr/abuffer_linked_list.h"
+#include "render/mfr/abuffer_linked_list.h"
 
-#include "frame_counters.h"
-#include "gl/gl_capabilities.h"
-#include "gl/shader_library.h"
-#include "gpu_scene.h"
-#include "mfr/bindings.h"
-#include "mfr/resolve_budget.h"
-#include "mfr/trim_frame.h"
-#include "passes/trim_pass_state.h"
+#include "render/frame/frame_counters.h"
+#include "render/gl/gl_capabilities.h"
+#include "render/gl/shader_library.h"
+#include "render/frame/gpu_scene.h"
+#include "render/gl/bindings.h"
+#include "render/mfr/resolve_budget.h"
+#include "render/mfr/trim_frame.h"
+#include "render/mfr/trim_pass_state.h"
 
 #include <algorithm>
 

@@ -15,10 +15,10 @@
 /// (MethodStats::regrowths, regrowthCount()). Reading the counter back waits for the GPU
 /// once per frame. Unbounded; GpuMemoryError when the fragments do not fit one buffer.
 
-#include "mfr/fragment_method.h"
-#include "mfr/head_image.h"
-#include "mfr/node_buffer.h"
-#include "mfr/pixel_state.h"
+#include "render/mfr/fragment_method.h"
+#include "render/mfr/head_image.h"
+#include "render/mfr/node_buffer.h"
+#include "render/mfr/pixel_state.h"
 
 #include <cstdint>
 

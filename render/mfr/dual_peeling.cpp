@@ -1,4 +1,4 @@
-#include "mfr/dual_peeling.h"
+#include "render/mfr/dual_peeling.h"
 
 namespace trimlab::render {
 

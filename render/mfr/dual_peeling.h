@@ -16,9 +16,9 @@
 /// Unbounded, with F2B's pass bound, lock flags and termination (mfr/peeling_passes.h).
 /// Shaders: peel_dual.frag, peel_dual_walk.frag, peeling_resolve.frag.
 
-#include "mfr/fragment_method.h"
-#include "mfr/peeling_passes.h"
-#include "mfr/peeling_state.h"
+#include "render/mfr/fragment_method.h"
+#include "render/mfr/peeling_passes.h"
+#include "render/mfr/peeling_state.h"
 
 namespace trimlab::render {
 

@@ -1,4 +1,4 @@
-#include "mfr/f2b_peeling.h"
+#include "render/mfr/f2b_peeling.h"
 
 namespace trimlab::render {
 

@@ -18,9 +18,9 @@
 /// the pixels still peeling then are flagged unresolved. Passes and termination:
 /// mfr/peeling_passes.h. Shaders: peel_f2b.frag, peel_f2b_walk.frag, peeling_resolve.frag.
 
-#include "mfr/fragment_method.h"
-#include "mfr/peeling_passes.h"
-#include "mfr/peeling_state.h"
+#include "render/mfr/fragment_method.h"
+#include "render/mfr/peeling_passes.h"
+#include "render/mfr/peeling_state.h"
 
 namespace trimlab::render {
 

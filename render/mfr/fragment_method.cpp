@@ -1,4 +1,4 @@
-#include "mfr/fragment_method.h"
+#include "render/mfr/fragment_method.h"
 
 #include <stdexcept>
 

@@ -6,8 +6,8 @@
 /// in the render target. Methods differ only in how they capture and order fragments;
 /// the trim walk (shaders/common/trim_walk.glsl) and the output are shared.
 
-#include "gl/gl_functions.h"
-#include "mfr/pixel_state.h"
+#include "render/gl/gl_functions.h"
+#include "render/mfr/pixel_state.h"
 
 #include <cstddef>
 #include <optional>

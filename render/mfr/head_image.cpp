@@ -1,7 +1,7 @@
-#include "mfr/head_image.h"
+#include "render/mfr/head_image.h"
 
-#include "gl/shader_library.h"
-#include "mfr/bindings.h"
+#include "render/gl/shader_library.h"
+#include "render/gl/bindings.h"
 
 namespace trimlab::render {
 

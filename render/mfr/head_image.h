@@ -4,8 +4,8 @@
 /// binding::kHeadImage): the first node of a pixel's region (S-buffer, K⁺B-SB) or the
 /// head of its linked list (AB_LL, node index + 1, 0 = empty).
 
-#include "gl/gl_functions.h"
-#include "gl/gl_objects.h"
+#include "render/gl/gl_functions.h"
+#include "render/gl/gl_objects.h"
 
 #include <cstddef>
 

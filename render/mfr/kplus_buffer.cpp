@@ -1,11 +1,11 @@
-#include "mfr/kplus_buffer.h"
+#include "render/mfr/kplus_buffer.h"
 
-#include "frame_counters.h"
-#include "gl/gl_capabilities.h"
-#include "gl/shader_library.h"
-#include "gpu_scene.h"
-#include "mfr/trim_frame.h"
-#include "passes/trim_pass_state.h"
+#include "render/frame/frame_counters.h"
+#include "render/gl/gl_capabilities.h"
+#include "render/gl/shader_library.h"
+#include "render/frame/gpu_scene.h"
+#include "render/mfr/trim_frame.h"
+#include "render/mfr/trim_pass_state.h"
 
 
 namespace trimlab::render {
@@ -23,17 +23,6 @@ KPlusLock chooseKPlusLock(const GlCapabilities& caps, bool allowInterlock)
     if (!allowInterlock)
         return KPlusLock::SpinLock;
     return caps.hasExtension("GL_ARB_fragment_shader_interlock") ? KPlusLock::InterlockArb : KPlusLock::SpinLock;
-}
-
-const char* kplusLockName(KPlusLock lock)
-{
-    switch (lock) {
-    case KPlusLock::SpinLock:
-        return "spin-lock";
-    case KPlusLock::InterlockArb:
-        return "GL_ARB_fragment_shader_interlock";
-    }
-    return "?";
 }
 
 QStringList kplusStoreDefines(KPlusLock lock, bool heap)

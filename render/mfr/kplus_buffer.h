@@ -8,10 +8,10 @@
 /// Besides the fragments, the exact winding index at the span start and an overflow flag
 /// per pixel (PixelState). Shaders: kplus_store.frag, kplus_resolve.frag.
 
-#include "gl/gl_objects.h"
-#include "mfr/fragment_method.h"
-#include "mfr/pixel_state.h"
-#include "mfr/slot_array.h"
+#include "render/gl/gl_objects.h"
+#include "render/mfr/fragment_method.h"
+#include "render/mfr/pixel_state.h"
+#include "render/mfr/slot_array.h"
 
 #include <QStringList>
 
@@ -26,8 +26,6 @@ enum class KPlusLock { SpinLock, InterlockArb };
 
 /// Picks interlock where the context has it (and the user allows it), else the spin-lock.
 [[nodiscard]] KPlusLock chooseKPlusLock(const GlCapabilities& capabilities, bool allowInterlock);
-/// "spin-lock" or "GL_ARB_fragment_shader_interlock".
-[[nodiscard]] const char* kplusLockName(KPlusLock lock);
 /// The store shader's defines for `lock` and the data structure.
 [[nodiscard]] QStringList kplusStoreDefines(KPlusLock lock, bool heap);
 

@@ -11,12 +11,12 @@
 /// overflowed (known exactly from the count); it is unresolved only when its trim point
 /// lies beyond them.
 
-#include "mfr/fragment_method.h"
-#include "mfr/head_image.h"
-#include "mfr/kplus_buffer.h"
-#include "mfr/memory_referencing.h"
-#include "mfr/node_buffer.h"
-#include "mfr/pixel_state.h"
+#include "render/mfr/fragment_method.h"
+#include "render/mfr/head_image.h"
+#include "render/mfr/kplus_buffer.h"
+#include "render/mfr/memory_referencing.h"
+#include "render/mfr/node_buffer.h"
+#include "render/mfr/pixel_state.h"
 
 #include <cstdint>
 

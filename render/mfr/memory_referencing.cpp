@@ -1,14 +1,14 @@
-#include "mfr/memory_referencing.h"
+#include "render/mfr/memory_referencing.h"
 
-#include "gl/gl_error.h"
-#include "gl/shader_library.h"
-#include "gpu_scene.h"
-#include "frame_counters.h"
-#include "mfr/bindings.h"
-#include "mfr/head_image.h"
-#include "mfr/pixel_state.h"
-#include "mfr/trim_frame.h"
-#include "passes/trim_pass_state.h"
+#include "render/gl/gl_error.h"
+#include "render/gl/shader_library.h"
+#include "render/frame/gpu_scene.h"
+#include "render/frame/frame_counters.h"
+#include "render/gl/bindings.h"
+#include "render/mfr/head_image.h"
+#include "render/mfr/pixel_state.h"
+#include "render/mfr/trim_frame.h"
+#include "render/mfr/trim_pass_state.h"
 
 #include <stdexcept>
 #include <string>

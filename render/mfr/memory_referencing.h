@@ -18,8 +18,8 @@
 /// total − A(p) − n(p), so every pixel's region is [head, head + n) and the store and
 /// resolve passes need not know the pixel's group.
 
-#include "gl/gl_functions.h"
-#include "gl/gl_objects.h"
+#include "render/gl/gl_functions.h"
+#include "render/gl/gl_objects.h"
 
 #include <cstddef>
 #include <cstdint>

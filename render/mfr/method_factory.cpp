@@ -1,13 +1,13 @@
-#include "mfr/method_factory.h"
+#include "render/mfr/method_factory.h"
 
-#include "mfr/abuffer_fixed.h"
-#include "mfr/abuffer_linked_list.h"
-#include "mfr/dual_peeling.h"
-#include "mfr/f2b_peeling.h"
-#include "mfr/kplus_buffer.h"
-#include "mfr/kplus_s_buffer.h"
-#include "mfr/s_buffer.h"
-#include "mfr/two_pass.h"
+#include "render/mfr/abuffer_fixed.h"
+#include "render/mfr/abuffer_linked_list.h"
+#include "render/mfr/dual_peeling.h"
+#include "render/mfr/f2b_peeling.h"
+#include "render/mfr/kplus_buffer.h"
+#include "render/mfr/kplus_s_buffer.h"
+#include "render/mfr/s_buffer.h"
+#include "render/mfr/two_pass.h"
 
 #include <stdexcept>
 

@@ -2,7 +2,7 @@
 /// \file
 /// Creates the multi-fragment method of a kind.
 
-#include "mfr/fragment_method.h"
+#include "render/mfr/fragment_method.h"
 
 #include <memory>
 

@@ -1,7 +1,7 @@
-#include "mfr/node_buffer.h"
+#include "render/mfr/node_buffer.h"
 
-#include "gl/gl_capabilities.h"
-#include "gl/gl_error.h"
+#include "render/gl/gl_capabilities.h"
+#include "render/gl/gl_error.h"
 
 #include <algorithm>
 

@@ -7,8 +7,8 @@
 /// a frame that needs more throws GpuMemoryError saying what to do instead. A user memory
 /// budget (MethodParameters::memoryBudgetBytes) lowers that limit further.
 
-#include "gl/gl_functions.h"
-#include "gl/gl_objects.h"
+#include "render/gl/gl_functions.h"
+#include "render/gl/gl_objects.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,12 +1,12 @@
-#include "mfr/peeling_passes.h"
+#include "render/mfr/peeling_passes.h"
 
-#include "frame_counters.h"
-#include "gl/shader_library.h"
-#include "gpu_scene.h"
-#include "mfr/peeling_state.h"
-#include "mfr/trim_frame.h"
-#include "passes/trim_pass_state.h"
-#include "render_target.h"
+#include "render/frame/frame_counters.h"
+#include "render/gl/shader_library.h"
+#include "render/frame/gpu_scene.h"
+#include "render/mfr/peeling_state.h"
+#include "render/mfr/trim_frame.h"
+#include "render/mfr/trim_pass_state.h"
+#include "render/frame/render_target.h"
 
 #include <stdexcept>
 #include <string>

@@ -14,9 +14,9 @@
 /// queries. MethodParameters::maxPeelingPasses bounds the geometry passes; pixels still
 /// peeling then are flagged unresolved by the resolve pass (shaders/peeling_resolve.frag).
 
-#include "gl/gl_functions.h"
-#include "gl/gl_objects.h"
-#include "mfr/fragment_method.h"
+#include "render/gl/gl_functions.h"
+#include "render/gl/gl_objects.h"
+#include "render/mfr/fragment_method.h"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
-#include "mfr/peeling_state.h"
+#include "render/mfr/peeling_state.h"
 
-#include "gl/shader_library.h"
-#include "mfr/bindings.h"
+#include "render/gl/shader_library.h"
+#include "render/gl/bindings.h"
 
 namespace trimlab::render {
 

@@ -9,9 +9,9 @@
 ///   DUAL: also the walk from the back).
 /// A fixed number of bytes per pixel, whatever the scene.
 
-#include "gl/gl_functions.h"
-#include "gl/gl_objects.h"
-#include "mfr/pixel_state.h"
+#include "render/gl/gl_functions.h"
+#include "render/gl/gl_objects.h"
+#include "render/mfr/pixel_state.h"
 
 #include <cstddef>
 

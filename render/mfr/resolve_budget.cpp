@@ -1,6 +1,6 @@
-#include "mfr/resolve_budget.h"
+#include "render/mfr/resolve_budget.h"
 
-#include "gl/gl_capabilities.h"
+#include "render/gl/gl_capabilities.h"
 
 #include <limits>
 

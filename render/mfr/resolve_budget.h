@@ -7,7 +7,7 @@
 /// pixel would be silently wrong; with the budget the fallback stops in time and the
 /// pixel is reported unresolved. Other drivers have no such limit.
 
-#include "gl/gl_functions.h"
+#include "render/gl/gl_functions.h"
 
 namespace trimlab::render {
 

@@ -1,12 +1,12 @@
-#include "mfr/s_buffer.h"
+#include "render/mfr/s_buffer.h"
 
-#include "frame_counters.h"
-#include "gl/shader_library.h"
-#include "gpu_scene.h"
-#include "mfr/bindings.h"
-#include "mfr/resolve_budget.h"
-#include "mfr/trim_frame.h"
-#include "passes/trim_pass_state.h"
+#include "render/frame/frame_counters.h"
+#include "render/gl/shader_library.h"
+#include "render/frame/gpu_scene.h"
+#include "render/gl/bindings.h"
+#include "render/mfr/resolve_budget.h"
+#include "render/mfr/trim_frame.h"
+#include "render/mfr/trim_pass_state.h"
 
 #include <limits>
 

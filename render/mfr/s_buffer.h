@@ -10,11 +10,11 @@
 /// it never loses a fragment; a frame whose fragments do not fit one shader storage
 /// buffer throws GpuMemoryError.
 
-#include "mfr/fragment_method.h"
-#include "mfr/head_image.h"
-#include "mfr/memory_referencing.h"
-#include "mfr/node_buffer.h"
-#include "mfr/pixel_state.h"
+#include "render/mfr/fragment_method.h"
+#include "render/mfr/head_image.h"
+#include "render/mfr/memory_referencing.h"
+#include "render/mfr/node_buffer.h"
+#include "render/mfr/pixel_state.h"
 
 #include <cstdint>
 

@@ -1,7 +1,7 @@
-#include "mfr/slot_array.h"
+#include "render/mfr/slot_array.h"
 
-#include "mfr/bindings.h"
-#include "mfr/fragment_method.h"
+#include "render/gl/bindings.h"
+#include "render/mfr/fragment_method.h"
 
 #include <stdexcept>
 #include <string>

@@ -5,8 +5,8 @@
 /// format), bound at binding::kFragmentsImage. A layered texture is not bound by the
 /// driver's shader-storage block limit (128 MB on llvmpipe).
 
-#include "gl/gl_functions.h"
-#include "gl/gl_objects.h"
+#include "render/gl/gl_functions.h"
+#include "render/gl/gl_objects.h"
 
 #include <cstddef>
 

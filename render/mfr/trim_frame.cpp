@@ -1,6 +1,6 @@
-#include "mfr/trim_frame.h"
+#include "render/mfr/trim_frame.h"
 
-#include "gl/shader_library.h"
+#include "render/gl/shader_library.h"
 
 namespace trimlab::render {
 

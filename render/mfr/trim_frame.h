@@ -2,11 +2,11 @@
 /// \file
 /// Everything one frame of a multi-fragment method needs, handed over by TrimRenderer.
 
-#include "gl/gl_functions.h"
-#include "mfr/fragment_method.h"
+#include "render/gl/gl_functions.h"
+#include "render/mfr/fragment_method.h"
 
-#include "trim/trim_settings.h"
-#include "view/camera.h"
+#include "core/trim/trim_settings.h"
+#include "core/view/camera.h"
 
 #include <glm/mat4x4.hpp>
 

@@ -1,11 +1,11 @@
-#include "mfr/two_pass.h"
+#include "render/mfr/two_pass.h"
 
-#include "frame_counters.h"
-#include "gl/gl_error.h"
-#include "gl/shader_library.h"
-#include "gpu_scene.h"
-#include "mfr/trim_frame.h"
-#include "passes/trim_pass_state.h"
+#include "render/frame/frame_counters.h"
+#include "render/gl/gl_error.h"
+#include "render/gl/shader_library.h"
+#include "render/frame/gpu_scene.h"
+#include "render/mfr/trim_frame.h"
+#include "render/mfr/trim_pass_state.h"
 
 #include <cmath>
 #include <string>

@@ -13,9 +13,9 @@
 /// RG32UI fragment image of the method's own. Shaders: two_pass_count.frag,
 /// two_pass_closest.frag, two_pass_resolve.frag.
 
-#include "gl/gl_objects.h"
-#include "mfr/fragment_method.h"
-#include "mfr/pixel_state.h"
+#include "render/gl/gl_objects.h"
+#include "render/mfr/fragment_method.h"
+#include "render/mfr/pixel_state.h"
 
 namespace trimlab::render {
 

@@ -1,8 +1,8 @@
-#include "passes/object_windings.h"
+#include "render/passes/object_windings.h"
 
-#include "mfr/bindings.h"
+#include "render/gl/bindings.h"
 
-#include "trim/csg_expression.h"
+#include "core/trim/csg_expression.h"
 
 #include <stdexcept>
 #include <string>

@@ -7,8 +7,8 @@
 /// the summed index and read by the resolve. Objects 0 .. objects − 1 only, objects <=
 /// kMaxCsgOperands (8): at 1024×768 and 8 objects it holds 24 MiB.
 
-#include "gl/gl_functions.h"
-#include "gl/gl_objects.h"
+#include "render/gl/gl_functions.h"
+#include "render/gl/gl_objects.h"
 
 #include <cstddef>
 

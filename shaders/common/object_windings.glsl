@@ -3,7 +3,6 @@
 // OBJECT_WINDINGS ints per pixel for the objects 0 .. OBJECT_WINDINGS - 1, counted from
 // the far side in the same geometry pass as the summed index (winding_count.glsl) and read
 // by the resolve to start the walk. The includer defines OBJECT_WINDINGS_ACCESS.
-// Needs bindings.glsl.
 
 layout(std430, binding = STORAGE_OBJECT_WINDINGS) OBJECT_WINDINGS_ACCESS buffer ObjectWindingCounts {
     uint objectWindingWidth; // pixels per row

@@ -1,7 +1,7 @@
 // A trim walk kept in an IMAGE_WALK layer between peeling passes, plus the per-pixel
 // values the walk and resolve passes of F2B and DUAL read (peel_state.glsl).
 //   x: winding index (int bits)  y: WALK_* flags  zw: shown fragment (fragment_pack.glsl)
-// Needs bindings.glsl, fragment_pack.glsl, static_rule.glsl, trim_walk.glsl, peel_state.glsl.
+// Needs fragment_pack.glsl, static_rule.glsl, trim_walk.glsl, peel_state.glsl.
 
 layout(binding = IMAGE_WINDING, r32i) uniform readonly iimage2D u_winding;
 layout(binding = IMAGE_COUNTER, r32ui) uniform coherent uimage2D u_counter; // fragments peeled

@@ -1,11 +1,11 @@
-// The uploaded scene as shader storage (render/gpu_scene.h), so a resolve pass can shade
+// The uploaded scene as shader storage (render/frame/gpu_scene.h), so a resolve pass can shade
 // a stored fragment from its object and primitive id alone.
 
-layout(std430, binding = 1) readonly buffer ScenePositions { float scenePositions[]; };
-layout(std430, binding = 2) readonly buffer SceneNormals { float sceneNormals[]; };
-layout(std430, binding = 3) readonly buffer SceneIndices { uint sceneIndices[]; };
+layout(std430, binding = STORAGE_SCENE_POSITIONS) readonly buffer ScenePositions { float scenePositions[]; };
+layout(std430, binding = STORAGE_SCENE_NORMALS) readonly buffer SceneNormals { float sceneNormals[]; };
+layout(std430, binding = STORAGE_SCENE_INDICES) readonly buffer SceneIndices { uint sceneIndices[]; };
 // Optional per-vertex colors (e.g. a segmentation), RGBA8 packed; used when u_vertexColors.
-layout(std430, binding = 0) readonly buffer SceneColors { uint sceneColors[]; };
+layout(std430, binding = STORAGE_SCENE_COLORS) readonly buffer SceneColors { uint sceneColors[]; };
 
 struct SceneObject {
     mat4 modelView;
@@ -15,7 +15,7 @@ struct SceneObject {
     uint pad0;
     uint pad1;
 };
-layout(std430, binding = 4) readonly buffer SceneObjects { SceneObject sceneObjects[]; };
+layout(std430, binding = STORAGE_SCENE_OBJECTS) readonly buffer SceneObjects { SceneObject sceneObjects[]; };
 
 uniform bool u_vertexColors;
 

@@ -4,7 +4,7 @@
 //   [S, 2S):  Cpr(i), the start of group i's memory: a forward prefix sum over
 //             G1 = {C(0) .. C(S/2)}, an inverse one (from the end) over G2 = the rest
 //   [2S]:     the total number of fragments (nodes) of the frame
-// Needs bindings.glsl; the includer defines SHARED_COUNTERS_ACCESS.
+// The includer defines SHARED_COUNTERS_ACCESS.
 
 layout(std430, binding = STORAGE_SHARED_COUNTERS) SHARED_COUNTERS_ACCESS buffer SharedCounters
 {

@@ -1,5 +1,5 @@
 // Outputs of every trim resolve: the shaded color and an id texel that tests, picking
-// and the --ids/--depth exports read back (render/render_target.h decodes it):
+// and the --ids/--depth exports read back (render/frame/render_target.h decodes it):
 //   x: primitive id + 1 (0 = empty pixel)
 //   y: object id (bits 0-7) | front-facing (bit 8) | back-facing (bit 9)
 //      | overflowed (bit 10) | unresolved (bit 11) | collision (bit 12)

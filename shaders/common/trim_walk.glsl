@@ -13,7 +13,7 @@
 //   hands each to the X-ray compositing with its classification (transparency.glsl,
 //   included by pixel_result.glsl); it stops once the compositing is done and the shown
 //   fragment is known (walkTrimLayers + compositeXray in core/trim/).
-// Needs fragment_pack.glsl and static_rule.glsl (and bindings.glsl with OBJECT_WINDINGS).
+// Needs fragment_pack.glsl and static_rule.glsl.
 
 uniform bool u_trimEnabled;
 uniform int u_rule;

@@ -4,7 +4,7 @@
 // whatever it stores, so the index never depends on storage capacity. With
 // OBJECT_WINDINGS the same fragments also count toward their object's own index
 // (object_windings.glsl), for CSG and collision highlighting.
-// Needs clip.glsl and bindings.glsl; the includer declares u_winding's access.
+// Needs clip.glsl; the includer declares u_winding's access.
 
 layout(binding = IMAGE_WINDING, r32i) uniform coherent iimage2D u_winding;
 

@@ -7,14 +7,14 @@
 #include "test_paths.h"
 #include "trim_comparison.h"
 
-#include "io/pfm_image.h"
-#include "mfr/fragment_method.h"
-#include "scene/scene_source.h"
-#include "timeline/frame_chain.h"
-#include "timeline/stroke_replay.h"
-#include "timeline/stroke_script.h"
-#include "trim/dynamic_reference_renderer.h"
-#include "trim/reference_renderer.h"
+#include "core/io/pfm_image.h"
+#include "render/mfr/fragment_method.h"
+#include "core/catalog/scene_source.h"
+#include "core/timeline/frame_chain.h"
+#include "core/timeline/stroke_replay.h"
+#include "core/timeline/stroke_script.h"
+#include "core/trim/dynamic_reference_renderer.h"
+#include "core/trim/reference_renderer.h"
 
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -49,6 +49,7 @@ private slots:
     void badInputsExitWithOne_data();
     void badInputsExitWithOne();
     void infoPrintsTheValidationReport();
+    void helpListsEveryBuiltInDemo();
     void openMeshRendersUntrimmedByDefault();
     void referenceBackendMatchesInProcessReference();
     void kplusBackendAgreesWithReference();
@@ -138,6 +139,24 @@ void TestCommandLine::infoPrintsTheValidationReport()
     run = runTrimlab({"info", data("meshes/open_square.obj")});
     QCOMPARE(run.exitCode, 0);
     QVERIFY2(run.out.contains("trim modes: unavailable") && run.out.contains("boundary"), qPrintable(run.out));
+}
+
+// The usage text lists the demos from the scene registry, each one loadable.
+void TestCommandLine::helpListsEveryBuiltInDemo()
+{
+    const Run run = runTrimlab({"--help"});
+    QCOMPARE(run.exitCode, 0);
+    const std::vector<DemoEntry> demos = builtInDemos();
+    // Both kinds of demo: meshes (demo_scenes.h) and editable surfaces (surface_scenes.h).
+    QVERIFY(run.out.contains(QStringLiteral("demo:pushed-sphere ")));
+    QVERIFY(run.out.contains(QStringLiteral("demo:subdivision-push ")));
+    for (const DemoEntry& demo : demos) {
+        const QString source = QString::fromStdString(demo.source);
+        QVERIFY2(run.out.contains(source + QLatin1Char(' ')), qPrintable(source));
+        QVERIFY2(run.out.contains(QString::fromUtf8(demo.description.data(), qsizetype(demo.description.size()))),
+                 qPrintable(source));
+        QVERIFY(!loadScene(demo.source).scene.empty());
+    }
 }
 
 void TestCommandLine::openMeshRendersUntrimmedByDefault()

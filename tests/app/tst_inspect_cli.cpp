@@ -7,9 +7,9 @@
 #include "run_trimlab.h"
 #include "trim_comparison.h"
 
-#include "io/pfm_image.h"
-#include "scene/scene_source.h"
-#include "trim/reference_renderer.h"
+#include "core/io/pfm_image.h"
+#include "core/catalog/scene_source.h"
+#include "core/trim/reference_renderer.h"
 
 #include <glm/geometric.hpp>
 

@@ -5,8 +5,8 @@
 #include "gltf_validation.h"
 #include "run_trimlab.h"
 
-#include "scene/shape_generators.h"
-#include "skeleton/skeleton_json.h"
+#include "core/scene/shape_generators.h"
+#include "core/skeleton/skeleton_json.h"
 
 #include <QRegularExpression>
 #include <QTemporaryDir>

@@ -6,8 +6,8 @@
 #include "run_trimlab.h"
 #include "test_paths.h"
 
-#include "animation/animation_loader.h"
-#include "animation/skinning_error.h"
+#include "core/animation/animation_loader.h"
+#include "core/skinning/skinning_error.h"
 
 #include <QRegularExpression>
 #include <QTemporaryDir>

@@ -1,7 +1,7 @@
 #pragma once
 // Small hand-made meshes and labelings shared by the animation tests.
-#include "animation/mesh_animation.h"
-#include "animation/vertex_graph.h"
+#include "core/animation/mesh_animation.h"
+#include "core/animation/vertex_graph.h"
 
 #include <algorithm>
 #include <vector>

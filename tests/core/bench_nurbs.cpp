@@ -13,9 +13,9 @@
 //                  naive alternative the tables replace
 // and the moved-vertex count of the one-point edit, the table size and the agreement of the
 // sparse result with a tessellation built from scratch.
-#include "mesh/obj_writer.h"
-#include "surface/nurbs_primitives.h"
-#include "surface/nurbs_tessellation.h"
+#include "core/mesh/obj_writer.h"
+#include "core/surface/nurbs_primitives.h"
+#include "core/surface/nurbs_tessellation.h"
 
 #include <glm/geometric.hpp>
 

@@ -6,10 +6,10 @@
 // the stage times of extractSkeleton (paper Table III), the contraction's iterations,
 // symbolic analyses and numeric factorizations, the node counts, and with --orderings the
 // contraction time under each ordering and backend (paper Table I).
-#include "mesh/loop_subdivision.h"
-#include "mesh/mesh_io.h"
-#include "skeleton/contraction_solver.h"
-#include "skeleton/skeleton_extraction.h"
+#include "core/mesh/loop_subdivision.h"
+#include "core/mesh/mesh_io.h"
+#include "core/skeleton/contraction_solver.h"
+#include "core/skeleton/skeleton_extraction.h"
 
 #include <QCoreApplication>
 #include <QCommandLineParser>

@@ -10,9 +10,9 @@
 // PrimvarRefiner::Limit in limit mode) — medians of the repeats, with ratios.
 #include "uniform_refinement.h"
 
-#include "mesh/obj_writer.h"
-#include "surface/subdivision_cages.h"
-#include "surface/subdivision_surface.h"
+#include "core/mesh/obj_writer.h"
+#include "core/surface/subdivision_cages.h"
+#include "core/surface/subdivision_surface.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

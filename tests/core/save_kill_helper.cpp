@@ -4,8 +4,8 @@
 // each save is the atomic write saveProject ends with (writeFileAtomically), so nearly
 // every moment of the loop is inside it. Before each save it prints "saving N" (N counts
 // from 1) and flushes, so the test can aim its SIGKILL at a chosen save.
-#include "timeline/atomic_write.h"
-#include "timeline/file_bytes.h"
+#include "core/io/atomic_write.h"
+#include "core/io/file_bytes.h"
 
 #include <cstdio>
 #include <string>

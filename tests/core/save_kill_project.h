@@ -2,7 +2,7 @@
 // The two versions of a big project that tst_save_kill and its helper
 // (save_kill_helper.cpp) save over each other: a 160 × 160 grid (25,600 vertices) with
 // frames that each move a band of vertices, so one save writes a few MB.
-#include "timeline/project_file.h"
+#include "core/timeline/project_file.h"
 
 #include <cstdint>
 #include <vector>

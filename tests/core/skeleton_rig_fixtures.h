@@ -3,8 +3,8 @@
 // tests: a chain of bones along the y axis (the axis of skeleton_shapes.h's axisCapsule),
 // and a T-shaped tube made of voxels (exact inside test, so visibility can be checked
 // without the code under test).
-#include "mesh/triangle_mesh.h"
-#include "skeleton/skeleton.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/skeleton/skeleton.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,6 +1,6 @@
 #include "skeleton_shapes.h"
 
-#include "scene/shape_generators.h"
+#include "core/scene/shape_generators.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>

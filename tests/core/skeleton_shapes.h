@@ -2,7 +2,7 @@
 // Generated closed meshes for the skeleton-extraction tests: a capsule whose axis is known,
 // and a 'star' of capsules fused at a central sphere, meshed watertight from an implicit
 // function by marching tetrahedra (written here; see skeleton_shapes.cpp).
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <glm/vec3.hpp>
 

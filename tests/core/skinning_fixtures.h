@@ -1,13 +1,13 @@
 #pragma once
 // Synthetic skinned animations with a known exact decomposition, and the libigl elephant
 // rig (../shared/data/rigs/libigl-elephant/, layout in ../shared/data/SOURCES.md §2).
-#include "animation/mesh_animation.h"
-#include "animation/skinning_model.h"
-#include "animation/skinning_reconstruction.h"
-#include "animation/skinning_weights.h"
-#include "animation/vertex_graph.h"
-#include "mesh/gzip_input.h"
-#include "mesh/mesh_io.h"
+#include "core/animation/mesh_animation.h"
+#include "core/skinning/skinning_model.h"
+#include "core/skinning/skinning_reconstruction.h"
+#include "core/skinning/skinning_weights.h"
+#include "core/animation/vertex_graph.h"
+#include "core/mesh/gzip_input.h"
+#include "core/mesh/mesh_io.h"
 
 #include "test_paths.h"
 

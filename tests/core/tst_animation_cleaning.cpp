@@ -2,10 +2,10 @@
 // their thresholds in h, order independence (Lemma 3.1), h = 0 keeps the
 // over-segmentation, monotone reduction in h, and agreement with a plain vertex-level
 // re-implementation of the rule on real data.
-#include "animation/animation_loader.h"
-#include "animation/animation_segmenter.h"
-#include "animation/p2p_cleaning.h"
-#include "animation/vertex_areas.h"
+#include "core/animation/animation_loader.h"
+#include "core/animation/animation_segmenter.h"
+#include "core/animation/p2p_cleaning.h"
+#include "core/animation/vertex_areas.h"
 
 #include "animation_fixtures.h"
 #include "test_paths.h"

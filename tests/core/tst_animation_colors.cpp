@@ -1,12 +1,12 @@
 // Segment colours (thesis 3.2.1): the 12-colour wheel and its order, hue mixing without
 // grey or near-duplicates, rest-pose colouring without neighbour conflicts, and
 // pose-to-pose propagation that keeps colours of segments that persist.
-#include "animation/animation_loader.h"
-#include "animation/animation_segmenter.h"
-#include "animation/color_wheel.h"
-#include "animation/face_labels.h"
-#include "animation/label_adjacency.h"
-#include "animation/segment_coloring.h"
+#include "core/animation/animation_loader.h"
+#include "core/animation/animation_segmenter.h"
+#include "core/animation/color_wheel.h"
+#include "core/animation/face_labels.h"
+#include "core/animation/label_adjacency.h"
+#include "core/animation/segment_coloring.h"
 
 #include "animation_fixtures.h"
 #include "test_paths.h"

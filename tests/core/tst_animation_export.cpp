@@ -2,9 +2,9 @@
 // docs/segmentation-format.md (parsed with QJsonDocument), and the glTF file read back
 // without tinygltf (QJsonDocument + base64), so that "other tools can read it" is checked
 // by a second reader.
-#include "animation/segment_coloring.h"
-#include "animation/segmentation_export.h"
-#include "animation/segmentation_gltf.h"
+#include "core/animation/segment_coloring.h"
+#include "core/animation/segmentation_export.h"
+#include "core/animation/segmentation_gltf.h"
 
 #include "animation_fixtures.h"
 #include "test_paths.h"

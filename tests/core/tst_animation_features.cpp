@@ -1,8 +1,8 @@
 // Deformation gradients and the per-pose features (thesis 2.2.1): a rigid rotation gives
 // exactly its angle, a pure or non-uniform scale gives 0, reflections and degenerate faces
 // are handled, the per-vertex averages, which poses have a feature, velocity values.
-#include "animation/deformation_gradient.h"
-#include "animation/pose_features.h"
+#include "core/animation/deformation_gradient.h"
+#include "core/animation/pose_features.h"
 
 #include "animation_fixtures.h"
 

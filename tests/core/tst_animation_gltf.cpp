@@ -2,9 +2,9 @@
 // linear blend skinning with inverse bind matrices, keyframe vs fixed-rate sampling, the
 // cubic spline interpolation, and load errors. The expected positions are worked out by
 // hand from the motions tests/data/make_animation_files.py describes.
-#include "animation/gltf_animation.h"
-#include "animation/gltf_keyframes.h"
-#include "mesh/mesh_load_error.h"
+#include "core/animation/gltf_animation.h"
+#include "core/animation/gltf_keyframes.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include "test_paths.h"
 

@@ -1,12 +1,12 @@
 // Loading mesh animations from files: natural order, folders and patterns, the pose
 // consistency checks with their messages (tests/data/animations/, hand-written OBJ),
 // re-triangulated polygons, welding across poses, progress and cancellation.
-#include "animation/animation_loader.h"
-#include "animation/natural_order.h"
-#include "animation/pose_welding.h"
-#include "animation/sequence_files.h"
-#include "animation/sequence_loader.h"
-#include "mesh/mesh_load_error.h"
+#include "core/animation/animation_loader.h"
+#include "core/animation/natural_order.h"
+#include "core/animation/pose_welding.h"
+#include "core/animation/sequence_files.h"
+#include "core/animation/sequence_loader.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include "test_paths.h"
 

@@ -1,8 +1,8 @@
 // The over-segmentation (thesis Definitions 3.1–3.3, Algorithm 3.1) on hand-made strips
 // with known answers, against an independent union-find oracle, independence of the
 // joining order (3.2.6), and the incremental join (prefix levels, replacing a partition).
-#include "animation/over_segmentation.h"
-#include "animation/pose_join.h"
+#include "core/animation/over_segmentation.h"
+#include "core/animation/pose_join.h"
 
 #include "animation_fixtures.h"
 

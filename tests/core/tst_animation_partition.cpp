@@ -2,12 +2,12 @@
 // a feature step is split exactly at the step, clusters are connected and as many as
 // asked, components get their own clusters, results do not depend on the thread count,
 // and long work reports progress and can be cancelled.
-#include "animation/animation_loader.h"
-#include "animation/animation_segmenter.h"
-#include "animation/hierarchical_partition.h"
-#include "animation/parallel_for.h"
-#include "animation/region_growing_partition.h"
-#include "animation/vertex_areas.h"
+#include "core/animation/animation_loader.h"
+#include "core/animation/animation_segmenter.h"
+#include "core/animation/hierarchical_partition.h"
+#include "core/util/parallel_for.h"
+#include "core/animation/region_growing_partition.h"
+#include "core/animation/vertex_areas.h"
 
 #include "animation_fixtures.h"
 #include "test_paths.h"

@@ -2,10 +2,10 @@
 // one at a time) ends where the offline run does, editing a pose and re-joining equals
 // recomputing from scratch, variable segmentation, combining segmentations (3.2.5), and
 // on real animations every segment is connected and the count falls with h.
-#include "animation/animation_loader.h"
-#include "animation/animation_segmenter.h"
-#include "animation/over_segmentation.h"
-#include "animation/segmentation_combination.h"
+#include "core/animation/animation_loader.h"
+#include "core/animation/animation_segmenter.h"
+#include "core/animation/over_segmentation.h"
+#include "core/animation/segmentation_combination.h"
 
 #include "animation_fixtures.h"
 #include "test_paths.h"

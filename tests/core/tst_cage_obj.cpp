@@ -1,9 +1,9 @@
 // The cage OBJ reader (core/surface/cage_obj.h): polygons kept with their corner counts,
 // OpenSubdiv shape-file crease and corner tags, gzip input, and malformed cages reported
 // with file, line and reason.
-#include "surface/cage_obj.h"
+#include "core/surface/cage_obj.h"
 
-#include "mesh/mesh_load_error.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include <QtTest>
 

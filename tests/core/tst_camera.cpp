@@ -1,6 +1,6 @@
 // Camera conventions the GPU and the CPU reference both rely on.
-#include "trim/clip_plane.h"
-#include "view/camera.h"
+#include "core/trim/clip_plane.h"
+#include "core/view/camera.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,7 +1,7 @@
 // Clipping with several planes at once: the kept span of a ClipSet on rays whose answers
 // are derived by hand (a box, disjoint half-spaces), and bit-identity with the one-plane
 // keptSpan that every existing test and renderer relies on.
-#include "trim/clip_set.h"
+#include "core/trim/clip_set.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,6 +1,6 @@
 // The CSG expression's text form (parse, print, round trip, errors) and its evaluation on
 // inside-bit vectors, against truth tables written out by hand.
-#include "trim/csg_expression.h"
+#include "core/trim/csg_expression.h"
 
 #include <QtTest>
 

@@ -2,8 +2,8 @@
 // radius says and nothing else moves, the falloff decreases with distance, the anchor
 // follows the drag, smoothing smooths, the result is deterministic and path-independent,
 // bad input throws, and incremental normals agree with a full recomputation.
-#include "deform/brush_stroke.h"
-#include "deform/region_normals.h"
+#include "core/deform/brush_stroke.h"
+#include "core/deform/region_normals.h"
 
 #include <QtTest>
 

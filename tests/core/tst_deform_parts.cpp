@@ -1,16 +1,16 @@
 // The pieces of the space-warp brush one at a time: names, settings checks, falloff
 // profiles, the angle term, closest surface points, the brush topology, local geodesics
 // on flat grids (against exact Euclidean distances) and region smoothing on a plane.
-#include "deform/angle_attenuation.h"
-#include "deform/brush_settings_check.h"
-#include "deform/brush_topology.h"
-#include "deform/closest_surface_point.h"
-#include "deform/falloff.h"
-#include "deform/local_geodesics.h"
-#include "deform/local_vertex_map.h"
-#include "deform/region_patch.h"
-#include "deform/region_smoothing.h"
-#include "deform/stroke.h"
+#include "core/deform/angle_attenuation.h"
+#include "core/deform/brush_settings_check.h"
+#include "core/deform/brush_topology.h"
+#include "core/deform/closest_surface_point.h"
+#include "core/deform/falloff.h"
+#include "core/deform/local_geodesics.h"
+#include "core/deform/local_vertex_map.h"
+#include "core/deform/region_patch.h"
+#include "core/deform/region_smoothing.h"
+#include "core/deform/stroke.h"
 
 #include <QtTest>
 

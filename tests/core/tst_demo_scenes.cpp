@@ -1,10 +1,10 @@
 // Demo scenes and shape generators: closed oriented 2-cycles, outward, deterministic,
 // and the self-crossing demos really cross themselves.
-#include "scene/demo_scenes.h"
-#include "scene/demo_shapes.h"
-#include "scene/shape_generators.h"
-#include "trim/ray_triangle.h"
-#include "trim/winding_number.h"
+#include "core/catalog/demo_scenes.h"
+#include "core/catalog/demo_shapes.h"
+#include "core/scene/shape_generators.h"
+#include "core/trim/ray_triangle.h"
+#include "core/trim/winding_number.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,13 +1,13 @@
 // The dynamic rules of thesis 8.1.1 (table-driven, written out from the formulas by hand)
 // and the dynamic walk of Algorithms 8.11–8.13 on hand-built rays.
-#include "scene/demo_scenes.h"
-#include "trim/dynamic_chain.h"
-#include "trim/dynamic_frame_scene.h"
-#include "trim/dynamic_reference_renderer.h"
-#include "trim/dynamic_rule.h"
-#include "trim/dynamic_walk.h"
-#include "trim/reference_renderer.h"
-#include "trim/trim_membership.h"
+#include "core/catalog/demo_scenes.h"
+#include "core/trim/dynamic_chain.h"
+#include "core/trim/dynamic_frame_scene.h"
+#include "core/trim/dynamic_reference_renderer.h"
+#include "core/trim/dynamic_rule.h"
+#include "core/trim/dynamic_walk.h"
+#include "core/trim/reference_renderer.h"
+#include "core/trim/trim_membership.h"
 
 #include <glm/geometric.hpp>
 

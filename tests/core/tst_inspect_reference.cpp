@@ -4,8 +4,8 @@
 // tessellated with vertices on radius r lies between its inscribed radius and r: a pixel
 // is compared only where the analytic answer is the same for both radii (the others are
 // counted and must stay few), so tessellation never decides a comparison.
-#include "scene/shape_generators.h"
-#include "trim/reference_renderer.h"
+#include "core/scene/shape_generators.h"
+#include "core/trim/reference_renderer.h"
 
 #include <glm/geometric.hpp>
 

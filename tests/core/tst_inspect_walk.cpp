@@ -2,7 +2,7 @@
 // collision flags, coplanar counts) on hand-written hit lists, every answer derived by
 // hand in the comments. Notation as in tst_trim_walk.cpp: F enters (w+1), B exits (w-1);
 // per-object windings are counted from the far side like the sum.
-#include "trim/trim_walk.h"
+#include "core/trim/trim_walk.h"
 
 #include <QtTest>
 

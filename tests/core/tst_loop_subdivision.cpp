@@ -1,9 +1,9 @@
 // Loop subdivision through OpenSubdiv (core/mesh/loop_subdivision.h): counts, topology,
 // orientation, and the positions against Loop's masks computed here by hand.
-#include "mesh/loop_subdivision.h"
+#include "core/mesh/loop_subdivision.h"
 
-#include "mesh/mesh_validation.h"
-#include "scene/shape_generators.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/scene/shape_generators.h"
 
 #include <QtTest>
 

@@ -1,9 +1,9 @@
 // Mesh loading: every good test file in every format loads with the exact expected counts
 // and coordinates; every broken file is rejected with a MeshLoadError that says why; gzip
 // variants and in-memory loading agree with plain files; real third-party meshes load.
-#include "mesh/gzip_input.h"
-#include "mesh/mesh_io.h"
-#include "mesh/mesh_validation.h"
+#include "core/mesh/gzip_input.h"
+#include "core/mesh/mesh_io.h"
+#include "core/mesh/mesh_validation.h"
 
 #include "test_paths.h"
 

@@ -1,6 +1,6 @@
 // Polygon triangulation: n − 2 triangles that tile the polygon without flips, for convex,
 // non-convex, non-planar, collinear and degenerate polygons in any orientation.
-#include "mesh/polygon_triangulation.h"
+#include "core/mesh/polygon_triangulation.h"
 
 #include <QtTest>
 

@@ -1,8 +1,8 @@
 // Mesh validation: each defect kind on a small hand-built mesh, the trimmable rule
 // (closed, oriented 2-cycle) including non-manifold but balanced meshes, the report text,
 // and the topology of real meshes.
-#include "mesh/mesh_io.h"
-#include "mesh/mesh_validation.h"
+#include "core/mesh/mesh_io.h"
+#include "core/mesh/mesh_validation.h"
 
 #include "test_paths.h"
 

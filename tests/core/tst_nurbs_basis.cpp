@@ -2,7 +2,7 @@
 // non-negativity at many parameters (knots and domain ends included), derivatives
 // against central differences, agreement with the textbook recursion written here
 // independently, span search, and the refusal of bad knot vectors.
-#include "surface/nurbs_basis.h"
+#include "core/surface/nurbs_basis.h"
 
 #include <QtTest>
 

@@ -2,8 +2,8 @@
 // rational primitives lie on their analytic surfaces, derivatives match central
 // differences, normals are unit and outward (poles included), and the ties between
 // seam twins and pole points hold.
-#include "surface/nurbs_primitives.h"
-#include "surface/nurbs_surface.h"
+#include "core/surface/nurbs_primitives.h"
+#include "core/surface/nurbs_surface.h"
 
 #include <QtTest>
 

@@ -3,12 +3,12 @@
 // Closed primitives must tessellate into closed, manifold, outward meshes (the trim
 // rules need them); a control-point edit must move exactly the reported vertices and
 // agree with evaluation from scratch.
-#include "mesh/mesh_io.h"
-#include "mesh/mesh_validation.h"
-#include "mesh/obj_writer.h"
-#include "surface/nurbs_json.h"
-#include "surface/nurbs_primitives.h"
-#include "surface/nurbs_tessellation.h"
+#include "core/mesh/mesh_io.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/mesh/obj_writer.h"
+#include "core/surface/nurbs_json.h"
+#include "core/surface/nurbs_primitives.h"
+#include "core/surface/nurbs_tessellation.h"
 
 #include "test_paths.h"
 

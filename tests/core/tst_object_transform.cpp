@@ -2,7 +2,7 @@
 // uniform scale mean (checked on points worked out by hand), that it never mirrors, and
 // that decomposing a matrix gives a transform rebuilding it — or nothing for matrices no
 // such transform can express.
-#include "scene/object_transform.h"
+#include "core/scene/object_transform.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>

@@ -1,7 +1,7 @@
 // TriangleMesh <-> OpenMesh: closed meshes round-trip exactly; faces a half-edge mesh
 // cannot hold are counted, not printed.
-#include "mesh/mesh_io.h"
-#include "mesh/openmesh_adapter.h"
+#include "core/mesh/mesh_io.h"
+#include "core/mesh/openmesh_adapter.h"
 
 #include "test_paths.h"
 

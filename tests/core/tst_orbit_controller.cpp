@@ -1,6 +1,6 @@
 // The viewport's orbit camera: fit, orbit, pan and zoom as exact math, and a far plane
 // that encloses the scene whatever the user does.
-#include "view/orbit_controller.h"
+#include "core/view/orbit_controller.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

@@ -1,7 +1,7 @@
 // The watertight ray-triangle test: hits, misses, facing, t and barycentrics, exact signs,
 // and the single-hit tie-break for rays exactly through shared edges and vertices.
-#include "scene/shape_generators.h"
-#include "trim/ray_triangle.h"
+#include "core/scene/shape_generators.h"
+#include "core/trim/ray_triangle.h"
 
 #include <glm/geometric.hpp>
 

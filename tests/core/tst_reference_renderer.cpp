@@ -1,12 +1,12 @@
 // The CPU reference renderer on analytic scenes whose answers are derived by hand (in the
 // comments), compared pixel class by pixel class; pixels whose class is within the
 // tessellation tolerance of a boundary are left out and counted, not waved through.
-#include "scene/demo_scenes.h"
-#include "scene/demo_shapes.h"
-#include "scene/shape_generators.h"
-#include "trim/reference_renderer.h"
-#include "trim/trim_shading.h"
-#include "trim/winding_number.h"
+#include "core/catalog/demo_scenes.h"
+#include "core/catalog/demo_shapes.h"
+#include "core/scene/shape_generators.h"
+#include "core/trim/reference_renderer.h"
+#include "core/trim/trim_shading.h"
+#include "core/trim/winding_number.h"
 
 #include <glm/geometric.hpp>
 

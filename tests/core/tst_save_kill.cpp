@@ -9,9 +9,9 @@
 // core.stale_temporaries).
 #include "save_kill_project.h"
 
-#include "timeline/atomic_write.h"
-#include "timeline/file_bytes.h"
-#include "timeline/stale_temporaries.h"
+#include "core/io/atomic_write.h"
+#include "core/io/file_bytes.h"
+#include "core/io/stale_temporaries.h"
 
 #include <QtTest>
 

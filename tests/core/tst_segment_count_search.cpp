@@ -1,7 +1,7 @@
 // A segmentation with exactly B segments (segment_count_search.h): every requested count
 // from 1 to well past the natural parts is met exactly, the merge rule joins the smallest
 // segment into its largest neighbour, and impossible counts are refused.
-#include "animation/segment_count_search.h"
+#include "core/animation/segment_count_search.h"
 
 #include "skinning_fixtures.h"
 

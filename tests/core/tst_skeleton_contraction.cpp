@@ -2,10 +2,10 @@
 // skeleton_simplification.h; Berenguer & Moreno III.A–B) on a generated capsule, whose
 // curve skeleton is known: the segment of its axis. Expected values come from the shape,
 // not from the code under test.
-#include "skeleton/contraction_solver.h"
-#include "skeleton/cotangent_laplacian.h"
-#include "skeleton/skeleton_simplification.h"
-#include "skeleton/sparse_cholesky.h"
+#include "core/skeleton/contraction_solver.h"
+#include "core/skeleton/cotangent_laplacian.h"
+#include "core/skeleton/skeleton_simplification.h"
+#include "core/skeleton/sparse_cholesky.h"
 
 #include "skeleton_shapes.h"
 

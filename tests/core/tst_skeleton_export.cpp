@@ -1,15 +1,15 @@
 // The rigged glTF export (Khronos validator, re-import through the project's own glTF
 // animation reader) and the skeleton JSON file (round trip, errors naming the JSON path).
-#include "skeleton/bone_heat_weights.h"
-#include "skeleton/rig_validation.h"
-#include "skeleton/rigged_gltf.h"
-#include "skeleton/skeleton_json.h"
-#include "skeleton/skeleton_pose.h"
+#include "core/skeleton/bone_heat_weights.h"
+#include "core/skeleton/rig_validation.h"
+#include "core/skeleton/rigged_gltf.h"
+#include "core/skeleton/skeleton_json.h"
+#include "core/skeleton/skeleton_pose.h"
 
-#include "animation/gltf_animated_geometry.h"
-#include "animation/gltf_animation.h"
-#include "animation/gltf_node_transforms.h"
-#include "mesh/gltf_document.h"
+#include "core/animation/gltf_animated_geometry.h"
+#include "core/animation/gltf_animation.h"
+#include "core/animation/gltf_node_transforms.h"
+#include "core/mesh/gltf_document.h"
 
 #include "gltf_validation.h"
 #include "skeleton_rig_fixtures.h"

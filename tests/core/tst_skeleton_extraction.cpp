@@ -3,12 +3,12 @@
 // it cannot handle, degenerate triangles, re-selection and re-rooting, cycles of a torus.
 // Inside/outside is judged by the solid-angle winding number (trim/winding_number.h), not
 // by the point-in-mesh test the pipeline uses.
-#include "skeleton/skeleton_extraction.h"
+#include "core/skeleton/skeleton_extraction.h"
 
-#include "mesh/mesh_validation.h"
-#include "scene/scene.h"
-#include "scene/shape_generators.h"
-#include "trim/winding_number.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/scene/scene.h"
+#include "core/scene/shape_generators.h"
+#include "core/trim/winding_number.h"
 
 #include "skeleton_shapes.h"
 

@@ -1,10 +1,10 @@
 // Posing a rig (forward kinematics over the parents-first bones) and skinning the rest
 // mesh with LBS and DQS (core/skeleton/skeleton_pose.h; thesis 2.3.2–2.3.3). Expected
 // positions come from closed formulas, not from the code under test.
-#include "skeleton/bone_heat_weights.h"
-#include "skeleton/skeleton_pose.h"
+#include "core/skeleton/bone_heat_weights.h"
+#include "core/skeleton/skeleton_pose.h"
 
-#include "scene/shape_generators.h"
+#include "core/scene/shape_generators.h"
 
 #include "skeleton_rig_fixtures.h"
 #include "skeleton_shapes.h"

@@ -1,12 +1,12 @@
 // Bone-heat weights (Berenguer & Moreno III.E; Baran & Popović 2007): the Meyer Laplacian,
 // the heat terms (nearest bones, ties, visibility) and the solved weights on generated
 // closed meshes with hand-built rigs.
-#include "skeleton/bone_heat_terms.h"
-#include "skeleton/bone_heat_weights.h"
-#include "skeleton/meyer_laplacian.h"
+#include "core/skeleton/bone_heat_terms.h"
+#include "core/skeleton/bone_heat_weights.h"
+#include "core/skeleton/meyer_laplacian.h"
 
-#include "mesh/mesh_validation.h"
-#include "scene/shape_generators.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/scene/shape_generators.h"
 
 #include "skeleton_rig_fixtures.h"
 #include "skeleton_shapes.h"

@@ -1,9 +1,9 @@
 // Skin corrections (thesis 4.1.2): rest-pose displacements (eq. 4.12 / 4.16) and convex
 // weight corrections (eq. 4.13–4.15) never increase E_RMS, the corrected weights are
 // non-negative, sum to 1 and keep ≤ 4 influences, and each correction can be switched.
-#include "animation/skinning_corrections.h"
-#include "animation/skinning_error.h"
-#include "animation/skinning_fitter.h"
+#include "core/skinning/skinning_corrections.h"
+#include "core/skinning/skinning_error.h"
+#include "core/skinning/skinning_fitter.h"
 
 #include "skinning_fixtures.h"
 

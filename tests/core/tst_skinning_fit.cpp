@@ -2,11 +2,11 @@
 // animations made by known bones and weights: LBS and DQS recover their transforms, the
 // pose-to-pose and rest-to-pose representations agree, solvers and thread counts do not
 // change the result, E_RMS (eq. 2.7) by hand, weights from a segmentation, cancellation.
-#include "animation/skinning_error.h"
-#include "animation/skinning_fitter.h"
-#include "animation/skinning_pose_fit.h"
-#include "animation/skinning_reconstruction.h"
-#include "animation/skinning_weights.h"
+#include "core/skinning/skinning_error.h"
+#include "core/skinning/skinning_fitter.h"
+#include "core/skinning/skinning_pose_fit.h"
+#include "core/skinning/skinning_reconstruction.h"
+#include "core/skinning/skinning_weights.h"
 
 #include "skinning_fixtures.h"
 

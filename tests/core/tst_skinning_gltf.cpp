@@ -3,11 +3,11 @@
 // joint matrices, morph targets) reproduces the positions the export reports, a DQS fit of
 // rigid data exports exactly, and the rigid approximation of an affine fit is never
 // better than the fit.
-#include "animation/gltf_animation.h"
-#include "animation/skinning_error.h"
-#include "animation/skinning_fitter.h"
-#include "animation/skinning_gltf.h"
-#include "animation/skinning_gltf_joints.h"
+#include "core/animation/gltf_animation.h"
+#include "core/skinning/skinning_error.h"
+#include "core/skinning/skinning_fitter.h"
+#include "core/skinning/skinning_gltf.h"
+#include "core/skinning/skinning_gltf_joints.h"
 
 #include "skinning_fixtures.h"
 #include "test_paths.h"

@@ -1,7 +1,7 @@
-// Non-negative and simplex-constrained least squares (core/animation/nnls.h), the solver
+// Non-negative and simplex-constrained least squares (core/skinning/nnls.h), the solver
 // behind the convex weight corrections of thesis eq. 4.13–4.15: hand-checkable problems,
 // the KKT conditions on random ones (including rank-deficient A), and bad input.
-#include "animation/nnls.h"
+#include "core/skinning/nnls.h"
 
 #include <QtTest>
 

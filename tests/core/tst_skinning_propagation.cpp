@@ -1,9 +1,9 @@
 // Pose editing with propagation (thesis 4.1.3, eq. 4.18–4.19): editing pose e changes
 // poses ≥ e exactly as eq. 4.18 composes them from the unchanged transforms, leaves
 // earlier poses bit-identical, and works for new positions and for a changed bone.
-#include "animation/skinning_fitter.h"
-#include "animation/skinning_propagation.h"
-#include "animation/skinning_reconstruction.h"
+#include "core/skinning/skinning_fitter.h"
+#include "core/skinning/skinning_propagation.h"
+#include "core/skinning/skinning_reconstruction.h"
 
 #include "skinning_fixtures.h"
 

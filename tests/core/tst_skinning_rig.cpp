@@ -2,10 +2,10 @@
 // and per-frame bone transforms; ../shared/data/SOURCES.md §2). Skinning it gives an
 // animation whose exact decomposition is known, so fitting with its weights must give its
 // transforms back. A few frames only, to stay fast.
-#include "animation/skinning_error.h"
-#include "animation/skinning_fitter.h"
-#include "animation/skinning_pose_fit.h"
-#include "animation/skinning_weights.h"
+#include "core/skinning/skinning_error.h"
+#include "core/skinning/skinning_fitter.h"
+#include "core/skinning/skinning_pose_fit.h"
+#include "core/skinning/skinning_weights.h"
 
 #include "skinning_fixtures.h"
 

@@ -1,10 +1,10 @@
-// Leftovers of killed saves (core/timeline/stale_temporaries.h): which names count as a
+// Leftovers of killed saves (core/io/stale_temporaries.h): which names count as a
 // save's temporary file, and that writeFileAtomically deletes only old temporaries of the
 // file it writes — never a fresh one (another process may be saving right now), never one
 // of another file, never a file that merely looks similar.
-#include "timeline/atomic_write.h"
-#include "timeline/file_bytes.h"
-#include "timeline/stale_temporaries.h"
+#include "core/io/atomic_write.h"
+#include "core/io/file_bytes.h"
+#include "core/io/stale_temporaries.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -1,5 +1,5 @@
 // Table-driven test of the static rules of thesis 8.1.1 over w in [-8, 8].
-#include "trim/static_rule.h"
+#include "core/trim/static_rule.h"
 
 #include <QtTest>
 

@@ -5,11 +5,11 @@
 // edits restricted to stencil supports, sharp features and the refusals.
 #include "uniform_refinement.h"
 
-#include "surface/cage_refiner.h"
-#include "surface/subdivision_cages.h"
-#include "surface/subdivision_surface.h"
+#include "core/surface/cage_refiner.h"
+#include "core/surface/subdivision_cages.h"
+#include "core/surface/subdivision_surface.h"
 
-#include "mesh/mesh_validation.h"
+#include "core/mesh/mesh_validation.h"
 
 #include <opensubdiv/far/patchMap.h>
 #include <opensubdiv/far/patchTable.h>

@@ -1,16 +1,16 @@
 // Control-point edits of editable surfaces (NURBS, subdivision) as timeline frames:
 // exactly the changed vertices, exact reconstruction and undo, the control-point brush,
 // and the surface scene sources.
-#include "deform/falloff.h"
-#include "mesh/mesh_load_error.h"
-#include "scene/scene_source.h"
-#include "surface/control_brush.h"
-#include "surface/control_edit.h"
-#include "surface/fig8_13_history.h"
-#include "surface/nurbs_json.h"
-#include "surface/nurbs_primitives.h"
-#include "surface/subdivision_cages.h"
-#include "surface/surface_scenes.h"
+#include "core/deform/falloff.h"
+#include "core/mesh/mesh_load_error.h"
+#include "core/catalog/scene_source.h"
+#include "core/design/control_brush.h"
+#include "core/timeline/control_edit.h"
+#include "core/catalog/fig8_13_history.h"
+#include "core/surface/nurbs_json.h"
+#include "core/surface/nurbs_primitives.h"
+#include "core/surface/subdivision_cages.h"
+#include "core/catalog/surface_scenes.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

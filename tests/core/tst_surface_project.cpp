@@ -3,11 +3,11 @@
 // definitions give exact errors naming the JSON path, and version-1 files still load.
 #include "test_paths.h"
 
-#include "surface/control_edit.h"
-#include "surface/fig8_13_history.h"
-#include "surface/subdivision_cages.h"
-#include "timeline/binary_array.h"
-#include "timeline/project_file.h"
+#include "core/timeline/control_edit.h"
+#include "core/catalog/fig8_13_history.h"
+#include "core/surface/subdivision_cages.h"
+#include "core/timeline/binary_array.h"
+#include "core/timeline/project_file.h"
 
 #include <nlohmann/json.hpp>
 

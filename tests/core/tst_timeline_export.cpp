@@ -2,8 +2,8 @@
 #include "test_paths.h"
 #include "tst_timeline_fixtures.h"
 
-#include "mesh/mesh_io.h"
-#include "timeline/frame_export.h"
+#include "core/mesh/mesh_io.h"
+#include "core/timeline/frame_export.h"
 
 #include <QtTest>
 

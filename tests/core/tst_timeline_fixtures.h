@@ -1,6 +1,6 @@
 #pragma once
 // Small meshes and hand-made frames shared by the timeline tests.
-#include "timeline/timeline.h"
+#include "core/timeline/timeline.h"
 
 #include <glm/vec3.hpp>
 

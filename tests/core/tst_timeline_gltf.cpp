@@ -3,8 +3,8 @@
 #include "test_paths.h"
 #include "tst_timeline_fixtures.h"
 
-#include "animation/gltf_animation.h"
-#include "timeline/frame_export.h"
+#include "core/animation/gltf_animation.h"
+#include "core/timeline/frame_export.h"
 
 #include <QProcess>
 #include "gltf_validation.h"

@@ -2,7 +2,7 @@
 // reference frames, and the invariants appendFrame enforces.
 #include "tst_timeline_fixtures.h"
 
-#include "timeline/timeline.h"
+#include "core/timeline/timeline.h"
 
 #include <QtTest>
 

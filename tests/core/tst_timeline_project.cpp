@@ -3,7 +3,7 @@
 #include "test_paths.h"
 #include "tst_timeline_fixtures.h"
 
-#include "timeline/project_file.h"
+#include "core/timeline/project_file.h"
 
 #include <QtTest>
 

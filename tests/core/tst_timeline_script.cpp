@@ -3,8 +3,8 @@
 #include "test_paths.h"
 #include "tst_timeline_fixtures.h"
 
-#include "timeline/stroke_replay.h"
-#include "timeline/stroke_script.h"
+#include "core/timeline/stroke_replay.h"
+#include "core/timeline/stroke_script.h"
 
 #include <QtTest>
 

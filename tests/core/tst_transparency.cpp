@@ -2,11 +2,11 @@
 // compositing on hand-made hit lists with every expected value derived by hand in the
 // comments, and two identities of the CPU reference's images (Translucent with alpha 1
 // and Opaque without ghosts both equal the image without transparency).
-#include "scene/demo_scenes.h"
-#include "trim/reference_renderer.h"
-#include "trim/transparency.h"
-#include "trim/trim_shading.h"
-#include "trim/trim_walk.h"
+#include "core/catalog/demo_scenes.h"
+#include "core/trim/reference_renderer.h"
+#include "core/trim/transparency.h"
+#include "core/trim/trim_shading.h"
+#include "core/trim/trim_walk.h"
 
 #include <QtTest>
 

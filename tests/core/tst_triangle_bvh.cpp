@@ -1,8 +1,8 @@
 // TriangleBvh::intersectAll must return exactly the hits of a brute-force loop over all
 // world triangles with the same watertight test: every hit, none twice, same numbers.
-#include "scene/shape_generators.h"
-#include "trim/ray_triangle.h"
-#include "trim/triangle_bvh.h"
+#include "core/scene/shape_generators.h"
+#include "core/trim/ray_triangle.h"
+#include "core/trim/triangle_bvh.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

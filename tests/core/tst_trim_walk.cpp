@@ -1,7 +1,7 @@
 // walkTrimRay on hand-written hit lists whose answers are derived by hand in the comments.
 // Notation: F = front-facing (enters, w+1), B = back-facing (exits, w-1); w(tStart) is
 // counted from the far side: +1 for every B beyond tStart, -1 for every F.
-#include "trim/trim_walk.h"
+#include "core/trim/trim_walk.h"
 
 #include <QtTest>
 

@@ -1,6 +1,6 @@
 #include "uniform_refinement.h"
 
-#include "surface/cage_refiner.h"
+#include "core/surface/cage_refiner.h"
 
 #include <opensubdiv/far/primvarRefiner.h>
 

@@ -5,7 +5,7 @@
 /// used as the reference of tst_subdivision_surface and as the "from scratch" cost in
 /// bench_subdivision.
 
-#include "surface/subdivision_cages.h"
+#include "core/surface/subdivision_cages.h"
 
 #include <opensubdiv/far/topologyRefiner.h>
 

@@ -13,18 +13,18 @@
 // different reference hit count; there the GPU count must lie within the counts of the
 // reference's 3×3 neighbourhood, everywhere else it must be exact. Silhouette pixels that
 // differ are counted and printed (2 of about 5,400 in the nested spheres at 200×150).
-#include "gl/gl_capabilities.h"
-#include "gl/gl_error.h"
+#include "render/gl/gl_capabilities.h"
+#include "render/gl/gl_error.h"
 #include "gl_test_context.h"
-#include "mfr/abuffer_linked_list.h"
-#include "mfr/kplus_s_buffer.h"
-#include "mfr/node_buffer.h"
-#include "mfr/resolve_budget.h"
-#include "mfr/s_buffer.h"
-#include "trim_renderer.h"
+#include "render/mfr/abuffer_linked_list.h"
+#include "render/mfr/kplus_s_buffer.h"
+#include "render/mfr/node_buffer.h"
+#include "render/mfr/resolve_budget.h"
+#include "render/mfr/s_buffer.h"
+#include "render/trim_renderer.h"
 
-#include "scene/shape_generators.h"
-#include "trim/reference_renderer.h"
+#include "core/scene/shape_generators.h"
+#include "core/trim/reference_renderer.h"
 
 #include <QtTest>
 

@@ -3,13 +3,13 @@
 // what to change; the watch on a real context agrees with the context's own reset
 // strategy (asked here directly), reports nothing on a healthy context, and a renderer
 // renders and reads back frames on it without seeing a reset.
-#include "gl/context_reset.h"
-#include "gl/offscreen_gl_context.h"
+#include "render/gl/context_reset.h"
+#include "render/gl/offscreen_gl_context.h"
 #include "gl_test_context.h"
-#include "trim_renderer.h"
+#include "render/trim_renderer.h"
 
-#include "scene/demo_scenes.h"
-#include "view/camera.h"
+#include "core/catalog/demo_scenes.h"
+#include "core/view/camera.h"
 
 #include <QOpenGLFunctions>
 #include <QtTest>

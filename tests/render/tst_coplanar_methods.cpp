@@ -9,8 +9,8 @@
 #include "method_check.h"
 #include "test_paths.h"
 
-#include "scene/scene_source.h"
-#include "scene/shape_generators.h"
+#include "core/catalog/scene_source.h"
+#include "core/scene/shape_generators.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

@@ -7,10 +7,10 @@
 #include "replay_check.h"
 #include "test_paths.h"
 
-#include "scene/scene_source.h"
-#include "timeline/frame_chain.h"
-#include "timeline/stroke_replay.h"
-#include "timeline/stroke_script.h"
+#include "core/catalog/scene_source.h"
+#include "core/timeline/frame_chain.h"
+#include "core/timeline/stroke_replay.h"
+#include "core/timeline/stroke_script.h"
 
 #include <QtTest>
 

@@ -7,10 +7,10 @@
 #include "gl_test_context.h"
 #include "method_check.h"
 
-#include "dynamic_trim_renderer.h"
-#include "scene/shape_generators.h"
-#include "trim/dynamic_chain.h"
-#include "trim/dynamic_reference_renderer.h"
+#include "render/dynamic_trim_renderer.h"
+#include "core/scene/shape_generators.h"
+#include "core/trim/dynamic_chain.h"
+#include "core/trim/dynamic_reference_renderer.h"
 
 #include <glm/geometric.hpp>
 

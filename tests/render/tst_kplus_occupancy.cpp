@@ -1,10 +1,10 @@
 // The k+-buffer keeps exactly the k nearest fragments of every pixel and counts the
 // winding index exactly, also where later triangles fully cover llvmpipe's tiles (the
-// fragment-dropping trap of PLATFORM.md): 64 full-screen layers at known depths, submitted
+// fragment-dropping trap of docs/llvmpipe-notes.md): 64 full-screen layers at known depths, submitted
 // in a shuffled order, checked pixel by pixel.
 #include "gl_test_context.h"
-#include "mfr/kplus_buffer.h"
-#include "trim_renderer.h"
+#include "render/mfr/kplus_buffer.h"
+#include "render/trim_renderer.h"
 
 #include <QtTest>
 

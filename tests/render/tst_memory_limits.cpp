@@ -4,15 +4,15 @@
 // to change —, the renderer keeps working afterwards, and the fallback chain leads from
 // every method to methods that hold less, whose frames still agree with the CPU
 // reference under a budget that refused the chosen one.
-#include "gl/gl_error.h"
+#include "render/gl/gl_error.h"
 #include "gl_test_context.h"
-#include "memory_fallback.h"
+#include "render/memory_fallback.h"
 #include "method_check.h"
-#include "trim_renderer.h"
+#include "render/trim_renderer.h"
 
-#include "scene/demo_scenes.h"
-#include "trim/csg_expression.h"
-#include "trim/reference_renderer.h"
+#include "core/catalog/demo_scenes.h"
+#include "core/trim/csg_expression.h"
+#include "core/trim/reference_renderer.h"
 
 #include <QtTest>
 

@@ -8,8 +8,8 @@
 #include "method_check.h"
 #include "reference_scene_cache.h"
 
-#include "scene/demo_scenes.h"
-#include "scene/shape_generators.h"
+#include "core/catalog/demo_scenes.h"
+#include "core/scene/shape_generators.h"
 
 #include <glm/geometric.hpp>
 

@@ -7,7 +7,7 @@
 #include "method_check.h"
 #include "test_paths.h"
 
-#include "scene/scene_source.h"
+#include "core/catalog/scene_source.h"
 
 #include <glm/geometric.hpp>
 

@@ -17,9 +17,9 @@
 #include "opencsg_depth.h"
 #include "test_paths.h"
 
-#include "scene/shape_generators.h"
-#include "scene/world_geometry.h"
-#include "trim_renderer.h"
+#include "core/scene/shape_generators.h"
+#include "core/scene/world_geometry.h"
+#include "render/trim_renderer.h"
 
 #include <QOffscreenSurface>
 #include <QOpenGLContext>

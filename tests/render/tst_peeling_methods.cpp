@@ -4,11 +4,11 @@
 // fragments are all peeled, that the pass bound flags what it cuts off instead of showing
 // it wrong, and that two-pass shows the first layer only and flags the rest.
 #include "gl_test_context.h"
-#include "trim_renderer.h"
+#include "render/trim_renderer.h"
 
-#include "scene/demo_scenes.h"
-#include "scene/shape_generators.h"
-#include "trim/reference_renderer.h"
+#include "core/catalog/demo_scenes.h"
+#include "core/scene/shape_generators.h"
+#include "core/trim/reference_renderer.h"
 
 #include <QtTest>
 

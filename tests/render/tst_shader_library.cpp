@@ -1,8 +1,8 @@
 // Every program in the catalog compiles and links in a real OpenGL 4.3 context, every
 // assembled shader passes glslangValidator, and build errors carry numbered source.
-#include "gl/gl_error.h"
-#include "gl/shader_library.h"
-#include "gl/shader_source.h"
+#include "render/gl/gl_error.h"
+#include "render/gl/shader_library.h"
+#include "render/gl/shader_source.h"
 #include "gl_test_context.h"
 #include "test_paths.h"
 

@@ -10,8 +10,8 @@
 #include "method_check.h"
 #include "replay_check.h"
 
-#include "surface/fig8_13_history.h"
-#include "timeline/frame_chain.h"
+#include "core/catalog/fig8_13_history.h"
+#include "core/timeline/frame_chain.h"
 
 #include <QtTest>
 

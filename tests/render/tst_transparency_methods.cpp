@@ -20,8 +20,8 @@
 #include "reference_scene_cache.h"
 #include "test_paths.h"
 
-#include "scene/demo_scenes.h"
-#include "scene/scene_source.h"
+#include "core/catalog/demo_scenes.h"
+#include "core/catalog/scene_source.h"
 
 #include <glm/geometric.hpp>
 

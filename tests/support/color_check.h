@@ -5,9 +5,9 @@
 /// over the pixels whose reference ray hits anything (hitCount > 0), excluding the pixels
 /// the GPU flags overflowed or unresolved (bounded methods may lose fragments there).
 
-#include "image/rgba_image.h"
-#include "trim/reference_diagnostics.h"
-#include "trim/trim_image.h"
+#include "core/image/rgba_image.h"
+#include "core/trim/reference_diagnostics.h"
+#include "core/trim/trim_image.h"
 
 #include <QImage>
 #include <QString>

@@ -1,6 +1,6 @@
 #include "gl_test_context.h"
 
-#include "gl/gl_error.h"
+#include "render/gl/gl_error.h"
 
 #include <cstdlib>
 

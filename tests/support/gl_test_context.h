@@ -3,7 +3,7 @@
 /// An offscreen OpenGL 4.3 context for render tests. Without one a test may skip — unless
 /// TRIMLAB_REQUIRE_GL=1, which turns the skip into a failure (CI sets it).
 
-#include "gl/offscreen_gl_context.h"
+#include "render/gl/offscreen_gl_context.h"
 
 #include <QStandardPaths>
 #include <QString>

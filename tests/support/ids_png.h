@@ -4,7 +4,7 @@
 /// decoder written from the documentation, independent of the app's encoder, so that the
 /// app tests check the file format too.
 
-#include "trim/trim_image.h"
+#include "core/trim/trim_image.h"
 
 #include <QImage>
 

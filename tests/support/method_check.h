@@ -5,9 +5,9 @@
 /// say why it fails, if it does (with actual/expected/diff images written).
 
 #include "trim_comparison.h"
-#include "trim_renderer.h"
+#include "render/trim_renderer.h"
 
-#include "trim/reference_renderer.h"
+#include "core/trim/reference_renderer.h"
 
 #include <QString>
 

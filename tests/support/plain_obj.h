@@ -3,7 +3,7 @@
 /// Writing a generated test mesh as a file, for tests that open meshes the way a user
 /// does (through the GUI or the command line) rather than handing them over in memory.
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <QString>
 

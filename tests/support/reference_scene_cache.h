@@ -5,10 +5,10 @@
 /// computed once; and a scene is uploaded to the GPU renderer only when the case before
 /// used another one (an upload rebuilds the renderer's buffers).
 
-#include "trim_renderer.h"
+#include "render/trim_renderer.h"
 
-#include "scene/scene.h"
-#include "trim/reference_renderer.h"
+#include "core/scene/scene.h"
+#include "core/trim/reference_renderer.h"
 
 #include <functional>
 #include <map>

@@ -1,10 +1,10 @@
 #include "replay_check.h"
 
-#include "dynamic_trim_renderer.h"
+#include "render/dynamic_trim_renderer.h"
 
-#include "timeline/frame_chain.h"
-#include "trim/dynamic_reference_renderer.h"
-#include "trim/reference_renderer.h"
+#include "core/timeline/frame_chain.h"
+#include "core/trim/dynamic_reference_renderer.h"
+#include "core/trim/reference_renderer.h"
 
 #include <set>
 

@@ -7,9 +7,9 @@
 
 #include "method_check.h"
 
-#include "timeline/timeline.h"
-#include "trim/dynamic_chain.h"
-#include "trim/trim_image.h"
+#include "core/timeline/timeline.h"
+#include "core/trim/dynamic_chain.h"
+#include "core/trim/trim_image.h"
 
 #include <QString>
 

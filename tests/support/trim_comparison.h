@@ -6,10 +6,10 @@
 /// overflowed pixels are handled. The counts are TrimAgreement's; the disagreement mask
 /// is a QImage and the summary a QString, for failure artifacts and messages.
 
-#include "trim/reference_diagnostics.h"
-#include "trim/reference_renderer.h"
-#include "trim/trim_agreement.h"
-#include "trim/trim_image.h"
+#include "core/trim/reference_diagnostics.h"
+#include "core/trim/reference_renderer.h"
+#include "core/trim/trim_agreement.h"
+#include "core/trim/trim_image.h"
 
 #include <QImage>
 #include <QString>

@@ -8,8 +8,8 @@
 #include "shown_main_window.h"
 #include "trim_comparison.h"
 
-#include "main_window.h"
-#include "viewport_widget.h"
+#include "ui/window/main_window.h"
+#include "ui/viewport/viewport_widget.h"
 
 #include <QString>
 #include <QtTest>

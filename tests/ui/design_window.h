@@ -7,11 +7,11 @@
 #include "plain_obj.h"
 #include "shown_main_window.h"
 
-#include "design_workspace.h"
-#include "main_window.h"
-#include "viewport_widget.h"
+#include "ui/design/design_workspace.h"
+#include "ui/window/main_window.h"
+#include "ui/viewport/viewport_widget.h"
 
-#include "mesh/triangle_mesh.h"
+#include "core/mesh/triangle_mesh.h"
 
 #include <QSettings>
 #include <QSignalSpy>

@@ -3,7 +3,7 @@
 /// Holding a panel's background task while it runs, so that a widget test can act at a
 /// known point of the run (cancel it, edit other controls) instead of racing the worker.
 
-#include "background_task.h"
+#include "ui/common/background_task.h"
 
 #include <QObject>
 #include <QSemaphore>

@@ -11,12 +11,12 @@
 #include "plain_obj.h"
 #include "trim_comparison.h"
 
-#include "main_window.h"
-#include "viewport_widget.h"
+#include "ui/window/main_window.h"
+#include "ui/viewport/viewport_widget.h"
 
-#include "mfr/fragment_method.h"
-#include "mesh/triangle_mesh.h"
-#include "trim/reference_renderer.h"
+#include "render/mfr/fragment_method.h"
+#include "core/mesh/triangle_mesh.h"
+#include "core/trim/reference_renderer.h"
 
 #include <QDockWidget>
 #include <QScrollArea>

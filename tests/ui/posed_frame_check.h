@@ -8,10 +8,10 @@
 #include "image_artifacts.h"
 #include "trim_comparison.h"
 
-#include "main_window.h"
-#include "viewport_widget.h"
+#include "ui/window/main_window.h"
+#include "ui/viewport/viewport_widget.h"
 
-#include "trim/reference_renderer.h"
+#include "core/trim/reference_renderer.h"
 
 #include <glm/vec3.hpp>
 

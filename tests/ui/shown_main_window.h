@@ -3,8 +3,8 @@
 /// The real main window on screen for a widget test: its settings in a test's own INI
 /// file, a fixed viewport size so that frames compare with the reference pixel for pixel.
 
-#include "main_window.h"
-#include "viewport_widget.h"
+#include "ui/window/main_window.h"
+#include "ui/viewport/viewport_widget.h"
 
 #include <QSize>
 #include <QString>

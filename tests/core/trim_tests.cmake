@@ -1,6 +1,0 @@
-trimlab_add_test(core ray_triangle LIBS trimlab::core)
-trimlab_add_test(core triangle_bvh LIBS trimlab::core)
-trimlab_add_test(core trim_walk LIBS trimlab::core)
-trimlab_add_test(core demo_scenes LIBS trimlab::core)
-trimlab_add_test(core reference_renderer LIBS trimlab::core)
-trimlab_add_test(core dynamic_rules LIBS trimlab::core)

@@ -1,0 +1,492 @@
+// The designer workflow in the real main window, driven like a user: open a closed mesh,
+// turn the brush on (B) and drag on the viewport with QTest, then check the history
+// (core/timeline) against what the drag must have done, undo and redo with the
+// keyboard, start sets (N) and change rules, render the dynamic rules in the viewport,
+// be refused by the homogeneous confluent rule, and save / reopen / fail to open
+// projects. Real widgets, a real OpenGL 4.3 context; settings in temporary INI files.
+// The drag-update latency on large meshes is measured by bench_design_drag.cpp.
+#include "design_window.h"
+#include "gl_test_context.h"
+#include "message_box_closer.h"
+
+#include "ui/design/brush_panel.h"
+#include "ui/design/brush_tool.h"
+#include "ui/design/deformation_timeline_panel.h"
+#include "ui/design/deformation_track.h"
+#include "ui/design/design_session.h"
+#include "ui/design/design_workspace.h"
+#include "ui/design/history_exports.h"
+#include "ui/window/main_window.h"
+#include "ui/design/project_files.h"
+#include "core/scene/shape_generators.h"
+#include "core/timeline/project_file.h"
+#include "ui/viewport/viewport_widget.h"
+
+#include <QtTest>
+
+#include <QApplication>
+#include <QMouseEvent>
+#include <QAction>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QSettings>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QUndoStack>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+using namespace trimlab;
+using namespace trimlab::ui;
+using trimlab::test::MessageBoxCloser;
+using trimlab::test::kWaitMs;
+
+namespace {
+
+constexpr QSize kViewportSize(256, 192);
+
+
+bool sameBits(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b)
+{
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
+}
+
+
+int differingPixels(const QImage& a, const QImage& b)
+{
+    if (a.size() != b.size())
+        return a.width() * a.height();
+    int count = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x)
+            count += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
+    return count;
+}
+
+/// Pixels whose blue exceeds their green clearly: the brush tint, never the sphere's
+/// front-facing yellow or the background.
+int magentaPixels(const QImage& image)
+{
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            count += c.red() > c.green() + 40 && c.blue() > c.green() + 20 ? 1 : 0;
+        }
+    return count;
+}
+
+/// A left drag from `from` to `to` in `steps` moves, as QTest sends it.
+void brushDrag(QWidget* viewport, QPoint from, QPoint to, int steps = 6)
+{
+    QTest::mousePress(viewport, Qt::LeftButton, {}, from);
+    for (int i = 1; i <= steps; ++i)
+        QTest::mouseMove(viewport, from + (to - from) * i / steps);
+    QTest::mouseRelease(viewport, Qt::LeftButton, {}, to);
+}
+
+/// A stroke script that pushes the top cap of the unit sphere down through the bottom, in
+/// one homogeneous confluent set: the tip that comes out below and the bottom disk it
+/// passes through are trimmed off.
+const char* kPushThroughScript = R"({"format": "trimlab-stroke-script", "version": 1, "sets": [
+  {"rule": "homogeneous-confluent", "strokes": [
+    {"anchor": [0, 1, 0], "drag": [0, -2.4, 0], "radius": 0.8, "strength": 1.0, "profile": "smooth",
+     "smoothing": {"iterations": 0, "weights": "uniform", "step": 0.5}}]}]})";
+
+} // namespace
+
+class TestDesignWorkflow : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void brushDragDeformsWithinRadius();
+    void undoRedoIsBitExact();
+    void setsAndRulesAreUndoable();
+    void brushRefusesEarlierFrames();
+    void dynamicRulesRenderInTheViewport();
+    void homogeneousConfluentRefusesTrimmedParts();
+    void projectRoundTripAndCorruptFile();
+
+private:
+    [[nodiscard]] QString path(const QString& name) const { return m_dir.filePath(name); }
+    [[nodiscard]] std::unique_ptr<MainWindow> showWindow(const QString& name)
+    {
+        return test::showDesignWindow(path(name + QStringLiteral(".ini")), kViewportSize);
+    }
+    /// Drags at the viewport centre and waits until the history has one frame more.
+    [[nodiscard]] static bool strokeAtCentre(MainWindow& window, QPoint offset);
+
+    QTemporaryDir m_dir;
+    QString m_sphereObj;
+};
+
+void TestDesignWorkflow::initTestCase()
+{
+    TRIMLAB_INIT_WIDGET_TEST();
+    QVERIFY(m_dir.isValid());
+    m_sphereObj = path(QStringLiteral("sphere.obj"));
+    QVERIFY(test::writePlainObj(makeIcosphere(glm::dvec3(0.0), 1.0, 3), m_sphereObj)); // 642 vertices
+}
+
+
+
+
+bool TestDesignWorkflow::strokeAtCentre(MainWindow& window, QPoint offset)
+{
+    const DesignSession* session = window.designWorkspace()->session();
+    const int before = session->timeline().frameCount();
+    const QPoint centre(kViewportSize.width() / 2, kViewportSize.height() / 2);
+    brushDrag(window.viewport(), centre, centre + offset);
+    return QTest::qWaitFor([&] { return session->timeline().frameCount() == before + 1; }, kWaitMs);
+}
+
+// The drag moves only vertices within the brush radius of the grabbed point, records them
+// as one frame (exactly the vertices whose bits changed), and the view changes.
+void TestDesignWorkflow::brushDragDeformsWithinRadius()
+{
+    auto window = showWindow(QStringLiteral("drag"));
+    QVERIFY(test::openDesignAndWait(*window, m_sphereObj));
+    ViewportWidget* viewport = window->viewport();
+    QVERIFY(!window->designWorkspace()->brushAction()->isChecked());
+    viewport->setFocus();
+    QTest::keyClick(viewport, Qt::Key_B);
+    QVERIFY(window->designWorkspace()->brushAction()->isChecked());
+    QVERIFY(QSettings(path(QStringLiteral("drag.ini")), QSettings::IniFormat)
+                .value(QStringLiteral("brush/toolEnabled"))
+                .toBool());
+    const double radius = window->designWorkspace()->brushPanel()->settings().radius;
+    QVERIFY(std::abs(radius - 0.4 * window->designWorkspace()->session()->baseBounds().radius()) < 1e-3);
+    // Hovering tints the region the brush would move (vertex colors toward magenta).
+    const QImage untinted = viewport->grabFramebuffer();
+    const QPointF centre(kViewportSize.width() / 2.0, kViewportSize.height() / 2.0);
+    QMouseEvent hover(QEvent::MouseMove, centre, viewport->mapToGlobal(centre), Qt::NoButton, Qt::NoButton, {});
+    QApplication::sendEvent(viewport, &hover);
+    QVERIFY(QTest::qWaitFor([&] { return viewport->showsVertexColors(); }, kWaitMs));
+    QVERIFY(QTest::qWaitFor([&] { return magentaPixels(viewport->grabFramebuffer()) > magentaPixels(untinted) + 50; },
+                            kWaitMs));
+    const QImage before = viewport->grabFramebuffer();
+    const DesignSession* session = window->designWorkspace()->session();
+    const std::vector<glm::vec3> base = session->timeline().base().positions;
+
+    QVERIFY(strokeAtCentre(*window, QPoint(30, -20)));
+    QCOMPARE(session->timeline().frameCount(), 2);
+    const timeline::Frame& frame = session->timeline().frame(1);
+    QVERIFY(!frame.vertices.empty());
+    QVERIFY(frame.stroke.anchorTriangle.has_value());
+    QCOMPARE(frame.stroke.brush.radius, radius);
+    const std::vector<glm::vec3>& now = session->timeline().currentPositions();
+    std::vector<std::uint32_t> changed;
+    for (std::uint32_t v = 0; v < now.size(); ++v) {
+        if (std::memcmp(&now[v], &base[v], sizeof(glm::vec3)) == 0)
+            continue;
+        changed.push_back(v);
+        // Geodesic distance >= Euclidean: a moved vertex lies within the radius in space too.
+        QVERIFY2(glm::distance(glm::dvec3(base[v]), frame.stroke.anchor) < radius + 1e-6,
+                 qPrintable(QStringLiteral("vertex %1 moved outside the radius").arg(v)));
+    }
+    QCOMPARE(changed, frame.vertices);
+    QVERIFY(changed.size() < now.size() / 2);
+    QVERIFY(window->isWindowModified());
+    QVERIFY(window->designWorkspace()->brushTool()->lastUpdateMilliseconds() > 0.0);
+
+    QVERIFY(QTest::qWaitFor([&] { return differingPixels(before, viewport->grabFramebuffer()) > 50; }, kWaitMs));
+    QEvent leave(QEvent::Leave);
+    QApplication::sendEvent(viewport, &leave);
+    QVERIFY(!viewport->showsVertexColors());
+}
+
+// Ctrl+Z restores every position bit for bit, Ctrl+Shift+Z re-applies exactly the drag's.
+void TestDesignWorkflow::undoRedoIsBitExact()
+{
+    auto window = showWindow(QStringLiteral("undo"));
+    QVERIFY(test::openDesignAndWait(*window, m_sphereObj));
+    window->designWorkspace()->brushAction()->setChecked(true);
+    const DesignSession* session = window->designWorkspace()->session();
+    const std::vector<glm::vec3> base = session->timeline().currentPositions();
+    QVERIFY(strokeAtCentre(*window, QPoint(-25, 15)));
+    QVERIFY(strokeAtCentre(*window, QPoint(10, 30)));
+    const std::vector<glm::vec3> afterFirst = session->timeline().positionsAt(1);
+    const std::vector<glm::vec3> afterBoth = session->timeline().currentPositions();
+    QVERIFY(!sameBits(afterBoth, base));
+
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(session->timeline().frameCount(), 2);
+    QVERIFY(sameBits(session->timeline().currentPositions(), afterFirst));
+    QVERIFY(sameBits(session->shownPositions(), afterFirst));
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(session->timeline().frameCount(), 1);
+    QVERIFY(sameBits(session->timeline().currentPositions(), base));
+    QVERIFY(!window->isWindowModified()); // back at the clean state
+
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(session->timeline().frameCount(), 3);
+    QVERIFY(sameBits(session->timeline().currentPositions(), afterBoth));
+    QVERIFY(window->isWindowModified());
+    int frames = 0;
+    QVERIFY(test::waitForNewFrame(*window, frames));
+}
+
+// N starts a set (the track marks its reference frame), the rule chooser changes the
+// current set's rule, and both undo and redo.
+void TestDesignWorkflow::setsAndRulesAreUndoable()
+{
+    auto window = showWindow(QStringLiteral("sets"));
+    QVERIFY(test::openDesignAndWait(*window, m_sphereObj));
+    window->designWorkspace()->brushAction()->setChecked(true);
+    const DesignSession* session = window->designWorkspace()->session();
+    QVERIFY(strokeAtCentre(*window, QPoint(20, 0)));
+    DeformationTrack* track = window->designWorkspace()->timelinePanel()->track();
+    QCOMPARE(track->referenceFrames(), QList<int>{0});
+
+    window->viewport()->setFocus();
+    QTest::keyClick(window->viewport(), Qt::Key_N);
+    QCOMPARE(session->timeline().sets().size(), std::size_t(2));
+    QCOMPARE(session->timeline().sets()[1].referenceFrame(), 1);
+    QCOMPARE(track->referenceFrames(), (QList<int>{0, 1}));
+
+    auto* rule = test::child<QComboBox>(window.get(), "deformationRuleComboBox");
+    QVERIFY(rule);
+    QCOMPARE(rule->currentData().toString(), QStringLiteral("confluent"));
+    rule->setFocus();
+    QTest::keyClick(rule, Qt::Key_Down); // confluent → homogeneous confluent
+    QCOMPARE(session->timeline().sets()[1].rule, DynamicRule::HomogeneousConfluent);
+    QCOMPARE(session->timeline().sets()[0].rule, DynamicRule::Confluent);
+    QVERIFY(track->setLabels().at(1).contains(QStringLiteral("omogeneous")));
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier); // the rule
+    QCOMPARE(session->timeline().sets()[1].rule, DynamicRule::Confluent);
+    QCOMPARE(rule->currentData().toString(), QStringLiteral("confluent"));
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier); // the set
+    QCOMPARE(session->timeline().sets().size(), std::size_t(1));
+    QCOMPARE(track->referenceFrames(), QList<int>{0});
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(session->timeline().sets().size(), std::size_t(2));
+    QCOMPARE(session->timeline().sets()[1].rule, DynamicRule::HomogeneousConfluent);
+    QCOMPARE(track->referenceFrames(), (QList<int>{0, 1}));
+}
+
+// Scrubbing back shows the earlier frame exactly; the brush then refuses and says why.
+void TestDesignWorkflow::brushRefusesEarlierFrames()
+{
+    auto window = showWindow(QStringLiteral("scrub"));
+    QVERIFY(test::openDesignAndWait(*window, m_sphereObj));
+    window->designWorkspace()->brushAction()->setChecked(true);
+    const DesignSession* session = window->designWorkspace()->session();
+    QVERIFY(strokeAtCentre(*window, QPoint(20, 20)));
+    auto* slider = test::child<QSlider>(window.get(), "deformationSlider");
+    QVERIFY(slider);
+    slider->setFocus();
+    QTest::keyClick(slider, Qt::Key_Home);
+    QCOMPARE(session->shownFrame(), 0);
+    QVERIFY(sameBits(session->shownPositions(), session->timeline().base().positions));
+    int frames = 0;
+    QVERIFY(test::waitForNewFrame(*window, frames));
+    const QPoint centre(kViewportSize.width() / 2, kViewportSize.height() / 2);
+    brushDrag(window->viewport(), centre, centre + QPoint(20, 0));
+    QCOMPARE(session->timeline().frameCount(), 2);
+    QVERIFY2(window->statusBar()->currentMessage().contains(QStringLiteral("last frame")),
+             qPrintable(window->statusBar()->currentMessage()));
+    QTest::keyClick(slider, Qt::Key_End);
+    QCOMPARE(session->shownFrame(), 1);
+}
+
+// Two sets under the dynamic rules render through the DynamicTrimRenderer (both levels),
+// a drag replaces only the shown level, a GPU reset re-creates everything and shows the
+// same frame, a peeling method explains why it cannot run them instead of crashing, and
+// resets in a row end in a message, not in a loop.
+void TestDesignWorkflow::dynamicRulesRenderInTheViewport()
+{
+    MessageBoxCloser closer;
+    auto window = showWindow(QStringLiteral("dynamic"));
+    QVERIFY(test::openDesignAndWait(*window, m_sphereObj));
+    window->designWorkspace()->brushAction()->setChecked(true);
+    const DesignSession* session = window->designWorkspace()->session();
+    QVERIFY(strokeAtCentre(*window, QPoint(25, 0)));
+    window->designWorkspace()->newSetAction()->trigger();
+    QVERIFY(strokeAtCentre(*window, QPoint(-25, 10)));
+
+    auto* classification = test::child<QComboBox>(window.get(), "classificationComboBox");
+    QVERIFY(classification);
+    classification->setFocus();
+    QTest::keyClick(classification, Qt::Key_Down);
+    QVERIFY(window->designWorkspace()->showsDynamicRules());
+    ViewportWidget* viewport = window->viewport();
+    QVERIFY(QTest::qWaitFor([&] { return viewport->lastDynamicStats().has_value(); }, kWaitMs));
+    QVERIFY2(viewport->errorMessage().isEmpty(), qPrintable(viewport->errorMessage()));
+    QCOMPARE(viewport->lastDynamicStats()->levels, 2);
+    QVERIFY(viewport->lastDynamicStats()->characterizedLevels == 1);
+
+    QVERIFY(strokeAtCentre(*window, QPoint(0, -25))); // picks through meshTriangle, drags the shown level
+    QCOMPARE(session->timeline().frameCount(), 4);
+    QVERIFY(QTest::qWaitFor([&] { return viewport->lastDynamicStats().has_value() && viewport->errorMessage().isEmpty(); },
+                            kWaitMs));
+
+    // A GPU reset takes the uploaded chain and its cached characterizations with the
+    // context: the view uploads and characterizes them again on the new context and shows
+    // the same frame (ViewportWidget::recoverFromContextLoss; tst_context_loss.cpp).
+    test::waitUntilViewIdle(*viewport); // the drag's last updates may still be on their way
+    const QImage beforeReset = viewport->readColorImage();
+    const int levels = viewport->lastDynamicStats()->levels;
+    const int contexts = viewport->contextsInitialized();
+    viewport->recoverFromContextLoss(QStringLiteral("The graphics driver reset the GPU (test)."));
+    QVERIFY(QTest::qWaitFor(
+        [&] { return viewport->contextsInitialized() == contexts + 1 && viewport->lastFrame() && viewport->lastDynamicStats(); },
+        kWaitMs));
+    QCOMPARE(viewport->lastDynamicStats()->levels, levels);
+    QCOMPARE(viewport->lastDynamicStats()->characterizedLevels, levels - 1);
+    QVERIFY(viewport->readColorImage() == beforeReset);
+
+    auto* method = test::child<QComboBox>(window.get(), "methodComboBox");
+    QVERIFY(method);
+    const int buffer = method->currentIndex();
+    const int peeling = method->findData(QStringLiteral("peeling-f2b"));
+    QVERIFY(peeling >= 0);
+    method->setCurrentIndex(peeling);
+    QVERIFY(QTest::qWaitFor([&] { return !viewport->errorMessage().isEmpty(); }, kWaitMs));
+    QVERIFY2(viewport->errorMessage().contains(QStringLiteral("cannot run the dynamic rules")),
+             qPrintable(viewport->errorMessage()));
+    QVERIFY(QTest::qWaitFor([&] { return !closer.seen().isEmpty(); }, kWaitMs));
+    method->setCurrentIndex(buffer);
+    QVERIFY(QTest::qWaitFor([&] { return viewport->errorMessage().isEmpty() && viewport->lastFrame(); }, kWaitMs));
+
+    // Resets in a row: the S-buffer takes over; when it resets in a row too, no leaner
+    // method runs the dynamic rules, so rendering stops with a message instead of
+    // resetting the GPU every frame, until a method is chosen again.
+    const render::FragmentMethodKind chosen = viewport->method();
+    const QString reset = QStringLiteral("The graphics driver reset the GPU (test).");
+    const int before = viewport->contextsInitialized();
+    viewport->recoverFromContextLoss(reset);
+    viewport->recoverFromContextLoss(reset);
+    QVERIFY(QTest::qWaitFor(
+        [&] {
+            return viewport->contextsInitialized() == before + 2 && viewport->lastFrame() &&
+                   viewport->lastFrame()->stats.method == render::FragmentMethodKind::SBuffer;
+        },
+        kWaitMs));
+    viewport->recoverFromContextLoss(reset);
+    viewport->recoverFromContextLoss(reset);
+    QVERIFY2(viewport->errorMessage().contains(QStringLiteral("stopped rendering")), qPrintable(viewport->errorMessage()));
+    QVERIFY(QTest::qWaitFor([&] { return viewport->contextsInitialized() == before + 4; }, kWaitMs));
+    QTest::qWait(500);
+    QCOMPARE(viewport->contextsInitialized(), before + 4); // no reset loop
+    QVERIFY(!viewport->lastFrame());
+    viewport->setMethod(chosen);
+    QVERIFY(QTest::qWaitFor(
+        [&] { return viewport->errorMessage().isEmpty() && viewport->lastFrame() && viewport->lastDynamicStats(); },
+        kWaitMs));
+    QCOMPARE(viewport->lastFrame()->stats.method, chosen);
+    classification->setCurrentIndex(0); // back to the static rule for the next tests' settings
+}
+
+// After a replayed stroke pushed the top cap through the bottom under the homogeneous
+// confluent rule, a press whose region reaches the trimmed-off tip is refused with the
+// reason in the status bar; a press far from it is not.
+void TestDesignWorkflow::homogeneousConfluentRefusesTrimmedParts()
+{
+    auto window = showWindow(QStringLiteral("homogeneous"));
+    QVERIFY(test::openDesignAndWait(*window, m_sphereObj));
+    const QString script = path(QStringLiteral("push-through.json"));
+    std::ofstream(script.toStdString()) << kPushThroughScript;
+    QSignalSpy replayed(window->designWorkspace()->historyExports(), &HistoryExports::replayed);
+    window->designWorkspace()->historyExports()->replay(script);
+    QVERIFY(replayed.wait(kWaitMs));
+    const DesignSession* session = window->designWorkspace()->session();
+    QCOMPARE(session->timeline().frameCount(), 2);
+    QCOMPARE(session->timeline().sets().front().rule, DynamicRule::HomogeneousConfluent);
+    QVERIFY(session->undoStack()->isClean() && session->undoStack()->count() == 0);
+    window->designWorkspace()->brushAction()->setChecked(true);
+
+    // From below: the hole the cap punched through the bottom, ringed by the surface.
+    ViewportWidget* viewport = window->viewport();
+    viewport->setCamera(Camera{{0.0, -4.0, 0.05}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 45.0});
+    int frames = 0;
+    QVERIFY(test::waitForNewFrame(*window, frames));
+    const QPoint centre(kViewportSize.width() / 2, kViewportSize.height() / 2);
+    std::optional<QPoint> rim;
+    for (int dx = 0; dx < kViewportSize.width() / 2 && !rim; ++dx) {
+        const auto pixel = viewport->trimPixelAt(QPointF(centre + QPoint(dx, 0)) + QPointF(0.5, 0.5));
+        if (pixel && pixel->covered())
+            rim = centre + QPoint(dx, 0);
+    }
+    QVERIFY2(rim.has_value(), "nothing visible to grab from below");
+    brushDrag(viewport, *rim, *rim + QPoint(0, 20));
+    QCOMPARE(session->timeline().frameCount(), 2);
+    QVERIFY2(window->statusBar()->currentMessage().contains(QStringLiteral("Homogeneous confluent rule")),
+             qPrintable(window->statusBar()->currentMessage()));
+    QVERIFY(window->designWorkspace()->lastTrimCheckMilliseconds() > 0.0);
+    qInfo("homogeneous confluent check: %.1f ms (first press: chain and BVHs built)",
+          window->designWorkspace()->lastTrimCheckMilliseconds());
+
+    // From the side with a small radius, far from the cap: allowed.
+    auto* radius = test::child<QDoubleSpinBox>(window.get(), "brushRadiusSpinBox");
+    radius->setValue(0.2);
+    viewport->setCamera(Camera{{4.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 45.0});
+    QVERIFY(test::waitForNewFrame(*window, frames));
+    QVERIFY(strokeAtCentre(*window, QPoint(15, 0)));
+    qInfo("second check (cached chain): %.1f ms", window->designWorkspace()->lastTrimCheckMilliseconds());
+}
+
+// Save → reopen gives the same history (Timeline ==); a damaged project is reported
+// and the session shown stays as it was; unsaved changes are saved when the prompt is
+// confirmed.
+void TestDesignWorkflow::projectRoundTripAndCorruptFile()
+{
+    MessageBoxCloser closer;
+    auto window = showWindow(QStringLiteral("project"));
+    QVERIFY(test::openDesignAndWait(*window, m_sphereObj));
+    window->designWorkspace()->brushAction()->setChecked(true);
+    QVERIFY(strokeAtCentre(*window, QPoint(20, -10)));
+    window->designWorkspace()->newSetAction()->trigger();
+    QVERIFY(strokeAtCentre(*window, QPoint(-20, 10)));
+    QVERIFY(window->windowTitle().contains(QStringLiteral("[*]")) && window->isWindowModified());
+
+    const QString project = path(QStringLiteral("design.trimlab"));
+    QString error;
+    QVERIFY2(window->designWorkspace()->projectFiles()->saveTo(project, &error), qPrintable(error));
+    QVERIFY(!window->isWindowModified());
+    QVERIFY(window->windowTitle().startsWith(QStringLiteral("design.trimlab")));
+    const timeline::Timeline saved = window->designWorkspace()->session()->timeline();
+    QVERIFY(timeline::readProject(project.toStdString()).timeline == saved);
+
+    QVERIFY(test::openDesignAndWait(*window, m_sphereObj)); // clean: no prompt
+    QCOMPARE(window->designWorkspace()->session()->timeline().frameCount(), 1);
+    QVERIFY(test::openDesignAndWait(*window, project));
+    QVERIFY(window->designWorkspace()->session()->timeline() == saved);
+    QCOMPARE(window->designWorkspace()->session()->projectPath(), QFileInfo(project).absoluteFilePath());
+    QVERIFY(window->recentFiles().contains(QFileInfo(project).absoluteFilePath()));
+
+    // A damaged copy: the dialog names the file, nothing else changes.
+    std::string bytes;
+    {
+        std::ifstream in(project.toStdString(), std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    const QString damaged = path(QStringLiteral("damaged.trimlab"));
+    std::ofstream(damaged.toStdString(), std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+    QSignalSpy failed(window.get(), &MainWindow::sceneLoadFailed);
+    window->openSource(damaged);
+    QVERIFY(failed.wait(kWaitMs));
+    QVERIFY(QTest::qWaitFor([&] { return !closer.seen().isEmpty(); }, kWaitMs));
+    QVERIFY2(closer.seen().last().contains(QStringLiteral("damaged.trimlab")), qPrintable(closer.seen().last()));
+    QVERIFY(window->designWorkspace()->session()->timeline() == saved);
+    QCOMPARE(window->designWorkspace()->session()->projectPath(), QFileInfo(project).absoluteFilePath());
+
+    // Unsaved changes: the prompt's default (Save) writes them before the mesh opens.
+    QVERIFY(strokeAtCentre(*window, QPoint(0, 20)));
+    const timeline::Timeline edited = window->designWorkspace()->session()->timeline();
+    QVERIFY(test::openDesignAndWait(*window, m_sphereObj));
+    QVERIFY(timeline::readProject(project.toStdString()).timeline == edited);
+}
+
+
+QTEST_MAIN(TestDesignWorkflow)
+#include "tst_design_workflow.moc"

@@ -1,0 +1,152 @@
+#include "ui/animation/animation_workspace.h"
+
+#include "ui/animation/animation_settings_store.h"
+#include "ui/animation/segmentation_panel.h"
+#include "ui/animation/timeline_panel.h"
+#include "ui/common/window_context.h"
+#include "ui/skinning/skinning_panel.h"
+#include "ui/skinning/skinning_workspace.h"
+#include "ui/viewport/viewport_widget.h"
+
+#include "core/animation/mesh_animation.h"
+
+#include <QDockWidget>
+
+namespace trimlab::ui {
+
+AnimationWorkspace::AnimationWorkspace(const WindowContext& context, ViewportWidget* viewport, QDockWidget* tabWith,
+                                       QObject* parent)
+    : QObject(parent), m_context(context), m_viewport(viewport)
+{
+    createDocks(tabWith);
+    connectParts();
+}
+
+void AnimationWorkspace::createDocks(QDockWidget* tabWith)
+{
+    m_timeline = new TimelinePanel;
+    m_timelineDock = m_context.addBottomDock(tr("Timeline"), QStringLiteral("timelineDock"), m_timeline);
+    m_timelineDock->hide(); // shown while an animation is open
+    m_segmentation = new SegmentationPanel;
+    m_segmentationDock =
+        m_context.addSideDock(tr("Segmentation"), QStringLiteral("segmentationDock"), m_segmentation, tabWith);
+    m_skinning = new SkinningWorkspace(m_context, m_segmentationDock, this);
+}
+
+void AnimationWorkspace::connectParts()
+{
+    QSettings& settings = m_context.settings();
+    connect(m_timeline, &TimelinePanel::poseChanged, this, &AnimationWorkspace::showPose);
+    connect(m_timeline, &TimelinePanel::playbackChoicesChanged, this,
+            [this, &settings] { savePlaybackChoices(settings, {m_timeline->fps(), m_timeline->loops()}); });
+    connect(m_segmentation, &SegmentationPanel::displayColorsChanged, this, &AnimationWorkspace::showSegmentColors);
+    connect(m_segmentation, &SegmentationPanel::choicesChanged, this,
+            [this, &settings] { saveSegmentationChoices(settings, m_segmentation->choices()); });
+    connect(m_segmentation, &SegmentationPanel::streamStarted, this, [this] {
+        m_timeline->setPose(0);
+        m_timeline->play();
+    });
+    connect(m_segmentation, &SegmentationPanel::exportRequested, this,
+            &AnimationWorkspace::showExportSegmentationDialog);
+    connect(m_segmentation, &SegmentationPanel::displayColorsChanged, this,
+            &AnimationWorkspace::passSegmentationToSkinning);
+    connect(m_segmentation, &SegmentationPanel::choicesChanged, this, &AnimationWorkspace::passSegmentationToSkinning);
+    connect(m_skinning->panel(), &SkinningPanel::displayChanged, this, [this] {
+        showPose(m_timeline->pose());
+        showSegmentColors();
+    });
+    connect(m_skinning, &SkinningWorkspace::exportRequested, this,
+            [this] { m_skinning->showExportDialog(double(m_timeline->fps())); });
+}
+
+void AnimationWorkspace::restoreSettings()
+{
+    m_segmentation->setChoices(loadSegmentationChoices(m_context.settings()));
+    const PlaybackChoices playback = loadPlaybackChoices(m_context.settings());
+    m_timeline->setPlaybackChoices(playback.fps, playback.loop);
+}
+
+void AnimationWorkspace::hideAnimationDocks()
+{
+    m_timelineDock->hide(); // until an animation is opened
+    m_skinning->dock()->hide();
+}
+
+void AnimationWorkspace::show(std::shared_ptr<const LoadedAnimation> animation)
+{
+    m_animation = std::move(animation);
+    const MeshAnimation& poses = *m_animation->animation;
+    QStringList names;
+    for (std::size_t pose = 0; pose < poses.poseCount(); ++pose)
+        names << (pose < poses.poseNames.size() ? QString::fromStdString(poses.poseNames[pose])
+                                                : tr("pose %1").arg(pose));
+    m_timeline->setPoses(names);
+    m_segmentation->setAnimation(m_animation);
+    m_skinning->panel()->setAnimation(m_animation);
+    passSegmentationToSkinning();
+    m_timelineDock->show();
+    m_skinning->dock()->show();
+    m_segmentationDock->show();
+    m_segmentationDock->raise();
+}
+
+void AnimationWorkspace::clear()
+{
+    if (!m_animation)
+        return;
+    m_animation.reset();
+    m_timeline->setPoses({});
+    m_segmentation->setAnimation(nullptr);
+    m_skinning->panel()->setAnimation(nullptr);
+    hideAnimationDocks();
+}
+
+void AnimationWorkspace::showPose(int pose)
+{
+    if (!m_animation || pose < 0 || std::size_t(pose) >= m_animation->animation->poseCount())
+        return;
+    if (const std::optional<std::vector<glm::vec3>> skinned = m_skinning->panel()->shownPose(pose))
+        m_viewport->showPose(*skinned);
+    else
+        m_viewport->showPose(m_animation->animation->poses[std::size_t(pose)]);
+    m_segmentation->setCurrentPose(pose);
+    m_skinning->panel()->setCurrentPose(pose);
+}
+
+// The skinning error heat map, while shown, takes the place of the segment colors.
+void AnimationWorkspace::showSegmentColors()
+{
+    if (!m_animation)
+        return;
+    const std::vector<std::uint32_t>& heatMap = m_skinning->panel()->displayColors();
+    m_viewport->setVertexColors(heatMap.empty() ? m_segmentation->displayColors() : heatMap);
+}
+
+// The Skinning panel's bones: the segmentation shown, unless it changes per pose
+// (variable mode); a given bone count segments with the Segmentation panel's settings.
+void AnimationWorkspace::passSegmentationToSkinning()
+{
+    const bool variable = m_segmentation->choices().mode == SegmentationMode::Variable;
+    SkinningPanel* skinning = m_skinning->panel();
+    skinning->setSegmentation(variable ? nullptr : m_segmentation->shownLabeling(),
+                              variable ? nullptr : m_segmentation->shownColors());
+    skinning->setSegmenterSettings(m_segmentation->choices().segmenterSettings());
+}
+
+void AnimationWorkspace::showExportSegmentationDialog()
+{
+    const QString path = m_context.askSavePath(
+        tr("Export Segmentation"),
+        {tr("Segmentation JSON (*.json)"), tr("Per-vertex labels CSV (*.csv)"), tr("glTF with segment colors (*.gltf)")},
+        m_context.sceneBaseName(QStringLiteral("animation")) + QStringLiteral("-segments.json"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (m_segmentation->exportSegmentation(path, &error))
+        m_context.showStatus(tr("Saved %1").arg(path));
+    else
+        m_context.showMessage(QMessageBox::Warning, tr("Export Segmentation"), tr("The segmentation was not saved."),
+                              error);
+}
+
+} // namespace trimlab::ui

@@ -1,0 +1,57 @@
+#include "ui/animation/segmentation_result.h"
+
+#include "core/animation/segment_coloring.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace trimlab::ui {
+
+namespace {
+
+void requirePartitionedPoses(const AnimationSegmenter& segmenter)
+{
+    if (!segmenter.partitionedPoses().empty())
+        return;
+    const std::size_t poses = segmenter.animation().poseCount();
+    const FeatureKind feature = segmenter.settings().feature.kind;
+    const std::size_t needed = feature == FeatureKind::Acceleration ? 3 : 2;
+    throw std::runtime_error("The animation has " + std::to_string(poses) + (poses == 1 ? " pose" : " poses") +
+                             "; the " + std::string(featureName(feature)) + " feature needs at least " +
+                             std::to_string(needed) + ".");
+}
+
+} // namespace
+
+std::size_t SegmentationResult::variableIndexAt(std::size_t pose) const
+{
+    const std::vector<std::size_t>& poses = segmenter->partitionedPoses();
+    const auto after = std::upper_bound(poses.begin(), poses.end(), pose);
+    const auto index = std::size_t(after - poses.begin());
+    return std::min(index == 0 ? 0 : index - 1, variable.size() - 1);
+}
+
+std::shared_ptr<const SegmentationResult> runSegmentation(const MeshAnimation& animation,
+                                                          const SegmenterSettings& settings, const TaskControl& control)
+{
+    auto segmenter = std::make_shared<AnimationSegmenter>(animation, settings);
+    segmenter->run(control);
+    requirePartitionedPoses(*segmenter);
+    return completeSegmentation(std::move(segmenter), control);
+}
+
+std::shared_ptr<const SegmentationResult> completeSegmentation(std::shared_ptr<const AnimationSegmenter> segmenter,
+                                                               const TaskControl& control)
+{
+    control.report("variable", 0, 1);
+    auto result = std::make_shared<SegmentationResult>();
+    result->variable = segmenter->variableSegmentation();
+    control.throwIfCancelled();
+    result->variableColors = colorSequence(segmenter->graph(), segmenter->vertexAreas(), result->variable);
+    result->segmenter = std::move(segmenter);
+    control.report("variable", 1, 1);
+    return result;
+}
+
+} // namespace trimlab::ui

@@ -1,0 +1,56 @@
+#include "ui/common/loaded_animation.h"
+
+#include "core/animation/animation_loader.h"
+#include "core/mesh/mesh_validation.h"
+
+#include <chrono>
+#include <filesystem>
+
+namespace trimlab::ui {
+
+namespace {
+
+/// "walking-cat" for "anim/walking-cat/", "mesh_*.obj" for a pattern, the file name of a glTF.
+std::string displayNameOf(const std::string& source)
+{
+    std::filesystem::path path(source);
+    if (!path.has_filename())
+        path = path.parent_path();
+    const std::string name = path.filename().string();
+    return name.empty() ? source : name;
+}
+
+Bounds poseBounds(const MeshAnimation& animation)
+{
+    Bounds bounds;
+    for (const std::vector<glm::vec3>& pose : animation.poses)
+        for (const glm::vec3& p : pose)
+            bounds.extend(glm::dvec3(p));
+    return bounds;
+}
+
+std::shared_ptr<const LoadedScene> restSceneOf(const MeshAnimation& animation, const std::string& source)
+{
+    auto scene = std::make_shared<LoadedScene>();
+    scene->source = source;
+    scene->displayName = displayNameOf(source);
+    scene->scene.objects.push_back({scene->displayName, animation.poseMesh(animation.restPose), glm::dmat4(1.0)});
+    scene->reports.push_back(validateMesh(scene->scene.objects.front().mesh));
+    return scene;
+}
+
+} // namespace
+
+LoadedAnimation loadAnimationForDisplay(const std::string& source, const TaskControl& control)
+{
+    const auto start = std::chrono::steady_clock::now();
+    auto animation = std::make_shared<const MeshAnimation>(loadAnimation(source, {}, control));
+    LoadedAnimation loaded;
+    loaded.loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    loaded.restScene = restSceneOf(*animation, source);
+    loaded.bounds = poseBounds(*animation);
+    loaded.animation = std::move(animation);
+    return loaded;
+}
+
+} // namespace trimlab::ui

@@ -1,0 +1,93 @@
+#include "ui/common/window_context.h"
+
+#include "ui/common/last_directory.h"
+
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMainWindow>
+#include <QRegularExpression>
+#include <QScrollArea>
+#include <QSettings>
+#include <QStatusBar>
+
+namespace trimlab::ui {
+
+void WindowContext::showStatus(const QString& message, int timeoutMs) const
+{
+    m_window.statusBar()->showMessage(message, timeoutMs);
+}
+
+void WindowContext::showMessage(QMessageBox::Icon icon, const QString& title, const QString& text,
+                                const QString& details) const
+{
+    auto* box = new QMessageBox(icon, title, text, QMessageBox::Ok, &m_window);
+    box->setInformativeText(details);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+QDockWidget* WindowContext::addSideDock(const QString& title, const QString& objectName, QWidget* content,
+                                        QDockWidget* tabWith) const
+{
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(content);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto* dock = new QDockWidget(title, &m_window);
+    dock->setObjectName(objectName);
+    dock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
+    dock->setWidget(scroll);
+    m_window.addDockWidget(Qt::RightDockWidgetArea, dock);
+    if (tabWith) {
+        m_window.tabifyDockWidget(tabWith, dock);
+        tabWith->raise();
+    }
+    return dock;
+}
+
+QDockWidget* WindowContext::addBottomDock(const QString& title, const QString& objectName, QWidget* content) const
+{
+    auto* dock = new QDockWidget(title, &m_window);
+    dock->setObjectName(objectName);
+    dock->setAllowedAreas(Qt::BottomDockWidgetArea | Qt::TopDockWidgetArea);
+    dock->setWidget(content);
+    m_window.addDockWidget(Qt::BottomDockWidgetArea, dock);
+    return dock;
+}
+
+QString WindowContext::sceneBaseName(const QString& fallback) const
+{
+    const std::shared_ptr<const LoadedScene> scene = m_host.shownScene();
+    return scene ? QFileInfo(QString::fromStdString(scene->displayName)).completeBaseName() : fallback;
+}
+
+QString WindowContext::lastDirectory() const
+{
+    return loadLastDirectory(m_settings);
+}
+
+void WindowContext::rememberDirectory(const QString& directory) const
+{
+    saveLastDirectory(m_settings, directory);
+}
+
+QString WindowContext::askSavePath(const QString& title, const QStringList& filters,
+                                   const QString& suggestedName) const
+{
+    QString filter = filters.front();
+    QString path = QFileDialog::getSaveFileName(&m_window, title, lastDirectory() + QLatin1Char('/') + suggestedName,
+                                                filters.join(QStringLiteral(";;")), &filter);
+    if (path.isEmpty())
+        return {};
+    const QRegularExpression suffix(QStringLiteral("\\*(\\.\\w+)"));
+    bool known = false;
+    for (const QString& f : filters)
+        known = known || path.endsWith(suffix.match(f).captured(1), Qt::CaseInsensitive);
+    if (!known)
+        path += suffix.match(filter).captured(1);
+    rememberDirectory(QFileInfo(path).absolutePath());
+    return path;
+}
+
+} // namespace trimlab::ui

@@ -1,0 +1,189 @@
+#include "ui/design/project_files.h"
+
+#include "ui/common/background_task.h"
+#include "ui/design/design_session.h"
+#include "ui/design/design_workspace.h"
+#include "ui/common/last_directory.h"
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QProgressDialog>
+#include <QUndoStack>
+
+#include <filesystem>
+
+namespace trimlab::ui {
+
+namespace {
+
+/// How long opening runs before its progress dialog appears.
+constexpr int kProgressDelayMs = 400;
+
+void warnNotSaved(QWidget* parent, const QString& reason)
+{
+    QMessageBox box(QMessageBox::Warning, ProjectFiles::tr("Save Project"), ProjectFiles::tr("The project was not saved."),
+                    QMessageBox::Ok, parent);
+    box.setInformativeText(reason);
+    box.exec();
+}
+
+} // namespace
+
+ProjectFiles::ProjectFiles(QWidget* window, QSettings& settings, DesignWorkspace& workspace, ExtrasSource extras)
+    : QObject(window),
+      m_window(window),
+      m_settings(settings),
+      m_workspace(workspace),
+      m_extras(std::move(extras)),
+      m_task(new BackgroundTask(this))
+{
+    connect(m_task, &BackgroundTask::succeeded, this, [this] { finishOpen(true, {}); });
+    connect(m_task, &BackgroundTask::failed, this, [this](const QString& message) { finishOpen(false, message); });
+    connect(m_task, &BackgroundTask::canceled, this, [this] {
+        closeProgress();
+        m_result.reset();
+    });
+}
+
+ProjectFiles::~ProjectFiles()
+{
+    closeProgress();
+}
+
+bool ProjectFiles::isProjectPath(const QString& path)
+{
+    return QFileInfo(path).suffix().compare(QLatin1String(kSuffix), Qt::CaseInsensitive) == 0;
+}
+
+QString ProjectFiles::dialogFilter()
+{
+    return tr("TrimLab project (*.%1)").arg(QLatin1String(kSuffix));
+}
+
+bool ProjectFiles::isOpening() const
+{
+    return m_task->isRunning();
+}
+
+void ProjectFiles::open(const QString& path)
+{
+    if (m_task->isRunning())
+        m_task->cancel(); // its result is dropped; this request starts once it returned
+    const auto start = [this, path] {
+        m_openPath = path;
+        m_result = std::make_shared<timeline::Project>();
+        std::shared_ptr<timeline::Project> result = m_result;
+        const std::filesystem::path file = path.toStdString();
+        m_task->start([result, file](const TaskControl&) { *result = timeline::readProject(file); });
+        closeProgress();
+        m_progress = new QProgressDialog(tr("Reading %1…").arg(QFileInfo(path).fileName()), tr("Cancel"), 0, 0,
+                                         m_window);
+        m_progress->setWindowTitle(tr("Opening project"));
+        m_progress->setWindowModality(Qt::WindowModal);
+        m_progress->setMinimumDuration(kProgressDelayMs);
+        connect(m_progress, &QProgressDialog::canceled, m_task, &BackgroundTask::cancel);
+        m_progress->setValue(0);
+    };
+    if (m_task->isRunning())
+        connect(m_task, &BackgroundTask::finished, this, start, Qt::SingleShotConnection);
+    else
+        start();
+}
+
+void ProjectFiles::finishOpen(bool succeeded, const QString& message)
+{
+    closeProgress();
+    std::shared_ptr<const timeline::Project> result = std::move(m_result);
+    if (succeeded)
+        emit opened(result, m_openPath);
+    else
+        emit failed(m_openPath, message);
+}
+
+void ProjectFiles::closeProgress()
+{
+    if (!m_progress)
+        return;
+    m_progress->disconnect(this);
+    m_progress->disconnect(m_task);
+    m_progress->hide();
+    m_progress->deleteLater();
+    m_progress.clear();
+}
+
+bool ProjectFiles::save()
+{
+    const DesignSession* session = m_workspace.session();
+    if (!session)
+        return false;
+    if (session->projectPath().isEmpty())
+        return saveAs();
+    QString error;
+    if (saveTo(session->projectPath(), &error))
+        return true;
+    warnNotSaved(m_window, error);
+    return false;
+}
+
+bool ProjectFiles::saveAs()
+{
+    const DesignSession* session = m_workspace.session();
+    if (!session)
+        return false;
+    const QString suggested = session->projectPath().isEmpty()
+                                  ? loadLastDirectory(m_settings) + QStringLiteral("/untitled.") + QLatin1String(kSuffix)
+                                  : session->projectPath();
+    QString path = QFileDialog::getSaveFileName(m_window, tr("Save Project As"), suggested, dialogFilter());
+    if (path.isEmpty())
+        return false;
+    if (!isProjectPath(path))
+        path += QLatin1Char('.') + QLatin1String(kSuffix);
+    saveLastDirectory(m_settings, QFileInfo(path).absolutePath());
+    QString error;
+    if (saveTo(path, &error))
+        return true;
+    warnNotSaved(m_window, error);
+    return false;
+}
+
+bool ProjectFiles::saveTo(const QString& path, QString* error)
+{
+    DesignSession* session = m_workspace.session();
+    QString reason;
+    if (!session) {
+        reason = tr("There is no deformation history to save.");
+    } else {
+        try {
+            timeline::saveProject(session->timeline(), path.toStdString(), m_extras());
+        } catch (const std::exception& e) {
+            reason = QString::fromStdString(e.what());
+        }
+    }
+    if (error)
+        *error = reason;
+    if (!reason.isEmpty())
+        return false;
+    session->setProjectPath(QFileInfo(path).absoluteFilePath());
+    session->undoStack()->setClean();
+    emit saved(session->projectPath());
+    return true;
+}
+
+bool ProjectFiles::maybeSave()
+{
+    if (!m_workspace.isModified())
+        return true;
+    QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
+                    tr("The deformation history has changes that are not saved."),
+                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_window);
+    box.setInformativeText(tr("Save them to a project file first?"));
+    box.setDefaultButton(QMessageBox::Save);
+    switch (box.exec()) {
+    case QMessageBox::Save: return save();
+    case QMessageBox::Discard: return true;
+    default: return false;
+    }
+}
+
+} // namespace trimlab::ui

@@ -1,0 +1,43 @@
+#pragma once
+/// \file
+/// What the Skinning panel lets the user choose for a fit, as one value: LBS or DQS, the
+/// pose-to-pose (p2p-skinning, thesis 4.1.1) or classical rest-to-pose chain, and the
+/// two corrections of thesis 4.1.2 (weights, eq. 4.13–4.15; rest-pose vertices, eq. 4.12 /
+/// 4.16) — and where the bones come from: one per segment of the segmentation the
+/// Segmentation panel shows, or a given number B (the animation re-segmented into exactly
+/// B segments, skinning_bones.h).
+
+#include "core/skinning/skinning_fitter.h"
+
+namespace trimlab::ui {
+
+enum class BoneSource {
+    Segmentation, ///< the segments of the segmentation shown
+    GivenCount,   ///< exactly `boneCount` segments of a new segmentation
+};
+
+struct SkinningChoices {
+    static constexpr int kMaxBones = 1000;
+
+    BoneSource boneSource = BoneSource::Segmentation;
+    int boneCount = 8; ///< 1 … kMaxBones, for BoneSource::GivenCount
+    SkinningMethod method = SkinningMethod::Lbs;
+    SkinningChain chain = SkinningChain::PoseToPose;
+    bool weightCorrections = false;
+    bool vertexCorrections = false;
+
+    /// The core options these choices ask for (every other option at its default).
+    [[nodiscard]] SkinningFitOptions fitOptions() const
+    {
+        SkinningFitOptions options;
+        options.method = method;
+        options.chain = chain;
+        options.weightCorrections = weightCorrections;
+        options.vertexCorrections = vertexCorrections;
+        return options;
+    }
+
+    bool operator==(const SkinningChoices&) const = default;
+};
+
+} // namespace trimlab::ui

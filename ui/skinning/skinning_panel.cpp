@@ -1,0 +1,548 @@
+#include "ui/skinning/skinning_panel.h"
+
+#include "ui/common/background_task.h"
+#include "core/image/heat_map_colors.h"
+#include "ui/common/heat_map_legend.h"
+#include "ui/common/loaded_animation.h"
+#include "ui/skinning/skinning_bone_editor.h"
+#include "core/skinning/proxy_bones.h"
+#include "ui/skinning/skinning_error_chart.h"
+#include "ui/skinning/skinning_session.h"
+#include "ui/skinning/skinning_settings_form.h"
+
+#include "core/skinning/skinning_error.h"
+#include "core/skinning/skinning_gltf.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+
+namespace trimlab::ui {
+
+namespace {
+
+QString milliseconds(double ms)
+{
+    return QStringLiteral("%1 ms").arg(ms, 0, 'f', ms < 10.0 ? 2 : 1);
+}
+
+/// The stages that ran (a correction's time is 0 when it was not asked for), and whether
+/// each correction was kept.
+QString stageTimesText(const SkinningFitResult& result)
+{
+    const SkinningStageTimes& t = result.times;
+    QStringList parts{SkinningPanel::tr("weights %1").arg(milliseconds(t.weightsMs)),
+                      SkinningPanel::tr("fit %1").arg(milliseconds(t.fitMs))};
+    const QString dropped = SkinningPanel::tr(" (dropped: E_RMS rose)");
+    if (t.weightCorrectionMs > 0.0)
+        parts << SkinningPanel::tr("weight corrections %1%2")
+                     .arg(milliseconds(t.weightCorrectionMs), result.weightCorrectionsKept ? QString() : dropped);
+    if (t.vertexCorrectionMs > 0.0)
+        parts << SkinningPanel::tr("vertex corrections %1%2")
+                     .arg(milliseconds(t.vertexCorrectionMs), result.vertexCorrectionsKept ? QString() : dropped);
+    parts << SkinningPanel::tr("error %1").arg(milliseconds(t.errorMs))
+          << SkinningPanel::tr("total %1").arg(milliseconds(t.totalMs));
+    return parts.join(QStringLiteral(" · "));
+}
+
+bool isUndoKey(const QKeyEvent& key)
+{
+    return key.matches(QKeySequence::Undo);
+}
+
+bool isRedoKey(const QKeyEvent& key)
+{
+    return key.matches(QKeySequence::Redo) ||
+           key.keyCombination() == QKeyCombination(Qt::ControlModifier | Qt::ShiftModifier, Qt::Key_Z);
+}
+
+} // namespace
+
+SkinningPanel::SkinningPanel(QWidget* parent) : QWidget(parent)
+{
+    m_task = new BackgroundTask(this);
+    m_exportTask = new BackgroundTask(this);
+    m_form = new SkinningSettingsForm;
+    m_progress = new QProgressBar;
+    m_progress->setObjectName(QStringLiteral("skinningProgressBar"));
+    m_progress->setVisible(false);
+    m_status = new QLabel;
+    m_status->setObjectName(QStringLiteral("skinningStatusLabel"));
+    m_status->setWordWrap(true);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_form);
+    layout->addWidget(createFitRow());
+    layout->addWidget(m_progress);
+    layout->addWidget(m_status);
+    layout->addWidget(createResultGroup());
+    layout->addWidget(createEditGroup());
+    layout->addWidget(createExportRow());
+    layout->addStretch();
+    connect(m_form, &SkinningSettingsForm::changed, this, &SkinningPanel::onFormChanged);
+    connectTask();
+    connectExportTask();
+    setAnimation(nullptr);
+}
+
+SkinningPanel::~SkinningPanel() = default;
+
+QWidget* SkinningPanel::createFitRow()
+{
+    m_fit = new QPushButton(tr("Fit"));
+    m_fit->setObjectName(QStringLiteral("fitSkinningButton"));
+    m_fit->setToolTip(tr("Fit bone transforms (and weights) to every pose"));
+    m_cancel = new QPushButton(tr("Cancel"));
+    m_cancel->setObjectName(QStringLiteral("cancelSkinningButton"));
+    connect(m_fit, &QPushButton::clicked, this, &SkinningPanel::fit);
+    connect(m_cancel, &QPushButton::clicked, this, &SkinningPanel::cancel);
+    auto* row = new QWidget;
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_fit);
+    layout->addWidget(m_cancel);
+    return row;
+}
+
+QWidget* SkinningPanel::createResultGroup()
+{
+    auto* group = new QGroupBox(tr("Approximation"));
+    m_error = new QLabel;
+    m_error->setObjectName(QStringLiteral("skinningErrorLabel"));
+    m_error->setWordWrap(true);
+    m_error->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_error->setToolTip(tr("E_RMS = 1000·‖A − A′‖_F / √(3nk): thousandths of the animation's length unit"));
+    m_times = new QLabel;
+    m_times->setObjectName(QStringLiteral("skinningTimesLabel"));
+    m_times->setWordWrap(true);
+    m_chart = new SkinningErrorChart;
+    m_viewBox = new QComboBox;
+    m_viewBox->setObjectName(QStringLiteral("skinningViewComboBox"));
+    m_viewBox->addItem(tr("Original"), int(SkinningView::Original));
+    m_viewBox->addItem(tr("Approximation"), int(SkinningView::Approximation));
+    m_viewBox->addItem(tr("Error heat map"), int(SkinningView::ErrorHeatMap));
+    m_viewBox->setToolTip(tr("What the timeline plays: the original poses, their skinned approximation, or the "
+                             "original colored by each vertex's error"));
+    m_legend = new HeatMapLegend;
+    m_legend->setVisible(false);
+    connect(m_viewBox, &QComboBox::currentIndexChanged, this, &SkinningPanel::onViewChosen);
+    auto* viewRow = new QFormLayout;
+    viewRow->addRow(tr("Show"), m_viewBox);
+    auto* layout = new QVBoxLayout(group);
+    layout->addWidget(m_error);
+    layout->addWidget(m_times);
+    layout->addWidget(m_chart);
+    layout->addLayout(viewRow);
+    layout->addWidget(m_legend);
+    return group;
+}
+
+QWidget* SkinningPanel::createEditGroup()
+{
+    auto* group = new QGroupBox(tr("Edit pose by moving a bone"));
+    m_editGroup = group;
+    m_editor = new SkinningBoneEditor;
+    connect(m_editor, &SkinningBoneEditor::applyRequested, this, &SkinningPanel::onApplyRequested);
+    auto* layout = new QVBoxLayout(group);
+    layout->addWidget(m_editor);
+    return group;
+}
+
+QWidget* SkinningPanel::createExportRow()
+{
+    m_export = new QPushButton(tr("Export glTF…"));
+    m_export->setObjectName(QStringLiteral("exportSkinningButton"));
+    m_export->setToolTip(tr("The approximation shown (edits included) as a glTF skin with one joint per bone, "
+                            "or as morph targets"));
+    m_morphTargets = new QCheckBox(tr("Morph targets"));
+    m_morphTargets->setObjectName(QStringLiteral("skinningMorphTargetsCheckBox"));
+    m_morphTargets->setToolTip(tr("One morph target per pose: exact, but larger than a skin. A skin carries rigid "
+                                  "joints only, so an LBS fit is exported as its closest rigid motions."));
+    connect(m_export, &QPushButton::clicked, this, &SkinningPanel::exportRequested);
+    auto* row = new QWidget;
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_export);
+    layout->addWidget(m_morphTargets);
+    return row;
+}
+
+void SkinningPanel::connectTask()
+{
+    connect(m_task, &BackgroundTask::progressed, this, &SkinningPanel::onProgress);
+    connect(m_task, &BackgroundTask::succeeded, this, &SkinningPanel::onFitSucceeded);
+    connect(m_task, &BackgroundTask::canceled, this, [this] {
+        m_pending.reset();
+        onFitEnded(m_fitAnimation != m_animation ? readyStatus()
+                   : m_session                  ? tr("Canceled; the previous fit is kept.")
+                                                : tr("Canceled."));
+    });
+    connect(m_task, &BackgroundTask::failed, this, [this](const QString& message) {
+        m_pending.reset();
+        onFitEnded(m_fitAnimation == m_animation ? tr("Fit failed: %1").arg(message) : readyStatus());
+    });
+}
+
+void SkinningPanel::connectExportTask()
+{
+    connect(m_exportTask, &BackgroundTask::succeeded, this, [this] {
+        setStatus(tr("Exported %1.").arg(m_exportPath));
+        emit exportFinished(m_exportPath, m_exportOutcome->eRms, m_exportOutcome->kind);
+    });
+    connect(m_exportTask, &BackgroundTask::failed, this, [this](const QString& message) {
+        setStatus(tr("Export failed: %1").arg(message));
+        emit exportFailed(m_exportPath, message);
+    });
+    connect(m_exportTask, &BackgroundTask::canceled, this, [this] { setStatus(tr("Export canceled.")); });
+    connect(m_exportTask, &BackgroundTask::finished, this, &SkinningPanel::updateControls);
+}
+
+void SkinningPanel::setAnimation(std::shared_ptr<const LoadedAnimation> animation)
+{
+    m_task->cancel(); // its result, should it still arrive, counts as canceled
+    m_exportTask->cancel(); // the file is still written; only the report is dropped
+    m_animation = std::move(animation);
+    m_segmentation.reset();
+    m_segmentColors.clear();
+    m_editor->setUndoStack(nullptr);
+    m_editor->setBones({});
+    m_session.reset();
+    m_currentPose = 0;
+    m_form->setSegmentCount(0);
+    if (m_animation)
+        m_editor->setLengthScale(double(glm::length(m_animation->bounds.max - m_animation->bounds.min)));
+    showResult();
+    setStatus(readyStatus());
+}
+
+void SkinningPanel::setSegmentation(const VertexLabeling* labeling, const std::vector<WheelColor>* colors)
+{
+    if (labeling && colors && colors->size() == labeling->count) {
+        m_segmentation = *labeling;
+        m_segmentColors = *colors;
+    } else {
+        m_segmentation.reset();
+        m_segmentColors.clear();
+    }
+    m_form->setSegmentCount(m_segmentation ? m_segmentation->count : 0);
+    if (!isRunning() && !m_session)
+        setStatus(readyStatus());
+    updateControls();
+}
+
+void SkinningPanel::onFormChanged()
+{
+    if (!isRunning() && !m_session)
+        setStatus(readyStatus());
+    updateControls();
+}
+
+bool SkinningPanel::hasUsableSegmentation() const
+{
+    return m_animation && m_segmentation && m_segmentation->count > 0 &&
+           m_segmentation->labels.size() == m_animation->animation->vertexCount();
+}
+
+bool SkinningPanel::canFit() const
+{
+    if (!m_animation)
+        return false;
+    const SkinningChoices wanted = choices();
+    if (wanted.boneSource == BoneSource::GivenCount)
+        return std::size_t(wanted.boneCount) <= m_animation->animation->vertexCount();
+    return hasUsableSegmentation();
+}
+
+QString SkinningPanel::readyStatus() const
+{
+    if (!m_animation)
+        return tr("Open an animation (File ▸ Open Animation…) to fit a skinning to it.");
+    const SkinningChoices wanted = choices();
+    if (wanted.boneSource == BoneSource::GivenCount)
+        return canFit() ? tr("Press Fit to segment into %1 bones and fit them to %2 poses.")
+                              .arg(wanted.boneCount)
+                              .arg(m_animation->animation->poseCount())
+                        : tr("The animation has fewer vertices than %1 bones.").arg(wanted.boneCount);
+    if (!hasUsableSegmentation())
+        return tr("Segment the animation first (Segmentation panel): its segments become the bones.");
+    return tr("Press Fit to fit %1 bones to %2 poses.").arg(m_segmentation->count).arg(m_animation->animation->poseCount());
+}
+
+void SkinningPanel::setCurrentPose(int pose)
+{
+    m_currentPose = pose;
+    m_chart->setCurrentPose(pose);
+    updateEditPose();
+}
+
+void SkinningPanel::setChoices(const SkinningChoices& choices)
+{
+    m_form->setChoices(choices);
+}
+
+SkinningChoices SkinningPanel::choices() const
+{
+    return m_form->choices();
+}
+
+void SkinningPanel::fit()
+{
+    if (!canFit() || isRunning())
+        return;
+    const SkinningChoices wanted = choices();
+    const bool given = wanted.boneSource == BoneSource::GivenCount;
+    m_pending = std::make_shared<std::shared_ptr<const SkinningFit>>();
+    m_fitAnimation = m_animation;
+    BoneSegmentation shown;
+    if (!given)
+        shown = {*m_segmentation, m_segmentColors};
+    m_task->start([pending = m_pending, animation = m_animation->animation, shown = std::move(shown), given,
+                   count = std::size_t(wanted.boneCount), settings = m_segmenterSettings,
+                   options = wanted.fitOptions()](const TaskControl& control) {
+        BoneSegmentation bones = given ? segmentIntoBones(*animation, settings, count, control) : shown;
+        *pending = runSkinningFit(*animation, std::move(bones.labeling), std::move(bones.colors), options, control);
+    });
+    m_progress->setRange(0, 0);
+    m_progress->setVisible(true);
+    setStatus(given ? tr("Segmenting into %1 bones and fitting them…").arg(wanted.boneCount)
+                    : tr("Fitting %1 bones…").arg(m_segmentation->count));
+    updateControls();
+}
+
+void SkinningPanel::exportGltf(const QString& path, double fps)
+{
+    if (!m_session || m_exportTask->isRunning())
+        return;
+    m_exportPath = path;
+    m_exportOutcome = std::make_shared<ExportOutcome>();
+    const bool edited = m_session->isEdited();
+    m_exportTask->start([outcome = m_exportOutcome, fit = m_session->sharedFit(), model = m_session->model(),
+                         file = std::filesystem::path(path.toStdU16String()), fps, morph = m_morphTargets->isChecked(),
+                         edited](const TaskControl&) {
+        SkinExportOptions options;
+        options.morphTargets = morph;
+        // An edited model keeps its edits: its joints follow its own poses, not the original's.
+        options.target = edited ? nullptr : &fit->original;
+        const ExportedSkin report = exportSkinnedGltf(*model, file, fps, options);
+        outcome->eRms = measureSkinningError(fit->original, report.positions, model->restPose).eRms;
+        outcome->kind = QString::fromUtf8(skinExportKindName(report.kind).data(),
+                                          qsizetype(skinExportKindName(report.kind).size()));
+    });
+    setStatus(tr("Exporting %1…").arg(path));
+    updateControls();
+}
+
+void SkinningPanel::cancel()
+{
+    if (!m_task->isRunning())
+        return;
+    m_task->cancel();
+    setStatus(tr("Canceling…"));
+    updateControls();
+}
+
+bool SkinningPanel::isRunning() const
+{
+    return m_task->isRunning();
+}
+
+void SkinningPanel::onProgress(const QString& stage, qint64 done, qint64 total)
+{
+    if (!m_task->isRunning() || total <= 0)
+        return; // a late report of a finished job
+    m_progress->setRange(0, int(total));
+    m_progress->setValue(int(std::min(done, total)));
+    m_progress->setFormat(tr("%1: %v / %m").arg(stage));
+}
+
+void SkinningPanel::onFitSucceeded()
+{
+    std::shared_ptr<const SkinningFit> fit = std::move(*m_pending);
+    m_pending.reset();
+    m_session = std::make_unique<SkinningSession>(std::move(fit));
+    connect(m_session.get(), &SkinningSession::modelChanged, this, &SkinningPanel::onModelChanged);
+    m_editor->setBones(m_session->fit().boneColors);
+    m_editor->setUndoStack(m_session->undoStack());
+    const SkinningFitResult& result = m_session->fit().result;
+    onFitEnded(tr("Done: %1 bones fitted to %2 poses in %3.")
+                   .arg(result.model.boneCount())
+                   .arg(result.model.poseCount())
+                   .arg(milliseconds(result.times.totalMs)));
+    emit resultChanged();
+}
+
+void SkinningPanel::onFitEnded(const QString& status)
+{
+    m_progress->setVisible(false);
+    m_progress->resetFormat();
+    setStatus(status);
+    showResult();
+}
+
+void SkinningPanel::onModelChanged()
+{
+    showResult();
+}
+
+void SkinningPanel::onApplyRequested(int bone, const BoneEdit& edit)
+{
+    if (!m_session || bone < 0)
+        return;
+    try {
+        m_session->editBone(std::size_t(m_currentPose), std::size_t(bone), edit);
+        setStatus(tr("Bone %1 moved at pose %2; later poses follow.").arg(bone).arg(m_currentPose));
+    } catch (const std::exception& e) {
+        setStatus(tr("Edit not applied: %1").arg(QString::fromStdString(e.what())));
+    }
+}
+
+void SkinningPanel::setView(SkinningView view)
+{
+    m_viewBox->setCurrentIndex(m_viewBox->findData(int(view)));
+}
+
+void SkinningPanel::onViewChosen()
+{
+    m_view = SkinningView(m_viewBox->currentData().toInt());
+    refreshDisplay();
+}
+
+std::optional<std::vector<glm::vec3>> SkinningPanel::shownPose(int pose) const
+{
+    if (m_view != SkinningView::Approximation || !m_session || pose < 0 ||
+        std::size_t(pose) >= m_session->approximation().size())
+        return std::nullopt;
+    return m_session->approximatePose(std::size_t(pose));
+}
+
+QString SkinningPanel::formatERms(double eRms)
+{
+    return QString::number(eRms, 'f', 4);
+}
+
+// The labels, chart, bone list and view of the session (or their empty state).
+void SkinningPanel::showResult()
+{
+    if (!m_session) {
+        m_error->setText(tr("No fit yet."));
+        m_times->clear();
+        m_chart->setErrors({});
+        refreshDisplay();
+        updateControls();
+        return;
+    }
+    const SkinningFitResult& result = m_session->fit().result;
+    const SkinningError& error = m_session->error();
+    QString text = tr("E_RMS %1 (%2 of the diagonal) · max distance %3")
+                       .arg(formatERms(error.eRms))
+                       .arg(error.eRmsDiagonal, 0, 'g', 3)
+                       .arg(error.maxDistance, 0, 'g', 3);
+    if (m_session->isEdited())
+        text += tr(" · edited; fitted E_RMS %1").arg(formatERms(result.error.eRms));
+    else if (result.weightCorrectionsKept || result.vertexCorrectionsKept)
+        text += tr(" · before corrections %1").arg(formatERms(result.uncorrectedError.eRms));
+    m_error->setText(text);
+    m_times->setText(stageTimesText(result));
+    if (m_session->isEdited())
+        m_chart->setErrors(error.perPose, result.error.perPose);
+    else
+        m_chart->setErrors(error.perPose);
+    refreshDisplay();
+    updateControls();
+}
+
+void SkinningPanel::refreshDisplay()
+{
+    const bool heatMap = m_view == SkinningView::ErrorHeatMap && m_session;
+    if (heatMap) {
+        const std::vector<double>& perVertex = m_session->error().perVertex;
+        const double largest = perVertex.empty() ? 0.0 : *std::max_element(perVertex.begin(), perVertex.end());
+        m_displayColors = heatMapRgba8(perVertex, largest);
+        m_legend->setRange(largest, tr("length units"));
+    } else {
+        m_displayColors.clear();
+    }
+    m_legend->setVisible(heatMap);
+    emit displayChanged();
+}
+
+void SkinningPanel::updateEditPose()
+{
+    if (!m_session) {
+        m_editor->setPose(m_currentPose, false, tr("Fit first: the bones of the fit can then be moved."));
+        return;
+    }
+    const SkinningModel& model = *m_session->model();
+    if (m_currentPose < 0 || std::size_t(m_currentPose) >= model.poseCount())
+        m_editor->setPose(m_currentPose, false, tr("Pose %1 is not in the fit.").arg(m_currentPose));
+    else if (std::size_t(m_currentPose) == model.restPose)
+        m_editor->setPose(m_currentPose, false,
+                          tr("Pose %1 is the rest pose: it has no bone transforms. Go to a later pose to edit it.")
+                              .arg(m_currentPose));
+    else if (model.chain == SkinningChain::RestToPose)
+        m_editor->setPose(m_currentPose, true,
+                          tr("Edits apply to pose %1 only (a rest-to-pose fit does not chain poses).")
+                              .arg(m_currentPose));
+    else
+        m_editor->setPose(m_currentPose, true);
+}
+
+void SkinningPanel::updateControls()
+{
+    const bool running = isRunning();
+    m_form->setEnabled(m_animation != nullptr && !running);
+    m_fit->setEnabled(canFit() && !running);
+    m_cancel->setEnabled(running && !m_task->cancelRequested());
+    m_viewBox->setEnabled(m_session != nullptr);
+    m_editGroup->setEnabled(m_session != nullptr);
+    m_export->setEnabled(m_session != nullptr && !m_exportTask->isRunning());
+    updateEditPose();
+}
+
+void SkinningPanel::setStatus(const QString& text)
+{
+    m_status->setText(text);
+}
+
+// Ctrl+Z / Ctrl+Shift+Z inside the panel undo and redo pose edits: claiming the
+// shortcut override keeps a window-wide shortcut on the same keys from taking them.
+// Editors that undo their own text (the spin boxes) claim them first and keep them.
+bool SkinningPanel::event(QEvent* event)
+{
+    if (event->type() == QEvent::ShortcutOverride && m_session) {
+        const auto* key = static_cast<QKeyEvent*>(event);
+        if (isUndoKey(*key) || isRedoKey(*key)) {
+            event->accept();
+            return true;
+        }
+    }
+    return QWidget::event(event);
+}
+
+void SkinningPanel::keyPressEvent(QKeyEvent* event)
+{
+    if (m_session && isUndoKey(*event)) {
+        m_session->undoStack()->undo();
+        return;
+    }
+    if (m_session && isRedoKey(*event)) {
+        m_session->undoStack()->redo();
+        return;
+    }
+    QWidget::keyPressEvent(event);
+}
+
+} // namespace trimlab::ui

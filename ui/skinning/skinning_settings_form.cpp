@@ -1,0 +1,101 @@
+#include "ui/skinning/skinning_settings_form.h"
+
+#include "ui/common/form_controls.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSpinBox>
+
+namespace trimlab::ui {
+
+SkinningSettingsForm::SkinningSettingsForm(QWidget* parent) : QWidget(parent)
+{
+    m_boneSource = namedComboBox("skinningBoneSourceComboBox",
+                                 {{tr("From the segmentation"), int(BoneSource::Segmentation)},
+                                  {tr("Given count"), int(BoneSource::GivenCount)}},
+                                 tr("One bone per segment of the segmentation shown, or the animation segmented anew "
+                                    "into exactly the given number of segments"));
+    m_boneCount = new QSpinBox;
+    m_boneCount->setObjectName(QStringLiteral("skinningBoneCountSpinBox"));
+    m_boneCount->setRange(1, SkinningChoices::kMaxBones);
+    m_boneCount->setToolTip(tr("B: the bones to fit (the Segmentation panel's feature and clustering are used)"));
+    m_bones = new QLabel;
+    m_bones->setObjectName(QStringLiteral("skinningBoneCountLabel"));
+    m_bones->setWordWrap(true);
+    m_bones->setToolTip(tr("One proxy bone per segment of the segmentation shown in the Segmentation panel "
+                           "(its h included); weights blend across segment borders"));
+    m_method = namedComboBox("skinningMethodComboBox",
+                             {{tr("LBS (affine bones)"), int(SkinningMethod::Lbs)},
+                              {tr("DQS (rigid bones)"), int(SkinningMethod::Dqs)}},
+                             tr("Linear blend skinning with affine bone transforms, or dual quaternion skinning with "
+                                "rigid ones"));
+    m_chain = namedComboBox("skinningChainComboBox",
+                            {{tr("Pose to pose (p2p)"), int(SkinningChain::PoseToPose)},
+                             {tr("Rest to pose (classical)"), int(SkinningChain::RestToPose)}},
+                            tr("p2p-skinning fits each pose from the pose before it; the classical fit maps the rest "
+                               "pose to every pose"));
+    m_weightCorrections = namedCheckBox(tr("Weight corrections"), "weightCorrectionsCheckBox",
+                                        tr("Re-estimate the weights from the fitted transforms and refit (kept only "
+                                           "when E_RMS does not rise)"));
+    m_vertexCorrections = namedCheckBox(tr("Vertex corrections"), "vertexCorrectionsCheckBox",
+                                        tr("Move the rest-pose vertices to lower the error (kept only when E_RMS "
+                                           "does not rise)"));
+    auto* form = new QFormLayout(this);
+    form->setContentsMargins(0, 0, 0, 0);
+    form->addRow(tr("Bones"), m_boneSource);
+    form->addRow(tr("Bone count"), m_boneCount);
+    form->addRow(QString(), m_bones);
+    form->addRow(tr("Method"), m_method);
+    form->addRow(tr("Chain"), m_chain);
+    form->addRow(m_weightCorrections);
+    form->addRow(m_vertexCorrections);
+    for (QComboBox* box : {m_boneSource, m_method, m_chain})
+        connect(box, &QComboBox::currentIndexChanged, this, &SkinningSettingsForm::changed);
+    connect(m_boneSource, &QComboBox::currentIndexChanged, this, &SkinningSettingsForm::updateBoneCountEnabled);
+    connect(m_boneCount, &QSpinBox::valueChanged, this, &SkinningSettingsForm::changed);
+    for (QCheckBox* box : {m_weightCorrections, m_vertexCorrections})
+        connect(box, &QCheckBox::toggled, this, &SkinningSettingsForm::changed);
+    setChoices(SkinningChoices{});
+    setSegmentCount(0);
+}
+
+void SkinningSettingsForm::setChoices(const SkinningChoices& choices)
+{
+    const QSignalBlocker b1(m_method), b2(m_chain), b3(m_weightCorrections), b4(m_vertexCorrections),
+        b5(m_boneSource), b6(m_boneCount);
+    selectItemWithData(m_boneSource, int(choices.boneSource));
+    m_boneCount->setValue(choices.boneCount);
+    selectItemWithData(m_method, int(choices.method));
+    selectItemWithData(m_chain, int(choices.chain));
+    m_weightCorrections->setChecked(choices.weightCorrections);
+    m_vertexCorrections->setChecked(choices.vertexCorrections);
+    updateBoneCountEnabled();
+}
+
+SkinningChoices SkinningSettingsForm::choices() const
+{
+    SkinningChoices choices;
+    choices.boneSource = BoneSource(m_boneSource->currentData().toInt());
+    choices.boneCount = m_boneCount->value();
+    choices.method = SkinningMethod(m_method->currentData().toInt());
+    choices.chain = SkinningChain(m_chain->currentData().toInt());
+    choices.weightCorrections = m_weightCorrections->isChecked();
+    choices.vertexCorrections = m_vertexCorrections->isChecked();
+    return choices;
+}
+
+void SkinningSettingsForm::setSegmentCount(std::size_t count)
+{
+    m_bones->setText(count == 0 ? tr("The segmentation shown: none yet")
+                                : tr("The segmentation shown: %1 segments").arg(count));
+}
+
+void SkinningSettingsForm::updateBoneCountEnabled()
+{
+    m_boneCount->setEnabled(BoneSource(m_boneSource->currentData().toInt()) == BoneSource::GivenCount);
+}
+
+} // namespace trimlab::ui

@@ -1,0 +1,74 @@
+#pragma once
+/// \file
+/// The last resort of the view when no GPU method can render a frame (every memory
+/// fallback failed, render/memory_fallback.h): the exact CPU reference
+/// (core/trim/reference_renderer.h) renders a still image off the UI thread. A request
+/// made while one renders replaces any waiting one, so only the newest view is rendered
+/// next; the BVH is built once per scene.
+
+#include "core/scene/scene.h"
+#include "core/trim/trim_settings.h"
+#include "core/view/camera.h"
+
+#include <QImage>
+#include <QObject>
+#include <QSize>
+
+#include <memory>
+#include <optional>
+
+namespace trimlab {
+class ReferenceRenderer;
+}
+
+namespace trimlab::ui {
+
+class BackgroundTask;
+
+class CpuStillRender : public QObject {
+    Q_OBJECT
+public:
+    /// What to render. The scene is shared (not copied) and must not change while shared.
+    struct Request {
+        std::shared_ptr<const Scene> scene;
+        Camera camera;
+        TrimSettings settings;
+        QSize size;
+        /// Equal requests render equal images (same scene object, view and settings).
+        [[nodiscard]] bool sameView(const Request& other) const;
+    };
+
+    explicit CpuStillRender(QObject* parent = nullptr);
+    ~CpuStillRender() override;
+
+    /// Renders `request` unless it is the shown or the pending one.
+    void request(const Request& request);
+    /// The newest finished image and the request it answers (nullopt before the first).
+    [[nodiscard]] const QImage& image() const { return m_image; }
+    [[nodiscard]] const std::optional<Request>& shown() const { return m_shown; }
+    /// Milliseconds the last image took (BVH build included when the scene was new).
+    [[nodiscard]] double lastMilliseconds() const { return m_lastMs; }
+
+signals:
+    /// A new image is ready (image(), shown()).
+    void ready();
+    /// The reference failed (e.g. out of memory); `message` says why.
+    void failed(const QString& message);
+
+private:
+    void start(const Request& request);
+    void onFinished();
+
+    BackgroundTask* m_task;
+    std::optional<Request> m_running;
+    std::optional<Request> m_waiting;
+    std::optional<Request> m_shown;
+    std::shared_ptr<const Scene> m_referenceScene; ///< the scene *m_builtReference was built for
+    std::shared_ptr<QImage> m_result;
+    std::shared_ptr<std::shared_ptr<const ReferenceRenderer>> m_builtReference;
+    QImage m_image;
+    double m_lastMs = 0.0;
+    std::shared_ptr<double> m_resultMs;
+};
+
+} // namespace trimlab::ui

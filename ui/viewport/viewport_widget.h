@@ -1,0 +1,317 @@
+#pragma once
+/// \file
+/// The 3D view: a QOpenGLWidget that owns a TrimRenderer and an OrbitController. It
+/// renders only when something changed (scene, settings, camera, size) — never in a loop
+/// — at the widget's device-pixel size, and blits the result into its framebuffer.
+///
+/// Mouse: left drag orbits, right or middle drag (or Shift + left drag) pans, the wheel
+/// dollies toward the target (Ctrl + wheel toward the point under the cursor), a double
+/// click fits the scene. Keys: F fits the scene. With setObjectDragEnabled, Ctrl + left
+/// drag on an object asks to move it in the view plane (objectDragged; the owner moves it). A ViewportTool (setTool, e.g. the brush)
+/// is asked first on every press and takes the presses it wants; what it leaves (for the
+/// brush: Alt + left drag, right and middle drag) still moves the camera.
+///
+/// Under the dynamic rules (setDynamicChain) frames render through a DynamicTrimRenderer
+/// instead of the static rule: the chain's levels are uploaded once, and
+/// setDynamicShownLevel replaces only the shown frame (a brush drag), which keeps the
+/// cached characterizations of the earlier sets.
+///
+/// For mesh animations the window passes the pose to show (showPose: object 0's positions,
+/// uploaded at the next frame), per-vertex colors such as a segmentation's
+/// (setVertexColors) and the bounds of all poses (setViewBounds).
+///
+/// OpenGL failures (no 4.3 context, a shader that does not build) never crash and never
+/// leave a silent black view: the message is painted into the view and emitted once
+/// through renderError(). Which method renders, and what a failed frame changes, is
+/// decided by render/frame_policy.h; the widget carries it out. Too little GPU memory for
+/// the chosen method is not an error: the view renders with the next method and says so
+/// through memoryFallback(), or shows the CPU reference as a still image
+/// (cpu_still_render.h), rendered off the UI thread. A GPU reset (render/gl/
+/// context_reset.h: the renderer reports it after a frame, or Qt marks the context
+/// invalid) loses every GL object but nothing of the work: the view re-creates its
+/// OpenGL context the way Qt does when a window's graphics device is lost, uploads the
+/// scene, pose, colors and dynamic chain again and renders the same frame, and says so
+/// through contextLost() — or, for resets in a row, moves on along the fallback chain
+/// or stops with a message. Choosing a method, parameters, a scene, a dynamic chain or
+/// a size tries again.
+
+#include "ui/viewport/cpu_still_render.h"
+#include "render/dynamic_trim_renderer.h"
+#include "render/frame_policy.h"
+#include "render/frame_times.h"
+#include "ui/viewport/memory_estimate.h"
+#include "core/trim/dynamic_chain.h"
+#include "render/trim_renderer.h"
+#include "core/view/orbit_controller.h"
+#include "ui/viewport/viewport_tool.h"
+
+#include <QImage>
+#include <QOpenGLWidget>
+#include <QPointF>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace trimlab::ui {
+
+/// What the last successful frame was rendered with (for tests, exports and readbacks).
+struct ViewportFrame {
+    Camera camera;
+    TrimSettings settings;
+    int k = 0;
+    render::MethodParameters parameters; ///< the method is stats.method
+    QSize pixelSize; ///< device pixels, as passed to TrimRenderer::render
+    render::FrameStats stats;
+    /// When the frame lost fragments (overflowed or lost > 0) and the method keeps
+    /// per-pixel counts: the largest count (capped at k by methods that count only what
+    /// they hold). nullopt otherwise.
+    std::optional<std::uint32_t> largestPixelCount;
+    /// The scene as rendered (objects and model matrices), e.g. for the CPU reference.
+    std::shared_ptr<const Scene> scene;
+};
+
+/// What ViewportWidget::measureMethod found.
+struct MethodMeasurement {
+    render::FrameTimes times;
+    render::FrameStats lastStats;
+};
+
+class ViewportWidget : public QOpenGLWidget {
+    Q_OBJECT
+public:
+    explicit ViewportWidget(QWidget* parent = nullptr);
+    ~ViewportWidget() override;
+
+    /// Shows `scene` (nullptr: an empty view). The view is reset (reset view) on the next
+    /// frame, when the widget's final size is known. Clears the pose, the vertex colors and
+    /// the dynamic chain below, and the view bounds become the scene's bounds.
+    void setScene(std::shared_ptr<const Scene> scene);
+    /// Shows `scene` in place of the shown one keeping the camera (an object was added
+    /// to the scene shown): uploads it, the view bounds become its bounds, the pose, the
+    /// vertex colors and the dynamic chain are cleared as by setScene().
+    void replaceScene(std::shared_ptr<const Scene> scene);
+    /// Shows `scene`, which has the shown scene's objects with the same meshes and differs
+    /// only in model matrices (the Scene panel moved an object): only the matrices go to
+    /// the GPU (GpuScene::setModelMatrix), the view bounds become the new world bounds and
+    /// the camera stays. Throws std::invalid_argument without a shown scene or when an
+    /// object or vertex count differs (use replaceScene then).
+    void setSceneTransforms(std::shared_ptr<const Scene> scene);
+    /// The scene shown (nullptr: none).
+    [[nodiscard]] const std::shared_ptr<const Scene>& scene() const { return m_scene; }
+    /// The box the camera's depth range must enclose and Fit frames (default: the
+    /// scene's world bounds). An animation passes the bounds of all its poses, so that no
+    /// pose reaches past the far plane. Re-renders; the camera itself is not moved.
+    void setViewBounds(const Bounds& bounds);
+    /// Shows object 0 of the scene at `positions` (an animation pose: #V positions in
+    /// object space, same vertex count and triangles as the scene's object 0) from the
+    /// next frame on, with normals recomputed (GpuScene::updatePositions); the Scene
+    /// itself is not changed. Kept across GL context re-creation until setScene().
+    /// Throws std::invalid_argument on a vertex count mismatch or without a scene.
+    void showPose(const std::vector<glm::vec3>& positions);
+    /// Per-vertex colors (one per vertex of the scene, objects in order; RGBA8 with red in
+    /// the lowest byte, as GLSL's unpackUnorm4x8 reads them) shown instead of the trim
+    /// palette from the next frame on; empty: back to the trim palette. Kept until
+    /// setScene(). Throws std::invalid_argument on a count mismatch.
+    void setVertexColors(std::vector<std::uint32_t> rgba8);
+    [[nodiscard]] bool showsVertexColors() const { return !m_vertexColors.empty(); }
+    /// The settings to render with. The caller passes trimEnabled = false for scenes that
+    /// are not trimmable.
+    void setTrimSettings(const TrimSettings& settings);
+    /// The multi-fragment method to render with (one of render::fragmentMethods()).
+    void setMethod(render::FragmentMethodKind method);
+    /// Its parameters; k is clamped to 1..MethodParameters::kMaxK and S to >= 1.
+    void setMethodParameters(const render::MethodParameters& parameters);
+    /// Shorthand: the k of the parameters.
+    void setK(int k);
+    [[nodiscard]] const TrimSettings& trimSettings() const { return m_settings; }
+    [[nodiscard]] render::FragmentMethodKind method() const { return m_policy.chosenMethod(); }
+    [[nodiscard]] const render::MethodParameters& methodParameters() const { return m_parameters; }
+    [[nodiscard]] int k() const { return m_parameters.k; }
+    /// The GPU memory the chosen method would hold at framePixelSize()
+    /// (TrimRenderer::estimateMethodBytes); not available before the renderer exists.
+    [[nodiscard]] MemoryEstimate memoryEstimate() const;
+
+    /// Renders the current view with `method` (and the chosen parameters) off-screen: one
+    /// untimed warm-up frame, then `frames` timed ones, without showing them — to compare
+    /// methods on this view. Afterwards the renderer is back on the chosen method and the
+    /// view re-renders. Throws what TrimRenderer throws, or std::runtime_error when the
+    /// view has nothing to render.
+    MethodMeasurement measureMethod(render::FragmentMethodKind method, int frames);
+
+    /// The camera the next frame uses (depth range enclosing the scene).
+    [[nodiscard]] Camera camera() const;
+    /// Adopts `camera` (see OrbitController::setCamera) and re-renders.
+    void setCamera(const Camera& camera);
+    /// Frames the scene keeping the view direction.
+    void fitToView();
+    /// Frames the scene from the default direction (fitCamera's).
+    void resetView();
+
+    /// The size frames are rendered at: the widget size in device pixels.
+    [[nodiscard]] QSize framePixelSize() const;
+    /// The last successful frame, or nullopt before the first one.
+    [[nodiscard]] const std::optional<ViewportFrame>& lastFrame() const { return m_lastFrame; }
+    /// The last frame's color image (top row first); null without a frame.
+    [[nodiscard]] QImage readColorImage();
+    /// The last frame's per-pixel answers; empty without a frame.
+    [[nodiscard]] TrimImage readTrimImage();
+
+    /// Why no viewport can render on this platform: "" when an OpenGL 4.3 core context
+    /// with TrimLab's requirements can be created, else the reason. Creates and destroys
+    /// an offscreen context; call before showing any ViewportWidget. (Without any OpenGL,
+    /// Qt cannot even composite a window that contains a QOpenGLWidget, so such a window
+    /// must not contain one.)
+    [[nodiscard]] static QString openGlProblem();
+    /// Marks the view as unable to render for `reason` (shown by errorMessage()); used
+    /// when openGlProblem() is not empty and the widget is therefore never shown.
+    void setUnavailable(const QString& reason);
+
+    /// Whether Ctrl + left drag on an object reports objectDragged() instead of orbiting
+    /// (default off: the owner turns it on while objects may be moved).
+    void setObjectDragEnabled(bool enabled) { m_objectDragEnabled = enabled; }
+    [[nodiscard]] bool objectDragEnabled() const { return m_objectDragEnabled; }
+
+    /// The mouse tool asked first on every press (nullptr: none). Not owned; the tool
+    /// must outlive the viewport or be reset first. Turns on hover tracking.
+    void setTool(ViewportTool* tool);
+    /// The tool set last (nullptr: none).
+    [[nodiscard]] ViewportTool* tool() const { return m_tool; }
+
+    /// Renders with the dynamic rules of `chain` (its last level is the shown frame) from
+    /// the next frame on; nullptr: back to the static rule of the trim settings. The
+    /// settings' rule classifies the base mesh; set it equal to chain->baseRule.
+    void setDynamicChain(std::shared_ptr<const DynamicChain> chain);
+    /// Replaces only the chain's shown level (same set, new positions: a brush drag).
+    /// Ignored without a chain; the next setDynamicChain() drops it.
+    void setDynamicShownLevel(std::shared_ptr<const DynamicChainLevel> level);
+    [[nodiscard]] bool rendersDynamicRules() const { return m_chain != nullptr; }
+    /// The chain's shown level as last set (setDynamicShownLevel or the chain's last).
+    [[nodiscard]] const DynamicChainLevel* dynamicShownLevel() const;
+    /// The dynamic renderer's numbers of the last frame (nullopt for static frames).
+    [[nodiscard]] const std::optional<render::DynamicFrameStats>& lastDynamicStats() const { return m_dynamicStats; }
+
+    /// The last frame's answer at the pixel under the logical widget position `position`
+    /// (nullopt without a frame or outside it). The trim image is read back once per frame
+    /// and kept until the next one, so hovering costs no readback per mouse move.
+    [[nodiscard]] std::optional<TrimPixel> trimPixelAt(QPointF position);
+    /// `position` (logical widget coordinates) in the frame's device pixels.
+    [[nodiscard]] QPointF devicePosition(QPointF position) const { return position * devicePixelRatio(); }
+
+    /// The OpenGL context's capabilities once the renderer exists.
+    [[nodiscard]] std::optional<render::GlCapabilities> capabilities() const;
+    /// Why the view cannot render ("" when it can).
+    [[nodiscard]] const QString& errorMessage() const { return m_error; }
+    /// The method frames actually use: the chosen one, or its memory fallback.
+    [[nodiscard]] render::FragmentMethodKind effectiveMethod() const { return m_policy.effectiveMethod(); }
+    /// True while the view shows the CPU reference because no GPU method fits.
+    [[nodiscard]] bool showsCpuStill() const { return m_policy.showsCpuStill(); }
+    /// The CPU reference image shown in that mode (null before it is ready).
+    [[nodiscard]] QImage cpuStillImage() const;
+
+    /// Recovers from a GPU reset that `reason` describes (what the driver said): drops the
+    /// last frame, reports contextLost() — or, for the second reset in a row without a
+    /// frame between, falls back to the next method (memoryFallback()) — and re-creates the
+    /// context from the event loop. paintGL() calls it when a frame reports the reset.
+    void recoverFromContextLoss(const QString& reason);
+    /// How many OpenGL contexts the view has initialized (1 after the first show; each
+    /// recovery adds one).
+    [[nodiscard]] int contextsInitialized() const { return m_contextsInitialized; }
+
+signals:
+    /// After every successful frame.
+    void frameRendered(const trimlab::render::FrameStats& stats);
+    /// Once per distinct failure (renderer creation, scene upload or a frame).
+    void renderError(const QString& message);
+    /// The frame size in device pixels changed.
+    void framePixelSizeChanged(QSize size);
+    /// The chosen method ran out of GPU memory (or its frames reset the GPU twice in a
+    /// row): `message` says why and what is shown instead (another method, or the CPU
+    /// reference).
+    void memoryFallback(const QString& message);
+    /// The GPU was reset and the view re-created its context: `message` says what happened
+    /// and that the scene was uploaded again.
+    void contextLost(const QString& message);
+    /// Ctrl + left drag on object `object` (setObjectDragEnabled): the cursor moved the
+    /// grabbed point by `worldDelta` (world units, in the view plane at the grabbed
+    /// point's depth) since the previous report.
+    void objectDragged(int object, const glm::dvec3& worldDelta);
+    /// That drag ended (the button went up).
+    void objectDragFinished(int object);
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int width, int height) override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+
+private:
+    enum class Drag { None, Orbit, Pan, Tool, MoveObject };
+
+    void releaseGl();
+    void recreateContext();
+    void syncGpuScene();
+    void applyPendingReset();
+    void renderFrame();
+    void renderWithFallbacks();
+    [[nodiscard]] render::FrameDemands frameDemands() const;
+    [[nodiscard]] bool applyRecovery(const render::FrameRecovery& recovery);
+    void paintCpuStill();
+    void renderDynamicFrame(const Camera& camera, QSize size);
+    void applyMethod();
+    void recordFrame(const Camera& camera, QSize size);
+    void runMeasurement(render::FragmentMethodKind method, int frames, MethodMeasurement& result);
+    void clearToBackground();
+    void paintMessage(const QString& text);
+    void setError(const QString& message);
+    [[nodiscard]] double aspect() const;
+    [[nodiscard]] double depthUnderCursor(QPointF position);
+    /// Starts a Ctrl + left drag of the object under `position`; false when none is there.
+    bool startObjectDrag(QPointF position);
+    /// The world point at view depth `depth` under the logical position `position`.
+    [[nodiscard]] glm::dvec3 worldAtDepth(QPointF position, double depth) const;
+
+    OrbitController m_orbit;
+    std::unique_ptr<render::TrimRenderer> m_renderer;
+    std::shared_ptr<const Scene> m_scene;
+    TrimSettings m_settings;
+    render::MethodParameters m_parameters;
+    bool m_sceneUploaded = false;
+    std::vector<glm::vec3> m_pose;              ///< object 0's positions; empty: the scene's
+    std::vector<std::uint32_t> m_vertexColors; ///< empty: the trim palette
+    bool m_poseDirty = false;
+    bool m_transformsDirty = false; ///< model matrices changed since the upload
+    bool m_colorsDirty = false;
+    bool m_resetPending = false;
+    std::optional<ViewportFrame> m_lastFrame;
+    QString m_error;
+    QString m_reportedError;
+    ViewportTool* m_tool = nullptr;
+    std::unique_ptr<render::DynamicTrimRenderer> m_dynamic;
+    std::shared_ptr<const DynamicChain> m_chain;      ///< nullptr: static rule
+    std::shared_ptr<const DynamicChainLevel> m_level; ///< replaces the chain's last level
+    bool m_chainDirty = false;
+    bool m_dynamicColorsDirty = false; ///< m_vertexColors not yet on the dynamic renderer
+    bool m_levelDirty = false;
+    std::optional<render::DynamicFrameStats> m_dynamicStats;
+    TrimImage m_trimCache; ///< the last frame's trim image once read (empty: not read)
+    /// The chosen method, its fallback, the CPU still and the resets in a row.
+    render::FramePolicy m_policy;
+    int m_contextsInitialized = 0; ///< initializeGL() calls
+    CpuStillRender* m_cpuStill = nullptr;
+    std::shared_ptr<const Scene> m_cpuScene; ///< m_scene with the pose applied, for the CPU still
+    Drag m_drag = Drag::None;
+    QPointF m_lastMouse;
+    double m_grabDepth = 0.0;
+    bool m_objectDragEnabled = false;
+    int m_draggedObject = -1;
+};
+
+} // namespace trimlab::ui

@@ -1,0 +1,445 @@
+#include "ui/window/main_window.h"
+
+#include "ui/animation/animation_workspace.h"
+#include "ui/animation/open_animation_dialog.h"
+#include "ui/common/window_context.h"
+#include "ui/design/design_session.h"
+#include "ui/design/design_workspace.h"
+#include "ui/design/project_files.h"
+#include "ui/design/session_recovery.h"
+#include "ui/inspect/inspect_workspace.h"
+#include "ui/render_panel/render_workspace.h"
+#include "ui/skeleton/skeleton_workspace.h"
+#include "ui/skinning/skinning_workspace.h"
+#include "ui/surface/surface_workspace.h"
+#include "ui/viewport/viewport_widget.h"
+#include "ui/common/mesh_file_filter.h"
+#include "ui/window/scene_switch.h"
+
+#include "core/catalog/demo_scenes.h"
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QIcon>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMimeData>
+#include <QSettings>
+#include <QTimer>
+#include <QToolBar>
+
+#include <initializer_list>
+
+namespace trimlab::ui {
+
+namespace {
+
+const QString kGeometryKey = QStringLiteral("window/geometry");
+const QString kStateKey = QStringLiteral("window/state");
+
+/// The first local file among dragged URLs, or "" when there is none.
+QString firstLocalFile(const QMimeData* data)
+{
+    if (!data || !data->hasUrls())
+        return {};
+    for (const QUrl& url : data->urls()) {
+        if (url.isLocalFile())
+            return url.toLocalFile();
+    }
+    return {};
+}
+
+/// The dock's show/hide action, titled for the View menu.
+void addDockToggle(QMenu* menu, QDockWidget* dock, const QString& text)
+{
+    QAction* toggle = dock->toggleViewAction();
+    toggle->setText(text);
+    menu->addAction(toggle);
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : MainWindow(std::make_unique<QSettings>(QSettings::NativeFormat, QSettings::UserScope, QStringLiteral("TrimLab"),
+                                             QStringLiteral("TrimLab")),
+                 parent)
+{
+}
+
+MainWindow::MainWindow(const QString& settingsFile, QWidget* parent)
+    : MainWindow(std::make_unique<QSettings>(settingsFile, QSettings::IniFormat), parent)
+{
+}
+
+MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
+    : QMainWindow(parent), m_settings(std::move(settings))
+{
+    setObjectName(QStringLiteral("mainWindow"));
+    setWindowIcon(QIcon(QStringLiteral(":/icons/trimlab.svg")));
+    setAcceptDrops(true);
+    createCentralView();
+    m_switch = new SceneSwitch(this, m_viewport);
+    m_context = std::make_unique<WindowContext>(*this, *m_settings, *m_switch);
+    createWorkspaces();
+    createFileMenu();
+    createEditMenu();
+    m_surface->addCreateMenu(menuBar());
+    createViewMenu();
+    createHelpMenu();
+    connectWorkspaces();
+    restoreSettings();
+    updateTitle();
+    QTimer::singleShot(0, this, &MainWindow::openDefaultIfNothingRequested);
+    QTimer::singleShot(0, m_design->sessionRecovery(), &SessionRecovery::offer);
+}
+
+// The workspaces are destroyed with the window's children, after this object's members:
+// nothing they report on the way out (a design session's undo stack leaving its clean
+// state) may reach the half-destroyed window.
+MainWindow::~MainWindow()
+{
+    for (QObject* part : std::initializer_list<QObject*>{m_switch, m_render, m_animation, m_design, m_surface,
+                                                         m_skeleton, m_inspect})
+        disconnect(part, nullptr, this, nullptr);
+    disconnect(m_design->projectFiles(), nullptr, this, nullptr);
+}
+
+QString MainWindow::defaultSource()
+{
+    return QStringLiteral("demo:pushed-sphere");
+}
+
+void MainWindow::createCentralView()
+{
+    const QString glProblem = ViewportWidget::openGlProblem();
+    if (glProblem.isEmpty()) {
+        m_viewport = new ViewportWidget(this);
+        m_viewport->setObjectName(QStringLiteral("viewport"));
+        setCentralWidget(m_viewport);
+        return;
+    }
+    // No usable OpenGL: a QOpenGLWidget in the window would break the window itself, so
+    // the viewport stays detached (loading and the panel still work) and a text explains.
+    m_detachedViewport = std::make_unique<ViewportWidget>();
+    m_viewport = m_detachedViewport.get();
+    m_viewport->setUnavailable(glProblem);
+    auto* label = new QLabel(tr("The 3D view is unavailable.\n\n%1").arg(glProblem), this);
+    label->setObjectName(QStringLiteral("viewportUnavailableLabel"));
+    label->setAlignment(Qt::AlignCenter);
+    label->setWordWrap(true);
+    label->setMargin(24);
+    setCentralWidget(label);
+    QTimer::singleShot(0, this, [this, glProblem] { m_render->reportRenderError(glProblem); });
+}
+
+// The order makes the docks' tab order: Render, Segmentation (Skinning), Brush (Surface),
+// Skeleton, Scene — with the Render panel in front.
+void MainWindow::createWorkspaces()
+{
+    m_render = new RenderWorkspace(*m_context, m_viewport, this);
+    m_animation = new AnimationWorkspace(*m_context, m_viewport, m_render->dock(), this);
+    m_design = new DesignWorkspace(*m_context, m_viewport, m_render->dock(), this);
+    m_surface = new SurfaceWorkspace(*m_context, *m_design, this);
+    m_skeleton = new SkeletonWorkspace(*m_context, m_viewport, m_render->dock(), m_design->brushAction(), this);
+    m_inspect = new InspectWorkspace(*m_context, m_viewport, m_render->dock(), m_design->undoGroup(), this);
+    m_inspect->setSaveGuard([this] { return m_design->projectFiles()->maybeSave(); });
+    m_render->dock()->raise();
+}
+
+void MainWindow::createFileMenu()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* open = file->addAction(tr("&Open…"), this, &MainWindow::showOpenDialog);
+    open->setShortcut(QKeySequence::Open);
+    QMenu* demos = file->addMenu(tr("Open &Demo"));
+    for (const std::string& name : demoSceneNames()) {
+        const QString source = QString::fromStdString(std::string(kDemoPrefix) + name);
+        QAction* action = demos->addAction(QString::fromStdString(name), this, [this, source] { openSource(source); });
+        action->setStatusTip(QString::fromStdString(std::string(demoSceneDescription(name))));
+    }
+    QMenu* recent = file->addMenu(tr("Open &Recent"));
+    QAction* addObject = file->addAction(tr("Add O&bject…"), m_inspect, &InspectWorkspace::showAddObjectDialog);
+    addObject->setObjectName(QStringLiteral("addObjectAction"));
+    addObject->setStatusTip(tr("Load a mesh file into the scene shown as one more object (CSG, collisions)"));
+    file->addSeparator();
+    QAction* openAnimation = file->addAction(tr("Open &Animation…"), this, &MainWindow::showOpenAnimationDialog);
+    openAnimation->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
+    QMenu* recentAnimations = file->addMenu(tr("Open Recent A&nimation"));
+    file->addSeparator();
+    QAction* exportImage = file->addAction(tr("&Export Image…"), this, &MainWindow::showExportDialog);
+    exportImage->setShortcut(QKeySequence(tr("Ctrl+E")));
+    file->addSeparator();
+    m_design->addFileActions(file);
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+    quit->setMenuRole(QAction::QuitRole);
+    m_switch->attach(*m_context, {m_render, m_animation, m_design, m_skeleton, m_inspect}, recent, recentAnimations);
+}
+
+void MainWindow::createEditMenu()
+{
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addAction(m_design->undoAction());
+    edit->addAction(m_design->redoAction());
+    edit->addSeparator();
+    edit->addAction(m_design->brushAction());
+    edit->addAction(m_design->newSetAction());
+    edit->addAction(m_surface->controlPointsAction());
+    QToolBar* tools = addToolBar(tr("Design"));
+    tools->setObjectName(QStringLiteral("designToolBar"));
+    tools->addAction(m_design->brushAction());
+    tools->addAction(m_design->newSetAction());
+    tools->addAction(m_surface->controlPointsAction());
+    tools->addAction(m_design->undoAction());
+    tools->addAction(m_design->redoAction());
+}
+
+void MainWindow::createViewMenu()
+{
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    // Single-key shortcuts act only while the viewport has focus (never while typing).
+    QAction* fit = m_viewMenu->addAction(tr("&Fit to View"), m_viewport, &ViewportWidget::fitToView);
+    fit->setShortcut(QKeySequence(Qt::Key_F));
+    fit->setShortcutContext(Qt::WidgetShortcut);
+    m_viewport->addAction(fit);
+    QAction* reset = m_viewMenu->addAction(tr("&Reset View"), m_viewport, &ViewportWidget::resetView);
+    reset->setShortcut(QKeySequence(Qt::Key_Home));
+    reset->setShortcutContext(Qt::WidgetShortcut);
+    m_viewport->addAction(reset);
+    m_viewMenu->addSeparator();
+    addDockToggle(m_viewMenu, m_render->dock(), tr("Render &Panel"));
+    addDockToggle(m_viewMenu, m_inspect->dock(), tr("S&cene Panel"));
+    addDockToggle(m_viewMenu, m_render->statsDock(), tr("Frame &Statistics"));
+    addDockToggle(m_viewMenu, m_animation->segmentationDock(), tr("Se&gmentation Panel"));
+    addDockToggle(m_viewMenu, m_animation->skinning()->dock(), tr("S&kinning Panel"));
+    addDockToggle(m_viewMenu, m_skeleton->dock(), tr("Ske&leton Panel"));
+    addDockToggle(m_viewMenu, m_animation->timelineDock(), tr("&Timeline"));
+    addDockToggle(m_viewMenu, m_design->brushDock(), tr("&Brush Panel"));
+    addDockToggle(m_viewMenu, m_design->timelineDock(), tr("&Deformation Timeline"));
+}
+
+void MainWindow::createHelpMenu()
+{
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* about = help->addAction(tr("&About TrimLab"), this, &MainWindow::showAbout);
+    about->setMenuRole(QAction::AboutRole);
+}
+
+void MainWindow::connectWorkspaces()
+{
+    connect(m_switch, &SceneSwitch::sceneShown, this, [this] {
+        applyRenderChoices();
+        updateTitle();
+    });
+    connect(m_switch, &SceneSwitch::titleChanged, this, &MainWindow::updateTitle);
+    connect(m_switch, &SceneSwitch::sceneLoaded, this, &MainWindow::sceneLoaded);
+    connect(m_switch, &SceneSwitch::animationLoaded, this, &MainWindow::animationLoaded);
+    connect(m_switch, &SceneSwitch::sceneLoadFailed, this, &MainWindow::sceneLoadFailed);
+    connect(m_switch, &SceneSwitch::objectAdded, this, &MainWindow::objectAdded);
+    connect(m_render, &RenderWorkspace::choicesChanged, this, &MainWindow::applyRenderChoices);
+    connect(m_inspect, &InspectWorkspace::csgChanged, this, &MainWindow::applyRenderChoices);
+    connect(m_design, &DesignWorkspace::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(m_design->projectFiles(), &ProjectFiles::saved, this, &MainWindow::updateTitle);
+    connect(m_design, &DesignWorkspace::sessionChanged, this, [this] {
+        m_inspect->setDesignSession(m_design->session());
+        updateTitle();
+    });
+}
+
+void MainWindow::restoreSettings()
+{
+    m_animation->restoreSettings();
+    m_skeleton->restoreSettings();
+    m_render->restoreSettings();
+    applyRenderChoices();
+    m_design->restoreSettings();
+    if (!restoreGeometry(m_settings->value(kGeometryKey).toByteArray()))
+        resize(1100, 720);
+    if (!restoreState(m_settings->value(kStateKey).toByteArray())) {
+        resizeDocks({m_render->dock()}, {380}, Qt::Horizontal);
+        resizeDocks({m_render->dock(), m_render->statsDock()}, {440, 300}, Qt::Vertical); // the Render panel is the taller
+    }
+    m_animation->hideAnimationDocks(); // until an animation is opened
+    m_design->timelineDock()->hide();   // until a deformation history starts
+}
+
+void MainWindow::saveWindowState()
+{
+    m_settings->setValue(kGeometryKey, saveGeometry());
+    m_settings->setValue(kStateKey, saveState());
+    m_settings->sync();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (!m_design->projectFiles()->maybeSave()) {
+        event->ignore();
+        return;
+    }
+    saveWindowState();
+    QMainWindow::closeEvent(event);
+}
+
+void MainWindow::openSource(const QString& source)
+{
+    m_switch->openSource(source);
+}
+
+void MainWindow::openAnimation(const QString& source)
+{
+    m_switch->openAnimation(source);
+}
+
+void MainWindow::openDefaultIfNothingRequested()
+{
+    if (!m_switch->openRequested())
+        openSource(defaultSource());
+}
+
+bool MainWindow::isLoading() const
+{
+    return m_switch->isLoading();
+}
+
+std::shared_ptr<const LoadedScene> MainWindow::scene() const
+{
+    return m_switch->shownScene();
+}
+
+SceneLoader* MainWindow::sceneLoader() const
+{
+    return m_switch->sceneLoader();
+}
+
+AnimationOpener* MainWindow::animationOpener() const
+{
+    return m_switch->animationOpener();
+}
+
+QStringList MainWindow::recentFiles() const
+{
+    return m_switch->recentFiles();
+}
+
+QStringList MainWindow::recentAnimations() const
+{
+    return m_switch->recentAnimations();
+}
+
+std::shared_ptr<const LoadedAnimation> MainWindow::animation() const
+{
+    return m_animation->animation();
+}
+
+void MainWindow::showOpenAnimationDialog()
+{
+    const QString source = OpenAnimationDialog::getSource(this, m_context->lastDirectory());
+    if (source.isEmpty())
+        return;
+    const QFileInfo info(source);
+    m_context->rememberDirectory(info.isDir() ? info.absoluteFilePath() : info.absolutePath());
+    openAnimation(source);
+}
+
+void MainWindow::showOpenDialog()
+{
+    // The first filter offers meshes and projects together; the project filter follows it.
+    QString filter = meshFileDialogFilter();
+    const qsizetype paren = filter.indexOf(QLatin1Char('('));
+    filter.insert(paren + 1, QStringLiteral("*.%1 ").arg(QLatin1String(ProjectFiles::kSuffix)));
+    filter.replace(0, paren, tr("Meshes and projects "));
+    filter.insert(filter.indexOf(QStringLiteral(";;")) + 2, ProjectFiles::dialogFilter() + QStringLiteral(";;"));
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open Mesh or Project"), m_context->lastDirectory(), filter);
+    if (path.isEmpty())
+        return;
+    m_context->rememberDirectory(QFileInfo(path).absolutePath());
+    openSource(path);
+}
+
+// Where the features' choices meet: the Render panel's choices with the scene's CSG
+// expression (inspect) and the design session's classification (design).
+void MainWindow::applyRenderChoices()
+{
+    const TrimSettings effective = m_render->apply(m_inspect->csg());
+    const RenderChoices choices = m_render->choices();
+    m_design->setRenderMode(choices.dynamicRules, choices.trim.rule, effective.trimEnabled);
+}
+
+bool MainWindow::exportImage(const QString& path, QString* error)
+{
+    const QImage image = m_viewport->readColorImage();
+    QString reason;
+    if (image.isNull())
+        reason = tr("Nothing has been rendered yet.");
+    else if (!image.convertToFormat(QImage::Format_RGB32).save(path, "PNG"))
+        reason = tr("Could not write “%1”.").arg(path);
+    if (error)
+        *error = reason;
+    return reason.isEmpty();
+}
+
+void MainWindow::showExportDialog()
+{
+    const QString path = m_context->askSavePath(tr("Export Image"), {tr("PNG image (*.png)")},
+                                                m_context->sceneBaseName(QStringLiteral("trimlab")) +
+                                                    QStringLiteral(".png"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (exportImage(path, &error))
+        m_context->showStatus(tr("Saved %1").arg(path));
+    else
+        m_context->showMessage(QMessageBox::Warning, tr("Export Image"), tr("The image was not saved."), error);
+}
+
+void MainWindow::showAbout()
+{
+    const auto caps = m_viewport->capabilities();
+    const QString gl = caps ? caps->summary().toHtmlEscaped()
+                            : tr("not available — %1").arg(m_viewport->errorMessage().toHtmlEscaped());
+    QMessageBox::about(this, tr("About TrimLab"),
+                       tr("<h3>TrimLab %1</h3>"
+                          "<p>Self-trimmed rendering of self-crossing surfaces by their winding number, on the GPU "
+                          "with a choice of multi-fragment methods, checked against an exact CPU ray caster.</p>"
+                          "<p><b>OpenGL:</b> %2<br><b>Qt:</b> %3</p>")
+                           .arg(QStringLiteral(TRIMLAB_VERSION), gl, QString::fromLatin1(qVersion())));
+}
+
+void MainWindow::updateTitle()
+{
+    QString name = m_switch->shownScene() ? QString::fromStdString(m_switch->shownScene()->displayName) : QString();
+    const DesignSession* session = m_design->session();
+    if (session && !session->projectPath().isEmpty())
+        name = QFileInfo(session->projectPath()).fileName();
+    // "[*]" is where Qt puts the modified mark (setWindowModified).
+    setWindowTitle(name.isEmpty() ? QStringLiteral("TrimLab[*]") : tr("%1[*] — TrimLab").arg(name));
+    setWindowModified(m_design->isModified());
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (!firstLocalFile(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+// A dropped folder is a mesh animation (a sequence of pose files); a dropped file a mesh.
+void MainWindow::dropEvent(QDropEvent* event)
+{
+    const QString path = firstLocalFile(event->mimeData());
+    if (path.isEmpty())
+        return;
+    event->acceptProposedAction();
+    if (QFileInfo(path).isDir())
+        openAnimation(path);
+    else
+        openSource(path);
+}
+
+} // namespace trimlab::ui

@@ -1,0 +1,337 @@
+#include "ui/window/scene_switch.h"
+
+#include "ui/animation/animation_opener.h"
+#include "ui/animation/animation_workspace.h"
+#include "ui/common/window_context.h"
+#include "ui/design/design_workspace.h"
+#include "ui/design/history_exports.h"
+#include "ui/design/project_files.h"
+#include "ui/design/session_recovery.h"
+#include "ui/inspect/inspect_scene.h"
+#include "ui/inspect/inspect_workspace.h"
+#include "ui/render_panel/render_workspace.h"
+#include "ui/skeleton/skeleton_panel.h"
+#include "ui/skeleton/skeleton_workspace.h"
+#include "ui/viewport/viewport_widget.h"
+#include "ui/window/recent_files_menu.h"
+#include "ui/common/scene_loader.h"
+
+#include "core/animation/mesh_animation.h"
+#include "core/catalog/surface_scenes.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/timeline/frame_chain.h"
+#include "core/timeline/project_file.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QMainWindow>
+#include <QRegularExpression>
+#include <QStatusBar>
+#include <QWidget>
+
+#include <stdexcept>
+
+namespace trimlab::ui {
+
+namespace {
+
+QString sceneLabel(const QString& source)
+{
+    if (isDemoSource(source.toStdString()))
+        return source;
+    return QFileInfo(source).fileName();
+}
+
+/// A one-object scene of `history`'s base mesh named `name`, opened from `source`.
+std::shared_ptr<LoadedScene> historyScene(const timeline::Timeline& history, const QString& name,
+                                          const QString& source)
+{
+    auto loaded = std::make_shared<LoadedScene>();
+    loaded->scene.objects.push_back({name.toStdString(), history.base(), glm::dmat4(1.0)});
+    loaded->source = source.toStdString();
+    loaded->displayName = name.toStdString();
+    loaded->reports.push_back(validateMesh(history.base()));
+    return loaded;
+}
+
+} // namespace
+
+SceneSwitch::SceneSwitch(QWidget* window, ViewportWidget* viewport)
+    : QObject(window),
+      m_viewport(viewport),
+      m_loader(new SceneLoader(window)),
+      m_animationOpener(new AnimationOpener(window))
+{
+}
+
+SceneSwitch::~SceneSwitch() = default;
+
+void SceneSwitch::attach(const WindowContext& context, const Features& features, QMenu* recentFiles,
+                         QMenu* recentAnimations)
+{
+    m_context = &context;
+    m_features = features;
+    m_recent = new RecentFilesMenu(recentFiles, context.settings(), QStringLiteral("recentFiles"),
+                                   [this](const QString& path) { openRecent(path); }, this);
+    m_recentAnimations = new RecentFilesMenu(recentAnimations, context.settings(), QStringLiteral("recentAnimations"),
+                                             [this](const QString& path) { openRecentAnimation(path); }, this);
+    connectLoaders();
+}
+
+void SceneSwitch::connectLoaders()
+{
+    const auto canceled = [this](const QString& source) {
+        m_context->showStatus(tr("Opening %1 canceled.").arg(sceneLabel(source)));
+    };
+    connect(m_loader, &SceneLoader::loaded, this, &SceneSwitch::onSceneLoaded);
+    connect(m_loader, &SceneLoader::failed, this, &SceneSwitch::reportOpenFailure);
+    connect(m_loader, &SceneLoader::canceled, this, canceled);
+    connect(m_animationOpener, &AnimationOpener::loaded, this, &SceneSwitch::onAnimationLoaded);
+    connect(m_animationOpener, &AnimationOpener::failed, this, &SceneSwitch::reportOpenFailure);
+    connect(m_animationOpener, &AnimationOpener::canceled, this, canceled);
+    ProjectFiles* projects = m_features.design->projectFiles();
+    connect(projects, &ProjectFiles::opened, this, &SceneSwitch::onProjectOpened);
+    connect(projects, &ProjectFiles::failed, this, &SceneSwitch::reportOpenFailure);
+    connect(projects, &ProjectFiles::saved, this, [this](const QString& path) {
+        m_recent->add(path);
+        m_context->showStatus(tr("Saved %1").arg(path));
+    });
+    InspectWorkspace* inspect = m_features.inspect;
+    connect(inspect, &InspectWorkspace::transformed, this, &SceneSwitch::onSceneTransformed);
+    connect(inspect, &InspectWorkspace::objectsAppended, this, &SceneSwitch::onObjectsAppended);
+    connect(inspect, &InspectWorkspace::addFailed, this, &SceneSwitch::sceneLoadFailed);
+}
+
+QStringList SceneSwitch::recentFiles() const
+{
+    return m_recent->paths();
+}
+
+QStringList SceneSwitch::recentAnimations() const
+{
+    return m_recentAnimations->paths();
+}
+
+void SceneSwitch::openSource(const QString& source)
+{
+    ProjectFiles* projects = m_features.design->projectFiles();
+    if (!projects->maybeSave())
+        return;
+    m_openRequested = true;
+    if (ProjectFiles::isProjectPath(source)) {
+        m_loader->cancel();
+        m_animationOpener->cancel();
+        m_context->showStatus(tr("Opening project %1…").arg(sceneLabel(source)), 0);
+        projects->open(source);
+        return;
+    }
+    m_animationOpener->cancel(); // the newest request wins
+    m_features.inspect->objectLoader()->cancel();
+    m_context->showStatus(tr("Opening %1…").arg(sceneLabel(source)), 0);
+    m_loader->load(source);
+}
+
+void SceneSwitch::openAnimation(const QString& source)
+{
+    if (!m_features.design->projectFiles()->maybeSave())
+        return;
+    m_openRequested = true;
+    m_loader->cancel(); // the newest request wins
+    m_context->showStatus(tr("Opening animation %1…").arg(sceneLabel(source)), 0);
+    m_animationOpener->open(source);
+}
+
+bool SceneSwitch::isLoading() const
+{
+    const DesignWorkspace* design = m_features.design;
+    return m_loader->isLoading() || m_features.inspect->objectLoader()->isLoading() ||
+           m_animationOpener->isLoading() || design->projectFiles()->isOpening() ||
+           design->historyExports()->isReplaying();
+}
+
+void SceneSwitch::openRecent(const QString& path)
+{
+    if (QFileInfo::exists(path)) {
+        openSource(path);
+        return;
+    }
+    m_recent->remove(path);
+    m_context->showMessage(QMessageBox::Warning, tr("File not found"), tr("“%1” no longer exists.").arg(path),
+                           tr("It was removed from the recent files."));
+}
+
+void SceneSwitch::openRecentAnimation(const QString& path)
+{
+    // A pattern (dir/mesh_*.obj, dir/mesh_%04d.obj) is not a file; its folder must exist.
+    const QFileInfo info(path);
+    const bool pattern = path.contains(QRegularExpression(QStringLiteral("[*?%]")));
+    if (info.exists() || (pattern && info.dir().exists())) {
+        openAnimation(path);
+        return;
+    }
+    m_recentAnimations->remove(path);
+    m_context->showMessage(QMessageBox::Warning, tr("Animation not found"), tr("“%1” no longer exists.").arg(path),
+                           tr("It was removed from the recent animations."));
+}
+
+void SceneSwitch::reportOpenFailure(const QString& source, const QString& message)
+{
+    m_context->window().statusBar()->clearMessage();
+    m_context->showMessage(QMessageBox::Critical, tr("Could not open"),
+                           tr("Could not open “%1”.").arg(sceneLabel(source)), message);
+    emit sceneLoadFailed(source, message);
+}
+
+void SceneSwitch::cancelPendingLoads()
+{
+    m_openRequested = true; // the newest request wins, even over the first start's default demo
+    if (m_loader->isLoading())
+        m_loader->cancel();
+    if (m_animationOpener->isLoading())
+        m_animationOpener->cancel();
+}
+
+void SceneSwitch::onSceneLoaded(std::shared_ptr<const LoadedScene> loaded)
+{
+    m_features.animation->clear();
+    m_features.design->endSession(); // before the viewport takes the new scene
+    const Bounds bounds = loaded->scene.worldBounds();
+    showScene(std::move(loaded), bounds);
+    startDesignSession();
+    const QString source = QString::fromStdString(m_scene->source);
+    if (!isDemoSource(m_scene->source))
+        m_recent->add(source);
+    m_context->showStatus(tr("%1: %2 triangles%3")
+                              .arg(QString::fromStdString(m_scene->displayName))
+                              .arg(m_scene->scene.triangleCount())
+                              .arg(m_scene->trimmable() ? QString() : tr(" — trim modes unavailable")));
+    emit sceneLoaded(source);
+}
+
+void SceneSwitch::onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loaded)
+{
+    m_features.design->endSession(); // an animation's poses are not a deformation history
+    showScene(loaded->restScene, loaded->bounds, true);
+    m_features.skeleton->panel()->setScene(nullptr); // the timeline drives the poses of an animation
+    m_viewport->setViewBounds(loaded->bounds);       // no pose may cross the far plane
+    m_features.animation->show(loaded);
+    const MeshAnimation& animation = *loaded->animation;
+    const QString source = QString::fromStdString(m_scene->source);
+    m_recentAnimations->add(source);
+    m_context->showStatus(tr("%1: %2 poses, %3 vertices, %4 triangles%5")
+                              .arg(QString::fromStdString(m_scene->displayName))
+                              .arg(animation.poseCount())
+                              .arg(animation.vertexCount())
+                              .arg(animation.triangleCount())
+                              .arg(m_scene->trimmable() ? QString() : tr(" — trim modes unavailable")));
+    emit animationLoaded(source);
+}
+
+void SceneSwitch::onProjectOpened(std::shared_ptr<const timeline::Project> project, const QString& path)
+{
+    DesignWorkspace* design = m_features.design;
+    m_features.animation->clear();
+    design->endSession();
+    const QString name = QFileInfo(path).fileName();
+    if (project->extras.staticRule) {
+        RenderChoices choices = m_features.render->choices();
+        choices.trim.rule = *project->extras.staticRule;
+        m_features.render->setChoices(choices);
+    }
+    // The session below widens the view bounds to every frame.
+    showScene(historyScene(project->timeline, name, path), timeline::historyBounds(project->timeline));
+    design->startSession(project->timeline, glm::dmat4(1.0), QFileInfo(path).absoluteFilePath());
+    if (const auto& view = project->extras.view)
+        m_viewport->setCamera(Camera{view->eye, view->target, view->up, view->fovyDegrees});
+    if (design->sessionRecovery()->adoptRecovered(path)) {
+        emit titleChanged(); // the title marks the recovered history as modified
+        m_context->showStatus(tr("Recovered the unsaved deformation history (%1 frames). Save it to keep it.")
+                                  .arg(project->timeline.frameCount()),
+                              2 * kStatusMessageMs);
+        emit sceneLoaded(path);
+        return;
+    }
+    m_recent->add(path);
+    emit titleChanged();
+    m_context->showStatus(tr("%1: %2 frames in %3 sets")
+                              .arg(name)
+                              .arg(project->timeline.frameCount())
+                              .arg(project->timeline.sets().size()));
+    emit sceneLoaded(path);
+}
+
+void SceneSwitch::showHistory(timeline::Timeline history, const QString& name)
+{
+    cancelPendingLoads();
+    m_features.animation->clear();
+    m_features.design->endSession();
+    const Bounds bounds = computeBounds(history.base());
+    showScene(historyScene(history, name, name), bounds);
+    m_features.design->startSession(std::move(history), glm::dmat4(1.0), QString());
+    emit titleChanged();
+}
+
+void SceneSwitch::onObjectsAppended(const QString& source, const QString& displayName)
+{
+    m_features.design->endSession(); // before the viewport takes the grown scene; several objects are not designed
+    const InspectScene* inspect = m_features.inspect->scene();
+    m_scene = inspect->scene();
+    m_features.render->showSceneInfo(m_scene->scene.worldBounds(), m_scene->trimmable(),
+                                     QString::fromStdString(m_scene->trimUnavailableReason()));
+    m_viewport->replaceScene(std::shared_ptr<const Scene>(m_scene, &m_scene->scene));
+    emit sceneShown();
+    const int objects = inspect->objectCount();
+    m_context->showStatus(tr("Added %1: the scene has %2 objects%3")
+                              .arg(displayName)
+                              .arg(objects)
+                              .arg(objects > kMaxCsgOperands
+                                       ? tr(" (CSG and collisions address objects 0 to %1)").arg(kMaxCsgOperands - 1)
+                                       : QString()));
+    emit objectAdded(source);
+}
+
+// A transform edit (or its undo) replaced the scene by one whose single model matrix
+// differs: only the matrices go to the GPU, the camera stays.
+void SceneSwitch::onSceneTransformed()
+{
+    m_scene = m_features.inspect->scene()->scene();
+    std::shared_ptr<const Scene> scene(m_scene, &m_scene->scene);
+    try {
+        m_viewport->setSceneTransforms(scene);
+    } catch (const std::invalid_argument&) {
+        m_viewport->replaceScene(scene); // the view showed other geometry (never expected): upload it all
+    }
+    m_features.render->setClipBounds(m_scene->scene.worldBounds());
+}
+
+// What a mesh, a history and an animation's rest pose (`animation`) share: the scene, the
+// trim controls (with `bounds` for the clip offset), the features that work on the shown
+// scene.
+void SceneSwitch::showScene(std::shared_ptr<const LoadedScene> loaded, const Bounds& bounds, bool animation)
+{
+    m_scene = std::move(loaded);
+    m_features.render->showSceneInfo(bounds, m_scene->trimmable(),
+                                     QString::fromStdString(m_scene->trimUnavailableReason()));
+    m_viewport->setScene(std::shared_ptr<const Scene>(m_scene, &m_scene->scene));
+    m_features.skeleton->panel()->setScene(m_scene); // after the viewport: its result never meets another mesh
+    m_features.inspect->showScene(m_scene, animation);
+    emit sceneShown();
+}
+
+// A trimmable scene of one object starts a history on that object (a surface demo's
+// through its control points); anything else (several objects, an open surface) ends
+// the one shown.
+void SceneSwitch::startDesignSession()
+{
+    const bool designable = m_scene && m_scene->trimmable() && m_scene->scene.objects.size() == 1;
+    if (!designable) {
+        m_features.design->endSession();
+        return;
+    }
+    const SceneObject& object = m_scene->scene.objects.front();
+    m_features.design->startSession(
+        surfaceDemoHistory(m_scene->source, object.mesh).value_or(timeline::Timeline(object.mesh)),
+        object.modelMatrix, QString());
+}
+
+} // namespace trimlab::ui

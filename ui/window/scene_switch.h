@@ -1,0 +1,118 @@
+#pragma once
+/// \file
+/// The one thing the main window shows — a scene (a mesh, a demo, a NURBS file), a
+/// project's design history, a created surface's history, or an animation's rest pose —
+/// and how each way of opening something replaces it (SceneHost). Scenes load off the UI
+/// thread (SceneLoader), animations too (AnimationOpener), projects through the design
+/// feature's ProjectFiles; the newest request wins and cancels pending ones. Replacing
+/// what is shown ends the animation and the design session first, then hands the new
+/// scene to the viewport and every feature (sceneShown()), and starts a design session
+/// on a trimmable single-object scene. The recent files and recent animations are kept
+/// here, as they record what was opened.
+///
+/// Built in two steps: the window creates it before its feature workspaces (which reach
+/// it as their SceneHost), then attach()es them.
+
+#include "ui/common/scene_host.h"
+
+#include <QObject>
+#include <QString>
+#include <QStringList>
+
+#include <memory>
+
+namespace trimlab::timeline {
+struct Project;
+}
+
+class QMenu;
+class QWidget;
+
+namespace trimlab::ui {
+
+class AnimationOpener;
+class AnimationWorkspace;
+class DesignWorkspace;
+class InspectWorkspace;
+class RecentFilesMenu;
+class RenderWorkspace;
+class SceneLoader;
+class SkeletonWorkspace;
+class ViewportWidget;
+class WindowContext;
+struct LoadedAnimation;
+
+class SceneSwitch : public QObject, public SceneHost {
+    Q_OBJECT
+public:
+    /// The features a new scene is handed to.
+    struct Features {
+        RenderWorkspace* render;
+        AnimationWorkspace* animation;
+        DesignWorkspace* design;
+        SkeletonWorkspace* skeleton;
+        InspectWorkspace* inspect;
+    };
+
+    /// `window` parents the loaders' progress dialogs and this object.
+    SceneSwitch(QWidget* window, ViewportWidget* viewport);
+    ~SceneSwitch() override;
+    /// The second step: the window's context, its features, and the File menu's recent
+    /// submenus to fill.
+    void attach(const WindowContext& context, const Features& features, QMenu* recentFiles, QMenu* recentAnimations);
+
+    /// MainWindow::openSource, openAnimation, isLoading (see there).
+    void openSource(const QString& source);
+    void openAnimation(const QString& source);
+    [[nodiscard]] bool isLoading() const;
+    /// Whether anything was asked to open yet (the first start opens the default demo
+    /// only when nothing was).
+    [[nodiscard]] bool openRequested() const { return m_openRequested; }
+
+    [[nodiscard]] SceneLoader* sceneLoader() const { return m_loader; }
+    [[nodiscard]] AnimationOpener* animationOpener() const { return m_animationOpener; }
+    [[nodiscard]] QStringList recentFiles() const;
+    [[nodiscard]] QStringList recentAnimations() const;
+
+    // SceneHost
+    [[nodiscard]] std::shared_ptr<const LoadedScene> shownScene() const override { return m_scene; }
+    void showHistory(timeline::Timeline history, const QString& name) override;
+    void reportOpenFailure(const QString& source, const QString& message) override;
+
+signals:
+    /// A new scene is shown (the features have it): the window applies the render
+    /// choices and updates its title.
+    void sceneShown();
+    /// What the title shows changed (a project or a new history is shown).
+    void titleChanged();
+    /// See MainWindow's signals of the same names.
+    void sceneLoaded(const QString& source);
+    void animationLoaded(const QString& source);
+    void sceneLoadFailed(const QString& source, const QString& message);
+    void objectAdded(const QString& source);
+
+private:
+    void connectLoaders();
+    void openRecent(const QString& path);
+    void openRecentAnimation(const QString& path);
+    void cancelPendingLoads();
+    void onSceneLoaded(std::shared_ptr<const LoadedScene> loaded);
+    void onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loaded);
+    void onProjectOpened(std::shared_ptr<const timeline::Project> project, const QString& path);
+    void onObjectsAppended(const QString& source, const QString& displayName);
+    void onSceneTransformed();
+    void showScene(std::shared_ptr<const LoadedScene> loaded, const Bounds& bounds, bool animation = false);
+    void startDesignSession();
+
+    ViewportWidget* m_viewport;
+    SceneLoader* m_loader;
+    AnimationOpener* m_animationOpener;
+    const WindowContext* m_context = nullptr;
+    Features m_features{};
+    RecentFilesMenu* m_recent = nullptr;
+    RecentFilesMenu* m_recentAnimations = nullptr;
+    std::shared_ptr<const LoadedScene> m_scene;
+    bool m_openRequested = false;
+};
+
+} // namespace trimlab::ui
