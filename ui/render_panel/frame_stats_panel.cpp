@@ -113,7 +113,7 @@ QWidget* FrameStatsPanel::createAdviceBox()
     return m_adviceBox;
 }
 
-void FrameStatsPanel::showFrame(const ViewportFrame& frame)
+void FrameStatsPanel::showFrame(const render::ViewFrame& frame)
 {
     const render::FrameStats& s = frame.stats;
     m_method->setText(methodDisplayName(render::methodInfo(s.method)));

@@ -17,9 +17,11 @@ class QLabel;
 class QPushButton;
 class QToolButton;
 
-namespace trimlab::ui {
+namespace trimlab::render {
+struct ViewFrame;
+}
 
-struct ViewportFrame;
+namespace trimlab::ui {
 
 class FrameStatsPanel : public QWidget {
     Q_OBJECT
@@ -27,7 +29,7 @@ public:
     explicit FrameStatsPanel(QWidget* parent = nullptr);
 
     /// Shows `frame` (its statistics and, when it overflowed, the advice).
-    void showFrame(const ViewportFrame& frame);
+    void showFrame(const render::ViewFrame& frame);
     /// Dashes everywhere, no advice (no frame, or the view cannot render).
     void clear();
 

@@ -3,8 +3,7 @@
 #include "render/gl/context_reset.h"
 #include "render/gl/gl_error.h"
 #include "render/gl/offscreen_gl_context.h"
-#include "render/frame/gpu_scene.h"
-#include "render/mfr/fragment_method.h"
+
 #include "core/trim/trim_shading.h"
 
 #include <QCoreApplication>
@@ -54,17 +53,9 @@ ViewportWidget::~ViewportWidget()
 
 void ViewportWidget::setScene(std::shared_ptr<const Scene> scene)
 {
-    m_scene = std::move(scene);
-    m_cpuScene.reset();
-    m_orbit.setSceneBounds(m_scene ? m_scene->worldBounds() : Bounds{});
-    m_sceneUploaded = false;
+    m_orbit.setSceneBounds(scene ? scene->worldBounds() : Bounds{});
+    m_view.setScene(std::move(scene));
     m_resetPending = true;
-    m_lastFrame.reset();
-    m_pose.clear();
-    m_vertexColors.clear();
-    m_chain.reset(); // a chain belongs to the previous scene's mesh
-    m_level.reset();
-    m_policy.reset();
     update();
 }
 
@@ -77,17 +68,8 @@ void ViewportWidget::replaceScene(std::shared_ptr<const Scene> scene)
 
 void ViewportWidget::setSceneTransforms(std::shared_ptr<const Scene> scene)
 {
-    if (!m_scene || !scene || scene->objects.size() != m_scene->objects.size())
-        throw std::invalid_argument("setSceneTransforms: the new scene does not have the shown scene's objects.");
-    for (std::size_t i = 0; i < scene->objects.size(); ++i) {
-        if (scene->objects[i].mesh.vertexCount() != m_scene->objects[i].mesh.vertexCount() ||
-            scene->objects[i].mesh.triangleCount() != m_scene->objects[i].mesh.triangleCount())
-            throw std::invalid_argument("setSceneTransforms: object " + std::to_string(i) +
-                                        " has another mesh than the one shown.");
-    }
-    m_scene = std::move(scene);
-    m_orbit.setSceneBounds(m_scene->worldBounds()); // the depth range must enclose the moved object
-    m_transformsDirty = true;
+    m_view.setSceneTransforms(scene);
+    m_orbit.setSceneBounds(scene->worldBounds()); // the depth range must enclose the moved object
     update();
 }
 
@@ -101,33 +83,21 @@ void ViewportWidget::setTool(ViewportTool* tool)
 
 void ViewportWidget::setDynamicChain(std::shared_ptr<const DynamicChain> chain)
 {
-    m_chain = std::move(chain);
-    m_policy.clearStop();
-    m_level.reset();
-    m_chainDirty = m_chain != nullptr;
-    m_levelDirty = false;
+    m_view.setDynamicChain(std::move(chain));
     update();
 }
 
 void ViewportWidget::setDynamicShownLevel(std::shared_ptr<const DynamicChainLevel> level)
 {
-    if (!m_chain)
+    if (!m_view.rendersDynamicRules())
         return;
-    m_level = std::move(level);
-    m_levelDirty = m_level != nullptr;
+    m_view.setDynamicShownLevel(std::move(level));
     update();
-}
-
-const DynamicChainLevel* ViewportWidget::dynamicShownLevel() const
-{
-    if (m_level)
-        return m_level.get();
-    return m_chain && !m_chain->levels.empty() ? &m_chain->levels.back() : nullptr;
 }
 
 std::optional<TrimPixel> ViewportWidget::trimPixelAt(QPointF position)
 {
-    if (!m_lastFrame)
+    if (!m_view.lastFrame())
         return std::nullopt;
     if (m_trimCache.pixels.empty())
         m_trimCache = readTrimImage();
@@ -147,84 +117,39 @@ void ViewportWidget::setViewBounds(const Bounds& bounds)
 
 void ViewportWidget::showPose(const std::vector<glm::vec3>& positions)
 {
-    const std::size_t expected = m_scene && !m_scene->objects.empty() ? m_scene->objects.front().mesh.vertexCount() : 0;
-    if (positions.size() != expected || expected == 0)
-        throw std::invalid_argument("showPose: the scene's first object has " + std::to_string(expected) +
-                                    " vertices, the pose " + std::to_string(positions.size()) + ".");
-    m_pose = positions;
-    m_poseDirty = true;
-    m_cpuScene.reset();
+    m_view.showPose(positions);
     update();
 }
 
 void ViewportWidget::setVertexColors(std::vector<std::uint32_t> rgba8)
 {
-    std::size_t vertices = 0;
-    if (m_scene)
-        for (const SceneObject& object : m_scene->objects)
-            vertices += object.mesh.vertexCount();
-    if (!rgba8.empty() && rgba8.size() != vertices)
-        throw std::invalid_argument("setVertexColors: the scene has " + std::to_string(vertices) + " vertices, got " +
-                                    std::to_string(rgba8.size()) + " colors.");
-    m_vertexColors = std::move(rgba8);
-    m_colorsDirty = true;
-    m_dynamicColorsDirty = true;
+    m_view.setVertexColors(std::move(rgba8));
     update();
-}
-
-// Brings the renderer's scene buffers up to date: the scene itself after setScene() or a
-// new context, then the pose and colors when they changed or the scene was re-uploaded.
-// The context must be current.
-void ViewportWidget::syncGpuScene()
-{
-    if (!m_sceneUploaded) {
-        m_renderer->setScene(*m_scene);
-        m_sceneUploaded = true;
-        m_transformsDirty = false; // the upload carried the current matrices
-        m_poseDirty = !m_pose.empty();
-        m_colorsDirty = !m_vertexColors.empty();
-    }
-    if (m_transformsDirty) {
-        for (std::size_t i = 0; i < m_scene->objects.size(); ++i)
-            m_renderer->gpuScene().setModelMatrix(i, m_scene->objects[i].modelMatrix);
-        m_transformsDirty = false;
-    }
-    if (m_poseDirty) {
-        m_renderer->gpuScene().updatePositions(0, m_pose);
-        m_poseDirty = false;
-    }
-    if (m_colorsDirty) {
-        m_renderer->gpuScene().setVertexColors(m_vertexColors);
-        m_colorsDirty = false;
-    }
 }
 
 void ViewportWidget::setTrimSettings(const TrimSettings& settings)
 {
-    m_settings = settings;
+    m_view.setTrimSettings(settings);
     update();
 }
 
 void ViewportWidget::setMethod(render::FragmentMethodKind method)
 {
-    m_policy.choose(method);
+    m_view.setMethod(method);
     applyMethod();
     update();
 }
 
 void ViewportWidget::setMethodParameters(const render::MethodParameters& parameters)
 {
-    m_parameters = parameters;
-    m_parameters.k = std::clamp(parameters.k, 1, render::MethodParameters::kMaxK);
-    m_parameters.sharedCounters = std::max(parameters.sharedCounters, 1);
-    m_policy.reset();
+    m_view.setMethodParameters(parameters);
     applyMethod();
     update();
 }
 
 void ViewportWidget::setK(int k)
 {
-    render::MethodParameters parameters = m_parameters;
+    render::MethodParameters parameters = m_view.methodParameters();
     parameters.k = k;
     setMethodParameters(parameters);
 }
@@ -233,12 +158,11 @@ void ViewportWidget::setK(int k)
 // memoryEstimate() answers for it before anything is allocated.
 void ViewportWidget::applyMethod()
 {
-    if (!m_renderer)
+    if (!m_view.hasRenderer())
         return;
     makeCurrent(); // replacing the method object releases its GL storage
     try {
-        m_renderer->setMethod(effectiveMethod());
-        m_renderer->setParameters(m_parameters);
+        m_view.applyMethod();
     } catch (const std::exception& e) {
         setError(tr("The method could not be set up: %1").arg(QString::fromStdString(e.what())));
     }
@@ -247,48 +171,30 @@ void ViewportWidget::applyMethod()
 
 MemoryEstimate ViewportWidget::memoryEstimate() const
 {
-    if (!m_renderer)
+    if (!m_view.hasRenderer())
         return {};
     const QSize size = framePixelSize();
-    return {true, m_renderer->estimateMethodBytes(size.width(), size.height()), size};
+    return {true, m_view.renderer().estimateMethodBytes(size.width(), size.height()), size};
 }
 
 MethodMeasurement ViewportWidget::measureMethod(render::FragmentMethodKind method, int frames)
 {
-    if (!m_renderer)
+    if (!m_view.hasRenderer())
         throw std::runtime_error(m_error.isEmpty() ? "OpenGL is not available." : m_error.toStdString());
-    if (!m_scene || m_scene->empty())
+    if (!m_view.scene() || m_view.scene()->empty())
         throw std::runtime_error("There is no scene to render.");
-    MethodMeasurement result;
     makeCurrent();
+    applyPendingReset();
     try {
-        runMeasurement(method, frames, result);
+        const MethodMeasurement result = m_view.measure(method, frames, m_orbit.camera(), framePixelSize());
+        doneCurrent();
+        update();
+        return result;
     } catch (...) {
-        m_renderer->setMethod(effectiveMethod());
         doneCurrent();
         update();
         throw;
     }
-    m_renderer->setMethod(effectiveMethod());
-    doneCurrent();
-    update();
-    return result;
-}
-
-void ViewportWidget::runMeasurement(render::FragmentMethodKind method, int frames, MethodMeasurement& result)
-{
-    syncGpuScene();
-    applyPendingReset();
-    const QSize size = framePixelSize();
-    const Camera camera = m_orbit.camera();
-    m_renderer->setMethod(method);
-    m_renderer->setParameters(m_parameters);
-    m_renderer->render(camera, m_settings, size.width(), size.height()); // warm-up: shaders, storage
-    for (int i = 0; i < frames; ++i) {
-        m_renderer->render(camera, m_settings, size.width(), size.height());
-        result.times.add(m_renderer->lastStats());
-    }
-    result.lastStats = m_renderer->lastStats();
 }
 
 Camera ViewportWidget::camera() const
@@ -360,27 +266,27 @@ void ViewportWidget::setUnavailable(const QString& reason)
 
 std::optional<render::GlCapabilities> ViewportWidget::capabilities() const
 {
-    if (!m_renderer)
+    if (!m_view.hasRenderer())
         return std::nullopt;
-    return m_renderer->capabilities();
+    return m_view.renderer().capabilities();
 }
 
 QImage ViewportWidget::readColorImage()
 {
-    if (!m_renderer || !m_lastFrame)
+    if (!m_view.hasRenderer() || !m_view.lastFrame())
         return {};
     makeCurrent();
-    QImage image = m_renderer->readColor();
+    QImage image = m_view.renderer().readColor();
     doneCurrent();
     return image;
 }
 
 TrimImage ViewportWidget::readTrimImage()
 {
-    if (!m_renderer || !m_lastFrame)
+    if (!m_view.hasRenderer() || !m_view.lastFrame())
         return {};
     makeCurrent();
-    TrimImage image = m_renderer->readTrimImage();
+    TrimImage image = m_view.renderer().readTrimImage();
     doneCurrent();
     return image;
 }
@@ -389,11 +295,8 @@ void ViewportWidget::initializeGL()
 {
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseGl, Qt::UniqueConnection);
     ++m_contextsInitialized;
-    m_sceneUploaded = false;
     try {
-        m_renderer = std::make_unique<render::TrimRenderer>(*context());
-        m_renderer->setMethod(effectiveMethod());
-        m_renderer->setParameters(m_parameters);
+        m_view.initialize(*context());
         setError({});
     } catch (const render::GlError& e) {
         setError(QString::fromStdString(e.what()));
@@ -404,23 +307,37 @@ void ViewportWidget::initializeGL()
 
 void ViewportWidget::releaseGl()
 {
-    if (!m_renderer)
+    if (!m_view.hasRenderer())
         return;
     makeCurrent();
-    m_dynamic.reset(); // its GL objects go first: it holds a reference to the renderer
-    m_renderer.reset();
+    m_view.release();
     doneCurrent();
-    m_sceneUploaded = false;
-    m_chainDirty = m_chain != nullptr;
-    m_levelDirty = m_level != nullptr;
 }
 
 void ViewportWidget::recoverFromContextLoss(const QString& reason)
 {
-    m_lastFrame.reset();
     m_trimCache = {};
-    (void)applyRecovery(m_policy.contextLost(reason.toStdString(), frameDemands()));
+    applyRecovery(m_view.contextLost(reason.toStdString()));
     QMetaObject::invokeMethod(this, &ViewportWidget::recreateContext, Qt::QueuedConnection);
+}
+
+// What the frame policy decided after a GPU reset: a notice, or the stop's message.
+void ViewportWidget::applyRecovery(const render::FrameRecovery& recovery)
+{
+    const QString message = QString::fromStdString(recovery.message);
+    switch (recovery.action) {
+    case render::FrameRecovery::Action::Recreate:
+        emit contextLost(message);
+        break;
+    case render::FrameRecovery::Action::OtherMethod:
+    case render::FrameRecovery::Action::CpuStill:
+        emit memoryFallback(message);
+        break;
+    case render::FrameRecovery::Action::Stop:
+    case render::FrameRecovery::Action::Refuse:
+        setError(message);
+        break;
+    }
 }
 
 // What Qt itself does when a window's graphics device is lost: QOpenGLWidget drops its
@@ -437,37 +354,49 @@ void ViewportWidget::recreateContext()
 
 void ViewportWidget::resizeGL(int, int)
 {
-    m_policy.reset(); // the chosen method may fit the new size
+    m_view.resetFallback(); // the chosen method may fit the new size
     emit framePixelSizeChanged(framePixelSize());
 }
 
 void ViewportWidget::paintGL()
 {
-    if (m_renderer && !context()->isValid()) { // Qt saw the reset first (platforms with reset notification)
+    if (m_view.hasRenderer() && !context()->isValid()) { // Qt saw the reset first (platforms with reset notification)
         clearToBackground();
         recoverFromContextLoss(QString::fromStdString(render::contextResetMessage(render::ContextReset::Unknown)));
         return;
     }
-    if (!m_renderer || m_policy.stopped()) {
+    if (!m_view.hasRenderer() || m_view.policy().stopped()) {
         clearToBackground();
         paintMessage(m_error.isEmpty() ? tr("OpenGL is not available.") : m_error);
         return;
     }
-    if (!m_scene || m_scene->empty()) {
+    if (!m_view.scene() || m_view.scene()->empty()) {
         clearToBackground();
         paintMessage(tr("No scene. Open a mesh with File ▸ Open… or drop a mesh file here."));
         return;
     }
-    if (m_policy.showsCpuStill()) {
+    if (m_view.policy().showsCpuStill()) {
         paintCpuStill();
         return;
     }
+    renderFrame();
+}
+
+// One frame through the renderer (render/viewport_renderer.h), which walks the memory
+// fallbacks; what is left to the widget is telling the user and painting.
+void ViewportWidget::renderFrame()
+{
+    bool rendered = false;
     try {
-        renderWithFallbacks();
-        if (m_policy.showsCpuStill()) {
+        applyPendingReset();
+        const auto notify = [this](const std::string& notice) { emit memoryFallback(QString::fromStdString(notice)); };
+        rendered = m_view.render(m_orbit.camera(), framePixelSize(), defaultFramebufferObject(), notify);
+        m_trimCache = TrimImage(); // read again on demand: the frame changed
+        if (!rendered) {
             paintCpuStill();
             return;
         }
+        setError({});
     } catch (const render::GlContextLostError& e) {
         clearToBackground();
         recoverFromContextLoss(QString::fromStdString(e.what()));
@@ -481,84 +410,17 @@ void ViewportWidget::paintGL()
         setError(tr("Rendering failed: %1").arg(QString::fromStdString(e.what())));
     }
     if (!m_error.isEmpty()) {
-        m_lastFrame.reset();
+        m_view.forgetLastFrame();
         clearToBackground();
         paintMessage(m_error);
         return;
     }
-    m_policy.frameRendered();
-    emit frameRendered(m_lastFrame->stats);
-}
-
-void ViewportWidget::renderFrame()
-{
-    const QSize size = framePixelSize();
-    syncGpuScene();
-    applyPendingReset();
-    m_renderer->setMethod(effectiveMethod());
-    m_renderer->setParameters(m_parameters);
-    const Camera camera = m_orbit.camera();
-    if (m_chain && m_settings.trimEnabled) {
-        renderDynamicFrame(camera, size);
-    } else {
-        m_renderer->render(camera, m_settings, size.width(), size.height());
-        m_dynamicStats.reset();
-    }
-    m_renderer->blitTo(defaultFramebufferObject());
-    recordFrame(camera, size);
-    setError({});
-}
-
-// Out of GPU memory (checked before allocating, or a failed allocation): the next method
-// of the fallback chain renders the frame; none left → the CPU still (render/frame_policy.h).
-void ViewportWidget::renderWithFallbacks()
-{
-    for (;;) {
-        try {
-            renderFrame();
-            return;
-        } catch (const render::GpuMemoryError& e) {
-            if (!applyRecovery(m_policy.outOfMemory(e.what(), frameDemands())))
-                return;
-        }
-    }
-}
-
-render::FrameDemands ViewportWidget::frameDemands() const
-{
-    return {m_chain && m_settings.trimEnabled, render::needsInspectionMethod(m_settings)};
-}
-
-// Carries out what the policy decided after a failed frame; true when the frame should
-// be rendered again with the policy's method.
-bool ViewportWidget::applyRecovery(const render::FrameRecovery& recovery)
-{
-    const QString message = QString::fromStdString(recovery.message);
-    switch (recovery.action) {
-    case render::FrameRecovery::Action::OtherMethod:
-        m_lastFrame.reset();
-        emit memoryFallback(message);
-        return true;
-    case render::FrameRecovery::Action::CpuStill:
-        m_lastFrame.reset();
-        emit memoryFallback(message);
-        return false;
-    case render::FrameRecovery::Action::Refuse:
-        m_lastFrame.reset();
-        throw render::GpuMemoryError(recovery.message);
-    case render::FrameRecovery::Action::Recreate:
-        emit contextLost(message);
-        return false;
-    case render::FrameRecovery::Action::Stop:
-        setError(message);
-        return false;
-    }
-    return false;
+    emit frameRendered(m_view.lastFrame()->stats);
 }
 
 QImage ViewportWidget::cpuStillImage() const
 {
-    return m_policy.showsCpuStill() && m_cpuStill->shown() ? m_cpuStill->image() : QImage();
+    return m_view.policy().showsCpuStill() && m_cpuStill->shown() ? m_cpuStill->image() : QImage();
 }
 
 // The CPU reference of the current view, drawn when ready; the previous still (or a note)
@@ -566,66 +428,18 @@ QImage ViewportWidget::cpuStillImage() const
 void ViewportWidget::paintCpuStill()
 {
     applyPendingReset();
-    if (!m_cpuScene && m_scene) {
-        if (m_pose.empty()) {
-            m_cpuScene = m_scene;
-        } else {
-            auto posed = std::make_shared<Scene>(*m_scene);
-            posed->objects.front().mesh.positions = m_pose;
-            m_cpuScene = std::move(posed);
-        }
-    }
-    const CpuStillRender::Request request{m_cpuScene, m_orbit.camera(), m_settings, framePixelSize()};
+    const std::shared_ptr<const Scene> scene = m_view.posedScene();
+    const CpuStillRender::Request request{scene, m_orbit.camera(), m_view.trimSettings(), framePixelSize()};
     m_cpuStill->request(request);
     clearToBackground();
     QPainter painter(this);
-    if (m_cpuStill->shown() && m_cpuStill->shown()->scene == m_cpuScene)
+    if (m_cpuStill->shown() && m_cpuStill->shown()->scene == scene)
         painter.drawImage(rect(), m_cpuStill->image());
     painter.setPen(QColor(235, 235, 235));
     const bool current = m_cpuStill->shown() && m_cpuStill->shown()->sameView(request);
     painter.drawText(rect().adjusted(kMessageMargin, kMessageMargin, -kMessageMargin, -kMessageMargin),
                      Qt::AlignTop | Qt::AlignLeft,
                      current ? tr("CPU reference (no GPU method fits this view)") : tr("Rendering on the CPU…"));
-}
-
-// The chain's levels are uploaded only when the chain changed; a drag replaces only the
-// shown level, so the earlier sets' characterizations stay cached.
-void ViewportWidget::renderDynamicFrame(const Camera& camera, QSize size)
-{
-    if (!m_dynamic) {
-        m_dynamic = std::make_unique<render::DynamicTrimRenderer>(*m_renderer);
-        m_dynamicColorsDirty = true;
-    }
-    if (m_chainDirty) {
-        m_dynamic->setChain(*m_chain);
-        m_chainDirty = false;
-        m_levelDirty = m_level != nullptr;
-    }
-    if (m_levelDirty) {
-        m_dynamic->setShownLevel(*m_level);
-        m_levelDirty = false;
-    }
-    if (m_dynamicColorsDirty) {
-        // The designed mesh is the scene's only object, so the scene's colors are per mesh vertex.
-        m_dynamic->setShownVertexColors(m_vertexColors);
-        m_dynamicColorsDirty = false;
-    }
-    m_dynamic->render(camera, m_settings, size.width(), size.height());
-    m_dynamicStats = m_dynamic->lastStats();
-}
-
-void ViewportWidget::recordFrame(const Camera& camera, QSize size)
-{
-    const render::FrameStats& stats = m_renderer->lastStats();
-    m_trimCache = TrimImage(); // read again on demand: the frame changed
-    ViewportFrame frame{camera, m_settings, m_parameters.k, m_parameters, size, stats, std::nullopt, m_scene};
-    const render::FrameCounts& counts = stats.counts;
-    if (counts.overflowPixels > 0 || counts.unresolvedPixels > 0 || counts.fragmentsLost > 0) {
-        const std::optional<render::PixelOccupancy> occupancy = m_renderer->readOccupancy();
-        if (occupancy && !occupancy->held.empty())
-            frame.largestPixelCount = *std::max_element(occupancy->held.begin(), occupancy->held.end());
-    }
-    m_lastFrame = std::move(frame);
 }
 
 void ViewportWidget::clearToBackground()
@@ -660,7 +474,7 @@ void ViewportWidget::setError(const QString& message)
 double ViewportWidget::depthUnderCursor(QPointF position)
 {
     const double fallback = m_orbit.distance();
-    if (!m_lastFrame)
+    if (!m_view.lastFrame())
         return fallback;
     const TrimImage image = readTrimImage();
     const int x = int(std::floor(position.x() * devicePixelRatio()));

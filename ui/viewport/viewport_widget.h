@@ -36,14 +36,12 @@
 /// a size tries again.
 
 #include "ui/viewport/cpu_still_render.h"
-#include "render/dynamic_trim_renderer.h"
-#include "render/frame_policy.h"
-#include "render/frame_times.h"
 #include "ui/viewport/memory_estimate.h"
-#include "core/trim/dynamic_chain.h"
-#include "render/trim_renderer.h"
-#include "core/view/orbit_controller.h"
 #include "ui/viewport/viewport_tool.h"
+
+#include "render/viewport_renderer.h"
+
+#include "core/view/orbit_controller.h"
 
 #include <QImage>
 #include <QOpenGLWidget>
@@ -56,27 +54,10 @@
 
 namespace trimlab::ui {
 
-/// What the last successful frame was rendered with (for tests, exports and readbacks).
-struct ViewportFrame {
-    Camera camera;
-    TrimSettings settings;
-    int k = 0;
-    render::MethodParameters parameters; ///< the method is stats.method
-    QSize pixelSize; ///< device pixels, as passed to TrimRenderer::render
-    render::FrameStats stats;
-    /// When the frame lost fragments (overflowed or lost > 0) and the method keeps
-    /// per-pixel counts: the largest count (capped at k by methods that count only what
-    /// they hold). nullopt otherwise.
-    std::optional<std::uint32_t> largestPixelCount;
-    /// The scene as rendered (objects and model matrices), e.g. for the CPU reference.
-    std::shared_ptr<const Scene> scene;
-};
-
+/// What the last successful frame was rendered with (render/viewport_renderer.h).
+using ViewportFrame = render::ViewFrame;
 /// What ViewportWidget::measureMethod found.
-struct MethodMeasurement {
-    render::FrameTimes times;
-    render::FrameStats lastStats;
-};
+using MethodMeasurement = render::MethodMeasurement;
 
 class ViewportWidget : public QOpenGLWidget {
     Q_OBJECT
@@ -99,7 +80,7 @@ public:
     /// object or vertex count differs (use replaceScene then).
     void setSceneTransforms(std::shared_ptr<const Scene> scene);
     /// The scene shown (nullptr: none).
-    [[nodiscard]] const std::shared_ptr<const Scene>& scene() const { return m_scene; }
+    [[nodiscard]] const std::shared_ptr<const Scene>& scene() const { return m_view.scene(); }
     /// The box the camera's depth range must enclose and Fit frames (default: the
     /// scene's world bounds). An animation passes the bounds of all its poses, so that no
     /// pose reaches past the far plane. Re-renders; the camera itself is not moved.
@@ -115,7 +96,7 @@ public:
     /// palette from the next frame on; empty: back to the trim palette. Kept until
     /// setScene(). Throws std::invalid_argument on a count mismatch.
     void setVertexColors(std::vector<std::uint32_t> rgba8);
-    [[nodiscard]] bool showsVertexColors() const { return !m_vertexColors.empty(); }
+    [[nodiscard]] bool showsVertexColors() const { return m_view.showsVertexColors(); }
     /// The settings to render with. The caller passes trimEnabled = false for scenes that
     /// are not trimmable.
     void setTrimSettings(const TrimSettings& settings);
@@ -125,10 +106,10 @@ public:
     void setMethodParameters(const render::MethodParameters& parameters);
     /// Shorthand: the k of the parameters.
     void setK(int k);
-    [[nodiscard]] const TrimSettings& trimSettings() const { return m_settings; }
-    [[nodiscard]] render::FragmentMethodKind method() const { return m_policy.chosenMethod(); }
-    [[nodiscard]] const render::MethodParameters& methodParameters() const { return m_parameters; }
-    [[nodiscard]] int k() const { return m_parameters.k; }
+    [[nodiscard]] const TrimSettings& trimSettings() const { return m_view.trimSettings(); }
+    [[nodiscard]] render::FragmentMethodKind method() const { return m_view.policy().chosenMethod(); }
+    [[nodiscard]] const render::MethodParameters& methodParameters() const { return m_view.methodParameters(); }
+    [[nodiscard]] int k() const { return m_view.methodParameters().k; }
     /// The GPU memory the chosen method would hold at framePixelSize()
     /// (TrimRenderer::estimateMethodBytes); not available before the renderer exists.
     [[nodiscard]] MemoryEstimate memoryEstimate() const;
@@ -152,7 +133,7 @@ public:
     /// The size frames are rendered at: the widget size in device pixels.
     [[nodiscard]] QSize framePixelSize() const;
     /// The last successful frame, or nullopt before the first one.
-    [[nodiscard]] const std::optional<ViewportFrame>& lastFrame() const { return m_lastFrame; }
+    [[nodiscard]] const std::optional<ViewportFrame>& lastFrame() const { return m_view.lastFrame(); }
     /// The last frame's color image (top row first); null without a frame.
     [[nodiscard]] QImage readColorImage();
     /// The last frame's per-pixel answers; empty without a frame.
@@ -186,11 +167,14 @@ public:
     /// Replaces only the chain's shown level (same set, new positions: a brush drag).
     /// Ignored without a chain; the next setDynamicChain() drops it.
     void setDynamicShownLevel(std::shared_ptr<const DynamicChainLevel> level);
-    [[nodiscard]] bool rendersDynamicRules() const { return m_chain != nullptr; }
+    [[nodiscard]] bool rendersDynamicRules() const { return m_view.rendersDynamicRules(); }
     /// The chain's shown level as last set (setDynamicShownLevel or the chain's last).
-    [[nodiscard]] const DynamicChainLevel* dynamicShownLevel() const;
+    [[nodiscard]] const DynamicChainLevel* dynamicShownLevel() const { return m_view.dynamicShownLevel(); }
     /// The dynamic renderer's numbers of the last frame (nullopt for static frames).
-    [[nodiscard]] const std::optional<render::DynamicFrameStats>& lastDynamicStats() const { return m_dynamicStats; }
+    [[nodiscard]] const std::optional<render::DynamicFrameStats>& lastDynamicStats() const
+    {
+        return m_view.lastDynamicStats();
+    }
 
     /// The last frame's answer at the pixel under the logical widget position `position`
     /// (nullopt without a frame or outside it). The trim image is read back once per frame
@@ -204,9 +188,9 @@ public:
     /// Why the view cannot render ("" when it can).
     [[nodiscard]] const QString& errorMessage() const { return m_error; }
     /// The method frames actually use: the chosen one, or its memory fallback.
-    [[nodiscard]] render::FragmentMethodKind effectiveMethod() const { return m_policy.effectiveMethod(); }
+    [[nodiscard]] render::FragmentMethodKind effectiveMethod() const { return m_view.policy().effectiveMethod(); }
     /// True while the view shows the CPU reference because no GPU method fits.
-    [[nodiscard]] bool showsCpuStill() const { return m_policy.showsCpuStill(); }
+    [[nodiscard]] bool showsCpuStill() const { return m_view.policy().showsCpuStill(); }
     /// The CPU reference image shown in that mode (null before it is ready).
     [[nodiscard]] QImage cpuStillImage() const;
 
@@ -257,17 +241,11 @@ private:
 
     void releaseGl();
     void recreateContext();
-    void syncGpuScene();
     void applyPendingReset();
-    void renderFrame();
-    void renderWithFallbacks();
-    [[nodiscard]] render::FrameDemands frameDemands() const;
-    [[nodiscard]] bool applyRecovery(const render::FrameRecovery& recovery);
-    void paintCpuStill();
-    void renderDynamicFrame(const Camera& camera, QSize size);
     void applyMethod();
-    void recordFrame(const Camera& camera, QSize size);
-    void runMeasurement(render::FragmentMethodKind method, int frames, MethodMeasurement& result);
+    void renderFrame();
+    void applyRecovery(const render::FrameRecovery& recovery);
+    void paintCpuStill();
     void clearToBackground();
     void paintMessage(const QString& text);
     void setError(const QString& message);
@@ -279,34 +257,15 @@ private:
     [[nodiscard]] glm::dvec3 worldAtDepth(QPointF position, double depth) const;
 
     OrbitController m_orbit;
-    std::unique_ptr<render::TrimRenderer> m_renderer;
-    std::shared_ptr<const Scene> m_scene;
-    TrimSettings m_settings;
-    render::MethodParameters m_parameters;
-    bool m_sceneUploaded = false;
-    std::vector<glm::vec3> m_pose;              ///< object 0's positions; empty: the scene's
-    std::vector<std::uint32_t> m_vertexColors; ///< empty: the trim palette
-    bool m_poseDirty = false;
-    bool m_transformsDirty = false; ///< model matrices changed since the upload
-    bool m_colorsDirty = false;
+    /// The content, the renderers of the current context, the frame policy, the last frame.
+    render::ViewportRenderer m_view;
     bool m_resetPending = false;
-    std::optional<ViewportFrame> m_lastFrame;
     QString m_error;
     QString m_reportedError;
     ViewportTool* m_tool = nullptr;
-    std::unique_ptr<render::DynamicTrimRenderer> m_dynamic;
-    std::shared_ptr<const DynamicChain> m_chain;      ///< nullptr: static rule
-    std::shared_ptr<const DynamicChainLevel> m_level; ///< replaces the chain's last level
-    bool m_chainDirty = false;
-    bool m_dynamicColorsDirty = false; ///< m_vertexColors not yet on the dynamic renderer
-    bool m_levelDirty = false;
-    std::optional<render::DynamicFrameStats> m_dynamicStats;
     TrimImage m_trimCache; ///< the last frame's trim image once read (empty: not read)
-    /// The chosen method, its fallback, the CPU still and the resets in a row.
-    render::FramePolicy m_policy;
     int m_contextsInitialized = 0; ///< initializeGL() calls
     CpuStillRender* m_cpuStill = nullptr;
-    std::shared_ptr<const Scene> m_cpuScene; ///< m_scene with the pose applied, for the CPU still
     Drag m_drag = Drag::None;
     QPointF m_lastMouse;
     double m_grabDepth = 0.0;

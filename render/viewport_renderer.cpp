@@ -1,0 +1,274 @@
+#include "render/viewport_renderer.h"
+
+#include "render/frame/gpu_scene.h"
+#include "render/gl/gl_error.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace trimlab::render {
+
+ViewportRenderer::ViewportRenderer() = default;
+
+ViewportRenderer::~ViewportRenderer() = default;
+
+void ViewportRenderer::setScene(std::shared_ptr<const Scene> scene)
+{
+    m_scene = std::move(scene);
+    m_posedScene.reset();
+    m_sceneUploaded = false;
+    m_lastFrame.reset();
+    m_pose.clear();
+    m_vertexColors.clear();
+    m_chain.reset(); // a chain belongs to the previous scene's mesh
+    m_level.reset();
+    m_policy.reset();
+}
+
+void ViewportRenderer::setSceneTransforms(std::shared_ptr<const Scene> scene)
+{
+    if (!m_scene || !scene || scene->objects.size() != m_scene->objects.size())
+        throw std::invalid_argument("setSceneTransforms: the new scene does not have the shown scene's objects.");
+    for (std::size_t i = 0; i < scene->objects.size(); ++i) {
+        if (scene->objects[i].mesh.vertexCount() != m_scene->objects[i].mesh.vertexCount() ||
+            scene->objects[i].mesh.triangleCount() != m_scene->objects[i].mesh.triangleCount())
+            throw std::invalid_argument("setSceneTransforms: object " + std::to_string(i) +
+                                        " has another mesh than the one shown.");
+    }
+    m_scene = std::move(scene);
+    m_posedScene.reset();
+    m_transformsDirty = true;
+}
+
+void ViewportRenderer::showPose(const std::vector<glm::vec3>& positions)
+{
+    const std::size_t expected = m_scene && !m_scene->objects.empty() ? m_scene->objects.front().mesh.vertexCount() : 0;
+    if (positions.size() != expected || expected == 0)
+        throw std::invalid_argument("showPose: the scene's first object has " + std::to_string(expected) +
+                                    " vertices, the pose " + std::to_string(positions.size()) + ".");
+    m_pose = positions;
+    m_poseDirty = true;
+    m_posedScene.reset();
+}
+
+void ViewportRenderer::setVertexColors(std::vector<std::uint32_t> rgba8)
+{
+    std::size_t vertices = 0;
+    if (m_scene)
+        for (const SceneObject& object : m_scene->objects)
+            vertices += object.mesh.vertexCount();
+    if (!rgba8.empty() && rgba8.size() != vertices)
+        throw std::invalid_argument("setVertexColors: the scene has " + std::to_string(vertices) + " vertices, got " +
+                                    std::to_string(rgba8.size()) + " colors.");
+    m_vertexColors = std::move(rgba8);
+    m_colorsDirty = true;
+    m_dynamicColorsDirty = true;
+}
+
+std::shared_ptr<const Scene> ViewportRenderer::posedScene()
+{
+    if (!m_posedScene && m_scene) {
+        if (m_pose.empty()) {
+            m_posedScene = m_scene;
+        } else {
+            auto posed = std::make_shared<Scene>(*m_scene);
+            posed->objects.front().mesh.positions = m_pose;
+            m_posedScene = std::move(posed);
+        }
+    }
+    return m_posedScene;
+}
+
+void ViewportRenderer::setMethod(FragmentMethodKind method)
+{
+    m_policy.choose(method);
+}
+
+void ViewportRenderer::setMethodParameters(const MethodParameters& parameters)
+{
+    m_parameters = parameters;
+    m_parameters.k = std::clamp(parameters.k, 1, MethodParameters::kMaxK);
+    m_parameters.sharedCounters = std::max(parameters.sharedCounters, 1);
+    m_policy.reset();
+}
+
+void ViewportRenderer::setDynamicChain(std::shared_ptr<const DynamicChain> chain)
+{
+    m_chain = std::move(chain);
+    m_policy.clearStop();
+    m_level.reset();
+    m_chainDirty = m_chain != nullptr;
+    m_levelDirty = false;
+}
+
+void ViewportRenderer::setDynamicShownLevel(std::shared_ptr<const DynamicChainLevel> level)
+{
+    if (!m_chain)
+        return;
+    m_level = std::move(level);
+    m_levelDirty = m_level != nullptr;
+}
+
+const DynamicChainLevel* ViewportRenderer::dynamicShownLevel() const
+{
+    if (m_level)
+        return m_level.get();
+    return m_chain && !m_chain->levels.empty() ? &m_chain->levels.back() : nullptr;
+}
+
+void ViewportRenderer::initialize(QOpenGLContext& context)
+{
+    m_sceneUploaded = false;
+    m_renderer = std::make_unique<TrimRenderer>(context);
+    applyMethod();
+}
+
+void ViewportRenderer::release()
+{
+    m_dynamic.reset(); // its GL objects go first: it holds a reference to the renderer
+    m_renderer.reset();
+    m_sceneUploaded = false;
+    m_chainDirty = m_chain != nullptr;
+    m_levelDirty = m_level != nullptr;
+}
+
+void ViewportRenderer::applyMethod()
+{
+    m_renderer->setMethod(m_policy.effectiveMethod());
+    m_renderer->setParameters(m_parameters);
+}
+
+FrameDemands ViewportRenderer::frameDemands() const
+{
+    return {m_chain && m_settings.trimEnabled, needsInspectionMethod(m_settings)};
+}
+
+// Out of GPU memory (checked before allocating, or a failed allocation): the next method
+// of the fallback chain renders the frame; none left → the CPU still (frame_policy.h).
+bool ViewportRenderer::render(const Camera& camera, QSize size, GLuint framebuffer, const Notify& notify)
+{
+    for (;;) {
+        try {
+            renderFrame(camera, size, framebuffer);
+            m_policy.frameRendered();
+            return true;
+        } catch (const GpuMemoryError& e) {
+            const FrameRecovery recovery = m_policy.outOfMemory(e.what(), frameDemands());
+            m_lastFrame.reset();
+            if (recovery.action == FrameRecovery::Action::Refuse)
+                throw GpuMemoryError(recovery.message);
+            notify(recovery.message);
+            if (recovery.action == FrameRecovery::Action::CpuStill)
+                return false;
+        }
+    }
+}
+
+FrameRecovery ViewportRenderer::contextLost(const std::string& reason)
+{
+    m_lastFrame.reset();
+    return m_policy.contextLost(reason, frameDemands());
+}
+
+// Brings the renderer's scene buffers up to date: the scene itself after setScene() or a
+// new context, then the pose and colors when they changed or the scene was re-uploaded.
+void ViewportRenderer::syncGpuScene()
+{
+    if (!m_sceneUploaded) {
+        m_renderer->setScene(*m_scene);
+        m_sceneUploaded = true;
+        m_transformsDirty = false; // the upload carried the current matrices
+        m_poseDirty = !m_pose.empty();
+        m_colorsDirty = !m_vertexColors.empty();
+    }
+    if (m_transformsDirty) {
+        for (std::size_t i = 0; i < m_scene->objects.size(); ++i)
+            m_renderer->gpuScene().setModelMatrix(i, m_scene->objects[i].modelMatrix);
+        m_transformsDirty = false;
+    }
+    if (m_poseDirty) {
+        m_renderer->gpuScene().updatePositions(0, m_pose);
+        m_poseDirty = false;
+    }
+    if (m_colorsDirty) {
+        m_renderer->gpuScene().setVertexColors(m_vertexColors);
+        m_colorsDirty = false;
+    }
+}
+
+void ViewportRenderer::renderFrame(const Camera& camera, QSize size, GLuint framebuffer)
+{
+    syncGpuScene();
+    applyMethod();
+    if (m_chain && m_settings.trimEnabled) {
+        renderDynamicFrame(camera, size);
+    } else {
+        m_renderer->render(camera, m_settings, size.width(), size.height());
+        m_dynamicStats.reset();
+    }
+    m_renderer->blitTo(framebuffer);
+    recordFrame(camera, size);
+}
+
+// The chain's levels are uploaded only when the chain changed; a drag replaces only the
+// shown level, so the earlier sets' characterizations stay cached.
+void ViewportRenderer::renderDynamicFrame(const Camera& camera, QSize size)
+{
+    if (!m_dynamic) {
+        m_dynamic = std::make_unique<DynamicTrimRenderer>(*m_renderer);
+        m_dynamicColorsDirty = true;
+    }
+    if (m_chainDirty) {
+        m_dynamic->setChain(*m_chain);
+        m_chainDirty = false;
+        m_levelDirty = m_level != nullptr;
+    }
+    if (m_levelDirty) {
+        m_dynamic->setShownLevel(*m_level);
+        m_levelDirty = false;
+    }
+    if (m_dynamicColorsDirty) {
+        // The designed mesh is the scene's only object, so the scene's colors are per mesh vertex.
+        m_dynamic->setShownVertexColors(m_vertexColors);
+        m_dynamicColorsDirty = false;
+    }
+    m_dynamic->render(camera, m_settings, size.width(), size.height());
+    m_dynamicStats = m_dynamic->lastStats();
+}
+
+void ViewportRenderer::recordFrame(const Camera& camera, QSize size)
+{
+    const FrameStats& stats = m_renderer->lastStats();
+    ViewFrame frame{camera, m_settings, m_parameters.k, m_parameters, size, stats, std::nullopt, m_scene};
+    const FrameCounts& counts = stats.counts;
+    if (counts.overflowPixels > 0 || counts.unresolvedPixels > 0 || counts.fragmentsLost > 0) {
+        const std::optional<PixelOccupancy> occupancy = m_renderer->readOccupancy();
+        if (occupancy && !occupancy->held.empty())
+            frame.largestPixelCount = *std::max_element(occupancy->held.begin(), occupancy->held.end());
+    }
+    m_lastFrame = std::move(frame);
+}
+
+MethodMeasurement ViewportRenderer::measure(FragmentMethodKind method, int frames, const Camera& camera, QSize size)
+{
+    MethodMeasurement result;
+    try {
+        syncGpuScene();
+        m_renderer->setMethod(method);
+        m_renderer->setParameters(m_parameters);
+        m_renderer->render(camera, m_settings, size.width(), size.height()); // warm-up: shaders, storage
+        for (int i = 0; i < frames; ++i) {
+            m_renderer->render(camera, m_settings, size.width(), size.height());
+            result.times.add(m_renderer->lastStats());
+        }
+        result.lastStats = m_renderer->lastStats();
+    } catch (...) {
+        m_renderer->setMethod(m_policy.effectiveMethod());
+        throw;
+    }
+    m_renderer->setMethod(m_policy.effectiveMethod());
+    return result;
+}
+
+} // namespace trimlab::render
