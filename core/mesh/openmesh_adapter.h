@@ -4,7 +4,7 @@
 /// for connectivity work (adjacency walks, smoothing, contraction). Include this header
 /// only where OpenMesh is needed; mesh_io.h and triangle_mesh.h stay free of it.
 /// trimlab_core links OpenMesh privately, so a target including this header links
-/// `OpenMeshCore` itself (as tests/core/mesh_tests.cmake does).
+/// `OpenMeshCore` itself (as core.openmesh_adapter does in tests/core/CMakeLists.txt).
 
 #include "core/mesh/triangle_mesh.h"
 

@@ -1,4 +1,4 @@
-// Compiled with -ffp-contract=off (see trim/sources.cmake): the watertightness argument
+// Compiled with -ffp-contract=off (see core/trim/CMakeLists.txt): the watertightness argument
 // needs every vertex sheared by the same rounded operations in every triangle, and the
 // exact sign code needs plain IEEE additions and products.
 #include "core/trim/ray_triangle.h"

@@ -1,4 +1,4 @@
-// Compiled with -ffp-contract=off (see trim/sources.cmake), like ray_triangle.cpp.
+// Compiled with -ffp-contract=off (see core/trim/CMakeLists.txt), like ray_triangle.cpp.
 #include "core/trim/triangle_bvh.h"
 
 #include "core/scene/world_geometry.h"

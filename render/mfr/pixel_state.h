@@ -2,7 +2,7 @@
 /// \file
 /// The per-pixel state most multi-fragment methods share: a fragment counter, a spin-lock
 /// semaphore, the winding index at the span start and an overflow flag (four R32 images
-/// at the units of gl/bindings.h), with the clear pass (shaders/kplus_clear.comp).
+/// at the units of gl/bindings.h), with the clear pass (shaders/pixel_state_clear.comp).
 
 #include "render/gl/gl_functions.h"
 #include "render/gl/gl_objects.h"
