@@ -202,26 +202,26 @@ void MainWindow::createEditMenu()
 
 void MainWindow::createViewMenu()
 {
-    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    QMenu* view = menuBar()->addMenu(tr("&View"));
     // Single-key shortcuts act only while the viewport has focus (never while typing).
-    QAction* fit = m_viewMenu->addAction(tr("&Fit to View"), m_viewport, &ViewportWidget::fitToView);
+    QAction* fit = view->addAction(tr("&Fit to View"), m_viewport, &ViewportWidget::fitToView);
     fit->setShortcut(QKeySequence(Qt::Key_F));
     fit->setShortcutContext(Qt::WidgetShortcut);
     m_viewport->addAction(fit);
-    QAction* reset = m_viewMenu->addAction(tr("&Reset View"), m_viewport, &ViewportWidget::resetView);
+    QAction* reset = view->addAction(tr("&Reset View"), m_viewport, &ViewportWidget::resetView);
     reset->setShortcut(QKeySequence(Qt::Key_Home));
     reset->setShortcutContext(Qt::WidgetShortcut);
     m_viewport->addAction(reset);
-    m_viewMenu->addSeparator();
-    addDockToggle(m_viewMenu, m_render->dock(), tr("Render &Panel"));
-    addDockToggle(m_viewMenu, m_inspect->dock(), tr("S&cene Panel"));
-    addDockToggle(m_viewMenu, m_render->statsDock(), tr("Frame &Statistics"));
-    addDockToggle(m_viewMenu, m_animation->segmentationDock(), tr("Se&gmentation Panel"));
-    addDockToggle(m_viewMenu, m_animation->skinning()->dock(), tr("S&kinning Panel"));
-    addDockToggle(m_viewMenu, m_skeleton->dock(), tr("Ske&leton Panel"));
-    addDockToggle(m_viewMenu, m_animation->timelineDock(), tr("&Timeline"));
-    addDockToggle(m_viewMenu, m_design->brushDock(), tr("&Brush Panel"));
-    addDockToggle(m_viewMenu, m_design->timelineDock(), tr("&Deformation Timeline"));
+    view->addSeparator();
+    addDockToggle(view, m_render->dock(), tr("Render &Panel"));
+    addDockToggle(view, m_inspect->dock(), tr("S&cene Panel"));
+    addDockToggle(view, m_render->statsDock(), tr("Frame &Statistics"));
+    addDockToggle(view, m_animation->segmentationDock(), tr("Se&gmentation Panel"));
+    addDockToggle(view, m_animation->skinning()->dock(), tr("S&kinning Panel"));
+    addDockToggle(view, m_skeleton->dock(), tr("Ske&leton Panel"));
+    addDockToggle(view, m_animation->timelineDock(), tr("&Timeline"));
+    addDockToggle(view, m_design->brushDock(), tr("&Brush Panel"));
+    addDockToggle(view, m_design->timelineDock(), tr("&Deformation Timeline"));
 }
 
 void MainWindow::createHelpMenu()

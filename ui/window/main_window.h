@@ -41,10 +41,7 @@
 
 #include <memory>
 
-class QAction;
-class QMenu;
 class QSettings;
-class QToolBar;
 
 namespace trimlab::ui {
 
@@ -156,7 +153,6 @@ private:
     SurfaceWorkspace* m_surface = nullptr;
     SkeletonWorkspace* m_skeleton = nullptr;
     InspectWorkspace* m_inspect = nullptr;
-    QMenu* m_viewMenu = nullptr;
 };
 
 } // namespace trimlab::ui
