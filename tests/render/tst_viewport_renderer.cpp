@@ -1,11 +1,13 @@
 // The interactive view's renderer without the widget (render/viewport_renderer.h), on a
 // real context: the content it keeps on the CPU — the scene, a pose, vertex colours, the
 // dynamic rules' chain — goes into a new OpenGL context again and gives the same frame
-// (what recovering from a GPU reset relies on); out of memory it walks the fallback
+// (what recovering from a GPU reset relies on), which agrees with the exact CPU reference
+// of that content; out of memory it walks the fallback
 // chain with a notice per step, down to the CPU still or, under the dynamic rules, a
 // refusal; a new choice of parameters renders on the GPU again. The widget that carries
 // this out is tested in ui.context_loss and ui.method_panel.
 #include "gl_test_context.h"
+#include "method_check.h"
 
 #include "render/gl/gl_error.h"
 #include "render/viewport_renderer.h"
@@ -13,6 +15,8 @@
 #include "core/catalog/demo_scenes.h"
 #include "core/catalog/fig8_13_history.h"
 #include "core/timeline/frame_chain.h"
+#include "core/trim/dynamic_reference_renderer.h"
+#include "core/trim/reference_renderer.h"
 
 #include <QtTest>
 
@@ -42,6 +46,14 @@ int differingPixels(const TrimImage& a, const TrimImage& b)
                       : 0;
     }
     return differ;
+}
+
+/// The frame in `view`'s renderer against `reference` (test/method_check.h criteria).
+std::optional<QString> frameDisagreement(ViewportRenderer& view, const QString& name, const Camera& camera,
+                                         const TrimSettings& settings, const ReferenceResult& reference)
+{
+    const test::MethodCase testCase{name, camera, settings, view.methodParameters(), kSize.width(), kSize.height()};
+    return test::checkFrameAgainstReference(view.renderer(), testCase, reference, {});
 }
 
 int coveredPixels(const TrimImage& image)
@@ -117,6 +129,12 @@ void TestViewportRenderer::contentGoesIntoANewContext()
     const TrimImage again = renderFrame(view, camera);
     QCOMPARE(differingPixels(again, posed), 0);
     QVERIFY(view.renderer().readColor() == posedColor);
+    // What was uploaded again is the content itself: the posed scene's exact reference.
+    const ReferenceResult reference =
+        ReferenceRenderer(*view.posedScene()).render(camera, kSize.width(), kSize.height(), TrimSettings{});
+    const std::optional<QString> failure =
+        frameDisagreement(view, QStringLiteral("viewport_renderer_posed"), camera, TrimSettings{}, reference);
+    QVERIFY2(!failure, qPrintable(failure.value_or(QString())));
     view.release();
 }
 
@@ -147,6 +165,11 @@ void TestViewportRenderer::dynamicChainGoesIntoANewContext()
     const TrimImage again = renderFrame(view, camera);
     QVERIFY(view.lastDynamicStats().has_value());
     QCOMPARE(differingPixels(again, first), 0);
+    const ReferenceResult reference =
+        DynamicReferenceRenderer(*chain).render(camera, kSize.width(), kSize.height(), settings);
+    const std::optional<QString> failure =
+        frameDisagreement(view, QStringLiteral("viewport_renderer_dynamic"), camera, settings, reference);
+    QVERIFY2(!failure, qPrintable(failure.value_or(QString())));
     view.release();
 }
 
