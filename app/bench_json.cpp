@@ -1,6 +1,7 @@
 #include "app/bench_json.h"
 
-#include <QFile>
+#include "core/io/atomic_write.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -38,6 +39,7 @@ QJsonObject headerObject(const BenchHeader& header)
             {"repeat", header.repeat},
             {"k", header.parameters.k},
             {"sharedCounters", header.parameters.sharedCounters},
+            {"locks", header.locks},
             {"methods", methods},
             {"scenes", QJsonArray::fromStringList(header.scenes)}};
 }
@@ -45,7 +47,9 @@ QJsonObject headerObject(const BenchHeader& header)
 QString status(const BenchCell& cell)
 {
     if (!cell.rendered())
-        return cell.outOfMemory ? QStringLiteral("out-of-memory") : QStringLiteral("failed");
+        return cell.outOfMemory     ? QStringLiteral("out-of-memory")
+               : cell.notApplicable ? QStringLiteral("not-applicable")
+                                    : QStringLiteral("failed");
     return cell.violation.isEmpty() ? QStringLiteral("ok") : QStringLiteral("disagrees");
 }
 
@@ -63,6 +67,7 @@ void addMeasurements(QJsonObject& object, const BenchReport& report, const Bench
     object.insert("fullscreenPasses", cell.fullscreenPasses);
     object.insert("megabytes", cell.megabytes);
     object.insert("interlock", cell.interlock);
+    object.insert("lock", lockId(cell));
     object.insert("fragmentsInSpan", double(cell.fragmentsInSpan));
     object.insert("fragmentsStored", double(cell.fragmentsStored));
     object.insert("fragmentsLost", double(cell.fragmentsLost));
@@ -78,6 +83,9 @@ void addMeasurements(QJsonObject& object, const BenchReport& report, const Bench
     object.insert("ratioToF2B", optionalNumber(timeRatio(cell, findCell(report, cell, render::FragmentMethodKind::PeelingF2B))));
     object.insert("ratioToABLL",
                   optionalNumber(timeRatio(cell, findCell(report, cell, render::FragmentMethodKind::ABufferLinkedList))));
+    object.insert("ratioToInterlock", cell.usesLock && !cell.interlock
+                                          ? optionalNumber(timeRatio(cell, findInterlockCell(report, cell)))
+                                          : QJsonValue());
 }
 
 QJsonObject cellObject(const BenchReport& report, const BenchCell& cell)
@@ -113,10 +121,9 @@ QByteArray benchJson(const BenchReport& report)
 
 void writeBenchJson(const BenchReport& report, const QString& path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(benchJson(report)) < 0)
-        throw std::runtime_error(path.toStdString() + ": cannot write the JSON report (" +
-                                 file.errorString().toStdString() + ")");
+    // Through a temporary file and a rename: a killed run leaves an earlier report whole.
+    const QByteArray json = benchJson(report);
+    timeline::writeFileAtomically(path.toStdString(), std::string_view(json.constData(), std::size_t(json.size())));
 }
 
 } // namespace trimlab::app

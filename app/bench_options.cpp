@@ -41,6 +41,10 @@ void addBenchOptions(QCommandLineParser& parser)
         {"repeat", "Timed frames per view (after one untimed warm-up frame per method). Default: 5.", "N"},
         {"views", "Cameras on the orbit around each scene. Default: 8.", "N"},
         {"threads", "Worker threads of the CPU reference (0 = all cores).", "N"},
+        {"locks", "The k⁺-buffer family's per-pixel critical section: auto (fragment shader interlock where the "
+                  "driver has it), spin (always the spin-lock) or both (auto, and each method that used interlock "
+                  "measured again with the spin-lock). Default: auto.",
+         "auto|spin|both"},
         {"json", "Also write the results as JSON.", "file.json"},
         {"data", "The shared data folder with the catalog's meshes. Default: $TRIMLAB_DATA_DIR or ../shared/data "
                  "beside the source tree.",
@@ -99,6 +103,20 @@ std::optional<QString> parseScenes(const QString& text, BenchOptions& options)
     return std::nullopt;
 }
 
+std::optional<QString> parseLocks(const QString& text, BenchOptions& options)
+{
+    if (text == QLatin1String("auto"))
+        options.locks = BenchLocks::Auto;
+    else if (text == QLatin1String("spin"))
+        options.locks = BenchLocks::SpinLock;
+    else if (text == QLatin1String("both"))
+        options.locks = BenchLocks::Both;
+    else
+        return QStringLiteral("--locks must be auto, spin or both, not '%1'").arg(text);
+    options.parameters.allowInterlock = options.locks != BenchLocks::SpinLock;
+    return std::nullopt;
+}
+
 std::optional<QString> parseNumbers(const QCommandLineParser& parser, BenchOptions& options)
 {
     if (parser.isSet("k"))
@@ -113,6 +131,9 @@ std::optional<QString> parseNumbers(const QCommandLineParser& parser, BenchOptio
             return e;
     if (parser.isSet("views"))
         if (auto e = parseIntegerOption("views", parser.value("views"), 1, 360, options.views))
+            return e;
+    if (parser.isSet("locks"))
+        if (auto e = parseLocks(parser.value("locks"), options))
             return e;
     if (parser.isSet("threads")) {
         int threads = 0;

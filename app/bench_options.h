@@ -14,6 +14,13 @@
 
 namespace trimlab::app {
 
+/// --locks: which per-pixel critical section the k⁺-buffer family is measured with.
+enum class BenchLocks {
+    Auto,     ///< fragment shader interlock where the driver has it, else the spin-lock
+    SpinLock, ///< always the spin-lock
+    Both,     ///< as Auto, and where that used interlock, the same method again with the spin-lock
+};
+
 struct BenchOptions {
     /// --scenes: catalog names (bench_scenes.h), demo:NAME or mesh files; empty: the catalog.
     QStringList scenes;
@@ -26,6 +33,7 @@ struct BenchOptions {
     int repeat = 5;          ///< --repeat: timed frames per view
     int views = 8;           ///< --views: cameras on the orbit around each scene
     unsigned threads = 0;    ///< --threads of the CPU reference; 0 = all cores
+    BenchLocks locks = BenchLocks::Auto;
     QString jsonOutput;      ///< --json FILE
     QString dataDirectory;   ///< --data DIR: where the catalog's mesh files are
 };

@@ -10,6 +10,14 @@ const BenchCell* findCell(const BenchReport& report, const BenchCell& cell, rend
     return nullptr;
 }
 
+const BenchCell* findInterlockCell(const BenchReport& report, const BenchCell& cell)
+{
+    for (const BenchCell& other : report.cells)
+        if (other.method == cell.method && other.scene == cell.scene && other.size == cell.size && other.interlock)
+            return &other;
+    return nullptr;
+}
+
 std::optional<double> timeRatio(const BenchCell& cell, const BenchCell* base)
 {
     if (!base || !cell.rendered() || !base->rendered() || cell.times.frames() == 0 || base->times.frames() == 0)
@@ -20,6 +28,13 @@ std::optional<double> timeRatio(const BenchCell& cell, const BenchCell* base)
     if (denominator <= 0.0)
         return std::nullopt;
     return numerator / denominator;
+}
+
+QString lockId(const BenchCell& cell)
+{
+    if (!cell.usesLock)
+        return QStringLiteral("none");
+    return cell.interlock ? QStringLiteral("interlock") : QStringLiteral("spin-lock");
 }
 
 QString methodId(render::FragmentMethodKind method)

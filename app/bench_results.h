@@ -27,12 +27,16 @@ struct BenchCell {
     /// meaningful.
     QString error;
     bool outOfMemory = false;      ///< the error was a GpuMemoryError (reported, not a failure)
+    /// The method cannot render the scene's settings by design (peeling and CSG); `error`
+    /// says why. Reported, not a failure.
+    bool notApplicable = false;
     render::FrameTimes times;      ///< every timed frame of every view
     int views = 0;
     int geometryPasses = 0;        ///< most over the views
     int fullscreenPasses = 0;      ///< most over the views
     double megabytes = 0.0;        ///< most over the views (method + target + scene)
     bool interlock = false;        ///< the last frame used fragment shader interlock
+    bool usesLock = false;         ///< the method has a per-pixel critical section (k⁺-buffer family)
     /// Frame counters of the last frame of each view, summed over the views.
     std::uint64_t fragmentsInSpan = 0;
     std::uint64_t fragmentsStored = 0;
@@ -46,7 +50,10 @@ struct BenchCell {
     QString violation;
 
     [[nodiscard]] bool rendered() const { return error.isEmpty(); }
-    [[nodiscard]] bool failed() const { return !violation.isEmpty() || (!rendered() && !outOfMemory); }
+    [[nodiscard]] bool failed() const
+    {
+        return !violation.isEmpty() || (!rendered() && !outOfMemory && !notApplicable);
+    }
 };
 
 struct BenchHeader {
@@ -60,6 +67,7 @@ struct BenchHeader {
     render::MethodParameters parameters;
     std::vector<render::FragmentMethodKind> methods;
     QStringList scenes;       ///< the scenes measured, in order
+    QString locks;            ///< --locks: "auto", "spin" or "both"
 };
 
 struct BenchSkip {
@@ -76,9 +84,14 @@ struct BenchReport {
 /// The cell of `method` for the same scene and size as `cell`, or nullptr.
 [[nodiscard]] const BenchCell* findCell(const BenchReport& report, const BenchCell& cell,
                                         render::FragmentMethodKind method);
+/// The cell of the same method, scene and size measured with fragment shader interlock, or
+/// nullptr (the spin-lock cells of `--locks both` are compared with it).
+[[nodiscard]] const BenchCell* findInterlockCell(const BenchReport& report, const BenchCell& cell);
 /// Time of `cell` divided by the time of `base` (both rendered): GPU medians when both
 /// are GPU-timed, else wall medians. nullopt when either is missing or did not render.
 [[nodiscard]] std::optional<double> timeRatio(const BenchCell& cell, const BenchCell* base);
+/// "interlock", "spin-lock" or "none": the critical section the cell was measured with.
+[[nodiscard]] QString lockId(const BenchCell& cell);
 /// "kplus-array": the method's stable id.
 [[nodiscard]] QString methodId(render::FragmentMethodKind method);
 

@@ -4,6 +4,7 @@
 #include "app/cli_messages.h"
 
 #include "render/gl/gl_error.h"
+#include "render/trim_renderer.h"
 #include "core/trim/reference_renderer.h"
 
 #include <QElapsedTimer>
@@ -26,12 +27,26 @@ void addFrame(BenchCell& cell, const render::FrameStats& stats)
     cell.fullscreenPasses = std::max(cell.fullscreenPasses, stats.methodStats.fullscreenPasses);
     cell.megabytes = std::max(cell.megabytes, stats.bufferMegabytes);
     cell.interlock = stats.methodStats.interlock;
+    cell.usesLock = stats.methodStats.usesLock;
     cell.fragmentsInSpan += stats.counts.fragmentsInSpan;
     cell.fragmentsStored += stats.counts.fragmentsStored;
     cell.fragmentsLost += stats.counts.fragmentsLost;
     cell.overflowPixels += stats.counts.overflowPixels;
     cell.unresolvedPixels += stats.counts.unresolvedPixels;
     cell.spinGiveUps += stats.counts.spinGiveUps;
+}
+
+/// A method that never holds all of a pixel's fragments at once cannot walk them for CSG,
+/// highlighting or transparency (render/trim_renderer.h); the bench says so and goes on.
+BenchCell notApplicableCell(render::FragmentMethodKind method, const BenchScene& scene, QSize size)
+{
+    BenchCell cell;
+    cell.scene = QString::fromStdString(scene.name);
+    cell.size = size;
+    cell.method = method;
+    cell.notApplicable = true;
+    cell.error = QStringLiteral("holds too few of a pixel's fragments at once for CSG, highlighting or transparency");
+    return cell;
 }
 
 QString sizeText(QSize size)
@@ -54,13 +69,28 @@ void BenchRunner::measureScene(const BenchScene& scene, BenchReport& report)
         QElapsedTimer clock;
         clock.start();
         const std::vector<ViewReference> views = referenceViews(reference, scene, size);
-        printNote(QStringLiteral("%1 at %2: %3 views, CPU reference %4 s; measuring %5 methods")
-                      .arg(QString::fromStdString(scene.name), sizeText(size))
+        printNote(QStringLiteral("%1 (%L2 triangles, %3 objects) at %4: %5 views, CPU reference %6 s; measuring %7 methods")
+                      .arg(QString::fromStdString(scene.name))
+                      .arg(qulonglong(scene.loaded.scene.triangleCount()))
+                      .arg(scene.loaded.scene.objects.size())
+                      .arg(sizeText(size))
                       .arg(views.size())
                       .arg(double(clock.elapsed()) / 1000.0, 0, 'f', 1)
                       .arg(m_options.methods.size()));
-        for (const render::FragmentMethodKind method : m_options.methods)
-            report.cells.push_back(measureMethod(method, scene, size, reference, views));
+        for (const render::FragmentMethodKind method : m_options.methods) {
+            if (render::needsInspectionMethod(scene.settings) && !render::methodInfo(method).inspection) {
+                report.cells.push_back(notApplicableCell(method, scene, size));
+                continue;
+            }
+            render::MethodParameters parameters = m_options.parameters;
+            report.cells.push_back(measureMethod(method, parameters, scene, size, reference, views));
+            // Interlock against the spin-lock (thesis 5.2.2) on the same frames, where the
+            // driver offers the choice.
+            if (m_options.locks == BenchLocks::Both && report.cells.back().interlock) {
+                parameters.allowInterlock = false;
+                report.cells.push_back(measureMethod(method, parameters, scene, size, reference, views));
+            }
+        }
     }
 }
 
@@ -76,7 +106,8 @@ std::vector<BenchRunner::ViewReference> BenchRunner::referenceViews(const Refere
     return views;
 }
 
-BenchCell BenchRunner::measureMethod(render::FragmentMethodKind method, const BenchScene& scene, QSize size,
+BenchCell BenchRunner::measureMethod(render::FragmentMethodKind method, const render::MethodParameters& parameters,
+                                     const BenchScene& scene, QSize size,
                                      const ReferenceRenderer& reference, const std::vector<ViewReference>& views)
 {
     BenchCell cell;
@@ -85,7 +116,7 @@ BenchCell BenchRunner::measureMethod(render::FragmentMethodKind method, const Be
     cell.method = method;
     try {
         m_renderer.setMethod(method);
-        m_renderer.setParameters(m_options.parameters);
+        m_renderer.setParameters(parameters);
         if (!views.empty()) // warm-up: shader build and storage allocation are not timed
             m_renderer.render(views.front().camera, scene.settings, size.width(), size.height());
         for (std::size_t i = 0; i < views.size(); ++i)

@@ -29,7 +29,8 @@ private:
 
     [[nodiscard]] std::vector<ViewReference> referenceViews(const ReferenceRenderer& reference,
                                                             const BenchScene& scene, QSize size) const;
-    [[nodiscard]] BenchCell measureMethod(render::FragmentMethodKind method, const BenchScene& scene, QSize size,
+    [[nodiscard]] BenchCell measureMethod(render::FragmentMethodKind method, const render::MethodParameters& parameters,
+                                          const BenchScene& scene, QSize size,
                                           const ReferenceRenderer& reference,
                                           const std::vector<ViewReference>& views);
     void measureView(BenchCell& cell, const BenchScene& scene, const ReferenceRenderer& reference,

@@ -1,6 +1,10 @@
 #include "app/bench_scenes.h"
 
+#include "core/mesh/loop_subdivision.h"
 #include "core/mesh/mesh_validation.h"
+#include "core/trim/csg_expression.h"
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <array>
@@ -11,7 +15,7 @@ namespace trimlab::app {
 namespace {
 
 /// How a catalog scene is built.
-enum class Kind { Demo, File, BunnyInCube };
+enum class Kind { Demo, File, BunnyInCube, CsgOfThree };
 
 struct CatalogEntry {
     const char* name;
@@ -23,8 +27,11 @@ struct CatalogEntry {
 };
 
 constexpr const char* kBunny = "static/odedstein-bunny.obj.gz";
+constexpr const char* kBunnyHr = "static/odedstein-bunny_hr.obj.gz";
+constexpr const char* kDragon = "selfintersect/quartet-dragon.obj.gz";
+constexpr const char* kElephant = "anim/elephant-gallop/elephant-gallop-05.obj.gz";
 
-constexpr std::array<CatalogEntry, 10> kCatalog = {{
+constexpr std::array<CatalogEntry, 11> kCatalog = {{
     {"demo:pushed-sphere", Kind::Demo, "demo:pushed-sphere", StaticRule::AlternatingBorder, true, 1.0},
     {"demo:crossing-loop", Kind::Demo, "demo:crossing-loop", StaticRule::AlternatingBorder, false, 1.0},
     {"demo:nested-spheres", Kind::Demo, "demo:nested-spheres", StaticRule::Parity, true, 1.0},
@@ -32,11 +39,26 @@ constexpr std::array<CatalogEntry, 10> kCatalog = {{
     {"bunny-cube-50", Kind::BunnyInCube, kBunny, StaticRule::Parity, false, 0.50},
     {"bunny-cube-75", Kind::BunnyInCube, kBunny, StaticRule::Parity, false, 0.75},
     {"bunny-cube-100", Kind::BunnyInCube, kBunny, StaticRule::Parity, false, 1.0},
-    {"bunny-hr", Kind::File, "static/odedstein-bunny_hr.obj.gz", StaticRule::AlternatingBorder, false, 1.0},
-    {"elephant-gallop", Kind::File, "anim/elephant-gallop/elephant-gallop-05.obj.gz", StaticRule::AlternatingBorder,
-     false, 1.0},
-    {"dragon", Kind::File, "selfintersect/quartet-dragon.obj.gz", StaticRule::AlternatingBorder, false, 1.0},
+    {"bunny-hr", Kind::File, kBunnyHr, StaticRule::AlternatingBorder, false, 1.0},
+    {"elephant-gallop", Kind::File, kElephant, StaticRule::AlternatingBorder, false, 1.0},
+    {"dragon", Kind::File, kDragon, StaticRule::AlternatingBorder, false, 1.0},
+    {"csg3-500k", Kind::CsgOfThree, kDragon, StaticRule::AlternatingBorder, false, 1.0},
 }};
+
+/// The files a catalog entry reads from the data folder (none for a demo).
+std::vector<std::string> entryFiles(const CatalogEntry& entry)
+{
+    switch (entry.kind) {
+    case Kind::Demo:
+        return {};
+    case Kind::CsgOfThree:
+        return {kDragon, kBunnyHr, kElephant};
+    case Kind::File:
+    case Kind::BunnyInCube:
+        break;
+    }
+    return {entry.source};
+}
 
 const CatalogEntry* findEntry(const std::string& name)
 {
@@ -79,8 +101,61 @@ void addEnclosingCube(LoadedScene& loaded, TrimSettings& settings, double keptFr
         settings.clip = ClipPlane{true, {0.0, -1.0, 0.0}, min.y + keptFraction * (max.y - min.y)};
 }
 
+/// `mesh`'s model matrix that puts its bounding box's centre at `center` with its largest
+/// extent equal to `size` (uniform scale, no rotation).
+glm::dmat4 fitInto(const TriangleMesh& mesh, const glm::dvec3& center, double size)
+{
+    const Bounds bounds = computeBounds(mesh);
+    const glm::dvec3 extent = bounds.max - bounds.min;
+    const double scale = size / std::max({extent.x, extent.y, extent.z});
+    return glm::scale(glm::translate(glm::dmat4(1.0), center), glm::dvec3(scale)) *
+           glm::translate(glm::dmat4(1.0), -bounds.center());
+}
+
+/// The GPU goal scene of docs/gpu-results.md: about half a million triangles, three CSG
+/// operands, trimming, a clipping plane with a hatched cap. The self-crossing dragon once
+/// Loop-subdivided (400k triangles, alternating border) united with the elephant (85k) and
+/// minus the high-resolution bunny (60k), both parity and placed so that they cross the
+/// dragon's body; the plane z <= centre cuts all three open.
+BenchScene csgOfThree(const std::string& name, const std::filesystem::path& dataDirectory)
+{
+    BenchScene scene{name, loadScene((dataDirectory / kDragon).string()), {}};
+    SceneObject& dragon = scene.loaded.scene.objects.at(0);
+    dragon.mesh = loopSubdivide(dragon.mesh, 1);
+    scene.loaded.reports.at(0) = validateMesh(dragon.mesh);
+    const Bounds bounds = scene.loaded.scene.worldBounds();
+    const glm::dvec3 extent = bounds.max - bounds.min;
+    const double size = std::max({extent.x, extent.y, extent.z});
+    const glm::dvec3 offset(0.2 * extent.x, 0.0, 0.0);
+    const std::array<std::pair<const char*, glm::dvec3>, 2> others = {{
+        {kElephant, bounds.center() + offset}, // operand 1
+        {kBunnyHr, bounds.center() - offset},  // operand 2
+    }};
+    for (const auto& [file, center] : others) {
+        LoadedScene other = loadScene((dataDirectory / file).string());
+        SceneObject object = std::move(other.scene.objects.at(0));
+        object.modelMatrix = fitInto(object.mesh, center, 0.55 * size);
+        scene.loaded.reports.push_back(validateMesh(object.mesh));
+        scene.loaded.scene.objects.push_back(std::move(object));
+    }
+    scene.settings.rule = StaticRule::AlternatingBorder;
+    std::string error;
+    const std::optional<CsgExpression> expression = parseCsgExpression("(0 | 1) - 2", &error);
+    if (!expression)
+        throw std::logic_error("csg3-500k: " + error);
+    scene.settings.csg.expression = *expression;
+    scene.settings.csg.objectRules[1] = StaticRule::Parity;
+    scene.settings.csg.objectRules[2] = StaticRule::Parity;
+    scene.settings.clip = ClipPlane{true, {0.0, 0.0, -1.0}, bounds.center().z};
+    scene.settings.cap.enabled = true;
+    scene.settings.cap.spacing = size / 80.0;
+    return scene;
+}
+
 BenchScene fromCatalog(const CatalogEntry& entry, const std::filesystem::path& dataDirectory)
 {
+    if (entry.kind == Kind::CsgOfThree)
+        return csgOfThree(entry.name, dataDirectory);
     const std::string source = entry.kind == Kind::Demo ? entry.source : (dataDirectory / entry.source).string();
     BenchScene scene{entry.name, loadScene(source), {}};
     scene.settings.rule = entry.rule;
@@ -122,10 +197,12 @@ std::optional<BenchScene> loadBenchScene(const std::string& name, const std::fil
         scene.settings.trimEnabled = scene.loaded.trimmable();
         return scene;
     }
-    if (entry->kind != Kind::Demo && !std::filesystem::exists(dataDirectory / entry->source)) {
+    for (const std::string& file : entryFiles(*entry)) {
+        if (std::filesystem::exists(dataDirectory / file))
+            continue;
         if (skipReason)
-            *skipReason = (dataDirectory / entry->source).string() + " is missing (the bench reads the shared data "
-                                                                     "folder; point --data or TRIMLAB_DATA_DIR at it)";
+            *skipReason = (dataDirectory / file).string() + " is missing (the bench reads the shared data "
+                                                            "folder; point --data or TRIMLAB_DATA_DIR at it)";
         return std::nullopt;
     }
     BenchScene scene = fromCatalog(*entry, dataDirectory);

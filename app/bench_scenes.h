@@ -7,7 +7,10 @@
 ///   test, Figure 5.3), parity rule, with a horizontal clipping plane keeping the lower
 ///   25 %, 50 %, 75 % or all of the cube: from few pixels with deep fragment lists to many;
 /// - bunny-hr (60k triangles), elephant-gallop (85k) and dragon (quartet's 100k-triangle
-///   dragon), alternating border rule, unclipped: the densest models.
+///   dragon), alternating border rule, unclipped: the densest models;
+/// - csg3-500k (545k triangles): the dragon once Loop-subdivided, united with the elephant
+///   and minus the bunny-hr, cut open by a plane and capped: the GPU goal scene of
+///   docs/gpu-results.md (trimming, three-operand CSG and capping at once).
 /// The file scenes read third-party meshes from the shared data folder (../shared/data
 /// next to the source tree, or --data DIR); the app itself never needs it, so a missing
 /// file only skips its scene. Any other demo:NAME or mesh file is accepted too and drawn

@@ -12,10 +12,11 @@ struct Column {
     bool left; ///< left-aligned text, else right-aligned numbers
 };
 
-constexpr std::array<Column, 15> kColumns = {{
+constexpr std::array<Column, 17> kColumns = {{
     {"scene", 20, true},
     {"size", 10, true},
     {"method", 20, true},
+    {"lock", 9, true},
     {"ms/frame", 9, false},
     {"time", 5, true},
     {"passes", 6, false},
@@ -28,6 +29,7 @@ constexpr std::array<Column, 15> kColumns = {{
     {"agree %", 8, false},
     {"vs F2B", 7, false},
     {"vs AB_LL", 8, false},
+    {"vs ilock", 8, false},
 }};
 
 QString formatRow(const QStringList& fields)
@@ -52,10 +54,13 @@ QString sizeText(QSize size)
 
 QString cellLine(const BenchReport& report, const BenchCell& cell)
 {
-    const QStringList identity{cell.scene, sizeText(cell.size), methodId(cell.method)};
+    const QStringList identity{cell.scene, sizeText(cell.size), methodId(cell.method),
+                               cell.rendered() ? lockId(cell) : QStringLiteral("-")};
     if (!cell.rendered())
         return formatRow(identity) + QStringLiteral("  %1: %2").arg(
-                                         cell.outOfMemory ? QStringLiteral("out of GPU memory") : QStringLiteral("failed"),
+                                         cell.outOfMemory     ? QStringLiteral("out of GPU memory")
+                                         : cell.notApplicable ? QStringLiteral("not applicable")
+                                                              : QStringLiteral("failed"),
                                          cell.error.section(QLatin1Char('\n'), 0, 0));
     const QString agreement = QString::number(100.0 * cell.agreement.agreement(), 'f', 3) +
                               (cell.violation.isEmpty() ? QString() : QStringLiteral("!"));
@@ -73,6 +78,8 @@ QString cellLine(const BenchReport& report, const BenchCell& cell)
                                     ratioText(timeRatio(cell, findCell(report, cell, render::FragmentMethodKind::PeelingF2B))),
                                     ratioText(timeRatio(cell, findCell(report, cell,
                                                                        render::FragmentMethodKind::ABufferLinkedList))),
+                                    cell.usesLock && !cell.interlock ? ratioText(timeRatio(cell, findInterlockCell(report, cell)))
+                                                                     : QStringLiteral("-"),
                                 });
 }
 
@@ -111,7 +118,10 @@ QStringList benchHeaderLines(const BenchHeader& header)
                        "summed over the views"),
         QStringLiteral("agree %: pixels agreeing with the CPU reference over all views (criteria of the render "
                        "tests per view: >= 99.9 %, <= 5 % excluded; '!' marks a failing view)"),
-        QStringLiteral("vs F2B, vs AB_LL: this method's time / theirs in this run (n/a: not run or not rendered)"),
+        QStringLiteral("lock: the k⁺-buffer family's critical section (interlock = GL_ARB_fragment_shader_interlock); "
+                       "--locks both measures each method that used interlock again with the spin-lock"),
+        QStringLiteral("vs F2B, vs AB_LL: this method's time / theirs in this run (n/a: not run or not rendered); "
+                       "vs ilock: a spin-lock cell's time / the same method's with interlock in this run"),
     };
 }
 

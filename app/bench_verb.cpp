@@ -32,6 +32,9 @@ BenchHeader makeHeader(const BenchOptions& options, const render::TrimRenderer& 
     header.repeat = options.repeat;
     header.parameters = options.parameters;
     header.methods = options.methods;
+    header.locks = options.locks == BenchLocks::Auto       ? QStringLiteral("auto")
+                   : options.locks == BenchLocks::SpinLock ? QStringLiteral("spin")
+                                                           : QStringLiteral("both");
     return header;
 }
 

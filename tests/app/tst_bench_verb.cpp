@@ -53,6 +53,8 @@ private slots:
     void badArgumentsExitWithTwo_data();
     void badArgumentsExitWithTwo();
     void missingSharedDataSkipsTheScene();
+    void csgGoalSceneSkipsPeelingAndAgrees();
+    void spinLocksOnlyMeasuresTheSpinLock();
 
 private:
     QTemporaryDir m_dir;
@@ -108,6 +110,13 @@ void TestBenchVerb::demoSceneAgreesForEveryMethod()
         QCOMPARE(result.value("views").toInt(), 8);
         const QString source = result.value("timeSource").toString();
         QVERIFY(source == QLatin1String("GPU") || source == QLatin1String("wall"));
+        // The k⁺-buffer family reports its critical section; no other method has one.
+        const bool locking = method.startsWith(QStringLiteral("kplus"));
+        const QString lock = result.value("lock").toString();
+        QVERIFY2(locking ? (lock == QLatin1String("spin-lock") || lock == QLatin1String("interlock"))
+                         : lock == QLatin1String("none"),
+                 qPrintable(method + ": lock " + lock));
+        QCOMPARE(result.value("interlock").toBool(), lock == QLatin1String("interlock"));
     }
 }
 
@@ -140,6 +149,7 @@ void TestBenchVerb::badArgumentsExitWithTwo_data()
     QTest::newRow("unknown scene") << QStringList{"bench", "--scenes", "teapot"} << "teapot";
     QTest::newRow("bad size") << QStringList{"bench", "--size", "160x"} << "--size";
     QTest::newRow("bad repeat") << QStringList{"bench", "--repeat", "0"} << "--repeat";
+    QTest::newRow("bad locks") << QStringList{"bench", "--locks", "sometimes"} << "--locks";
     QTest::newRow("bad shared counters") << QStringList{"bench", "--shared-counters", "0"} << "--shared-counters";
 }
 
@@ -168,6 +178,56 @@ void TestBenchVerb::missingSharedDataSkipsTheScene()
     QCOMPARE(report.value("results").toArray().size(), 0);
     QCOMPARE(report.value("skipped").toArray().first().toObject().value("scene").toString(),
              QStringLiteral("bunny-cube-50"));
+}
+
+// The GPU goal scene (docs/gpu-results.md): three CSG operands, 544,302 triangles, a cap.
+// The peeling methods cannot walk a pixel's fragments for CSG: they are reported as not
+// applicable, which is no failure; the k⁺-buffer agrees with the CPU reference.
+void TestBenchVerb::csgGoalSceneSkipsPeelingAndAgrees()
+{
+    const QString json = m_dir.filePath(QStringLiteral("csg3.json"));
+    const Run run = runBench({"bench", "--scenes", "csg3-500k", "--size", "96x72", "--repeat", "1", "--views", "2",
+                                "--methods", "kplus-array,peeling-dual", "--locks", "both", "--json", json});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
+    QVERIFY2(run.err.contains(QStringLiteral("csg3-500k (544,302 triangles, 3 objects)")), qPrintable(run.err));
+    QFile file(json);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonObject report = QJsonDocument::fromJson(file.readAll()).object();
+    QCOMPARE(report.value("header").toObject().value("locks").toString(), QStringLiteral("both"));
+    const QJsonArray results = report.value("results").toArray();
+    QVERIFY(results.size() >= 2); // a third cell where the driver has interlock: kplus-array with the spin-lock
+    bool sawSpinLock = false;
+    for (const QJsonValue& value : results) {
+        const QJsonObject result = value.toObject();
+        const QString method = result.value("method").toString();
+        if (method == QLatin1String("peeling-dual")) {
+            QCOMPARE(result.value("status").toString(), QStringLiteral("not-applicable"));
+            continue;
+        }
+        QCOMPARE(method, QStringLiteral("kplus-array"));
+        QCOMPARE(result.value("status").toString(), QStringLiteral("ok"));
+        QVERIFY2(result.value("agreementPercent").toDouble() >= 99.9, qPrintable(method));
+        QVERIFY(result.value("comparedPixels").toInt() > 500);
+        sawSpinLock = sawSpinLock || result.value("lock").toString() == QLatin1String("spin-lock");
+    }
+    QVERIFY2(sawSpinLock, "--locks both always measures the spin-lock");
+    QVERIFY2(tableRows(run.out, QStringLiteral("csg3-500k")).join('\n').contains(QStringLiteral("not applicable")),
+             qPrintable(run.out));
+}
+
+// --locks spin never uses interlock, whatever the driver offers.
+void TestBenchVerb::spinLocksOnlyMeasuresTheSpinLock()
+{
+    const QString json = m_dir.filePath(QStringLiteral("spin.json"));
+    const Run run = runBench({"bench", "--scenes", "demo:sphere", "--size", "64x48", "--repeat", "1", "--views", "1",
+                                "--methods", "kplus-array,kplus-sbuffer", "--locks", "spin", "--json", json});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
+    QFile file(json);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonArray results = QJsonDocument::fromJson(file.readAll()).object().value("results").toArray();
+    QCOMPARE(results.size(), 2);
+    for (const QJsonValue& value : results)
+        QCOMPARE(value.toObject().value("lock").toString(), QStringLiteral("spin-lock"));
 }
 
 QTEST_GUILESS_MAIN(TestBenchVerb)
