@@ -4,14 +4,25 @@
 
 namespace trimlab::test {
 
+namespace {
+
+/// The folder named by `variable` when it is set and not empty, else the one compiled in.
+std::filesystem::path folder(const char* variable, const char* builtIn)
+{
+    const char* fromEnvironment = std::getenv(variable);
+    return fromEnvironment && *fromEnvironment ? std::filesystem::path(fromEnvironment) : std::filesystem::path(builtIn);
+}
+
+} // namespace
+
 std::filesystem::path testDataPath(const std::string& relative)
 {
-    return std::filesystem::path(TRIMLAB_TEST_DATA_DIR) / relative;
+    return folder("TRIMLAB_TEST_DATA_DIR", TRIMLAB_TEST_DATA_DIR) / relative;
 }
 
 std::filesystem::path sharedDataPath(const std::string& relative)
 {
-    return std::filesystem::path(TRIMLAB_SHARED_DATA_DIR) / relative;
+    return folder("TRIMLAB_SHARED_DATA_DIR", TRIMLAB_SHARED_DATA_DIR) / relative;
 }
 
 std::filesystem::path outputDir()
