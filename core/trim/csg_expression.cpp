@@ -36,6 +36,12 @@ public:
 
     std::optional<CsgExpression> parseAll(std::string* error)
     {
+        if (m_text.size() > kMaxCsgTextLength) {
+            if (error)
+                *error = "the expression is " + std::to_string(m_text.size()) + " characters long; at most " +
+                         std::to_string(kMaxCsgTextLength) + " are read";
+            return std::nullopt;
+        }
         std::optional<CsgExpression> result = expression();
         skipSpace();
         if (result && m_position < m_text.size())
@@ -62,6 +68,7 @@ private:
         // The chain so far: one operation over `operands` (a single operand: no node yet).
         std::vector<CsgExpression> operands{std::move(*first)};
         CsgOperation chainOperation = CsgOperation::Operand;
+        int switches = 0;
         while (true) {
             skipSpace();
             if (m_position >= m_text.size())
@@ -79,7 +86,11 @@ private:
             if (!right)
                 return std::nullopt;
             if (operands.size() > 1 && operation != chainOperation) {
-                // Left-associative: the chain so far becomes the first operand.
+                // Left-associative: the chain so far becomes the first operand, one level
+                // deeper (counted with the parentheses around it).
+                if (m_depth + ++switches > kMaxCsgDepth)
+                    return fail("operators change more than " + std::to_string(kMaxCsgDepth) +
+                                " times at one level; group the expression with parentheses");
                 CsgExpression left = CsgExpression::combine(chainOperation, operands);
                 operands = {std::move(left)};
             }
@@ -98,8 +109,12 @@ private:
             return fail("expected an object id or '(' at the end");
         const char c = m_text[m_position];
         if (c == '(') {
+            if (m_depth == kMaxCsgDepth)
+                return fail("parentheses nested more than " + std::to_string(kMaxCsgDepth) + " deep");
             ++m_position;
+            ++m_depth;
             std::optional<CsgExpression> inner = expression();
+            --m_depth;
             skipSpace();
             if (!inner)
                 return std::nullopt;
@@ -138,6 +153,7 @@ private:
 
     std::string_view m_text;
     std::size_t m_position = 0;
+    int m_depth = 0; ///< open parentheses around the current position
     std::string m_error;
 };
 

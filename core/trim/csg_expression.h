@@ -20,6 +20,7 @@
 /// premise of the trim, thesis 2.1).
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -32,6 +33,12 @@ namespace trimlab {
 /// collision highlighting) can address: the GPU carries one winding index per object per
 /// pixel and evaluates the expression as a truth table of 2^8 bits.
 inline constexpr int kMaxCsgOperands = 8;
+/// The longest text parseCsgExpression reads and the deepest tree it builds (parentheses
+/// and changes of operator each add a level). Eight operands never need more than a few
+/// levels; the limits keep every recursive walk of a tree (parse, format, evaluate) far
+/// from the stack's end whatever a user or a file types.
+inline constexpr std::size_t kMaxCsgTextLength = 4096;
+inline constexpr int kMaxCsgDepth = 64;
 
 enum class CsgOperation {
     Operand,      ///< a leaf: the solid of object `objectId`
@@ -78,7 +85,8 @@ private:
 using CsgTruthTable = std::array<std::uint32_t, (1u << kMaxCsgOperands) / 32u>;
 
 /// Parses the text form above. nullopt and a one-line `error` (with the character
-/// position) on a syntax error, an empty text or an id outside 0 .. kMaxCsgOperands − 1.
+/// position) on a syntax error, an empty text, an id outside 0 .. kMaxCsgOperands − 1, a
+/// text longer than kMaxCsgTextLength or a tree deeper than kMaxCsgDepth.
 /// The result is never empty.
 [[nodiscard]] std::optional<CsgExpression> parseCsgExpression(std::string_view text, std::string* error);
 

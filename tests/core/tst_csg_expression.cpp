@@ -48,6 +48,7 @@ private slots:
     void roundTripsRandomTrees();
     void rejectsBadText_data();
     void rejectsBadText();
+    void acceptsDepthUpToTheLimit();
     void evaluates_data();
     void evaluates();
     void truthTableMatchesEvaluation();
@@ -130,6 +131,19 @@ void TestCsgExpression::rejectsBadText_data()
     QTest::newRow("id out of range") << "0 | 8" << "object id 8 is out of range";
     QTest::newRow("huge id") << "123456789" << "out of range";
     QTest::newRow("name") << "a | b" << "at character 1: expected an object id or '(', got 'a'";
+    // Hostile lengths and nesting: a clear error, never a stack overflow (each of these
+    // crashed the recursive parser or its walks before the limits).
+    QTest::newRow("deep parentheses") << QString(2000, QLatin1Char('(')) + "0" + QString(2000, QLatin1Char(')'))
+                                      << "parentheses nested more than 64 deep";
+    QTest::newRow("100000 parentheses") << QString(100000, QLatin1Char('(')) + "0" + QString(100000, QLatin1Char(')'))
+                                        << "200001 characters long; at most 4096";
+    QTest::newRow("65 parentheses") << QString(65, QLatin1Char('(')) + "0" + QString(65, QLatin1Char(')'))
+                                    << "at character 65: parentheses nested more than 64 deep";
+    QString switching = QStringLiteral("0");
+    for (int i = 0; i < 1000; ++i)
+        switching += i % 2 ? QStringLiteral("|1") : QStringLiteral("-2");
+    QTest::newRow("operator switches") << switching << "operators change more than 64 times";
+    QTest::newRow("long text") << QString(5000, QLatin1Char(' ')) + "0" << "5001 characters long; at most 4096";
     QTest::newRow("two operands") << "0 1" << "unexpected '1'";
 }
 
@@ -140,6 +154,18 @@ void TestCsgExpression::rejectsBadText()
     std::string error;
     QVERIFY(!parseCsgExpression(text.toStdString(), &error));
     QVERIFY2(QString::fromStdString(error).contains(message), error.c_str());
+}
+
+// The limits are not below what a user may type: 64 parentheses and 64 changes of
+// operator parse, and the tree evaluates.
+void TestCsgExpression::acceptsDepthUpToTheLimit()
+{
+    const QString nested = QString(64, QLatin1Char('(')) + "0 | 1" + QString(64, QLatin1Char(')'));
+    QVERIFY(evaluateCsg(parsed(qPrintable(nested)), 0b10));
+    QString switching = QStringLiteral("0");
+    for (int i = 0; i < 64; ++i)
+        switching += i % 2 ? QStringLiteral("|1") : QStringLiteral("-1");
+    QCOMPARE(evaluateCsg(parsed(qPrintable(switching)), 0b11), true); // ends with "| 1"
 }
 
 void TestCsgExpression::evaluates_data()
