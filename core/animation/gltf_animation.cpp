@@ -12,7 +12,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
 namespace trimlab {
 
@@ -60,15 +59,7 @@ std::vector<glm::vec3> toFloatPositions(const std::vector<glm::dvec3>& positions
 
 std::string readFileBytes(const std::filesystem::path& path, const std::string& name)
 {
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error))
-        throw MeshLoadError(name, "cannot open the file: it does not exist or is not a file");
-    if (std::filesystem::file_size(path, error) > kMaxMeshInputBytes)
-        throw MeshLoadError(name, "the file is larger than the 2 GiB a mesh file may have");
-    std::ifstream in(path, std::ios::binary);
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (!in && !in.eof())
-        throw MeshLoadError(name, "reading the file failed");
+    std::string bytes = readMeshInputFile(path, name);
     if (bytes.empty())
         throw MeshLoadError(name, "the file is empty (0 bytes)");
     return bytes;

@@ -2,33 +2,92 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <stdexcept>
-#include <system_error>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace trimlab::timeline {
 
+namespace {
+
+/// What a stat mode is, for a file that is not regular.
+std::string kindOf(mode_t mode)
+{
+    if (S_ISDIR(mode))
+        return "is a folder";
+    if (S_ISFIFO(mode))
+        return "is a named pipe (FIFO)";
+    if (S_ISCHR(mode) || S_ISBLK(mode))
+        return "is a device";
+    if (S_ISSOCK(mode))
+        return "is a socket";
+    return "is not a regular file";
+}
+
+std::string errnoReason(int error)
+{
+    switch (error) {
+    case ELOOP:
+        return "is a loop of symbolic links";
+    case ENOTDIR:
+        return "does not exist (a folder on its path is a file)";
+    default:
+        return std::strerror(error);
+    }
+}
+
+/// Closes the descriptor on every path out.
+struct Descriptor {
+    int fd = -1;
+    ~Descriptor()
+    {
+        if (fd >= 0)
+            ::close(fd);
+    }
+};
+
+} // namespace
+
+std::string regularFileProblem(const std::filesystem::path& path)
+{
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0)
+        return errnoReason(errno);
+    return S_ISREG(info.st_mode) ? std::string() : kindOf(info.st_mode);
+}
+
 std::string readFileBytes(const std::filesystem::path& path, std::size_t maxBytes)
 {
-    std::error_code error;
-    const auto status = std::filesystem::status(path, error);
-    if (error)
-        throw std::runtime_error("cannot open: " + error.message());
-    if (!std::filesystem::is_regular_file(status))
-        throw std::runtime_error("is not a regular file");
-    const std::uintmax_t size = std::filesystem::file_size(path, error);
-    if (error)
-        throw std::runtime_error("cannot read the size: " + error.message());
-    if (size > maxBytes)
+    // The first check names the problem without opening anything (opening a FIFO or a
+    // device may have effects); the second, on the open descriptor, closes the gap in
+    // which the file could have been swapped.
+    if (const std::string problem = regularFileProblem(path); !problem.empty())
+        throw std::runtime_error("cannot open: " + problem + (problem.starts_with("is a ") ? ", not a regular file" : ""));
+    Descriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY)};
+    if (file.fd < 0)
+        throw std::runtime_error("cannot open: " + errnoReason(errno));
+    struct stat info {};
+    if (::fstat(file.fd, &info) != 0)
+        throw std::runtime_error(std::string("cannot read the size: ") + std::strerror(errno));
+    if (!S_ISREG(info.st_mode))
+        throw std::runtime_error("cannot open: " + kindOf(info.st_mode) + ", not a regular file");
+    if (std::uintmax_t(info.st_size) > maxBytes)
         throw std::runtime_error("is larger than " + std::to_string(maxBytes) + " bytes");
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw std::runtime_error(std::string("cannot open: ") + std::strerror(errno));
-    std::string bytes(static_cast<std::size_t>(size), '\0');
-    in.read(bytes.data(), std::streamsize(bytes.size()));
-    if (in.gcount() != std::streamsize(bytes.size()))
-        throw std::runtime_error("read error: got " + std::to_string(in.gcount()) + " of " +
-                                 std::to_string(bytes.size()) + " bytes");
+    std::string bytes(static_cast<std::size_t>(info.st_size), '\0');
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t got = ::read(file.fd, bytes.data() + done, bytes.size() - done);
+        if (got < 0 && errno == EINTR)
+            continue;
+        if (got < 0)
+            throw std::runtime_error(std::string("read error: ") + std::strerror(errno));
+        if (got == 0)
+            throw std::runtime_error("read error: got " + std::to_string(done) + " of " + std::to_string(bytes.size()) +
+                                     " bytes (the file shrank while it was read)");
+        done += std::size_t(got);
+    }
     return bytes;
 }
 

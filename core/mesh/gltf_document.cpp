@@ -1,5 +1,6 @@
 #include "core/mesh/gltf_document.h"
 
+#include "core/io/file_bytes.h"
 #include "core/io/json_nesting.h"
 
 #include "core/mesh/byte_cursor.h"
@@ -9,7 +10,6 @@
 #include <array>
 #include <cctype>
 #include <climits>
-#include <fstream>
 
 namespace trimlab {
 
@@ -22,8 +22,12 @@ bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, i
     return true; // textures are irrelevant to geometry
 }
 
+/// Where external files may come from: nowhere for a document read from memory, else only
+/// from inside the asset's own folder.
 struct FileAccess {
     bool allowed = false;
+    std::string base;              ///< the folder as handed to tinygltf (it joins URIs to it)
+    std::filesystem::path folder;  ///< the same folder, canonical
 };
 
 bool isImagePath(const std::string& path)
@@ -35,12 +39,40 @@ bool isImagePath(const std::string& path)
     return std::find(images.begin(), images.end(), ext) != images.end();
 }
 
+/// The URI as the file named it: tinygltf hands the callbacks `base + "/" + uri`.
+std::string uriOf(const std::string& path, const FileAccess& access)
+{
+    const std::string prefix = access.base + "/";
+    return path.starts_with(prefix) ? path.substr(prefix.size()) : path;
+}
+
+/// Why the external file at `path` may not be read, or "" when it may: a URI with a scheme
+/// (http:, file:, ...), an absolute path, or a path that leaves the asset's folder once
+/// "..", "." and symbolic links are resolved.
+std::string containmentProblem(const std::string& path, const FileAccess& access)
+{
+    const std::string uri = uriOf(path, access);
+    if (const std::size_t colon = uri.find(':'); colon != std::string::npos && colon > 1 &&
+                                                 uri.find_first_of("/\\") > colon)
+        return "it names the URI scheme '" + uri.substr(0, colon) + ":'; only files inside the asset's folder are read";
+    if (uri.starts_with('/') || uri.starts_with('\\'))
+        return "it is an absolute path; only files inside the asset's folder are read";
+    std::error_code error;
+    const std::filesystem::path resolved = std::filesystem::weakly_canonical(path, error);
+    if (error)
+        return "it cannot be resolved (" + error.message() + ")";
+    const std::filesystem::path relative = resolved.lexically_relative(access.folder);
+    if (relative.empty() || *relative.begin() == "..")
+        return "it resolves to " + resolved.string() + ", outside the asset's folder " + access.folder.string();
+    return {};
+}
+
 bool fileExists(const std::string& path, void* user)
 {
-    if (!static_cast<FileAccess*>(user)->allowed)
+    const FileAccess& access = *static_cast<FileAccess*>(user);
+    if (!access.allowed || !containmentProblem(path, access).empty())
         return true; // let readWholeFile refuse it with a clear message
-    std::error_code error;
-    return !isImagePath(path) && std::filesystem::is_regular_file(path, error);
+    return !isImagePath(path) && timeline::regularFileProblem(path).empty();
 }
 
 std::string expandFilePath(const std::string& path, void*)
@@ -52,24 +84,24 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
 {
     if (isImagePath(path))
         return false; // textures are never read (tinygltf treats this as a warning)
-    if (!static_cast<FileAccess*>(user)->allowed) {
+    const FileAccess& access = *static_cast<FileAccess*>(user);
+    const std::string uri = uriOf(path, access);
+    if (!access.allowed) {
         if (err)
-            *err += "external file '" + path + "' cannot be read when loading from memory\n";
+            *err += "external file '" + uri + "' cannot be read when loading from memory\n";
         return false;
     }
-    std::error_code error;
-    const std::uintmax_t size = std::filesystem::file_size(path, error);
-    if (error || !std::filesystem::is_regular_file(path, error) || size > (std::uintmax_t(2) << 30)) {
+    if (const std::string problem = containmentProblem(path, access); !problem.empty()) {
         if (err)
-            *err += "external file '" + path + "' is not a regular file of at most 2 GiB\n";
+            *err += "external file '" + uri + "' is refused: " + problem + "\n";
         return false;
     }
-    std::ifstream in(path, std::ios::binary);
-    if (in)
-        out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    if (!in && !in.eof()) {
+    try {
+        const std::string bytes = timeline::readFileBytes(path, std::size_t(2) << 30);
+        out->assign(bytes.begin(), bytes.end());
+    } catch (const std::runtime_error& e) {
         if (err)
-            *err += "cannot read external file '" + path + "'\n";
+            *err += "external file '" + uri + "': " + e.what() + "\n";
         return false;
     }
     return true;
@@ -135,7 +167,13 @@ tinygltf::Model parseModel(std::string_view bytes, const std::string& name, cons
     if (jsonTooDeepAt(jsonPart(bytes, binary), kMaxJsonNesting) != std::string_view::npos)
         throw MeshLoadError(name, "invalid glTF: the JSON is nested more than " + std::to_string(kMaxJsonNesting) +
                                       " levels deep");
-    FileAccess access{!baseDir.empty()};
+    FileAccess access;
+    if (!baseDir.empty()) {
+        std::error_code error;
+        access = {true, baseDir.string(), std::filesystem::weakly_canonical(baseDir, error)};
+        if (error)
+            throw MeshLoadError(name, "cannot resolve the asset's folder " + baseDir.string() + ": " + error.message());
+    }
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&ignoreImage, nullptr);
     loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &refuseWrite, &access});

@@ -1,5 +1,7 @@
 #include "core/mesh/mesh_io.h"
 
+#include "core/io/file_bytes.h"
+
 #include "core/mesh/gltf_reader.h"
 #include "core/mesh/gzip_input.h"
 #include "core/mesh/obj_reader.h"
@@ -12,7 +14,6 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <optional>
 
 namespace trimlab {
@@ -122,38 +123,36 @@ TriangleMesh loadBytes(std::string_view bytes, const FormatRequest& request, con
     return readFormat(format, plain, displayName, baseDir);
 }
 
-std::string readWholeFile(const std::filesystem::path& path, const std::string& displayName)
+} // namespace
+
+std::string readMeshInputFile(const std::filesystem::path& path, const std::string& displayName)
 {
-    std::error_code error;
-    const auto status = std::filesystem::status(path, error);
-    if (error || !std::filesystem::exists(status))
+    // Only regular files, checked before anything is opened: a FIFO would block and a
+    // device like /dev/zero would never end (core/io/file_bytes.h).
+    const std::string problem = timeline::regularFileProblem(path);
+    if (problem == std::strerror(ENOENT))
         throw MeshLoadError(displayName, "cannot open the file: it does not exist");
-    if (std::filesystem::is_directory(status))
-        throw MeshLoadError(displayName, "cannot open the file: it is a folder");
+    if (!problem.empty())
+        throw MeshLoadError(displayName, "cannot open the file: it " + problem +
+                                             (problem.starts_with("is a ") ? ", not a regular file" : ""));
+    std::error_code error;
     const std::uintmax_t size = std::filesystem::file_size(path, error);
     if (!error && size > kMaxMeshInputBytes)
         throw MeshLoadError(displayName, "the file has " + std::to_string(size) +
                                              " bytes, more than the 2 GiB a mesh file may have");
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw MeshLoadError(displayName, std::string("cannot open the file: ") + std::strerror(errno));
-    std::string bytes;
-    if (!error)
-        bytes.reserve(static_cast<std::size_t>(size));
-    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    if (in.bad())
-        throw MeshLoadError(displayName, "reading the file failed");
-    return bytes;
+    try {
+        return timeline::readFileBytes(path, kMaxMeshInputBytes);
+    } catch (const std::runtime_error& e) {
+        throw MeshLoadError(displayName, e.what());
+    }
 }
-
-} // namespace
 
 TriangleMesh loadMesh(const std::filesystem::path& path)
 {
     const std::string displayName = path.string();
     const FormatRequest request = requestForPath(path);
     requireFormat(request, displayName); // reject unknown extensions before reading anything
-    const std::string bytes = readWholeFile(path, displayName);
+    const std::string bytes = readMeshInputFile(path, displayName);
     std::filesystem::path baseDir = path.parent_path();
     if (baseDir.empty())
         baseDir = ".";

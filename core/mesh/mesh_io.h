@@ -35,6 +35,11 @@ inline constexpr std::size_t kMaxMeshInputBytes = std::size_t(2) << 30;
 /// file, a file larger than kMaxMeshInputBytes, bad gzip data, and every content error.
 [[nodiscard]] TriangleMesh loadMesh(const std::filesystem::path& path);
 
+/// The bytes of a mesh-like input file (meshes, cages, animations) as loadMesh reads them:
+/// only a regular file (a folder, FIFO, device, socket or symbolic-link loop is refused
+/// before anything is opened), at most 2 GiB. Throws MeshLoadError naming `displayName`.
+[[nodiscard]] std::string readMeshInputFile(const std::filesystem::path& path, const std::string& displayName);
+
 /// Loads a mesh from `bytes` (possibly gzip-compressed) in the format named by
 /// `extension`: "obj", ".obj", "OBJ", "obj.gz", ... . `displayName` names the data in
 /// errors. glTF external buffers cannot be resolved (there is no folder) and are

@@ -7,7 +7,6 @@
 #include "core/mesh/reader_support.h"
 #include "core/mesh/text_scanner.h"
 
-#include <fstream>
 #include <iterator>
 #include <cmath>
 #include <cstdio>
@@ -179,16 +178,9 @@ SubdivisionCage readCageObj(std::string_view text, const std::string& displayNam
 SubdivisionCage loadCageObj(const std::filesystem::path& path, SubdivisionScheme scheme)
 {
     const std::string name = path.string();
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw MeshLoadError(name, "cannot open the file (missing or unreadable)");
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad())
-        throw MeshLoadError(name, "reading the file failed");
+    std::string bytes = readMeshInputFile(path, name);
     if (bytes.empty())
         throw MeshLoadError(name, "the file is empty (0 bytes)");
-    if (bytes.size() > kMaxMeshInputBytes)
-        throw MeshLoadError(name, "the file is larger than 2 GiB");
     if (hasGzipMagic(bytes))
         bytes = gunzip(bytes, name, kMaxMeshInputBytes);
     return readCageObj(bytes, name, scheme);

@@ -105,7 +105,7 @@ void TestCageObj::readsGzipFiles()
         (void)loadCageObj(dir.filePath("missing.obj").toStdString());
         QFAIL("a missing file was read");
     } catch (const MeshLoadError& e) {
-        QCOMPARE(QString::fromStdString(e.reason()), QString("cannot open the file (missing or unreadable)"));
+        QCOMPARE(QString::fromStdString(e.reason()), QString("cannot open the file: it does not exist"));
     }
 }
 
