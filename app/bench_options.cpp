@@ -1,5 +1,7 @@
 #include "app/bench_options.h"
 
+#include "app/output_paths.h"
+
 #include "app/cli_messages.h"
 
 #include "app/bench_scenes.h"
@@ -177,6 +179,8 @@ std::variant<BenchOptions, QString> parseBenchOptions(const QStringList& argumen
             .arg(parser.positionalArguments().first());
     BenchOptions options;
     options.jsonOutput = parser.value("json");
+    if (auto e = checkOutputPaths({{"--json", options.jsonOutput}}))
+        return *e;
     options.dataDirectory = parser.value("data");
     if (auto e = parseLists(parser, options))
         return *e;

@@ -1,5 +1,7 @@
 #include "app/render_options.h"
 
+#include "app/output_paths.h"
+
 #include "app/cli_messages.h"
 #include "app/option_values.h"
 
@@ -314,6 +316,8 @@ std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& argum
     options.output = parser.value("output");
     options.depthOutput = parser.value("depth");
     options.idsOutput = parser.value("ids");
+    if (auto e = checkOutputPaths({{"-o", options.output}, {"--depth", options.depthOutput}, {"--ids", options.idsOutput}}))
+        return *e;
     if (parser.isSet("rule"))
         if (auto e = parseRule(parser.value("rule"), options))
             return *e;

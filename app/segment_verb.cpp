@@ -1,5 +1,7 @@
 #include "app/segment_verb.h"
 
+#include "app/output_paths.h"
+
 #include "app/cli_messages.h"
 #include "app/option_values.h"
 
@@ -86,6 +88,8 @@ std::optional<QString> parseOutput(const QCommandLineParser& parser, SegmentOpti
     if (!format)
         return QStringLiteral("-o must name a .json, .csv or .gltf file, got '%1'").arg(options.output);
     options.format = *format;
+    if (auto e = checkOutputPaths({{"-o", options.output}}))
+        return e;
     return std::nullopt;
 }
 

@@ -1,5 +1,7 @@
 #include "app/skeleton_verb.h"
 
+#include "app/output_paths.h"
+
 #include "app/cli_messages.h"
 #include "app/option_values.h"
 #include "app/terminal_progress.h"
@@ -104,7 +106,7 @@ std::optional<QString> parseOutputs(const QCommandLineParser& parser, SkeletonVe
     o.json = parser.value("json");
     if (parser.isSet("json") && o.json.isEmpty())
         return QStringLiteral("--json needs a file name");
-    return std::nullopt;
+    return checkOutputPaths({{"-o", o.output}, {"--json", o.json}});
 }
 
 std::variant<SkeletonVerbOptions, QString> parseSkeletonOptions(const QStringList& arguments, QString& help)

@@ -1,5 +1,7 @@
 #include "app/skin_verb.h"
 
+#include "app/output_paths.h"
+
 #include "app/cli_messages.h"
 #include "app/option_values.h"
 #include "app/terminal_progress.h"
@@ -117,7 +119,7 @@ std::optional<QString> parseExport(const QCommandLineParser& parser, SkinOptions
         return QStringLiteral("skin needs an output file: -o out.glb (or .gltf)");
     if (!options.output.endsWith(".glb", Qt::CaseInsensitive) && !options.output.endsWith(".gltf", Qt::CaseInsensitive))
         return QStringLiteral("-o must name a .glb or .gltf file, got '%1'").arg(options.output);
-    return std::nullopt;
+    return checkOutputPaths({{"-o", options.output}});
 }
 
 std::variant<SkinOptions, QString> parseSkinOptions(const QStringList& arguments, QString& help)

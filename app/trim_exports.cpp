@@ -1,6 +1,6 @@
 #include "app/trim_exports.h"
 
-#include <QImageWriter>
+#include "ui/common/image_file.h"
 
 #include <glm/geometric.hpp>
 
@@ -46,9 +46,7 @@ QImage idImage(const TrimImage& trim)
 
 void saveImage(const QImage& image, const QString& path)
 {
-    QImageWriter writer(path);
-    if (!writer.write(image))
-        throw std::runtime_error(path.toStdString() + ": cannot write image (" + writer.errorString().toStdString() + ")");
+    ui::writeImageFile(image, path);
 }
 
 } // namespace trimlab::app

@@ -1,4 +1,5 @@
 #include "core/animation/segmentation_export.h"
+#include "core/io/atomic_write.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -157,12 +158,7 @@ std::string segmentationCsv(const SegmentationRecord& r)
 
 void writeTextFile(const std::filesystem::path& path, const std::string& text)
 {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    if (out)
-        out.write(text.data(), std::streamsize(text.size()));
-    out.close();
-    if (!out)
-        throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
+    timeline::writeFileAtomically(path, text);
 }
 
 } // namespace trimlab

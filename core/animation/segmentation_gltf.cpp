@@ -1,4 +1,5 @@
 #include "core/animation/segmentation_gltf.h"
+#include "core/io/atomic_write.h"
 
 #include "core/io/gltf_builder.h"
 
@@ -67,12 +68,7 @@ std::string segmentationGltf(const TriangleMesh& mesh, const VertexLabeling& seg
 void writeSegmentationGltf(const std::filesystem::path& path, const TriangleMesh& mesh, const VertexLabeling& segmentation,
                            std::span<const WheelColor> colors)
 {
-    const std::string text = segmentationGltf(mesh, segmentation, colors);
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(text.data(), std::streamsize(text.size()));
-    out.close();
-    if (!out)
-        throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
+    timeline::writeFileAtomically(path, segmentationGltf(mesh, segmentation, colors));
 }
 
 } // namespace trimlab

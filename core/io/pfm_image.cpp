@@ -1,10 +1,11 @@
 #include "core/io/pfm_image.h"
+#include "core/io/atomic_write.h"
+#include "core/io/file_bytes.h"
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -35,27 +36,29 @@ float decodeFloat(const char* bytes, bool littleEndian)
 
 void writePfm(const std::filesystem::path& path, const FloatImage& image)
 {
-    std::ofstream out(path, std::ios::binary);
-    if (!out)
-        throw pfmError(path, "cannot open for writing");
-    out << "Pf\n" << image.width << ' ' << image.height << "\n-1.0\n";
+    std::string bytes = "Pf\n" + std::to_string(image.width) + ' ' + std::to_string(image.height) + "\n-1.0\n";
+    bytes.reserve(bytes.size() + 4 * image.values.size());
     for (int y = image.height - 1; y >= 0; --y) {
         for (int x = 0; x < image.width; ++x) {
             std::uint32_t bits = std::bit_cast<std::uint32_t>(image.values[std::size_t(y) * image.width + x]);
             if constexpr (std::endian::native != std::endian::little)
                 bits = byteSwap(bits);
-            out.write(reinterpret_cast<const char*>(&bits), 4);
+            bytes.append(reinterpret_cast<const char*>(&bits), 4);
         }
     }
-    if (!out)
-        throw pfmError(path, "write failed (disk full?)");
+    // A killed run leaves an earlier image whole (core/io/atomic_write.h).
+    timeline::writeFileAtomically(path, bytes);
 }
 
 FloatImage readPfm(const std::filesystem::path& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw pfmError(path, "cannot open for reading");
+    // Only a regular file of at most 1 GiB (core/io/file_bytes.h), parsed from memory.
+    std::istringstream in;
+    try {
+        in.str(timeline::readFileBytes(path, std::size_t(1) << 30));
+    } catch (const std::runtime_error& e) {
+        throw pfmError(path, e.what());
+    }
     std::string magic;
     FloatImage image;
     double scale = 0.0;

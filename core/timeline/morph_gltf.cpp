@@ -1,6 +1,7 @@
 // exportMorphGltf / morphGltf (declared in frame_export.h): the timeline as a glTF 2.0
 // morph-target animation.
 #include "core/timeline/frame_export.h"
+#include "core/io/atomic_write.h"
 
 #include "core/io/gltf_builder.h"
 
@@ -103,12 +104,7 @@ std::string morphGltf(const Timeline& timeline, double fps, bool binary)
 
 void exportMorphGltf(const Timeline& timeline, const std::filesystem::path& path, double fps)
 {
-    const std::string bytes = morphGltf(timeline, fps, hasGlbExtension(path));
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    out.close();
-    if (!out)
-        throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
+    writeFileAtomically(path, morphGltf(timeline, fps, hasGlbExtension(path)));
 }
 
 } // namespace trimlab::timeline

@@ -53,6 +53,10 @@ void TestSegmentVerb::badArgumentsExitWithTwo_data()
     QTest::newRow("bad feature") << QStringList{"segment", bar, "--clusters", "4", "--h", "0.1", "--feature", "speed", "-o",
                                                 "x.json"}
                                  << "unknown --feature 'speed'";
+    // Output paths are checked before any work (app/output_paths.h): exit 2, not 1.
+    QTest::newRow("unwritable output") << QStringList{"segment", bar, "--clusters", "3", "--h", "0.1", "-o",
+                                                      "/nonexistent/x.json"}
+                                       << "-o /nonexistent/x.json: the folder /nonexistent does not exist";
     QTest::newRow("bad method") << QStringList{"segment", bar, "--clusters", "4", "--h", "0.1", "--method", "kmeans", "-o",
                                                "x.json"}
                                 << "unknown --method 'kmeans'";
@@ -98,9 +102,6 @@ void TestSegmentVerb::badInputsExitWithOne_data()
     QTest::newRow("acceleration needs three") << (QStringList{"segment", animation("bar/bar_?.obj"), "--feature",
                                                               "acceleration"} + tail)
                                               << "needs at least 3";
-    QTest::newRow("unwritable output") << QStringList{"segment", animation("bar"), "--clusters", "3", "--h", "0.1", "-o",
-                                                      "/nonexistent/x.json"}
-                                       << "cannot write /nonexistent/x.json";
 }
 
 void TestSegmentVerb::badInputsExitWithOne()

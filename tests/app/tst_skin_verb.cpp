@@ -78,6 +78,10 @@ void TestSkinVerb::badArgumentsExitWithTwo_data()
                                 << "--bones must be an integer from 1 to 65535";
     QTest::newRow("text bones") << (QStringList{"skin", bar, "--bones", "many", "--method", "lbs"} + tail)
                                 << "--bones must be an integer";
+    // Output paths are checked before any work (app/output_paths.h): exit 2, not 1.
+    QTest::newRow("unwritable output") << QStringList{"skin", bar, "--bones", "2", "--method", "dqs", "-o",
+                                                      "/nonexistent/x.glb"}
+                                       << "-o /nonexistent/x.glb: the folder /nonexistent does not exist";
     QTest::newRow("bad method") << (QStringList{"skin", bar, "--bones", "2", "--method", "sad"} + tail)
                                 << "unknown --method 'sad' (use lbs or dqs)";
     QTest::newRow("bad chain") << (QStringList{"skin", bar, "--bones", "2", "--method", "lbs", "--chain", "x"} + tail)
@@ -121,9 +125,6 @@ void TestSkinVerb::badInputsExitWithOne_data()
         << QStringList{"skin", animation("bar"), "--bones", "11", "--method", "lbs", "-o", m_dir.filePath("b.glb")}
         << "cannot make 11 segments of 10 vertices";
     QTest::newRow("one pose") << (QStringList{"skin", animation("bar/bar_1.*")} + tail) << "needs at least 2";
-    QTest::newRow("unwritable output") << QStringList{"skin", animation("bar"), "--bones", "2", "--method", "dqs", "-o",
-                                                      "/nonexistent/x.glb"}
-                                       << "/nonexistent/x.glb";
 }
 
 void TestSkinVerb::badInputsExitWithOne()

@@ -4,10 +4,15 @@
 
 namespace trimlab::test {
 
+QString trimlabExecutable()
+{
+    return qEnvironmentVariable("TRIMLAB_TEST_EXECUTABLE", QStringLiteral(TRIMLAB_EXECUTABLE));
+}
+
 Run runTrimlab(const QStringList& arguments, int timeoutMs)
 {
     QProcess process;
-    process.start(qEnvironmentVariable("TRIMLAB_TEST_EXECUTABLE", QStringLiteral(TRIMLAB_EXECUTABLE)), arguments);
+    process.start(trimlabExecutable(), arguments);
     if (!process.waitForFinished(timeoutMs))
         return {};
     return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,

@@ -22,6 +22,10 @@ struct Run {
 /// trimlab binary to test (an installed one, say).
 [[nodiscard]] Run runTrimlab(const QStringList& arguments, int timeoutMs = 120000);
 
+/// The trimlab binary runTrimlab starts (TRIMLAB_TEST_EXECUTABLE or this build's), for
+/// tests that drive the process themselves (killing it, say).
+[[nodiscard]] QString trimlabExecutable();
+
 } // namespace trimlab::test
 
 /// In a test function: `run` (a trimlab::test::Run) ended with `code` and printed exactly

@@ -1,5 +1,7 @@
 #include "ui/window/main_window.h"
 
+#include "ui/common/image_file.h"
+
 #include "ui/animation/animation_workspace.h"
 #include "ui/animation/open_animation_dialog.h"
 #include "ui/common/window_context.h"
@@ -378,8 +380,13 @@ bool MainWindow::exportImage(const QString& path, QString* error)
     QString reason;
     if (image.isNull())
         reason = tr("Nothing has been rendered yet.");
-    else if (!image.convertToFormat(QImage::Format_RGB32).save(path, "PNG"))
-        reason = tr("Could not write “%1”.").arg(path);
+    else {
+        try {
+            writeImageFile(image.convertToFormat(QImage::Format_RGB32), path, "png");
+        } catch (const std::exception& e) {
+            reason = QString::fromUtf8(e.what());
+        }
+    }
     if (error)
         *error = reason;
     return reason.isEmpty();
