@@ -36,6 +36,8 @@ public:
 
     [[nodiscard]] std::size_t offset() const { return m_pos; }
     [[nodiscard]] std::size_t remaining() const { return m_data.size() - m_pos; }
+    /// The bytes not read yet.
+    [[nodiscard]] std::string_view rest() const { return m_data.substr(m_pos); }
 
     /// Reads one T; false (nothing consumed) when fewer than sizeof(T) bytes remain.
     template <class T>

@@ -147,6 +147,51 @@ std::string_view jsonPart(std::string_view bytes, bool binary)
     return bytes.substr(20, length);
 }
 
+/// A vertex attribute's name (its value is an accessor index).
+bool isAttributeSemantic(std::string_view key)
+{
+    static constexpr std::array<std::string_view, 7> kSemantics = {"POSITION", "NORMAL",  "TANGENT", "TEXCOORD_",
+                                                                   "COLOR_",   "JOINTS_", "WEIGHTS_"};
+    return std::any_of(kSemantics.begin(), kSemantics.end(),
+                       [&](std::string_view semantic) { return key.starts_with(semantic); });
+}
+
+/// glTF's indices, counts and offsets are never negative, but tinygltf reads a negative
+/// `byteOffset` as absent (0) and a negative `bufferView` as "no view" (zeros): a file that
+/// says -4 would load as if it said nothing. This finds the first key among them (and the
+/// attribute semantics, POSITION ...) whose value is a negative number, and
+/// returns "KEY": VALUE, or "" when there is none. Strings are skipped with their escapes.
+std::string firstNegativeIndex(std::string_view json)
+{
+    static constexpr std::array<std::string_view, 19> kKeys = {
+        "byteOffset", "byteLength", "byteStride", "count",  "bufferView", "buffer", "scene",
+        "mesh",       "skin",       "camera",     "material", "source",   "sampler", "input",
+        "output",     "indices",    "node",       "texCoord", "skeleton"};
+    std::string_view key;
+    for (std::size_t i = 0; i < json.size(); ++i) {
+        if (json[i] == '"') {
+            const std::size_t begin = ++i;
+            while (i < json.size() && json[i] != '"')
+                i += json[i] == '\\' ? 2 : 1;
+            key = json.substr(begin, std::min(i, json.size()) - begin);
+            continue;
+        }
+        if (json[i] != ':')
+            continue;
+        std::size_t v = i + 1;
+        while (v < json.size() && std::isspace(static_cast<unsigned char>(json[v])))
+            ++v;
+        const bool indexKey = std::find(kKeys.begin(), kKeys.end(), key) != kKeys.end() || isAttributeSemantic(key);
+        if (indexKey && v < json.size() && json[v] == '-') {
+            std::size_t end = v + 1;
+            while (end < json.size() && (std::isdigit(static_cast<unsigned char>(json[end])) || json[end] == '.'))
+                ++end;
+            return "\"" + std::string(key) + "\": " + std::string(json.substr(v, end - v));
+        }
+    }
+    return {};
+}
+
 std::string cleanMessage(std::string text)
 {
     while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
@@ -167,6 +212,9 @@ tinygltf::Model parseModel(std::string_view bytes, const std::string& name, cons
     if (jsonTooDeepAt(jsonPart(bytes, binary), kMaxJsonNesting) != std::string_view::npos)
         throw MeshLoadError(name, "invalid glTF: the JSON is nested more than " + std::to_string(kMaxJsonNesting) +
                                       " levels deep");
+    if (const std::string negative = firstNegativeIndex(jsonPart(bytes, binary)); !negative.empty())
+        throw MeshLoadError(name, "invalid glTF: " + negative +
+                                      " is negative; indices, counts and offsets in glTF are never negative");
     FileAccess access;
     if (!baseDir.empty()) {
         std::error_code error;

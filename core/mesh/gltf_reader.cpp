@@ -20,7 +20,7 @@ namespace {
 
 std::vector<int> sceneRoots(const tinygltf::Model& model, const std::string& name)
 {
-    if (model.defaultScene >= static_cast<int>(model.scenes.size()))
+    if (model.defaultScene >= static_cast<int>(model.scenes.size()) || model.defaultScene < -1)
         throw MeshLoadError(name, "the default scene " + std::to_string(model.defaultScene) +
                                       " does not exist (the file has " + std::to_string(model.scenes.size()) + ")");
     if (!model.scenes.empty())

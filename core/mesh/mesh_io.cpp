@@ -9,6 +9,8 @@
 #include "core/mesh/ply_reader.h"
 #include "core/mesh/stl_reader.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -105,6 +107,31 @@ TriangleMesh readFormat(MeshFormat format, std::string_view bytes, const std::st
     throw MeshLoadError(displayName, "internal error: unknown mesh format");
 }
 
+/// A mesh every triangle of which has zero area bounds no solid: nothing could be drawn or
+/// trimmed, and the views would frame a point. Refused at load, naming why (a glTF accessor
+/// without a buffer view reads as zeros, for one). A few degenerate triangles among
+/// others are normal and stay.
+void rejectDegenerate(const TriangleMesh& mesh, const std::string& displayName)
+{
+    for (const glm::uvec3& t : mesh.triangles) {
+        const glm::dvec3 a(mesh.positions[t.x]);
+        const glm::dvec3 b(mesh.positions[t.y]);
+        const glm::dvec3 c(mesh.positions[t.z]);
+        if (glm::length(glm::cross(b - a, c - a)) > 0.0)
+            return;
+    }
+    throw MeshLoadError(displayName, "the geometry is degenerate: all " + std::to_string(mesh.triangles.size()) +
+                                         " triangles have zero area (the vertices lie on one line or point)");
+}
+
+TriangleMesh readUsableFormat(MeshFormat format, std::string_view bytes, const std::string& displayName,
+                              const std::filesystem::path& baseDir)
+{
+    TriangleMesh mesh = readFormat(format, bytes, displayName, baseDir);
+    rejectDegenerate(mesh, displayName);
+    return mesh;
+}
+
 TriangleMesh loadBytes(std::string_view bytes, const FormatRequest& request, const std::string& displayName,
                        const std::filesystem::path& baseDir)
 {
@@ -115,12 +142,12 @@ TriangleMesh loadBytes(std::string_view bytes, const FormatRequest& request, con
         if (request.gzipNamed)
             throw MeshLoadError(displayName, "the file is named .gz but is not gzip data (it does not start with "
                                              "the bytes 1f 8b); rename it or compress it with gzip");
-        return readFormat(format, bytes, displayName, baseDir);
+        return readUsableFormat(format, bytes, displayName, baseDir);
     }
     const std::string plain = gunzip(bytes, displayName, kMaxMeshInputBytes);
     if (plain.empty())
         throw MeshLoadError(displayName, "the file is empty after gzip decompression");
-    return readFormat(format, plain, displayName, baseDir);
+    return readUsableFormat(format, plain, displayName, baseDir);
 }
 
 } // namespace

@@ -38,7 +38,7 @@ std::uint32_t ObjLineParser::parseCorner(std::string_view corner, std::size_t ve
     if (index == 0)
         fail("vertex index 0 is invalid: OBJ indices count from 1 (or back from -1)");
     if (index < 0) {
-        if (-index > defined)
+        if (index < -defined) // not -index > defined: -INT64_MIN overflows
             fail("face references vertex " + std::to_string(index) + " (counting back), but only " +
                  countNoun(static_cast<std::uint64_t>(defined), "vertex is", "vertices are") +
                  " defined before this line");

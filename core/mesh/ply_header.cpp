@@ -140,7 +140,11 @@ void HeaderParser::parseProperty(std::string_view rest, std::size_t line)
         property.type = parseType(first, line);
     }
     property.name = std::string(name);
-    m_header.elements.back().properties.push_back(std::move(property));
+    PlyElement& element = m_header.elements.back();
+    for (const PlyProperty& earlier : element.properties)
+        if (earlier.name == property.name) // which of the two would x be?
+            fail(line, "property '" + property.name + "' of element '" + element.name + "' is declared twice");
+    element.properties.push_back(std::move(property));
 }
 
 std::string_view trimRight(std::string_view line)

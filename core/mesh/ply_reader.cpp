@@ -245,6 +245,10 @@ TriangleMesh PlyBodyReader::read()
                 skipItem(element, item);
         }
     }
+    // Data after the last element means a count in the header is wrong.
+    if (const std::string trailing = m_source.trailingData(); !trailing.empty())
+        throw MeshLoadError(m_name, "the header's elements end before the data does: " + trailing +
+                                        " follow the last element (a count in the header is wrong)");
     TriangleMesh mesh;
     mesh.triangles = triangulatePolygons(m_positions, m_soup);
     mesh.positions = std::move(m_positions);

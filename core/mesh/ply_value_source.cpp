@@ -78,6 +78,21 @@ std::string PlyValueSource::position() const
     return m_ascii ? std::string() : "byte offset " + std::to_string(m_valueOffset);
 }
 
+std::string PlyValueSource::trailingData() const
+{
+    if (m_ascii) {
+        TokenStream probe = m_tokens;
+        std::string_view token;
+        if (!probe.next(token))
+            return {};
+        return "the token '" + std::string(token.substr(0, 32)) + "' on line " + std::to_string(probe.line());
+    }
+    const std::string_view rest = m_cursor.rest();
+    if (rest.find_first_not_of(std::string_view(" \t\r\n\0", 5)) == std::string_view::npos)
+        return {};
+    return std::to_string(rest.size()) + " bytes";
+}
+
 std::size_t PlyValueSource::bytesRemaining() const
 {
     return m_ascii ? m_tokens.bytesRemaining() : m_cursor.remaining();

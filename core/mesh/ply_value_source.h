@@ -40,6 +40,9 @@ public:
     /// The last token read (ASCII), for "'abc' is not a number" messages.
     [[nodiscard]] std::string_view lastToken() const { return m_lastToken; }
     [[nodiscard]] std::size_t bytesRemaining() const;
+    /// After the last element: what data follows it ("12 bytes", "the token '7' on line
+    /// 9"), or "" when nothing but blanks and line breaks does.
+    [[nodiscard]] std::string trailingData() const;
 
 private:
     Status readBinary(PlyScalarType type, double& value);

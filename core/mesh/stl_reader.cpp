@@ -64,6 +64,14 @@ TriangleMesh readBinaryStl(std::string_view bytes, const std::string& name)
         throw MeshLoadError(name, "truncated binary STL: the header declares " + std::to_string(n) +
                                       " triangles, which need " + std::to_string(expected) +
                                       " bytes, but the file has only " + std::to_string(bytes.size()));
+    // Data after the last triangle means the count or the file is wrong; only a trailing
+    // line break or padding of blanks (some writers add one) is tolerated.
+    if (const std::string_view rest = bytes.substr(expected);
+        rest.find_first_not_of(std::string_view(" \t\r\n\0", 5)) != std::string_view::npos)
+        throw MeshLoadError(name, "the binary STL header declares " + std::to_string(n) + " triangles (" +
+                                      std::to_string(expected) + " bytes), but the file has " +
+                                      std::to_string(bytes.size()) + " bytes: " + std::to_string(rest.size()) +
+                                      " bytes follow the last triangle");
     TriangleMesh soup;
     soup.positions.reserve(3 * n);
     soup.triangles.reserve(n);
