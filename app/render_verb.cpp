@@ -233,6 +233,8 @@ QString classificationText(const RenderOptions& options, const timeline::Timelin
     QStringList rules;
     for (const timeline::Timeline::ChainLink& link : timeline.chainTo(frame))
         rules << QString::fromLatin1(dynamicRuleName(link.rule).data());
+    if (rules.isEmpty())
+        return QStringLiteral("dynamic: %1 on the base mesh (no deformation before this frame)").arg(base);
     return QStringLiteral("dynamic: %1 on the base mesh, then %2").arg(base, rules.join(QStringLiteral(", ")));
 }
 
@@ -244,7 +246,10 @@ int renderDesigned(const RenderOptions& options)
     const bool gpu = options.backend == Backend::KPlus;
     RenderOutcome outcome;
     Camera camera;
-    if (options.classification == Classification::Static) {
+    // The base mesh (frame 0, or every frame of a project with no frames yet) has no
+    // deformation to remember: the dynamic rules classify it by the static base rule alone.
+    const bool baseOnly = design.timeline.chainTo(design.frame).empty();
+    if (options.classification == Classification::Static || baseOnly) {
         const Scene scene = timeline::frameScene(design.timeline, design.frame, design.model, design.displayName);
         camera = cameraFor(scene.worldBounds(), options);
         outcome = gpu ? renderAgainAfterReset([&] { return renderWithGpu(scene, options, camera); })

@@ -1,4 +1,5 @@
 #include "core/animation/gltf_animation.h"
+#include "core/util/memory_budget.h"
 
 #include "core/animation/gltf_animated_geometry.h"
 #include "core/animation/gltf_animation_clip.h"
@@ -80,6 +81,10 @@ MeshAnimation readGltfAnimation(std::string_view bytes, const std::string& displ
     const std::vector<double> times = sampleTimes(clip, options.fps, displayName);
     MeshAnimation animation;
     animation.triangles = geometry.triangles;
+    requireMemory(std::uint64_t(times.size()) * geometry.vertexCount * sizeof(glm::vec3),
+                  displayName + ": " + std::to_string(times.size()) + " poses of " +
+                      std::to_string(geometry.vertexCount) + " vertices",
+                  "sample the clip at a lower rate (--fps)");
     for (std::size_t i = 0; i < times.size(); ++i) {
         control.throwIfCancelled();
         std::vector<NodeTransform> nodes = fileNodes;

@@ -1,4 +1,5 @@
 #include "core/animation/sequence_loader.h"
+#include "core/util/memory_budget.h"
 
 #include "core/util/parallel_for.h"
 #include "core/animation/pose_topology.h"
@@ -18,6 +19,11 @@ MeshAnimation loadMeshSequence(const std::vector<std::filesystem::path>& files, 
     MeshAnimation animation;
     TriangleMesh first = loadMesh(files.front());
     animation.triangles = std::move(first.triangles);
+    // Every pose has the first one's size (checked below): the total is known now.
+    requireMemory(std::uint64_t(files.size()) * first.positions.size() * sizeof(glm::vec3),
+                  files.front().parent_path().string() + ": loading " + std::to_string(files.size()) + " poses of " +
+                      std::to_string(first.positions.size()) + " vertices",
+                  "load fewer poses (a pattern or folder with fewer files)");
     animation.poses.resize(files.size());
     animation.poses.front() = std::move(first.positions);
     const std::size_t vertexCount = animation.poses.front().size();

@@ -1,4 +1,6 @@
 #include "core/catalog/surface_scenes.h"
+#include <optional>
+#include "core/mesh/mesh_load_error.h"
 
 #include "core/surface/editable_surface.h"
 #include "core/catalog/fig8_13_history.h"
@@ -59,7 +61,13 @@ Scene nurbsFileScene(const std::string& path)
     const std::vector<NurbsSurface> surfaces = loadNurbsJson(path);
     Scene scene;
     for (std::size_t s = 0; s < surfaces.size(); ++s) {
-        const EditableSurface surface(nurbsDefinition(surfaces[s]));
+        std::optional<EditableSurface> tessellated;
+        try {
+            tessellated.emplace(nurbsDefinition(surfaces[s]));
+        } catch (const std::invalid_argument& error) {
+            throw MeshLoadError(path, error.what(), MeshErrorLocation{0, "surfaces[" + std::to_string(s) + "]"});
+        }
+        const EditableSurface& surface = *tessellated;
         const std::string name = surfaces[s].name.empty() ? "surface " + std::to_string(s) : surfaces[s].name;
         scene.objects.push_back({name, surface.mesh(), glm::dmat4(1.0)});
     }

@@ -3,6 +3,7 @@
 #include "core/io/file_bytes.h"
 
 #include "core/mesh/gltf_reader.h"
+#include "core/mesh/mesh_validation.h"
 #include "core/mesh/gzip_input.h"
 #include "core/mesh/obj_reader.h"
 #include "core/mesh/off_reader.h"
@@ -107,28 +108,14 @@ TriangleMesh readFormat(MeshFormat format, std::string_view bytes, const std::st
     throw MeshLoadError(displayName, "internal error: unknown mesh format");
 }
 
-/// A mesh every triangle of which has zero area bounds no solid: nothing could be drawn or
-/// trimmed, and the views would frame a point. Refused at load, naming why (a glTF accessor
-/// without a buffer view reads as zeros, for one). A few degenerate triangles among
-/// others are normal and stay.
-void rejectDegenerate(const TriangleMesh& mesh, const std::string& displayName)
-{
-    for (const glm::uvec3& t : mesh.triangles) {
-        const glm::dvec3 a(mesh.positions[t.x]);
-        const glm::dvec3 b(mesh.positions[t.y]);
-        const glm::dvec3 c(mesh.positions[t.z]);
-        if (glm::length(glm::cross(b - a, c - a)) > 0.0)
-            return;
-    }
-    throw MeshLoadError(displayName, "the geometry is degenerate: all " + std::to_string(mesh.triangles.size()) +
-                                         " triangles have zero area (the vertices lie on one line or point)");
-}
-
 TriangleMesh readUsableFormat(MeshFormat format, std::string_view bytes, const std::string& displayName,
                               const std::filesystem::path& baseDir)
 {
+    // Refused at load what could never be drawn or trimmed (a glTF accessor without a
+    // buffer view reads as zeros, for one), rather than rendering an empty picture.
     TriangleMesh mesh = readFormat(format, bytes, displayName, baseDir);
-    rejectDegenerate(mesh, displayName);
+    if (const std::string reason = unusableGeometryReason(mesh); !reason.empty())
+        throw MeshLoadError(displayName, reason);
     return mesh;
 }
 

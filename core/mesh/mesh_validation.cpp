@@ -238,4 +238,22 @@ MeshValidationReport validateMesh(const TriangleMesh& mesh)
     return report;
 }
 
+std::string unusableGeometryReason(const TriangleMesh& mesh)
+{
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+        const glm::vec3& p = mesh.positions[v];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            return "vertex " + std::to_string(v) + " is not finite";
+    }
+    for (const glm::uvec3& t : mesh.triangles) {
+        const glm::dvec3 a(mesh.positions[t.x]);
+        const glm::dvec3 b(mesh.positions[t.y]);
+        const glm::dvec3 c(mesh.positions[t.z]);
+        if (glm::length(glm::cross(b - a, c - a)) > 0.0)
+            return {};
+    }
+    return "the geometry is degenerate: all " + std::to_string(mesh.triangles.size()) +
+           " triangles have zero area (the vertices lie on one line or point)";
+}
+
 } // namespace trimlab

@@ -94,6 +94,13 @@ struct MeshValidationReport {
 /// faces, form more than one fan; vertices on non-manifold edges therefore count too.
 [[nodiscard]] MeshValidationReport validateMesh(const TriangleMesh& mesh);
 
+/// Why `mesh` bounds nothing that could be drawn or trimmed, or "" when it does: a
+/// non-finite position ("vertex 3 is not finite"), or every triangle of zero area ("the
+/// geometry is degenerate: all 2 triangles have zero area (the vertices lie on one line or
+/// point)"). A few degenerate triangles among others are normal and pass. Loaders and
+/// surface tessellation refuse such a mesh at load, naming the file.
+[[nodiscard]] std::string unusableGeometryReason(const TriangleMesh& mesh);
+
 /// The multi-line text `trimlab info FILE` prints: `name`, counts, bounding box,
 /// components, Euler characteristic and genus, signed volume, every defect with its
 /// count and first elements, and a last line "trim modes: available" or

@@ -1,4 +1,6 @@
 #include "core/surface/editable_surface.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/util/memory_budget.h"
 
 #include "core/surface/nurbs_tessellation.h"
 #include "core/surface/subdivision_surface.h"
@@ -83,10 +85,38 @@ void sortUnique(std::vector<ControlNetEdge>& edges)
 
 } // namespace
 
+namespace {
+
+/// At most how many triangles the tessellation has: 2·segU·segV for NURBS; for a cage at
+/// level L ≥ 1, 2·n·4^(L−1) per face of n corners (exact for Catmull-Clark, 1.5 times too
+/// many for Loop's triangles), at most n per face at level 0.
+std::uint64_t tessellationTriangleBound(const SurfaceDefinition& definition)
+{
+    if (definition.kind() == SurfaceKind::Nurbs)
+        return 2 * std::uint64_t(definition.nurbs().segmentsU) * std::uint64_t(definition.nurbs().segmentsV);
+    const SubdivisionDefinition& subdivision = definition.subdivision();
+    const int level = subdivision.settings.level;
+    std::uint64_t corners = 0;
+    for (const std::uint32_t size : subdivision.cage.faceSizes)
+        corners += size;
+    if (level <= 0)
+        return corners;
+    return 2 * corners * (std::uint64_t(1) << (2 * (level - 1)));
+}
+
+} // namespace
+
 EditableSurface::EditableSurface(SurfaceDefinition definition)
     : m_definition(std::move(definition)), m_evaluator(std::make_unique<Evaluator>())
 {
     requireValidSurfaceDefinition(m_definition, "EditableSurface");
+    // About 200 bytes per triangle: the mesh, its normals, the evaluator's stencils or
+    // basis tables, and the undo copies of the positions.
+    requireMemory(tessellationTriangleBound(m_definition) * 200,
+                  "tessellating the " + std::string(surfaceKindName(m_definition.kind())) + " surface into about " +
+                      std::to_string(tessellationTriangleBound(m_definition)) + " triangles",
+                  m_definition.kind() == SurfaceKind::Nurbs ? "use fewer tessellation segments"
+                                                            : "use a lower subdivision level");
     try {
         if (m_definition.kind() == SurfaceKind::Nurbs) {
             const NurbsDefinition& nurbs = m_definition.nurbs();
@@ -103,6 +133,11 @@ EditableSurface::EditableSurface(SurfaceDefinition definition)
     } catch (const SubdivisionError& error) {
         throw std::invalid_argument(std::string("EditableSurface: ") + error.what());
     }
+    // A net or cage that tessellates to nothing drawable is refused here, before any view
+    // renders an empty picture of it.
+    if (const std::string reason = unusableGeometryReason(m_evaluator->mesh()); !reason.empty())
+        throw std::invalid_argument("the " + std::string(surfaceKindName(m_definition.kind())) +
+                                    " surface's tessellation is unusable: " + reason);
     sortUnique(m_edges);
     m_control = m_definition.controlPoints();
 }

@@ -1,4 +1,5 @@
 #include "core/timeline/project_file.h"
+#include "core/util/memory_budget.h"
 
 #include "core/timeline/control_edit.h"
 #include "core/surface/editable_surface.h"
@@ -208,6 +209,8 @@ Project readDocument(const json& document)
         return Project{std::move(timeline), std::move(extras)};
     } catch (const std::invalid_argument& error) {
         throw JsonPathError("", std::string("inconsistent history: ") + error.what());
+    } catch (const MemoryBudgetError& error) {
+        throw JsonPathError("surface", error.what());
     }
 }
 

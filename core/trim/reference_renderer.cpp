@@ -1,4 +1,5 @@
 #include "core/trim/reference_renderer.h"
+#include "core/util/memory_budget.h"
 
 #include "core/scene/world_geometry.h"
 #include "core/trim/transparency.h"
@@ -179,6 +180,10 @@ ReferenceResult ReferenceRenderer::render(const Camera& camera, int width, int h
     ReferenceResult result;
     if (width < 1 || height < 1)
         return result;
+    // Per pixel: the trim image, the colour and the diagnostics, all allocated up front.
+    requireMemory(std::uint64_t(width) * std::uint64_t(height) * (sizeof(TrimPixel) + 4 + 3 * sizeof(float)),
+                  "the CPU reference at " + std::to_string(width) + "x" + std::to_string(height),
+                  "render a smaller image");
     result.trim = TrimImage(width, height);
     result.color = RgbaImage(width, height);
     result.diagnostics = ReferenceDiagnostics(width, height);

@@ -18,6 +18,10 @@
 
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QFile>
 #include <QtTest>
 
 #include <cmath>
@@ -55,6 +59,7 @@ private slots:
     void kplusBackendAgreesWithReference();
     void everyMethodRendersAndReportsItsStatistics();
     void scriptReplayRendersTheDynamicRulesLikeTheReference();
+    void projectWithoutFramesRendersItsBaseMesh();
 
 private:
     QTemporaryDir m_dir;
@@ -272,6 +277,42 @@ void TestCommandLine::scriptReplayRendersTheDynamicRulesLikeTheReference()
     qInfo("%s", qPrintable(comparison.summary()));
     QVERIFY(comparison.coveredPixels > 2000);
     QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05, qPrintable(comparison.summary()));
+}
+
+// A project saved before the first edit has a base mesh and no frames. Under the
+// dynamic rules (the default for projects) it renders its base mesh, classified by the
+// static base rule, exactly as the static classification draws it; before, it failed with
+// "a dynamic chain needs one rule per set", naming no file.
+void TestCommandLine::projectWithoutFramesRendersItsBaseMesh()
+{
+    TRIMLAB_SKIP_WITHOUT_GL();
+    QFile source(data("projects/v2_cube_cage.trimlab")); // a closed cube surface and one edit
+    QVERIFY(source.open(QIODevice::ReadOnly));
+    QJsonObject project = QJsonDocument::fromJson(source.readAll()).object();
+    project["frames"] = QJsonArray();
+    project["sets"] = QJsonArray();
+    const QString path = m_dir.filePath("no-frames.trimlab");
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(QJsonDocument(project).toJson());
+    file.close();
+
+    const QString dynamic = m_dir.filePath("no-frames-dynamic.png");
+    const Run run = runTrimlab({"render", path, "--size", "160x120", "-o", dynamic});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains("frame 0 of 0") && run.out.contains("no deformation before this frame"),
+             qPrintable(run.out));
+    const QString plain = m_dir.filePath("no-frames-static.png");
+    const Run staticRun = runTrimlab({"render", path, "--classification", "static", "--size", "160x120", "-o", plain});
+    QVERIFY2(staticRun.exitCode == 0, qPrintable(staticRun.err));
+    const QImage a(dynamic);
+    QVERIFY(!a.isNull());
+    QCOMPARE(a, QImage(plain));
+    int covered = 0; // not an empty picture
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x)
+            covered += a.pixel(x, y) != a.pixel(0, 0);
+    QVERIFY2(covered > 1000, qPrintable(QString::number(covered)));
 }
 
 QTEST_MAIN(TestCommandLine)

@@ -6,6 +6,7 @@
 // 64-bit limits. Each is refused with a
 // message naming the file and the value read; before, each loaded (the extra data and the
 // negative values silently ignored). A trailing line break is no data and still loads.
+#include "core/catalog/scene_source.h"
 #include "core/mesh/mesh_io.h"
 #include "core/mesh/mesh_load_error.h"
 
@@ -99,6 +100,8 @@ private slots:
     void wholeFilesLoad();
     void disagreementsAreRefused_data();
     void disagreementsAreRefused();
+    void unusableSurfacesAreRefused_data();
+    void unusableSurfacesAreRefused();
 
 private:
     QTemporaryDir m_dir;
@@ -201,6 +204,37 @@ void TestDeclaredSizes::disagreementsAreRefused()
     const std::string error = loadError(path);
     QVERIFY2(!error.empty(), qPrintable(name + " loaded"));
     QVERIFY2(error.rfind(path, 0) == 0, error.c_str());
+    QVERIFY2(QString::fromStdString(error).contains(message), error.c_str());
+}
+
+void TestDeclaredSizes::unusableSurfacesAreRefused_data()
+{
+    QTest::addColumn<QString>("points");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("every control point the same")
+        << "[[1,1,1],[1,1,1],[1,1,1],[1,1,1]]" << "tessellation is unusable: the geometry is degenerate: all 2160";
+    QTest::newRow("the net on a line") << "[[0,0,0],[1,0,0],[0,0,0],[1,0,0]]"
+                                       << "tessellation is unusable: the geometry is degenerate: all 2256";
+}
+
+// NURBS files that parse but tessellate to nothing drawable rendered an empty picture with
+// exit code 0; they are refused at load, naming the file and the surface.
+void TestDeclaredSizes::unusableSurfacesAreRefused()
+{
+    QFETCH(QString, points);
+    QFETCH(QString, message);
+    const std::string path = m_dir.filePath(QString(QTest::currentDataTag()).replace(' ', '-') + ".nurbs.json").toStdString();
+    writeFile(path, R"({"format":"trimlab-nurbs","version":1,"surfaces":[{"degreeU":1,"degreeV":1,"countU":2,)"
+                    R"("countV":2,"knotsU":[0,0,1,1],"knotsV":[0,0,1,1],"points":)" +
+                        points.toStdString() + R"(,"weights":[1,1,1,1]}]})");
+    std::string error;
+    try {
+        (void)loadScene(path);
+    } catch (const MeshLoadError& e) {
+        error = e.what();
+    }
+    QVERIFY2(!error.empty(), "the surface loaded");
+    QVERIFY2(error.rfind(path, 0) == 0 && error.find("surfaces[0]") != std::string::npos, error.c_str());
     QVERIFY2(QString::fromStdString(error).contains(message), error.c_str());
 }
 
