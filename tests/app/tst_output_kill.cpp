@@ -30,7 +30,7 @@ namespace {
 constexpr int kKillsPerVerb = 20;
 
 /// How to tell a whole output from a truncated one.
-enum class Kind { Png, Pfm, Json, Glb };
+enum class Kind { Png, Pfm, Json, Glb, Csv };
 
 struct Output {
     QString path;
@@ -63,6 +63,17 @@ QString problemOf(const Output& output)
         QJsonParseError error;
         (void)QJsonDocument::fromJson(bytes, &error);
         return error.error == QJsonParseError::NoError ? QString() : QStringLiteral("not whole JSON: ") + error.errorString();
+    }
+    case Kind::Csv: {
+        // Every row has the header's number of fields, and the file ends with a line break.
+        const QList<QByteArray> rows = bytes.split('\n');
+        if (!bytes.endsWith('\n') || rows.size() < 3)
+            return QStringLiteral("not a whole CSV");
+        const qsizetype fields = rows.front().count(',');
+        for (qsizetype i = 1; i + 1 < rows.size(); ++i)
+            if (rows[i].count(',') != fields)
+                return QStringLiteral("CSV row %1 has a different number of fields").arg(i);
+        return {};
     }
     case Kind::Glb: {
         if (bytes.size() < 12 || !bytes.startsWith("glTF"))
@@ -113,6 +124,8 @@ void TestOutputKill::killedVerbsLeaveWholeOutputs_data()
         << QStringList{d + "r.png", d + "r.pfm", d + "r-ids.png"} << QList<int>{int(Kind::Png), int(Kind::Pfm), int(Kind::Png)};
     QTest::newRow("segment -o .json") << QStringList{"segment", animation("bar"), "--clusters", "2", "--h", "0.2", "-o", d + "s.json"}
                                       << QStringList{d + "s.json"} << QList<int>{int(Kind::Json)};
+    QTest::newRow("segment -o .csv") << QStringList{"segment", animation("bar"), "--clusters", "2", "--h", "0.2", "-o", d + "s.csv"}
+                                     << QStringList{d + "s.csv"} << QList<int>{int(Kind::Csv)};
     QTest::newRow("segment -o .gltf") << QStringList{"segment", animation("bar"), "--clusters", "2", "--h", "0.2", "-o", d + "s.gltf"}
                                       << QStringList{d + "s.gltf"} << QList<int>{int(Kind::Json)};
     QTest::newRow("skin -o .glb") << QStringList{"skin", animation("bar"), "--bones", "2", "--method", "dqs", "-o", d + "k.glb"}
