@@ -1,6 +1,7 @@
 #include "ui/common/window_context.h"
 
 #include "ui/common/last_directory.h"
+#include "ui/common/panel_wheel_guard.h"
 
 #include <QDockWidget>
 #include <QFileDialog>
@@ -34,6 +35,7 @@ QDockWidget* WindowContext::addSideDock(const QString& title, const QString& obj
     scroll->setWidget(content);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
+    guardPanelWheel(*scroll); // the wheel scrolls the panel, not the control under the cursor
     auto* dock = new QDockWidget(title, &m_window);
     dock->setObjectName(objectName);
     dock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);

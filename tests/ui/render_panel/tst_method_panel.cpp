@@ -22,6 +22,11 @@
 
 #include "render/rgba_qimage.h"
 
+#include <QDockWidget>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QWheelEvent>
+#include <QApplication>
 #include <QtTest>
 
 #include <QComboBox>
@@ -63,6 +68,7 @@ private slots:
     void overflowAdviceRules();
     void frameTimesUseGpuOnlyWhenEveryFrameHasOne();
     void memoryBudgetFallsBackToLeanerMethods();
+    void wheelScrollsThePanelNotItsControls();
 
 private:
     [[nodiscard]] std::unique_ptr<MainWindow> showWindow(const QString& settingsName)
@@ -423,6 +429,54 @@ void TestMethodPanel::memoryBudgetFallsBackToLeanerMethods()
     budget->setValue(0);
     QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return f.stats.method == render::FragmentMethodKind::KPlusArray; }));
     QVERIFY(!viewport->showsCpuStill());
+}
+
+namespace {
+
+/// One wheel notch down over the middle of `widget`, delivered as the window system would
+/// (through QApplication::notify, where focus and event filters act).
+void wheelDown(QWidget* widget)
+{
+    const QPointF local(widget->width() / 2.0, widget->height() / 2.0);
+    QWheelEvent event(local, widget->mapToGlobal(local), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
+                      Qt::NoScrollPhase, false);
+    QApplication::sendEvent(widget, &event);
+}
+
+} // namespace
+
+// Scrolling the Render panel with the wheel changed whatever spin box or combo box passed
+// under the cursor (k from 16 to 13) and re-rendered. The wheel now scrolls the panel and
+// leaves unfocused controls alone; a control the user focused still takes the wheel.
+void TestMethodPanel::wheelScrollsThePanelNotItsControls()
+{
+    auto window = showWindow(QStringLiteral("wheel"));
+    QVERIFY(waitForFrame(*window, [](const ViewportFrame&) { return true; }));
+    auto* k = child<QSpinBox>(window.get(), "kSpinBox");
+    auto* combo = child<QComboBox>(window.get(), "methodComboBox");
+    QVERIFY(k && combo && k->isEnabled());
+    auto* panel = qobject_cast<QScrollArea*>(window->renderWorkspace()->dock()->widget());
+    QVERIFY(panel);
+    if (QWidget* focused = QApplication::focusWidget())
+        focused->clearFocus(); // as after a click in the viewport: no panel control has the focus
+
+    const int kBefore = k->value();
+    const int methodBefore = combo->currentIndex();
+    panel->verticalScrollBar()->setValue(0);
+    wheelDown(k);
+    wheelDown(combo);
+    QCOMPARE(k->value(), kBefore);
+    QCOMPARE(combo->currentIndex(), methodBefore);
+    QVERIFY(!k->hasFocus() && !combo->hasFocus());
+    if (panel->verticalScrollBar()->maximum() > 0) // the panel scrolled instead
+        QVERIFY(panel->verticalScrollBar()->value() > 0);
+
+    window->activateWindow(); // focus needs an active window (Xvfb has no window manager to give it)
+    QVERIFY(QTest::qWaitForWindowActive(window.get()));
+    k->setFocus();
+    QVERIFY(QTest::qWaitFor([&] { return k->hasFocus(); }, kWaitMs));
+    wheelDown(k);
+    QCOMPARE(k->value(), kBefore - 1);
 }
 
 QTEST_MAIN(TestMethodPanel)
