@@ -1,5 +1,4 @@
 #include "core/animation/gltf_animation.h"
-#include "core/util/memory_budget.h"
 
 #include "core/animation/gltf_animated_geometry.h"
 #include "core/animation/gltf_animation_clip.h"
@@ -10,6 +9,7 @@
 #include "core/mesh/mesh_io.h"
 #include "core/mesh/mesh_load_error.h"
 #include "core/mesh/reader_support.h"
+#include "core/util/memory_budget.h"
 
 #include <cmath>
 #include <cstdio>

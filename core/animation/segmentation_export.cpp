@@ -1,12 +1,11 @@
 #include "core/animation/segmentation_export.h"
+
 #include "core/io/atomic_write.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <stdexcept>
 
 namespace trimlab {

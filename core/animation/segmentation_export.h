@@ -59,8 +59,9 @@ struct SegmentationRecord {
 /// "#rrggbb" of a colour (8 bits per channel, rounded).
 [[nodiscard]] std::string hexColor(const WheelColor& color);
 
-/// Writes `text` to `path` (replacing it). Throws std::runtime_error naming the file
-/// when it cannot be written.
+/// Writes `text` to `path` through a temporary file and a rename (atomic_write.h), so a
+/// failed or killed write leaves an earlier file whole. Throws std::runtime_error naming
+/// the file when it cannot be written.
 void writeTextFile(const std::filesystem::path& path, const std::string& text);
 
 } // namespace trimlab

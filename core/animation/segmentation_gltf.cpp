@@ -1,16 +1,13 @@
 #include "core/animation/segmentation_gltf.h"
-#include "core/io/atomic_write.h"
 
 #include "core/io/gltf_builder.h"
+#include "core/io/atomic_write.h"
 
 #include <tiny_gltf.h>
 
 #include <glm/common.hpp>
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 

@@ -1,9 +1,9 @@
 #include "core/animation/sequence_loader.h"
-#include "core/util/memory_budget.h"
 
 #include "core/util/parallel_for.h"
 #include "core/animation/pose_topology.h"
 #include "core/mesh/mesh_io.h"
+#include "core/util/memory_budget.h"
 
 #include <exception>
 #include <stdexcept>

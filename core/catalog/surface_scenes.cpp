@@ -1,6 +1,4 @@
 #include "core/catalog/surface_scenes.h"
-#include <optional>
-#include "core/mesh/mesh_load_error.h"
 
 #include "core/surface/editable_surface.h"
 #include "core/catalog/fig8_13_history.h"
@@ -9,11 +7,13 @@
 #include "core/surface/nurbs_primitives.h"
 #include "core/surface/subdivision_cages.h"
 #include "core/timeline/control_edit.h"
+#include "core/mesh/mesh_load_error.h"
 
 #include <algorithm>
 #include <array>
-#include <exception>
 #include <cctype>
+#include <exception>
+#include <optional>
 
 namespace trimlab {
 

@@ -15,22 +15,19 @@ namespace {
 /// What a stat mode is, for a file that is not regular.
 std::string kindOf(mode_t mode)
 {
-    if (S_ISDIR(mode))
-        return "is a folder";
-    if (S_ISFIFO(mode))
-        return "is a named pipe (FIFO)";
-    if (S_ISCHR(mode) || S_ISBLK(mode))
-        return "is a device";
-    if (S_ISSOCK(mode))
-        return "is a socket";
-    return "is not a regular file";
+    const char* kind = S_ISDIR(mode)                     ? "a folder"
+                       : S_ISFIFO(mode)                  ? "a named pipe (FIFO)"
+                       : S_ISCHR(mode) || S_ISBLK(mode)  ? "a device"
+                       : S_ISSOCK(mode)                  ? "a socket"
+                                                         : nullptr;
+    return kind ? "is " + std::string(kind) + ", not a regular file" : "is not a regular file";
 }
 
 std::string errnoReason(int error)
 {
     switch (error) {
     case ELOOP:
-        return "is a loop of symbolic links";
+        return "is a loop of symbolic links, not a regular file";
     case ENOTDIR:
         return "does not exist (a folder on its path is a file)";
     default:
@@ -64,7 +61,7 @@ std::string readFileBytes(const std::filesystem::path& path, std::size_t maxByte
     // device may have effects); the second, on the open descriptor, closes the gap in
     // which the file could have been swapped.
     if (const std::string problem = regularFileProblem(path); !problem.empty())
-        throw std::runtime_error("cannot open: " + problem + (problem.starts_with("is a ") ? ", not a regular file" : ""));
+        throw std::runtime_error("cannot open: " + problem);
     Descriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY)};
     if (file.fd < 0)
         throw std::runtime_error("cannot open: " + errnoReason(errno));
@@ -72,7 +69,7 @@ std::string readFileBytes(const std::filesystem::path& path, std::size_t maxByte
     if (::fstat(file.fd, &info) != 0)
         throw std::runtime_error(std::string("cannot read the size: ") + std::strerror(errno));
     if (!S_ISREG(info.st_mode))
-        throw std::runtime_error("cannot open: " + kindOf(info.st_mode) + ", not a regular file");
+        throw std::runtime_error("cannot open: " + kindOf(info.st_mode));
     if (std::uintmax_t(info.st_size) > maxBytes)
         throw std::runtime_error("is larger than " + std::to_string(maxBytes) + " bytes");
     std::string bytes(static_cast<std::size_t>(info.st_size), '\0');

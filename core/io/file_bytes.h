@@ -12,8 +12,8 @@
 namespace trimlab::timeline {
 
 /// Why `path` is no regular file TrimLab may read ("No such file or directory", "is a
-/// folder", "is a named pipe (FIFO)", "is a device", "is a socket", "is a loop of symbolic
-/// links", ...), or "" when it is one. Symbolic links are followed.
+/// folder, not a regular file", the same for a named pipe (FIFO), a device, a socket or a
+/// loop of symbolic links, ...), or "" when it is one. Symbolic links are followed.
 [[nodiscard]] std::string regularFileProblem(const std::filesystem::path& path);
 
 /// The bytes of `path`. Throws std::runtime_error whose what() is only the reason

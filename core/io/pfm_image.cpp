@@ -1,4 +1,5 @@
 #include "core/io/pfm_image.h"
+
 #include "core/io/atomic_write.h"
 #include "core/io/file_bytes.h"
 

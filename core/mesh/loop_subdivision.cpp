@@ -1,4 +1,5 @@
 #include "core/mesh/loop_subdivision.h"
+
 #include "core/util/memory_budget.h"
 
 #include <opensubdiv/far/primvarRefiner.h>

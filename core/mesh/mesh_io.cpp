@@ -147,8 +147,7 @@ std::string readMeshInputFile(const std::filesystem::path& path, const std::stri
     if (problem == std::strerror(ENOENT))
         throw MeshLoadError(displayName, "cannot open the file: it does not exist");
     if (!problem.empty())
-        throw MeshLoadError(displayName, "cannot open the file: it " + problem +
-                                             (problem.starts_with("is a ") ? ", not a regular file" : ""));
+        throw MeshLoadError(displayName, "cannot open the file: it " + problem);
     std::error_code error;
     const std::uintmax_t size = std::filesystem::file_size(path, error);
     if (!error && size > kMaxMeshInputBytes)

@@ -1,9 +1,9 @@
 #include "core/surface/editable_surface.h"
-#include "core/mesh/mesh_validation.h"
-#include "core/util/memory_budget.h"
 
 #include "core/surface/nurbs_tessellation.h"
 #include "core/surface/subdivision_surface.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/util/memory_budget.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,18 +1,15 @@
 // exportMorphGltf / morphGltf (declared in frame_export.h): the timeline as a glTF 2.0
 // morph-target animation.
 #include "core/timeline/frame_export.h"
-#include "core/io/atomic_write.h"
 
 #include "core/io/gltf_builder.h"
+#include "core/io/atomic_write.h"
 
 #include <tiny_gltf.h>
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <span>
 #include <sstream>
 #include <stdexcept>

@@ -1,5 +1,4 @@
 #include "core/timeline/project_file.h"
-#include "core/util/memory_budget.h"
 
 #include "core/timeline/control_edit.h"
 #include "core/surface/editable_surface.h"
@@ -9,6 +8,7 @@
 #include "core/io/json_fields.h"
 #include "core/timeline/stroke_json.h"
 #include "core/timeline/surface_json.h"
+#include "core/util/memory_budget.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,9 +1,9 @@
 #include "core/trim/reference_renderer.h"
-#include "core/util/memory_budget.h"
 
 #include "core/scene/world_geometry.h"
 #include "core/trim/transparency.h"
 #include "core/trim/trim_shading.h"
+#include "core/util/memory_budget.h"
 
 #include <glm/geometric.hpp>
 
