@@ -16,6 +16,7 @@
 #include <QOpenGLContext>
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -58,29 +59,34 @@ bool needsInspectionMethod(const TrimSettings& settings)
     return settings.perObjectWinding() || settings.highlight.coplanar || settings.xray();
 }
 
+std::optional<std::string> methodRefusal(const MethodInfo& info, bool dynamic, const TrimSettings& settings)
+{
+    const std::string name(info.displayName);
+    if (dynamic && !info.dynamicRules)
+        return name + " cannot run the dynamic rules: it never holds a pixel's reference and current fragments "
+                      "together. Pick a buffer method (k+-buffer, S-buffer, AB_FP or AB_LL).";
+    if (settings.xray() && !info.inspection)
+        return name + " cannot render transparency (X-ray): it never holds all of a pixel's fragments in one pass. "
+                      "Pick a buffer method (k+-buffer, S-buffer, K+B-SB, AB_FP or AB_LL).";
+    if (needsInspectionMethod(settings) && !info.inspection)
+        return name + " cannot render " + inspectionFeatures(settings) +
+               ": it never holds all of a pixel's fragments in one pass. Pick a buffer method (k+-buffer, S-buffer, "
+               "K+B-SB, AB_FP or AB_LL); clipping and capping work with every method.";
+    return std::nullopt;
+}
+
 namespace {
 
-// Throws std::invalid_argument when `settings` ask for something the method, the mode or
-// the scene cannot do, naming what to pick instead.
-void checkInspection(const MethodInfo& info, const TrimMode& mode, const TrimSettings& settings,
-                     std::size_t objectCount)
+// Throws std::invalid_argument when `settings` ask for something the mode or the scene
+// cannot do (what the method cannot do is methodRefusal's), naming what to pick instead.
+void checkInspection(const TrimMode& mode, const TrimSettings& settings, std::size_t objectCount)
 {
     if (settings.xray() && mode.dynamic)
         throw std::invalid_argument("Transparency (X-ray) is not available with the dynamic rules; switch the "
                                     "classification to static to use it.");
-    if (settings.xray() && !info.inspection)
-        throw std::invalid_argument(std::string(info.displayName) +
-                                    " cannot render transparency (X-ray): it never holds all of a pixel's fragments "
-                                    "in one pass. Pick a buffer method (k+-buffer, S-buffer, K+B-SB, AB_FP or AB_LL).");
-    const bool needsWalk = needsInspectionMethod(settings);
-    if (mode.dynamic && (needsWalk || settings.capping()))
+    if (mode.dynamic && (needsInspectionMethod(settings) || settings.capping()))
         throw std::invalid_argument("Capping, CSG and highlighting are not available with the dynamic rules; switch the "
                                     "classification to static to use them.");
-    if (needsWalk && !info.inspection)
-        throw std::invalid_argument(std::string(info.displayName) + " cannot render " + inspectionFeatures(settings) +
-                                    ": it never holds all of a pixel's fragments in one pass. Pick a buffer method "
-                                    "(k+-buffer, S-buffer, K+B-SB, AB_FP or AB_LL); clipping and capping work with "
-                                    "every method.");
     if (settings.csg.enabled() && settings.trimEnabled) {
         const int maxId = csgMaxObjectId(settings.csg.expression);
         if (maxId >= int(objectCount))
@@ -154,12 +160,9 @@ void TrimRenderer::render(const Camera& camera, const TrimSettings& settings, in
 void TrimRenderer::render(GpuScene& scene, const TrimMode& mode, const Camera& camera, const TrimSettings& settings,
                           int width, int height)
 {
-    const MethodInfo& info = methodInfo(m_method->kind());
-    if (mode.dynamic && !info.dynamicRules)
-        throw std::invalid_argument(std::string(info.displayName) +
-                                    " cannot run the dynamic rules: it never holds a pixel's reference and current "
-                                    "fragments together. Pick a buffer method (k+-buffer, S-buffer, AB_FP or AB_LL).");
-    checkInspection(info, mode, settings, scene.objectCount());
+    if (const std::optional<std::string> refusal = methodRefusal(methodInfo(m_method->kind()), mode.dynamic, settings))
+        throw std::invalid_argument(*refusal);
+    checkInspection(mode, settings, scene.objectCount());
     checkFrameLimits(m_method->kind(), m_capabilities, m_parameters,
                      m_method->estimateBytes(width, height, m_parameters), width, height);
     QElapsedTimer wall;

@@ -19,6 +19,8 @@
 #include <QStringList>
 
 #include <memory>
+#include <optional>
+#include <string>
 
 class QOpenGLContext;
 
@@ -59,6 +61,11 @@ struct TrimMode {
 /// (MethodInfo::inspection): per-object windings (CSG, collision highlighting), coplanar
 /// counts or transparency. Other methods refuse such settings with std::invalid_argument.
 [[nodiscard]] bool needsInspectionMethod(const TrimSettings& settings);
+/// Why the method `info` cannot render `settings` (under the dynamic rules when
+/// `dynamic`), naming the methods to pick instead; nullopt when it can. render() throws
+/// this reason; the Render panel shows it on the methods it disables.
+[[nodiscard]] std::optional<std::string> methodRefusal(const MethodInfo& info, bool dynamic,
+                                                       const TrimSettings& settings);
 
 class TrimRenderer {
 public:

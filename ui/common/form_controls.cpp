@@ -2,6 +2,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QLabel>
 
 namespace trimlab::ui {
 
@@ -28,6 +29,17 @@ QCheckBox* namedCheckBox(const QString& text, const char* name, const QString& t
     box->setObjectName(QString::fromLatin1(name));
     box->setToolTip(toolTip);
     return box;
+}
+
+QLabel* noticeLabel(QWidget* parent, const char* name, NoticeKind kind)
+{
+    auto* label = new QLabel(parent);
+    label->setObjectName(QLatin1String(name));
+    label->setWordWrap(true);
+    label->setStyleSheet(kind == NoticeKind::Warning ? QStringLiteral("QLabel { color: #e67e22; }")
+                                                     : QStringLiteral("QLabel { color: #c0392b; }"));
+    label->setVisible(false);
+    return label;
 }
 
 } // namespace trimlab::ui

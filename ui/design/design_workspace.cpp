@@ -224,7 +224,11 @@ void DesignWorkspace::startSession(timeline::Timeline history, const glm::dmat4&
     m_undoGroup->setActiveStack(stack);
     connect(stack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
     connect(m_session.get(), &DesignSession::historyChanged, this, &DesignWorkspace::onHistoryChanged);
-    connect(m_session.get(), &DesignSession::shownFrameChanged, this, &DesignWorkspace::refreshView);
+    // Another frame shown, or the history changed: the frame replaces a foreign pose.
+    connect(m_session.get(), &DesignSession::shownFrameChanged, this, [this] {
+        m_foreignPose.clear();
+        refreshView();
+    });
     m_brush->setSession(m_session.get());
     m_brush->setDynamicRules(showsDynamicRules());
     m_points->setSession(m_session.get());
@@ -244,6 +248,7 @@ void DesignWorkspace::endSession()
 {
     if (!m_session)
         return;
+    m_foreignPose.clear();
     m_brush->setSession(nullptr);
     m_points->setSession(nullptr);
     m_overlay->clearNet();
@@ -359,6 +364,7 @@ void DesignWorkspace::showFrame(int frame)
 
 void DesignWorkspace::onHistoryChanged()
 {
+    m_foreignPose.clear();
     const timeline::Timeline& history = m_session->timeline();
     if (history.frameCount() > 1) {
         const Bounds before = m_viewBounds;
@@ -385,13 +391,45 @@ void DesignWorkspace::refreshView()
         return;
     if (const EditableSurface* surface = m_session->surface())
         m_overlay->setPoints(surface->controlPoints());
-    m_viewport->showPose(m_session->shownPositions());
+    m_viewport->showPose(m_foreignPose.empty() ? m_session->shownPositions() : m_foreignPose);
     if (!showsDynamicRules()) {
         m_viewport->setDynamicChain(nullptr);
         return;
     }
-    m_viewport->setDynamicChain(std::make_shared<const DynamicChain>(dynamicChainTo(
-        m_session->timeline(), m_session->shownFrame(), m_baseRule, m_session->modelMatrix())));
+    m_viewport->setDynamicChain(std::make_shared<const DynamicChain>(shownChain()));
+}
+
+// The chain to the shown frame; with a foreign pose its last level deforms the current
+// set's reference into the pose (the pose is one more deformation of that set), so the
+// dynamic rules classify what the view shows.
+DynamicChain DesignWorkspace::shownChain() const
+{
+    const timeline::Timeline& history = m_session->timeline();
+    DynamicChain chain = dynamicChainTo(history, m_session->shownFrame(), m_baseRule, m_session->modelMatrix());
+    if (m_foreignPose.empty())
+        return chain;
+    const timeline::Timeline::ChainLink last = history.chainTo(m_session->shownFrame()).back();
+    chain.levels.back() = dynamicShownLevel(history, history.positionsAt(last.referenceFrame), m_foreignPose,
+                                            last.rule, m_session->modelMatrix());
+    return chain;
+}
+
+void DesignWorkspace::showForeignPose(std::vector<glm::vec3> positions)
+{
+    if (!m_session || positions.size() != m_session->timeline().base().positions.size()) {
+        m_viewport->showPose(positions);
+        return;
+    }
+    m_foreignPose = std::move(positions);
+    refreshView();
+}
+
+void DesignWorkspace::clearForeignPose()
+{
+    if (m_foreignPose.empty())
+        return;
+    m_foreignPose.clear();
+    refreshView();
 }
 
 void DesignWorkspace::refreshTimelinePanel()

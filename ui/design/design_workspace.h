@@ -23,6 +23,7 @@
 #include "core/mesh/triangle_mesh.h"
 #include "core/timeline/project_file.h"
 #include "core/timeline/timeline.h"
+#include "core/trim/dynamic_chain.h"
 #include "core/trim/static_rule.h"
 
 #include <glm/mat4x4.hpp>
@@ -32,6 +33,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 class QAction;
 class QDockWidget;
@@ -112,6 +114,14 @@ public:
     void chooseRule(DynamicRule rule);
     void showFrame(int frame);
 
+    /// Shows `positions` (object 0's, e.g. the skeleton panel's posed mesh) in place of the
+    /// shown frame: under the dynamic rules as the current set's deformation from its
+    /// reference, so the trim follows the pose; under the static rule as the pose. Kept
+    /// across render-mode changes until the history changes, another frame is shown or
+    /// clearForeignPose(); without a session it goes to the viewport directly.
+    void showForeignPose(std::vector<glm::vec3> positions);
+    void clearForeignPose();
+
     /// Milliseconds the last homogeneous confluent check took (chain and rays), 0 before.
     [[nodiscard]] double lastTrimCheckMilliseconds() const;
 
@@ -129,6 +139,7 @@ private:
     void connectParts();
     void onSessionChanged();
     void refreshView();
+    [[nodiscard]] DynamicChain shownChain() const;
     void showControlNet();
     void onHistoryChanged();
     void extendViewBounds(const std::vector<glm::vec3>& positions);
@@ -148,6 +159,8 @@ private:
     QAction* m_redoAction = nullptr;
     QAction* m_brushAction = nullptr;
     QAction* m_newSetAction = nullptr;
+    /// showForeignPose's positions; empty: the shown frame's.
+    std::vector<glm::vec3> m_foreignPose;
     ProjectFiles* m_projectFiles = nullptr;
     SessionRecovery* m_recovery = nullptr;
     HistoryExports* m_exports = nullptr;

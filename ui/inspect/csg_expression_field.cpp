@@ -1,5 +1,7 @@
 #include "ui/inspect/csg_expression_field.h"
 
+#include "ui/common/form_controls.h"
+
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -45,11 +47,7 @@ CsgExpressionField::CsgExpressionField(QWidget* parent) : QGroupBox(tr("CSG"), p
                           "does not mention are not shown. Needs a buffer method (not peeling or two-pass)."));
     m_text->setClearButtonEnabled(true);
     layout->addWidget(m_text);
-    m_error = new QLabel(this);
-    m_error->setObjectName(QStringLiteral("csgErrorLabel"));
-    m_error->setWordWrap(true);
-    m_error->setStyleSheet(QStringLiteral("QLabel { color: #c0392b; }"));
-    m_error->setVisible(false);
+    m_error = noticeLabel(this, "csgErrorLabel", NoticeKind::Error);
     layout->addWidget(m_error);
     auto* buttons = new QHBoxLayout;
     buttons->setContentsMargins(0, 0, 0, 0);

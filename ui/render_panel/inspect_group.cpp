@@ -1,16 +1,19 @@
 #include "ui/render_panel/inspect_group.h"
 
+#include "ui/common/form_controls.h"
 #include "ui/render_panel/render_choices.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QLabel>
 #include <QSignalBlocker>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 
 namespace trimlab::ui {
 
@@ -60,6 +63,8 @@ InspectGroup::InspectGroup(QWidget* parent) : QGroupBox(tr("Capping and highligh
 {
     setObjectName(QStringLiteral("inspectGroup"));
     auto* form = new QFormLayout(this);
+    m_unavailable = noticeLabel(this, "inspectUnavailableLabel", NoticeKind::Warning);
+    form->addRow(m_unavailable);
     m_cap = new QCheckBox(tr("Cap the cut"), this);
     m_cap->setObjectName(QStringLiteral("capCheckBox"));
     m_cap->setToolTip(tr("Where a clipping plane cuts into the solid (under the rule, or the CSG result), show the "
@@ -213,11 +218,26 @@ HighlightSettings InspectGroup::highlight() const
     return {m_collisions->isChecked(), m_coplanar->isChecked()};
 }
 
+void InspectGroup::setUnavailableReason(const QString& reason)
+{
+    m_unavailable->setText(reason);
+    m_unavailable->setVisible(!reason.isEmpty());
+    updateEnabled();
+}
+
+QString InspectGroup::unavailableReason() const
+{
+    return m_unavailable->text();
+}
+
 void InspectGroup::updateEnabled()
 {
-    m_pattern->setEnabled(m_cap->isChecked());
-    m_spacing->setEnabled(m_cap->isChecked());
-    const bool xray = m_xrayMode->currentData().toString() != kXrayOff;
+    const bool available = m_unavailable->text().isEmpty();
+    for (QWidget* control : std::initializer_list<QWidget*>{m_cap, m_collisions, m_coplanar, m_xrayMode})
+        control->setEnabled(available);
+    m_pattern->setEnabled(available && m_cap->isChecked());
+    m_spacing->setEnabled(available && m_cap->isChecked());
+    const bool xray = available && m_xrayMode->currentData().toString() != kXrayOff;
     m_layerAlpha->setEnabled(xray && transparency().display == TrimDisplay::Translucent);
     for (QDoubleSpinBox* spin : {m_ghostAlpha, m_density, m_fresnel})
         spin->setEnabled(xray);

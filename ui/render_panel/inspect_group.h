@@ -18,6 +18,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QLabel;
 
 namespace trimlab::ui {
 
@@ -39,6 +40,10 @@ public:
     /// of the spin boxes).
     void setTransparency(const TransparencySettings& transparency);
     [[nodiscard]] TransparencySettings transparency() const;
+    /// Why nothing in the group applies now ("" when it does): the controls are disabled,
+    /// keeping their choices, and a line in the group says why.
+    void setUnavailableReason(const QString& reason);
+    [[nodiscard]] QString unavailableReason() const;
 
 signals:
     /// Any user edit.
@@ -49,6 +54,7 @@ private:
     QWidget* createXrayRows();
     void updateEnabled();
 
+    QLabel* m_unavailable = nullptr;
     QCheckBox* m_cap = nullptr;
     QComboBox* m_pattern = nullptr;
     QDoubleSpinBox* m_spacing = nullptr;

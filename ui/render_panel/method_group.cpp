@@ -7,6 +7,7 @@
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSpinBox>
+#include <QStandardItemModel>
 
 namespace trimlab::ui {
 
@@ -96,6 +97,39 @@ void MethodGroup::addMethodItems()
         m_method->addItem(methodDisplayName(info), methodKey(info));
         m_method->setItemData(m_method->count() - 1, methodToolTip(info), Qt::ToolTipRole);
     }
+    m_unavailable.assign(std::size_t(m_method->count()), QString());
+}
+
+void MethodGroup::setUnavailableMethods(const std::function<std::optional<QString>(const render::MethodInfo&)>& why)
+{
+    auto* model = qobject_cast<QStandardItemModel*>(m_method->model());
+    for (int i = 0; i < m_method->count(); ++i) {
+        const auto kind = render::parseFragmentMethod(m_method->itemData(i).toString().toStdString());
+        if (!kind)
+            continue;
+        const render::MethodInfo& info = render::methodInfo(*kind);
+        const std::optional<QString> reason = why(info);
+        m_unavailable[std::size_t(i)] = reason.value_or(QString());
+        if (QStandardItem* item = model ? model->item(i) : nullptr)
+            item->setEnabled(!reason);
+        m_method->setItemData(i, reason ? tr("Unavailable: %1").arg(*reason) : methodToolTip(info), Qt::ToolTipRole);
+    }
+}
+
+QString MethodGroup::unavailableReason(render::FragmentMethodKind method) const
+{
+    for (int i = 0; i < m_method->count(); ++i)
+        if (render::parseFragmentMethod(m_method->itemData(i).toString().toStdString()) == method)
+            return m_unavailable[std::size_t(i)];
+    return {};
+}
+
+std::optional<render::FragmentMethodKind> MethodGroup::firstAvailableMethod() const
+{
+    for (int i = 0; i < m_method->count(); ++i)
+        if (m_unavailable[std::size_t(i)].isEmpty())
+            return render::parseFragmentMethod(m_method->itemData(i).toString().toStdString());
+    return std::nullopt;
 }
 
 void MethodGroup::setChoices(render::FragmentMethodKind method, int k, int sharedCounters)

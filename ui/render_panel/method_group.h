@@ -13,6 +13,10 @@
 
 #include <QGroupBox>
 
+#include <functional>
+#include <optional>
+#include <vector>
+
 class QComboBox;
 class QLabel;
 class QSpinBox;
@@ -32,6 +36,14 @@ public:
     /// Shows the budget (MB, 0 = none) without emitting changed().
     void setMemoryBudgetMegabytes(int megabytes);
     [[nodiscard]] int memoryBudgetMegabytes() const;
+    /// Disables the methods `why` gives a reason for, with the reason as their tooltip
+    /// (the others get methodToolTip()). The current choice stays selected even when
+    /// disabled; the caller moves it (RenderWorkspace::apply).
+    void setUnavailableMethods(const std::function<std::optional<QString>(const render::MethodInfo&)>& why);
+    /// Whether the item of `method` is enabled, and the reason it is not ("" when it is).
+    [[nodiscard]] QString unavailableReason(render::FragmentMethodKind method) const;
+    /// The first method whose item is enabled, in the list's order (nullopt: none).
+    [[nodiscard]] std::optional<render::FragmentMethodKind> firstAvailableMethod() const;
     /// Shows `estimate` ("≈ 12.0 MB at 1024×768", "depends on the scene", or nothing).
     void setMemoryEstimate(const MemoryEstimate& estimate);
 
@@ -48,6 +60,7 @@ private:
     QSpinBox* m_sharedCounters = nullptr;
     QSpinBox* m_budget = nullptr;
     QLabel* m_memory = nullptr;
+    std::vector<QString> m_unavailable; ///< per item: why it is disabled, "" when it is not
 };
 
 /// The tooltip of a method: bounded or not, and what its parameters do.

@@ -1,5 +1,6 @@
 #include "ui/render_panel/render_panel.h"
 
+#include "ui/common/form_controls.h"
 #include "ui/render_panel/clip_set_editor.h"
 #include "ui/render_panel/inspect_group.h"
 #include "ui/render_panel/method_group.h"
@@ -85,11 +86,7 @@ QWidget* RenderPanel::createTrimGroup()
                                     "by the dynamic rules of its sets (thesis 8.1.1), the static rule classifying "
                                     "the base mesh. Needs a buffer method (not peeling or two-pass)."));
     form->addRow(tr("Classification"), m_classification);
-    m_trimUnavailable = new QLabel(group);
-    m_trimUnavailable->setObjectName(QStringLiteral("trimUnavailableLabel"));
-    m_trimUnavailable->setWordWrap(true);
-    m_trimUnavailable->setStyleSheet(QStringLiteral("QLabel { color: #e67e22; }"));
-    m_trimUnavailable->setVisible(false);
+    m_trimUnavailable = noticeLabel(group, "trimUnavailableLabel", NoticeKind::Warning);
     form->addRow(m_trimUnavailable);
     connect(m_trim, &QCheckBox::toggled, this, &RenderPanel::renderChoicesChanged);
     connect(m_rule, &QComboBox::currentIndexChanged, this, &RenderPanel::renderChoicesChanged);

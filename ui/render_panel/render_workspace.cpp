@@ -3,16 +3,22 @@
 #include "ui/common/window_context.h"
 #include "ui/render_panel/frame_stats_labels.h"
 #include "ui/render_panel/frame_stats_panel.h"
+#include "ui/render_panel/inspect_group.h"
 #include "ui/render_panel/method_group.h"
 #include "ui/render_panel/method_timing_panel.h"
 #include "ui/render_panel/render_panel.h"
 #include "ui/render_panel/render_settings_store.h"
 #include "ui/viewport/viewport_widget.h"
 
+#include "render/trim_renderer.h"
+
 #include <QDockWidget>
 #include <QMainWindow>
 #include <QStatusBar>
 #include <QVBoxLayout>
+
+#include <optional>
+#include <string>
 
 namespace trimlab::ui {
 
@@ -80,19 +86,64 @@ void RenderWorkspace::restoreSettings()
     m_panel->setRenderChoices(loadRenderChoices(m_context.settings()));
 }
 
-TrimSettings RenderWorkspace::apply(const CsgSettings& csg)
+namespace {
+
+/// What the dynamic rules cannot render beside the trim (render/trim_renderer.cpp's
+/// checkInspection): the static rule's inspection features, off.
+void dropStaticOnlyFeatures(TrimSettings& settings)
 {
-    const RenderChoices choices = m_panel->renderChoices();
-    saveRenderChoices(m_context.settings(), choices);
+    settings.cap.enabled = false;
+    settings.highlight = HighlightSettings{};
+    settings.transparency.enabled = false;
+    settings.csg = CsgSettings{};
+}
+
+} // namespace
+
+TrimSettings RenderWorkspace::apply(const CsgSettings& csg, bool historyShown)
+{
+    RenderChoices choices = m_panel->renderChoices();
     TrimSettings effective = choices.trim;
     effective.csg = csg; // the scene's: it belongs to the scene, not to the saved choices
     // The winding index is undefined for open or inconsistently oriented surfaces.
     effective.trimEnabled = effective.trimEnabled && m_panel->sceneTrimmable();
+    // Boxes ticked under the static rule stay ticked (and saved) but do not apply while the
+    // dynamic rules classify: the view keeps rendering instead of refusing the frame.
+    const bool dynamic = historyShown && choices.dynamicRules && effective.trimEnabled;
+    m_panel->inspectGroup()->setUnavailableReason(
+        dynamic ? tr("Capping, highlighting, X-ray and CSG need the static rule: set Classification to “Static "
+                     "rule” to use them.")
+                : QString());
+    if (dynamic)
+        dropStaticOnlyFeatures(effective);
+    MethodGroup* methods = m_panel->methodGroup();
+    methods->setUnavailableMethods([&](const render::MethodInfo& info) -> std::optional<QString> {
+        const std::optional<std::string> refusal = render::methodRefusal(info, dynamic, effective);
+        return refusal ? std::optional<QString>(QString::fromStdString(*refusal)) : std::nullopt;
+    });
+    moveOffUnavailableMethod(choices);
+    saveRenderChoices(m_context.settings(), choices);
     m_viewport->setTrimSettings(effective);
     m_viewport->setMethod(choices.method);
     m_viewport->setMethodParameters(choices.methodParameters());
     refreshMemoryEstimate();
     return effective;
+}
+
+// A method that cannot render what is asked is disabled in the list; when it is the one
+// chosen, the first that can takes over and the status bar says why (instead of a frame
+// refused with a dialog).
+void RenderWorkspace::moveOffUnavailableMethod(RenderChoices& choices)
+{
+    MethodGroup* methods = m_panel->methodGroup();
+    const QString reason = methods->unavailableReason(choices.method);
+    const std::optional<render::FragmentMethodKind> fallback = methods->firstAvailableMethod();
+    if (reason.isEmpty() || !fallback)
+        return;
+    choices.method = *fallback;
+    methods->setChoices(choices.method, choices.k, choices.sharedCounters);
+    m_context.showStatus(tr("Switched to %1. %2").arg(methodDisplayName(render::methodInfo(*fallback)), reason),
+                         4 * kStatusMessageMs);
 }
 
 void RenderWorkspace::showSceneInfo(const Bounds& bounds, bool trimmable, const QString& reason)

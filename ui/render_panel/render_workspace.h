@@ -46,9 +46,13 @@ public:
     /// The saved choices into the panel (firstStartRenderChoices() without saved ones).
     void restoreSettings();
     /// Saves the panel's choices and renders with them: `csg` is the scene's expression;
-    /// trimming is off for scenes that cannot be trimmed. Returns the trim settings the
-    /// viewport now renders with.
-    TrimSettings apply(const CsgSettings& csg);
+    /// trimming is off for scenes that cannot be trimmed. `historyShown`: a deformation
+    /// history is shown, so the dynamic rules classify when chosen — capping,
+    /// highlighting, X-ray and CSG are then disabled in the panel (kept ticked) and left
+    /// out. Methods that cannot render the result are disabled with the reason; a chosen
+    /// one is replaced by the first that can (status message). Returns the trim settings
+    /// the viewport now renders with.
+    TrimSettings apply(const CsgSettings& csg, bool historyShown);
 
     /// The shown scene's bounds (clip offsets, cap spacing) and whether it can be trimmed
     /// (`reason` says why not).
@@ -70,6 +74,7 @@ private:
     void showFrameStatistics();
     void chooseMethod(render::FragmentMethodKind method);
     void chooseK(int k);
+    void moveOffUnavailableMethod(RenderChoices& choices);
 
     const WindowContext& m_context;
     ViewportWidget* m_viewport;

@@ -247,6 +247,19 @@ void SkeletonPanel::setViewport(ViewportWidget* viewport)
     connect(m_tool, &SkeletonPoseTool::rotateRequested, this, &SkeletonPanel::rotateBone);
 }
 
+void SkeletonPanel::setPoseSink(std::function<void(std::vector<glm::vec3>)> sink)
+{
+    m_poseSink = std::move(sink);
+}
+
+void SkeletonPanel::showPositions()
+{
+    if (m_poseSink)
+        m_poseSink(m_shown);
+    else if (m_viewport)
+        m_viewport->showPose(m_shown);
+}
+
 void SkeletonPanel::setScene(std::shared_ptr<const LoadedScene> scene)
 {
     m_task->cancel(); // a result that still arrives counts as canceled
@@ -489,7 +502,7 @@ void SkeletonPanel::updatePose()
         applyDisplay(); // the contracted mesh stays; only the overlay moved
     else if (m_viewport) {
         m_shown = m_posed;
-        m_viewport->showPose(m_shown);
+        showPositions();
     }
     m_poseUpdateMs = double(timer.nsecsElapsed()) * 1e-6;
 }
@@ -523,7 +536,7 @@ void SkeletonPanel::applyDisplay()
         }
         break;
     }
-    m_viewport->showPose(m_shown);
+    showPositions();
     m_viewport->setVertexColors(m_colors);
 }
 

@@ -21,7 +21,8 @@
 ///   near it in the view and drag to turn it about its head in the view plane
 ///   (skeleton_pose_tool.h); three spin boxes give its rotation in degrees about x/y/z of
 ///   the bone's local frame (skeleton_pose_edit.h). The mesh is skinned (LBS or DQS) on
-///   every change and shown through ViewportWidget::showPose, so the trim renderer shows
+///   every change and shown through the pose sink (setPoseSink; ViewportWidget::showPose
+///   by default), so the trim renderer shows
 ///   the self-trimmed solid where the pose makes the surface cross itself. Reset pose
 ///   goes back to the rest pose.
 /// - Export rigged glTF… / Export skeleton JSON… (exportGltfRequested() /
@@ -43,8 +44,10 @@
 #include <QWidget>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -75,6 +78,9 @@ public:
 
     /// The view to show stages and poses in; creates the overlay and the pose tool.
     void setViewport(ViewportWidget* viewport);
+    /// Where the shown positions go (default: the viewport's showPose). The window routes
+    /// them through the design session, whose dynamic rules must classify the pose too.
+    void setPoseSink(std::function<void(std::vector<glm::vec3>)> sink);
     /// The scene shown (nullptr: none). Cancels a running job and forgets the result.
     void setScene(std::shared_ptr<const LoadedScene> scene);
 
@@ -141,6 +147,7 @@ private:
     void showTimes();
     void updatePose();
     void applyDisplay();
+    void showPositions();
     void updateAngleBoxes();
     void updateControls();
     [[nodiscard]] QString readyStatus() const;
@@ -166,6 +173,7 @@ private:
 
     BackgroundTask* m_task = nullptr;
     QPointer<ViewportWidget> m_viewport; ///< the window may destroy it before the panel
+    std::function<void(std::vector<glm::vec3>)> m_poseSink;
     QPointer<SkeletonOverlay> m_overlay; ///< a child of the viewport
     SkeletonPoseTool* m_tool = nullptr;
     bool m_toolInstalled = false;

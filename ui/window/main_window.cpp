@@ -11,6 +11,7 @@
 #include "ui/design/session_recovery.h"
 #include "ui/inspect/inspect_workspace.h"
 #include "ui/render_panel/render_workspace.h"
+#include "ui/skeleton/skeleton_panel.h"
 #include "ui/skeleton/skeleton_workspace.h"
 #include "ui/skinning/skinning_workspace.h"
 #include "ui/surface/surface_workspace.h"
@@ -18,7 +19,7 @@
 #include "ui/common/mesh_file_filter.h"
 #include "ui/window/scene_switch.h"
 
-#include "core/catalog/demo_scenes.h"
+#include "core/catalog/scene_source.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -159,10 +160,12 @@ void MainWindow::createFileMenu()
     QAction* open = file->addAction(tr("&Open…"), this, &MainWindow::showOpenDialog);
     open->setShortcut(QKeySequence::Open);
     QMenu* demos = file->addMenu(tr("Open &Demo"));
-    for (const std::string& name : demoSceneNames()) {
-        const QString source = QString::fromStdString(std::string(kDemoPrefix) + name);
-        QAction* action = demos->addAction(QString::fromStdString(name), this, [this, source] { openSource(source); });
-        action->setStatusTip(QString::fromStdString(std::string(demoSceneDescription(name))));
+    demos->setObjectName(QStringLiteral("openDemoMenu"));
+    for (const DemoEntry& demo : builtInDemos()) {
+        const QString source = QString::fromStdString(demo.source);
+        QAction* action = demos->addAction(source.mid(int(kDemoPrefix.size())), this, [this, source] { openSource(source); });
+        action->setStatusTip(QString::fromUtf8(demo.description.data(), qsizetype(demo.description.size())));
+        action->setToolTip(action->statusTip());
     }
     QMenu* recent = file->addMenu(tr("Open &Recent"));
     QAction* addObject = file->addAction(tr("Add O&bject…"), m_inspect, &InspectWorkspace::showAddObjectDialog);
@@ -250,8 +253,13 @@ void MainWindow::connectWorkspaces()
     connect(m_design->projectFiles(), &ProjectFiles::saved, this, &MainWindow::updateTitle);
     connect(m_design, &DesignWorkspace::sessionChanged, this, [this] {
         m_inspect->setDesignSession(m_design->session());
+        applyRenderChoices(); // whether the dynamic rules are shown depends on the session
         updateTitle();
     });
+    // A skeleton pose deforms the designed mesh: the session shows it, so that the dynamic
+    // rules classify it too (the viewport would otherwise keep rendering the history's frame).
+    m_skeleton->panel()->setPoseSink(
+        [this](std::vector<glm::vec3> positions) { m_design->showForeignPose(std::move(positions)); });
 }
 
 void MainWindow::restoreSettings()
@@ -369,7 +377,7 @@ void MainWindow::showOpenDialog()
 // expression (inspect) and the design session's classification (design).
 void MainWindow::applyRenderChoices()
 {
-    const TrimSettings effective = m_render->apply(m_inspect->csg());
+    const TrimSettings effective = m_render->apply(m_inspect->csg(), m_design->session() != nullptr);
     const RenderChoices choices = m_render->choices();
     m_design->setRenderMode(choices.dynamicRules, choices.trim.rule, effective.trimEnabled);
 }

@@ -17,6 +17,7 @@
 #include "ui/common/scene_loader.h"
 
 #include "core/animation/mesh_animation.h"
+#include "core/catalog/scene_source.h"
 #include "core/catalog/surface_scenes.h"
 #include "core/mesh/mesh_validation.h"
 #include "core/timeline/frame_chain.h"
@@ -29,7 +30,9 @@
 #include <QStatusBar>
 #include <QWidget>
 
+#include <optional>
 #include <stdexcept>
+#include <string_view>
 
 namespace trimlab::ui {
 
@@ -125,10 +128,35 @@ void SceneSwitch::openSource(const QString& source)
         projects->open(source);
         return;
     }
+    if (openHistoryDemo(source))
+        return;
     m_animationOpener->cancel(); // the newest request wins
     m_features.inspect->objectLoader()->cancel();
     m_context->showStatus(tr("Opening %1…").arg(sceneLabel(source)), 0);
     m_loader->load(source);
+}
+
+// A surface demo that carries a deformation history ("demo:subdivision-push") opens like a
+// project: its control-point history with its sets, showing the last frame. Loading it as
+// a scene would tessellate only that last frame into a plain mesh with nothing to edit.
+bool SceneSwitch::openHistoryDemo(const QString& source)
+{
+    const std::string text = source.toStdString();
+    if (!isDemoSource(text))
+        return false;
+    const std::string_view name = std::string_view(text).substr(kDemoPrefix.size());
+    if (!hasSurfaceDemoHistory(name))
+        return false;
+    std::optional<timeline::Timeline> history = surfaceDemoHistory(name);
+    if (!history)
+        return false;
+    m_features.inspect->objectLoader()->cancel();
+    const int frames = history->frameCount();
+    const int sets = int(history->sets().size());
+    showHistory(std::move(*history), source);
+    m_context->showStatus(tr("%1: %2 frames in %3 sets").arg(source).arg(frames).arg(sets));
+    emit sceneLoaded(source);
+    return true;
 }
 
 void SceneSwitch::openAnimation(const QString& source)

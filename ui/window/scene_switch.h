@@ -96,6 +96,7 @@ private:
     void openRecent(const QString& path);
     void openRecentAnimation(const QString& path);
     void cancelPendingLoads();
+    [[nodiscard]] bool openHistoryDemo(const QString& source);
     void onSceneLoaded(std::shared_ptr<const LoadedScene> loaded);
     void onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loaded);
     void onProjectOpened(std::shared_ptr<const timeline::Project> project, const QString& path);

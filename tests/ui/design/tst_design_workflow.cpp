@@ -27,7 +27,10 @@
 #include <QApplication>
 #include <QMouseEvent>
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
+#include <QLabel>
+#include <QStandardItemModel>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QSettings>
@@ -112,6 +115,7 @@ private slots:
     void setsAndRulesAreUndoable();
     void brushRefusesEarlierFrames();
     void dynamicRulesRenderInTheViewport();
+    void dynamicRulesSetAsideStaticOnlyFeatures();
     void homogeneousConfluentRefusesTrimmedParts();
     void projectRoundTripAndCorruptFile();
 
@@ -345,16 +349,24 @@ void TestDesignWorkflow::dynamicRulesRenderInTheViewport()
     QCOMPARE(viewport->lastDynamicStats()->characterizedLevels, levels - 1);
     QVERIFY(viewport->readColorImage() == beforeReset);
 
+    // Peeling cannot run the dynamic rules: it is disabled with the reason, and choosing it
+    // anyway (a stored choice) switches to a method that can, saying why, with no dialog.
     auto* method = test::child<QComboBox>(window.get(), "methodComboBox");
     QVERIFY(method);
     const int buffer = method->currentIndex();
     const int peeling = method->findData(QStringLiteral("peeling-f2b"));
     QVERIFY(peeling >= 0);
+    const auto* items = qobject_cast<const QStandardItemModel*>(method->model());
+    QVERIFY(items && !items->item(peeling)->isEnabled());
+    QVERIFY(items->item(buffer)->isEnabled());
+    QVERIFY2(method->itemData(peeling, Qt::ToolTipRole).toString().contains(QStringLiteral("cannot run the dynamic rules")),
+             qPrintable(method->itemData(peeling, Qt::ToolTipRole).toString()));
     method->setCurrentIndex(peeling);
-    QVERIFY(QTest::qWaitFor([&] { return !viewport->errorMessage().isEmpty(); }, kWaitMs));
-    QVERIFY2(viewport->errorMessage().contains(QStringLiteral("cannot run the dynamic rules")),
-             qPrintable(viewport->errorMessage()));
-    QVERIFY(QTest::qWaitFor([&] { return !closer.seen().isEmpty(); }, kWaitMs));
+    QVERIFY(items->item(method->currentIndex())->isEnabled());
+    QVERIFY2(window->statusBar()->currentMessage().contains(QStringLiteral("cannot run the dynamic rules")),
+             qPrintable(window->statusBar()->currentMessage()));
+    QVERIFY(QTest::qWaitFor([&] { return viewport->errorMessage().isEmpty() && viewport->lastDynamicStats(); }, kWaitMs));
+    QVERIFY(closer.seen().isEmpty());
     method->setCurrentIndex(buffer);
     QVERIFY(QTest::qWaitFor([&] { return viewport->errorMessage().isEmpty() && viewport->lastFrame(); }, kWaitMs));
 
@@ -385,6 +397,50 @@ void TestDesignWorkflow::dynamicRulesRenderInTheViewport()
         kWaitMs));
     QCOMPARE(viewport->lastFrame()->stats.method, chosen);
     classification->setCurrentIndex(0); // back to the static rule for the next tests' settings
+}
+
+// Collision highlighting and capping ticked under the static rule (choices that persist)
+// do not stop the dynamic rules: they are disabled with the reason, left out of the frame
+// and apply again under the static rule. They gave a modal "The viewport cannot render"
+// and a blank view.
+void TestDesignWorkflow::dynamicRulesSetAsideStaticOnlyFeatures()
+{
+    MessageBoxCloser closer;
+    auto window = showWindow(QStringLiteral("static-only"));
+    QVERIFY(test::openDesignAndWait(*window, m_sphereObj));
+    window->designWorkspace()->brushAction()->setChecked(true);
+    QVERIFY(strokeAtCentre(*window, QPoint(25, 0)));
+    auto* cap = test::child<QCheckBox>(window.get(), "capCheckBox");
+    auto* collisions = test::child<QCheckBox>(window.get(), "highlightCollisionsCheckBox");
+    auto* reason = test::child<QLabel>(window.get(), "inspectUnavailableLabel");
+    QVERIFY(cap && collisions && reason);
+    cap->setChecked(true);
+    collisions->setChecked(true);
+    ViewportWidget* viewport = window->viewport();
+    QVERIFY(QTest::qWaitFor([&] { return viewport->lastFrame() && viewport->lastFrame()->settings.highlight.collisions; },
+                            kWaitMs));
+
+    auto* classification = test::child<QComboBox>(window.get(), "classificationComboBox");
+    classification->setCurrentIndex(1);
+    QVERIFY(window->designWorkspace()->showsDynamicRules());
+    QVERIFY(QTest::qWaitFor([&] { return viewport->lastDynamicStats().has_value() && viewport->lastFrame(); }, kWaitMs));
+    QTest::qWait(200); // a refused frame would open its dialog from the event loop
+    QVERIFY2(closer.seen().isEmpty(), qPrintable(closer.seen().join(QLatin1Char('|'))));
+    QVERIFY2(viewport->errorMessage().isEmpty(), qPrintable(viewport->errorMessage()));
+    QVERIFY(!viewport->lastFrame()->settings.highlight.collisions);
+    QVERIFY(!viewport->lastFrame()->settings.cap.enabled);
+    QVERIFY(cap->isChecked() && !cap->isEnabled());
+    QVERIFY(collisions->isChecked() && !collisions->isEnabled());
+    QVERIFY(reason->isVisibleTo(window.get()));
+    QVERIFY(reason->text().contains(QStringLiteral("static rule")));
+
+    classification->setCurrentIndex(0);
+    QVERIFY(QTest::qWaitFor([&] { return viewport->lastFrame() && viewport->lastFrame()->settings.highlight.collisions; },
+                            kWaitMs));
+    QVERIFY(cap->isEnabled() && collisions->isEnabled());
+    QVERIFY(!reason->isVisibleTo(window.get()));
+    collisions->setChecked(false);
+    cap->setChecked(false);
 }
 
 // After a replayed stroke pushed the top cap through the bottom under the homogeneous

@@ -82,6 +82,35 @@ std::vector<bool> subtreeOf(const SkeletonRig& rig, int bone)
     return in;
 }
 
+float boneWeightOf(const BoneWeights& weights, std::size_t v, int bone)
+{
+    for (std::size_t k = 0; k < kBoneInfluences; ++k)
+        if (weights.bones[v][k] == bone)
+            return weights.weights[v][k];
+    return 0.0f;
+}
+
+/// The leaf bone (no bone below it) with the most vertices weighted over 0.5 to it, and
+/// that count.
+std::pair<int, std::size_t> mostWeightedLeaf(const SkeletonRig& rig, const BoneWeights& weights)
+{
+    int bone = -1;
+    std::size_t most = 0;
+    for (std::size_t b = 0; b < rig.bones.size(); ++b) {
+        const std::vector<bool> below = subtreeOf(rig, int(b));
+        if (std::count(below.begin(), below.end(), true) != 1)
+            continue; // not a leaf
+        std::size_t count = 0;
+        for (std::size_t v = 0; v < weights.bones.size(); ++v)
+            count += boneWeightOf(weights, v, int(b)) > 0.5f ? 1 : 0;
+        if (count > most) {
+            most = count;
+            bone = int(b);
+        }
+    }
+    return {bone, most};
+}
+
 } // namespace
 
 class TestSkeletonPanel : public QObject {
@@ -90,6 +119,7 @@ private slots:
     void initTestCase();
     void projectionFollowsTheCamera();
     void runStagesPoseAndReset();
+    void posingFollowsTheDynamicRules();
     void cancelDuringRunChangesNothing();
     void openMeshIsRefusedInThePanel();
     void exportsWriteValidFiles();
@@ -258,26 +288,8 @@ void TestSkeletonPanel::runStagesPoseAndReset()
 
     // Posing with the spin boxes: a leaf bone (no bone below it) with the most weighted vertices.
     const BoneWeights& weights = result->weights->weights();
-    auto weightOn = [&](std::size_t v, int bone) {
-        for (std::size_t k = 0; k < kBoneInfluences; ++k)
-            if (weights.bones[v][k] == bone)
-                return weights.weights[v][k];
-        return 0.0f;
-    };
-    int bone = -1;
-    std::size_t most = 0;
-    for (std::size_t b = 0; b < rig.bones.size(); ++b) {
-        const std::vector<bool> below = subtreeOf(rig, int(b));
-        if (std::count(below.begin(), below.end(), true) != 1)
-            continue; // not a leaf
-        std::size_t count = 0;
-        for (std::size_t v = 0; v < rest.size(); ++v)
-            count += weightOn(v, int(b)) > 0.5f ? 1 : 0;
-        if (count > most) {
-            most = count;
-            bone = int(b);
-        }
-    }
+    auto weightOn = [&](std::size_t v, int bone) { return boneWeightOf(weights, v, bone); };
+    const auto [bone, most] = mostWeightedLeaf(rig, weights);
     QVERIFY(bone >= 0 && most > 0);
     child<QListWidget>(panel, "skeletonBoneList")->setCurrentRow(bone);
     QCOMPARE(panel->selectedBone(), bone);
@@ -388,6 +400,39 @@ void TestSkeletonPanel::runStagesPoseAndReset()
     QCOMPARE(times->item(0, 0)->text(), QStringLiteral("–"));
     QVERIFY(panel->shownPositions() == rest); // a new rig starts at rest
     QVERIFY(boxes.seen().isEmpty());
+}
+
+// Posing under the dynamic rules (a classification that persists between sessions)
+// moves the mesh in the view: the pose is the current set's deformation, trimmed by its
+// rule. Back under the static rule the view shows the same pose at once. Before, the view
+// kept the history's frame, and after switching to Static it showed the rest pose until
+// the next pose change.
+void TestSkeletonPanel::posingFollowsTheDynamicRules()
+{
+    auto window = extractedStar(QStringLiteral("dynamic-pose"));
+    QVERIFY(window);
+    SkeletonPanel* panel = window->skeletonWorkspace()->panel();
+    ViewportWidget* viewport = window->viewport();
+    auto* classification = child<QComboBox>(window.get(), "classificationComboBox");
+    QVERIFY(waitForNewFrame(*window, [&] { classification->setCurrentIndex(1); }));
+    QVERIFY(window->designWorkspace()->showsDynamicRules());
+    QVERIFY(QTest::qWaitFor([&] { return viewport->lastDynamicStats().has_value(); }, kWaitMs));
+    const QImage restDynamic = viewport->readColorImage();
+
+    const int bone = mostWeightedLeaf(panel->result()->rig, panel->result()->weights->weights()).first;
+    QVERIFY(bone >= 0);
+    child<QListWidget>(panel, "skeletonBoneList")->setCurrentRow(bone);
+    auto* angle = child<QDoubleSpinBox>(panel, "skeletonAngleXSpinBox");
+    QVERIFY(waitForNewFrame(*window, [&] { typeInto(angle, 40.0); }));
+    QVERIFY(viewport->lastDynamicStats().has_value());
+    QVERIFY2(viewport->errorMessage().isEmpty(), qPrintable(viewport->errorMessage()));
+    QVERIFY2(viewport->readColorImage() != restDynamic, "the pose did not change the view under the dynamic rules");
+
+    QVERIFY(waitForNewFrame(*window, [&] { classification->setCurrentIndex(0); }));
+    const QImage switched = viewport->readColorImage();
+    QVERIFY(waitForNewFrame(*window, [&] { angle->setValue(41.0); }));
+    QVERIFY(waitForNewFrame(*window, [&] { angle->setValue(40.0); }));
+    QVERIFY2(viewport->readColorImage() == switched, "after switching to Static the view did not show the pose");
 }
 
 void TestSkeletonPanel::cancelDuringRunChangesNothing()

@@ -22,6 +22,8 @@
 #include "ui/viewport/viewport_widget.h"
 
 #include "core/catalog/fig8_13_history.h"
+#include "core/catalog/scene_source.h"
+#include "core/catalog/surface_scenes.h"
 #include "core/timeline/project_file.h"
 
 #include <QAction>
@@ -32,6 +34,8 @@
 #include <QStatusBar>
 #include <QSpinBox>
 #include <QFileInfo>
+#include <QMenu>
+#include <QDockWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
@@ -130,6 +134,7 @@ private slots:
     void createNurbsSphereThroughTheMenu();
     void everyCreateActionStartsASurfaceSession();
     void surfaceDemoOpensAsSurfaceSession();
+    void historyDemosOpenWithTheirHistory();
     void pickShiftPickDragUndoRedo();
     void brushMovesControlPoints();
     void subdivisionLevelAndShowNet();
@@ -238,6 +243,44 @@ void TestSurfaceEditing::surfaceDemoOpensAsSurfaceSession()
     QVERIFY(test::openDesignAndWait(*window, QStringLiteral("demo:pushed-sphere"))); // a mesh demo
     QVERIFY(!window->designWorkspace()->session()->surface());
     QVERIFY(!window->designWorkspace()->controlNetOverlay()->isVisible());
+}
+
+// File ▸ Open Demo lists every built-in demo, and the demos that carry a control-point
+// history open with it (they opened as a plain mesh: "No editable surface", Frame 0 / 0).
+void TestSurfaceEditing::historyDemosOpenWithTheirHistory()
+{
+    auto window = showWindow(QStringLiteral("history-demo"));
+    auto* menu = window->findChild<QMenu*>(QStringLiteral("openDemoMenu"));
+    QVERIFY(menu);
+    QStringList listed;
+    for (const QAction* action : menu->actions())
+        listed << action->text();
+    for (const DemoEntry& demo : builtInDemos())
+        QVERIFY2(listed.contains(QString::fromStdString(demo.source).mid(int(kDemoPrefix.size()))),
+                 demo.source.c_str());
+    for (const char* name : {"subdivision-push", "nurbs-fig8-13"}) {
+        const QString source = QStringLiteral("demo:") + QLatin1String(name);
+        QAction* item = nullptr;
+        for (QAction* action : menu->actions())
+            item = action->text() == QLatin1String(name) ? action : item;
+        QVERIFY2(item, name);
+        item->trigger();
+        QVERIFY2(QTest::qWaitFor([&] { return window->scene() && window->scene()->source == source.toStdString() &&
+                                               window->viewport()->lastFrame().has_value(); },
+                                 kWaitMs),
+                 name);
+        const DesignSession* session = window->designWorkspace()->session();
+        QVERIFY2(session && session->surface(), name);
+        const std::optional<timeline::Timeline> expected = surfaceDemoHistory(name);
+        QCOMPARE(session->timeline().frameCount(), expected->frameCount());
+        QVERIFY(session->timeline().frameCount() > 1);
+        QCOMPARE(session->shownFrame(), expected->frameCount() - 1);
+        QCOMPARE(session->timeline().sets().size(), expected->sets().size());
+        QVERIFY(window->surfaceWorkspace()->panel()->kind() != SurfacePanel::Kind::None);
+        QCOMPARE(window->designWorkspace()->controlNetOverlay()->pointCount(),
+                 expected->surface()->controlPointCount());
+        QVERIFY(window->designWorkspace()->timelineDock()->isVisible());
+    }
 }
 
 // Click picks one point, Shift+click adds a second, a drag from the first moves both:
