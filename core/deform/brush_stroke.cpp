@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -63,18 +64,57 @@ glm::dvec3 anchorNormal(const BrushTopology& topology, std::span<const glm::vec3
     return glm::length(face) > 0.0 ? glm::normalize(face) : glm::dvec3(0.0);
 }
 
-InfluenceRegion influenceRegion(const BrushTopology& topology, std::span<const glm::vec3> positions,
-                                std::uint32_t triangle, const glm::dvec3& anchor, const BrushSettings& settings)
+// Geodesic distances below `radius` from `anchor` on `triangle` at `positions`, seeded
+// from the triangle's corners.
+LocalDistances distancesFrom(const BrushTopology& topology, std::span<const glm::vec3> positions,
+                             std::uint32_t triangle, const glm::dvec3& anchor, double radius)
 {
     const glm::uvec3& t = topology.triangles()[triangle];
     GeodesicSeed seeds[3];
     for (int i = 0; i < 3; ++i)
         seeds[i] = {t[i], glm::distance(anchor, glm::dvec3(positions[t[i]]))};
-    LocalDistances local = localGeodesicDistances(topology, positions, seeds, settings.radius);
+    return localGeodesicDistances(topology, positions, seeds, radius);
+}
 
+// The anchor's point on the rest surface: the same barycentric point of its triangle.
+glm::dvec3 restAnchor(const BrushTopology& topology, std::span<const glm::vec3> positions, std::uint32_t triangle,
+                      const glm::dvec3& anchor)
+{
+    const glm::uvec3& t = topology.triangles()[triangle];
+    const glm::dvec3 w = barycentric(anchor, glm::dvec3(positions[t.x]), glm::dvec3(positions[t.y]),
+                                     glm::dvec3(positions[t.z]));
+    const std::vector<glm::vec3>& rest = topology.restPositions();
+    return w.x * glm::dvec3(rest[t.x]) + w.y * glm::dvec3(rest[t.y]) + w.z * glm::dvec3(rest[t.z]);
+}
+
+// Each vertex's distance is the smaller of its geodesic distances on the current surface
+// and on the rest surface. On the current surface alone, a stroke that starts inside an
+// earlier dent reaches only the one or two vertices of its stretched walls and pulls them
+// into spikes; the rest surface's distances give it the patch a stroke there would have
+// grabbed before the dent, and where earlier strokes compressed the surface the current
+// distances reach further.
+InfluenceRegion influenceRegion(const BrushTopology& topology, std::span<const glm::vec3> positions,
+                                std::uint32_t triangle, const glm::dvec3& anchor, const BrushSettings& settings)
+{
+    const LocalDistances current = distancesFrom(topology, positions, triangle, anchor, settings.radius);
+    const LocalDistances rest = distancesFrom(topology, topology.restPositions(), triangle,
+                                              restAnchor(topology, positions, triangle, anchor), settings.radius);
     InfluenceRegion region;
-    region.vertices = std::move(local.vertices);
-    region.geodesicDistance = std::move(local.distances);
+    std::size_t i = 0, j = 0; // both lists are sorted by vertex
+    while (i < current.vertices.size() || j < rest.vertices.size()) {
+        const bool takeCurrent = j == rest.vertices.size() ||
+                                 (i < current.vertices.size() && current.vertices[i] <= rest.vertices[j]);
+        const bool takeRest = i == current.vertices.size() ||
+                              (j < rest.vertices.size() && rest.vertices[j] <= current.vertices[i]);
+        const std::uint32_t v = takeCurrent ? current.vertices[i] : rest.vertices[j];
+        double d = takeCurrent ? current.distances[i] : rest.distances[j];
+        if (takeCurrent && takeRest)
+            d = std::min(d, rest.distances[j]);
+        region.vertices.push_back(v);
+        region.geodesicDistance.push_back(d);
+        i += takeCurrent ? 1 : 0;
+        j += takeRest ? 1 : 0;
+    }
     region.falloff.reserve(region.vertices.size());
     for (double d : region.geodesicDistance)
         region.falloff.push_back(falloff(settings.profile, d / settings.radius));

@@ -17,8 +17,12 @@
 
 namespace trimlab::deform {
 
-/// The vertices a stroke may move and how strongly: vertices with geodesic distance
-/// d < radius from the anchor, with their falloff weight f(d/r) (before the angle term).
+/// The vertices a stroke may move and how strongly: vertices with distance d < radius
+/// from the anchor, with their falloff weight f(d/r) (before the angle term). d is the
+/// smaller of the geodesic distances on the current surface and on the rest surface
+/// (BrushTopology::restPositions(), from the anchor's barycentric point there), so a
+/// stroke inside a stretched dent grabs at least the patch it would have grabbed before
+/// the dent.
 struct InfluenceRegion {
     std::vector<std::uint32_t> vertices;  ///< sorted ascending
     std::vector<double> geodesicDistance; ///< per entry of `vertices`
@@ -38,7 +42,7 @@ struct InfluenceRegion {
 /// appears where the smoothed region meets the untouched surface, while the stretched
 /// middle gets the full λ. A zero drag therefore still smooths around the anchor when
 /// iterations > 0. The region is empty (nothing moves) when the radius is smaller than
-/// the distance from the anchor to every corner of its triangle.
+/// the distance from the anchor to every corner of its triangle, now and at rest.
 class BrushStroke {
 public:
     /// `positions`: the mesh's positions when the drag starts (copied: only the region

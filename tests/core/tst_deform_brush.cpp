@@ -3,6 +3,7 @@
 // follows the drag, smoothing smooths, the result is deterministic and path-independent,
 // bad input throws, and incremental normals agree with a full recomputation.
 #include "core/deform/brush_stroke.h"
+#include "core/deform/local_geodesics.h"
 #include "core/deform/region_normals.h"
 
 #include <QtTest>
@@ -144,6 +145,7 @@ private slots:
     void deterministicAndPathIndependent();
     void committedStrokeReplays();
     void tinyRadiusMovesNothing();
+    void strokeInsideAnEarlierDentGrabsAPatch();
     void badInputThrows();
     void regionNormalsMatchFullRecomputation();
 };
@@ -396,6 +398,46 @@ void TestDeformBrush::committedStrokeReplays()
     std::vector<glm::vec3> replayed = sphere().positions;
     applyStroke(sphereTopology(), replayed, committed);
     QVERIFY(sameBits(live, replayed));
+}
+
+// A first stroke pushes a deep dent (the anchor 1.2 inward, through most of the sphere);
+// a second stroke grabbed at the dent's bottom must move a patch like the first did, not
+// the one or two vertices of the stretched walls that lie within the radius on the
+// deformed surface (measured before: 11 of the first stroke's 61 vertices), and
+// it must still grab what lies within the radius on the deformed surface.
+void TestDeformBrush::strokeInsideAnEarlierDentGrabsAPatch()
+{
+    BrushSettings brush;
+    brush.radius = 0.3;
+    const glm::dvec3 normal(sphere().positions[kAnchorVertex]);
+    std::vector<glm::vec3> dented = sphere().positions;
+    const std::vector<std::uint32_t> first = applyStroke(sphereTopology(), dented, strokeAtVertex(kAnchorVertex, -1.2 * normal, brush));
+    QVERIFY(first.size() > 40);
+
+    Stroke second;
+    second.anchor = glm::dvec3(dented[kAnchorVertex]);
+    second.anchorTriangle = *sphereTopology().facesBegin(kAnchorVertex);
+    second.brush = brush;
+    const BrushStroke inside(sphereTopology(), dented, second);
+    const LocalDistances onDeformed = [&] {
+        const glm::uvec3& t = sphereTopology().triangles()[*second.anchorTriangle];
+        GeodesicSeed seeds[3];
+        for (int i = 0; i < 3; ++i)
+            seeds[i] = {t[i], glm::distance(second.anchor, glm::dvec3(dented[t[i]]))};
+        return localGeodesicDistances(sphereTopology(), dented, seeds, brush.radius);
+    }();
+    qInfo("first stroke: %zu vertices; second, inside the dent: %zu (%zu within the radius on the deformed surface)",
+          first.size(), inside.region().vertices.size(), onDeformed.vertices.size());
+    QVERIFY2(inside.region().vertices.size() * 10 >= first.size() * 9,
+             qPrintable(QString::number(inside.region().vertices.size())));
+    for (std::uint32_t v : onDeformed.vertices)
+        QVERIFY(std::binary_search(inside.region().vertices.begin(), inside.region().vertices.end(), v));
+    std::vector<glm::vec3> again = dented;
+    inside.update(-0.2 * normal, again);
+    std::size_t moved = 0;
+    for (std::size_t v = 0; v < again.size(); ++v)
+        moved += glm::distance(again[v], dented[v]) > 0.02f ? 1 : 0; // a tenth of the pull or more
+    QVERIFY2(moved * 3 >= first.size(), qPrintable(QString::number(moved)));
 }
 
 void TestDeformBrush::tinyRadiusMovesNothing()

@@ -96,6 +96,20 @@ void brushDrag(QWidget* viewport, QPoint from, QPoint to, int steps = 6)
     QTest::mouseRelease(viewport, Qt::LeftButton, {}, to);
 }
 
+/// The same drag with Shift held (the brush moves along the grabbed normal: up pulls out,
+/// down pushes in), sent as events since QTest's mouse moves carry no modifiers.
+void shiftBrushDrag(QWidget* viewport, QPoint from, QPoint to, int steps = 6)
+{
+    const auto send = [viewport](QEvent::Type type, QPoint at, Qt::MouseButton button, Qt::MouseButtons buttons) {
+        QMouseEvent event(type, QPointF(at), viewport->mapToGlobal(QPointF(at)), button, buttons, Qt::ShiftModifier);
+        QApplication::sendEvent(viewport, &event);
+    };
+    send(QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton);
+    for (int i = 1; i <= steps; ++i)
+        send(QEvent::MouseMove, from + (to - from) * i / steps, Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton);
+}
+
 /// A stroke script that pushes the top cap of the unit sphere down through the bottom, in
 /// one homogeneous confluent set: the tip that comes out below and the bottom disk it
 /// passes through are trimmed off.
@@ -114,6 +128,7 @@ private slots:
     void undoRedoIsBitExact();
     void setsAndRulesAreUndoable();
     void brushRefusesEarlierFrames();
+    void strokeInsideAnEarlierDentMovesAPatch();
     void dynamicRulesRenderInTheViewport();
     void dynamicRulesSetAsideStaticOnlyFeatures();
     void homogeneousConfluentRefusesTrimmedParts();
@@ -301,6 +316,26 @@ void TestDesignWorkflow::brushRefusesEarlierFrames()
              qPrintable(window->statusBar()->currentMessage()));
     QTest::keyClick(slider, Qt::Key_End);
     QCOMPARE(session->shownFrame(), 1);
+}
+
+// A second stroke grabbed at the bottom of a deep dent the first one pushed moves a patch
+// like the first, not the few vertices of the stretched walls (spikes).
+void TestDesignWorkflow::strokeInsideAnEarlierDentMovesAPatch()
+{
+    auto window = showWindow(QStringLiteral("dent"));
+    QVERIFY(test::openDesignAndWait(*window, m_sphereObj));
+    window->designWorkspace()->brushAction()->setChecked(true);
+    const DesignSession* session = window->designWorkspace()->session();
+    const QPoint centre(kViewportSize.width() / 2, kViewportSize.height() / 2);
+    shiftBrushDrag(window->viewport(), centre, centre + QPoint(0, 90)); // a deep dent
+    QVERIFY(QTest::qWaitFor([&] { return session->timeline().frameCount() == 2; }, kWaitMs));
+    test::waitUntilViewIdle(*window->viewport());
+    shiftBrushDrag(window->viewport(), centre, centre + QPoint(0, 30)); // deeper, from its bottom
+    QVERIFY(QTest::qWaitFor([&] { return session->timeline().frameCount() == 3; }, kWaitMs));
+    const std::size_t first = session->timeline().frame(1).vertices.size();
+    const std::size_t second = session->timeline().frame(2).vertices.size();
+    qInfo("first stroke %zu vertices, second from inside it %zu", first, second);
+    QVERIFY2(second * 2 >= first, qPrintable(QStringLiteral("%1 of %2").arg(second).arg(first)));
 }
 
 // Two sets under the dynamic rules render through the DynamicTrimRenderer (both levels),
