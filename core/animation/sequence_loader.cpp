@@ -30,15 +30,19 @@ MeshAnimation loadMeshSequence(const std::vector<std::filesystem::path>& files, 
     // Errors are kept per file so that the first bad file in sequence order is reported,
     // whichever thread found its problem first.
     std::vector<std::exception_ptr> errors(files.size());
+    // Item 0 is the first file, loaded above: the progress counts every file of the
+    // sequence ("48 of 48"), not the ones left after the first ("47 of 47").
     parallelFor(
-        files.size() - 1, threads,
+        files.size(), threads,
         [&](std::size_t i) {
+            if (i == 0)
+                return;
             try {
-                TriangleMesh pose = loadMesh(files[i + 1]);
-                requireSameTopology(animation.triangles, vertexCount, pose, files[i + 1].string());
-                animation.poses[i + 1] = std::move(pose.positions);
+                TriangleMesh pose = loadMesh(files[i]);
+                requireSameTopology(animation.triangles, vertexCount, pose, files[i].string());
+                animation.poses[i] = std::move(pose.positions);
             } catch (...) {
-                errors[i + 1] = std::current_exception();
+                errors[i] = std::current_exception();
             }
         },
         control, "load");

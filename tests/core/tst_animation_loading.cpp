@@ -173,15 +173,19 @@ void TestAnimationLoading::weldingKeepsSeamsThatOpen()
 void TestAnimationLoading::progressAndCancel()
 {
     std::vector<std::size_t> done;
+    std::vector<std::size_t> totals;
     TaskControl control;
     control.progress = [&](const TaskProgress& p) {
         QCOMPARE(p.stage, std::string_view("load"));
         done.push_back(p.done);
+        totals.push_back(p.total);
     };
     (void)loadMeshSequence(sequenceFiles(animations("bar")), control, 1);
     QVERIFY(!done.empty());
     QVERIFY(std::is_sorted(done.begin(), done.end()));
-    QCOMPARE(done.back(), std::size_t(2)); // the files after the first
+    // Every file of the sequence counts: the dialog read "(2 of 2)" for three poses.
+    QCOMPARE(done.back(), std::size_t(3));
+    QVERIFY(std::all_of(totals.begin(), totals.end(), [](std::size_t t) { return t == 3; }));
     std::stop_source stop;
     stop.request_stop();
     TaskControl cancelled;

@@ -302,9 +302,12 @@ void SegmentationPanel::onRunSucceeded()
 {
     std::shared_ptr<const SegmentationResult> result = std::move(*m_pending);
     m_pending.reset();
+    // Every pose but the rest pose is partitioned: name the animation's pose count, with
+    // the partitions beside it (it read "47 poses" for a 48-pose animation).
+    const std::size_t poses = result->segmenter->animation().poseCount();
     const std::size_t partitions = result->segmenter->partitionedPoses().size();
     adoptResult(std::move(result), m_pendingSettings);
-    onRunEnded(tr("Done: %1 poses partitioned and joined.").arg(partitions));
+    onRunEnded(tr("Done: %1 poses segmented (%2 pose partitions joined).").arg(poses).arg(partitions));
 }
 
 void SegmentationPanel::onRunEnded(const QString& status)

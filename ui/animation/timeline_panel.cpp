@@ -47,10 +47,16 @@ void TimelinePanel::createControls()
     m_fps->setRange(kMinFps, kMaxFps);
     m_fps->setValue(kDefaultFps);
     m_fps->setSuffix(tr(" fps"));
+    m_fps->setToolTip(tr("Poses per second to play. A slow view drops poses to keep this rate; the label beside "
+                         "says how many it showed."));
     connect(m_fps, &QSpinBox::valueChanged, this, [this] {
         applyFps();
         emit playbackChoicesChanged();
     });
+    m_rateLabel = new QLabel;
+    m_rateLabel->setObjectName(QStringLiteral("playbackRateLabel"));
+    m_rateLabel->setToolTip(tr("Poses per second shown while playing; fewer than asked means poses were dropped to "
+                               "keep time"));
     m_loop = new QCheckBox(tr("Loop"));
     m_loop->setObjectName(QStringLiteral("loopCheckBox"));
     m_loop->setChecked(true);
@@ -61,12 +67,14 @@ void TimelinePanel::createControls()
     layout->addWidget(m_slider, 1);
     layout->addWidget(m_poseLabel);
     layout->addWidget(m_fps);
+    layout->addWidget(m_rateLabel);
     layout->addWidget(m_loop);
 }
 
 void TimelinePanel::setPoses(const QStringList& names)
 {
     pause();
+    m_rateLabel->clear();
     m_names = names;
     {
         const QSignalBlocker blocker(m_slider);
@@ -96,6 +104,12 @@ void TimelinePanel::play()
         return;
     if (!loops() && pose() == poseCount() - 1)
         setPose(0); // play from the start again
+    m_shownSinceStart = 0;
+    m_achievedFps = 0.0;
+    m_rateLabel->clear();
+    m_step = 0;
+    m_playStart.start();
+    restartClock();
     m_timer.start();
     updatePlayButton();
     emit playingChanged(true);
@@ -118,17 +132,43 @@ void TimelinePanel::togglePlaying()
         play();
 }
 
+// The pose the clock has reached, not the next one: when frames take longer than 1/fps
+// the poses in between are dropped and the animation keeps its duration.
 void TimelinePanel::advance()
 {
-    const int next = pose() + 1;
-    if (next < poseCount()) {
-        setPose(next);
+    const qint64 step = m_clockStartStep + m_clock.elapsed() * qint64(fps()) / 1000;
+    if (step == m_step)
         return;
-    }
-    if (loops())
-        setPose(0);
-    else
+    m_step = step;
+    const qint64 target = qint64(m_clockStartPose) + (step - m_clockStartStep);
+    const int count = poseCount();
+    m_advancing = true;
+    if (target >= count && !loops()) {
+        setPose(count - 1);
         pause();
+    } else {
+        setPose(int(target % count));
+    }
+    m_advancing = false;
+    ++m_shownSinceStart;
+    updateRateLabel();
+}
+
+void TimelinePanel::restartClock()
+{
+    m_clock.start();
+    m_clockStartPose = pose();
+    m_clockStartStep = m_step;
+}
+
+// Over the whole play, once a second has passed; the last figure stays after a pause.
+void TimelinePanel::updateRateLabel()
+{
+    const qint64 elapsed = m_playStart.elapsed();
+    if (elapsed < 1000)
+        return;
+    m_achievedFps = 1000.0 * m_shownSinceStart / double(elapsed);
+    m_rateLabel->setText(tr("%1 fps shown").arg(m_achievedFps, 0, 'f', 1));
 }
 
 void TimelinePanel::setPlaybackChoices(int fps, bool loop)
@@ -153,10 +193,14 @@ bool TimelinePanel::loops() const
 void TimelinePanel::applyFps()
 {
     m_timer.setInterval(std::max(1, 1000 / fps()));
+    if (isPlaying())
+        restartClock(); // the new rate counts from the pose shown now
 }
 
 void TimelinePanel::onSliderMoved(int pose)
 {
+    if (isPlaying() && !m_advancing)
+        restartClock(); // scrubbed while playing: play on from here
     updatePoseLabel();
     emit poseChanged(pose);
 }

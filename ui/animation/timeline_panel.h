@@ -2,10 +2,14 @@
 /// \file
 /// The Timeline (the content of the main window's "Timeline" dock): a pose slider
 /// 0 … k−1 with the pose's number and name, play/pause, frames per second and loop.
-/// Playback runs on a QTimer in the UI thread, one pose per tick, and never blocks;
-/// playing or scrubbing emits poseChanged(), which the window turns into a viewport
-/// pose. Keys on the slider: ←/→ one pose, PgUp/PgDn ten, Home/End first/last.
+/// Playback runs on a QTimer in the UI thread and never blocks. It keeps time: each tick
+/// shows the pose the clock has reached since Play (pose = start + elapsed × fps), so a
+/// renderer slower than the rate drops poses instead of slowing the animation down, and
+/// the rate label says how many poses per second were actually shown. Playing or
+/// scrubbing emits poseChanged(), which the window turns into a viewport pose. Keys on
+/// the slider: ←/→ one pose, PgUp/PgDn ten, Home/End first/last.
 
+#include <QElapsedTimer>
 #include <QStringList>
 #include <QTimer>
 #include <QWidget>
@@ -43,6 +47,8 @@ public:
     void setPlaybackChoices(int fps, bool loop);
     [[nodiscard]] int fps() const;
     [[nodiscard]] bool loops() const;
+    /// Poses shown per second since Play (0 before the first second of playing).
+    [[nodiscard]] double achievedFps() const { return m_achievedFps; }
 
 signals:
     /// The shown pose changed (by playback, the slider, or setPose()).
@@ -60,13 +66,24 @@ private:
     void updatePoseLabel();
     void updatePlayButton();
     void applyFps();
+    void restartClock();
+    void updateRateLabel();
 
     QSlider* m_slider = nullptr;
     QLabel* m_poseLabel = nullptr;
+    QLabel* m_rateLabel = nullptr;
     QToolButton* m_play = nullptr;
     QSpinBox* m_fps = nullptr;
     QCheckBox* m_loop = nullptr;
     QTimer m_timer;
+    QElapsedTimer m_playStart; ///< since Play: the rate shown
+    QElapsedTimer m_clock;     ///< since Play, or since the fps changed while playing
+    int m_clockStartPose = 0;  ///< the pose shown when m_clock started
+    qint64 m_clockStartStep = 0; ///< poses the clock had counted at its start (unwrapped)
+    qint64 m_step = 0;         ///< poses the clock has counted (unwrapped, for looping)
+    int m_shownSinceStart = 0; ///< poses shown since Play
+    double m_achievedFps = 0.0;
+    bool m_advancing = false;  ///< advance() is moving the slider (not the user)
     QStringList m_names;
 };
 

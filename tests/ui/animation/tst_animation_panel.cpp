@@ -44,6 +44,8 @@
 #include <QLabel>
 #include <QMimeData>
 #include <QProgressDialog>
+#include <QThread>
+#include <QElapsedTimer>
 #include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
@@ -123,6 +125,7 @@ private slots:
     void initTestCase();
     void timelineShowsEveryPoseLikeTheReference();
     void playbackAndGltfAndDrop();
+    void playbackKeepsTimeOnASlowView();
     void brokenAnimationNamesTheFile();
     void cancelOpeningKeepsTheScene();
     void runAndHSliderFollowTheCore();
@@ -275,6 +278,44 @@ void TestAnimationPanel::playbackAndGltfAndDrop()
     QCOMPARE(timeline->pose(), 0);
 }
 
+// A view that takes 100 ms per pose (the UI thread held in the pose slot, like a slow
+// renderer) cannot show 24 poses a second: playback drops poses and keeps time, and the
+// rate label says how many it showed. It advanced one pose per tick, about 7 a second.
+void TestAnimationPanel::playbackKeepsTimeOnASlowView()
+{
+    if (!QFileInfo::exists(walkingCat()))
+        QSKIP("../shared/data/anim/walking-cat is missing");
+    auto window = showWindow(QStringLiteral("slow-playback"));
+    QVERIFY(openAndWait(*window, walkingCat()));
+    TimelinePanel* timeline = window->animationWorkspace()->timelinePanel();
+    timeline->setPlaybackChoices(24, false);
+    QElapsedTimer clock;
+    std::vector<std::pair<qint64, int>> shown; // (ms since Play was pressed, pose) per pose change
+    const QMetaObject::Connection slow = connect(timeline, &TimelinePanel::poseChanged, this, [&](int pose) {
+        shown.emplace_back(clock.elapsed(), pose);
+        QThread::msleep(100);
+    });
+    clock.start();
+    QTest::mouseClick(child<QToolButton>(window.get(), "playButton"), Qt::LeftButton);
+    QTest::qWait(1200);
+    timeline->pause();
+    disconnect(slow);
+    QVERIFY(shown.size() >= 3);
+    // Each pose shown is the one the clock had reached (Play started the clock a moment
+    // after `clock`, so the pose may lag it by one); one pose per tick lags further and
+    // further behind.
+    const auto [lastMs, lastPose] = shown.back();
+    qInfo("%zu poses shown in %lld ms at 24 fps; the last was pose %d of %d", shown.size(), lastMs, lastPose,
+          timeline->poseCount() - 1);
+    const int expected = std::min(timeline->poseCount() - 1, int(24 * lastMs / 1000));
+    QVERIFY2(lastPose >= expected - 1, qPrintable(QStringLiteral("pose %1, expected %2").arg(lastPose).arg(expected)));
+    auto* rate = child<QLabel>(window.get(), "playbackRateLabel");
+    QVERIFY(rate);
+    qInfo("rate label: %s", qPrintable(rate->text()));
+    QVERIFY2(rate->text().contains(QStringLiteral("fps shown")), qPrintable(rate->text()));
+    QVERIFY(timeline->achievedFps() > 0.0 && timeline->achievedFps() < 12.0);
+}
+
 // Poses that disagree: a dialog names the offending file; the open animation stays.
 void TestAnimationPanel::brokenAnimationNamesTheFile()
 {
@@ -338,6 +379,9 @@ void TestAnimationPanel::runAndHSliderFollowTheCore()
     QVERIFY(QTest::qWaitFor([&] { return panel->result() && !panel->isRunning(); }, kWaitMs));
     QVERIFY(run->isEnabled());
     QVERIFY(child<QLabel>(panel, "segmentationTimesLabel")->text().contains(QStringLiteral("partitions")));
+    // The status names the animation's pose count (it said one pose fewer: the partitions).
+    const QString done = child<QLabel>(panel, "segmentationStatusLabel")->text();
+    QVERIFY2(done.contains(QStringLiteral("%1 poses").arg(window->animation()->animation->poseCount())), qPrintable(done));
 
     SegmenterSettings settings = SegmentationChoices{}.segmenterSettings();
     settings.partition.clusters = 6;
