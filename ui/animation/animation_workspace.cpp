@@ -90,6 +90,11 @@ void AnimationWorkspace::show(std::shared_ptr<const LoadedAnimation> animation)
     m_segmentationDock->raise();
 }
 
+bool AnimationWorkspace::confirmDiscardSkinningEdits()
+{
+    return m_skinning->confirmDiscardEdits(double(m_timeline->fps()));
+}
+
 void AnimationWorkspace::clear()
 {
     if (!m_animation)

@@ -38,6 +38,8 @@ public:
     [[nodiscard]] TimelinePanel* timelinePanel() const { return m_timeline; }
     [[nodiscard]] SegmentationPanel* segmentationPanel() const { return m_segmentation; }
     [[nodiscard]] SkinningWorkspace* skinning() const { return m_skinning; }
+    /// SkinningWorkspace::confirmDiscardEdits at the timeline's rate.
+    [[nodiscard]] bool confirmDiscardSkinningEdits();
     [[nodiscard]] QDockWidget* timelineDock() const { return m_timelineDock; }
     [[nodiscard]] QDockWidget* segmentationDock() const { return m_segmentationDock; }
     /// The animation shown (nullptr: none).

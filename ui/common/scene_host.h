@@ -27,6 +27,11 @@ public:
     /// on a scene named `name`, in place of whatever is shown and of pending loads. The
     /// caller has asked about unsaved changes.
     virtual void showHistory(timeline::Timeline history, const QString& name) = 0;
+    /// Asks about the unsaved work of what is shown before something replaces it: the
+    /// design history's changes (Save / Discard / Cancel) and an animation's skinning bone
+    /// edits that were not exported (Export… / Discard / Cancel). False: keep what is
+    /// shown.
+    [[nodiscard]] virtual bool confirmReplacingShown() = 0;
     /// `source` could not be opened for `message`: a dialog, and the window's
     /// sceneLoadFailed(); what is shown stays.
     virtual void reportOpenFailure(const QString& source, const QString& message) = 0;

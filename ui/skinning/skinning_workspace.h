@@ -26,6 +26,13 @@ public:
     [[nodiscard]] QDockWidget* dock() const { return m_dock; }
     /// The export dialog; the glTF plays at `fps`.
     void showExportDialog(double fps);
+    /// Whether the fit's bone edits may be thrown away (another file is about to replace
+    /// the animation, or the window closes): true when there are none that were not
+    /// exported, or when the user chose Discard. Export… opens the export dialog (the
+    /// glTF at `fps`) and answers false, as Cancel does.
+    [[nodiscard]] bool confirmDiscardEdits(double fps);
+    /// Bone edits made since the fit or the last export that wrote them.
+    [[nodiscard]] bool hasUnexportedEdits() const;
 
 signals:
     /// The user asked to export (the owner knows the playback rate).
@@ -35,6 +42,8 @@ private:
     const WindowContext& m_context;
     SkinningPanel* m_panel = nullptr;
     QDockWidget* m_dock = nullptr;
+    /// The undo index of the edits the running export writes (-1: none runs).
+    int m_exportIndex = -1;
 };
 
 } // namespace trimlab::ui

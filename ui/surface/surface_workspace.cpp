@@ -3,7 +3,6 @@
 #include "ui/common/window_context.h"
 #include "ui/design/design_session.h"
 #include "ui/design/design_workspace.h"
-#include "ui/design/project_files.h"
 #include "ui/design/control_net_overlay.h"
 #include "ui/design/control_point_tool.h"
 #include "ui/surface/surface_definitions.h"
@@ -259,7 +258,7 @@ bool SurfaceWorkspace::createFromCageFile(const QString& path)
 // tessellation, so the trim rules, the timeline and project files work as for a mesh.
 bool SurfaceWorkspace::createSession(const SurfaceDefinition& definition, const QString& name, bool askToSave)
 {
-    if (askToSave && !m_design.projectFiles()->maybeSave())
+    if (askToSave && !m_context.host().confirmReplacingShown())
         return false;
     timeline::Timeline history;
     try {

@@ -288,7 +288,7 @@ void MainWindow::saveWindowState()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (!m_design->projectFiles()->maybeSave()) {
+    if (!m_switch->confirmReplacingShown()) {
         event->ignore();
         return;
     }

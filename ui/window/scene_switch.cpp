@@ -115,10 +115,15 @@ QStringList SceneSwitch::recentAnimations() const
     return m_recentAnimations->paths();
 }
 
+bool SceneSwitch::confirmReplacingShown()
+{
+    return m_features.design->projectFiles()->maybeSave() && m_features.animation->confirmDiscardSkinningEdits();
+}
+
 void SceneSwitch::openSource(const QString& source)
 {
     ProjectFiles* projects = m_features.design->projectFiles();
-    if (!projects->maybeSave())
+    if (!confirmReplacingShown())
         return;
     m_openRequested = true;
     if (ProjectFiles::isProjectPath(source)) {
@@ -161,7 +166,7 @@ bool SceneSwitch::openHistoryDemo(const QString& source)
 
 void SceneSwitch::openAnimation(const QString& source)
 {
-    if (!m_features.design->projectFiles()->maybeSave())
+    if (!confirmReplacingShown())
         return;
     m_openRequested = true;
     m_loader->cancel(); // the newest request wins

@@ -77,6 +77,7 @@ public:
     // SceneHost
     [[nodiscard]] std::shared_ptr<const LoadedScene> shownScene() const override { return m_scene; }
     void showHistory(timeline::Timeline history, const QString& name) override;
+    [[nodiscard]] bool confirmReplacingShown() override;
     void reportOpenFailure(const QString& source, const QString& message) override;
 
 signals:

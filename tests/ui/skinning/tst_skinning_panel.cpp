@@ -42,6 +42,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QListWidget>
+#include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSlider>
@@ -111,6 +112,7 @@ private slots:
     void fitShowsErrorChartAndLabels();
     void approximationAndHeatMapReachTheViewport();
     void boneEditPropagatesAndUndoes();
+    void openingAnotherFileAsksAboutBoneEdits();
     void cancelDuringFitLeavesNoResult();
     void givenBoneCountSegmentsAnew();
     void exportWritesGltfAndReportsTheError();
@@ -391,6 +393,56 @@ void TestSkinningPanel::boneEditPropagatesAndUndoes()
     QVERIFY(sameModel(*session->model(), expected));
     QTest::mouseClick(redo, Qt::LeftButton);
     QCOMPARE(session->model(), secondEdit);
+}
+
+// Bone edits are the user's work: opening another animation asks before discarding them
+// (it discarded them silently). Cancel keeps the animation and its edits; Discard opens
+// the other file; with every edit undone nothing is asked.
+void TestSkinningPanel::openingAnotherFileAsksAboutBoneEdits()
+{
+    auto window = segmentedBox(QStringLiteral("unexported"));
+    QVERIFY(window);
+    SkinningPanel* panel = window->animationWorkspace()->skinning()->panel();
+    QVERIFY(fitAndWait(panel));
+    QTest::keyClick(child<QSlider>(window.get(), "poseSlider"), Qt::Key_Right);
+    auto* bones = child<QListWidget>(panel, "skinningBoneList");
+    bones->setCurrentRow(bones->count() - 1);
+    typeInto(child<QDoubleSpinBox>(panel, "boneRotateZSpinBox"), 30.0);
+    QTest::mouseClick(child<QPushButton>(panel, "applyBoneEditButton"), Qt::LeftButton);
+    QVERIFY(panel->session()->isEdited());
+    const QString box = testAnimation("folding_box");
+    const QString bar = testAnimation("bar");
+    {
+        test::MessageBoxAnswerer cancel(QMessageBox::Cancel);
+        window->openAnimation(bar);
+        QCOMPARE(cancel.names(), QStringList{QStringLiteral("unexportedSkinningEditsBox")});
+        QVERIFY(cancel.seen().front().contains(QStringLiteral("not exported")));
+    }
+    QVERIFY(!window->isLoading());
+    QCOMPARE(QString::fromStdString(window->scene()->source), box);
+    QVERIFY(panel->session() && panel->session()->isEdited());
+    {
+        test::MessageBoxAnswerer discard(QMessageBox::Discard);
+        QVERIFY(openAndWait(*window, bar));
+        QCOMPARE(discard.names().size(), 1);
+    }
+    QVERIFY(!panel->session());
+    // Undone edits are no work to lose.
+    QVERIFY(openAndWait(*window, box));
+    SegmentationPanel* segmentation = window->animationWorkspace()->segmentationPanel();
+    QTest::mouseClick(child<QPushButton>(segmentation, "runSegmentationButton"), Qt::LeftButton);
+    QVERIFY(QTest::qWaitFor([&] { return segmentation->result() && !segmentation->isRunning(); }, kWaitMs));
+    QVERIFY(fitAndWait(panel));
+    QTest::keyClick(child<QSlider>(window.get(), "poseSlider"), Qt::Key_Right);
+    bones->setCurrentRow(bones->count() - 1);
+    typeInto(child<QDoubleSpinBox>(panel, "boneRotateZSpinBox"), 30.0);
+    QTest::mouseClick(child<QPushButton>(panel, "applyBoneEditButton"), Qt::LeftButton);
+    QVERIFY(panel->session()->isEdited());
+    QTest::mouseClick(child<QPushButton>(panel, "undoSkinningEditButton"), Qt::LeftButton);
+    QVERIFY(!panel->session()->isEdited());
+    test::MessageBoxAnswerer none(QMessageBox::Cancel);
+    QVERIFY(openAndWait(*window, bar));
+    QVERIFY(none.names().isEmpty());
 }
 
 // Cancel while the fit runs (held at its first progress report): no result, the Fit
