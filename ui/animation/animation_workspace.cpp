@@ -69,6 +69,7 @@ void AnimationWorkspace::restoreSettings()
 void AnimationWorkspace::hideAnimationDocks()
 {
     m_timelineDock->hide(); // until an animation is opened
+    m_segmentationDock->hide();
     m_skinning->dock()->hide();
 }
 

@@ -5,6 +5,8 @@
 
 #include <QString>
 
+#include <functional>
+
 class QSettings;
 
 namespace trimlab::ui {
@@ -13,5 +15,13 @@ namespace trimlab::ui {
 /// no longer exists.
 [[nodiscard]] QString loadLastDirectory(const QSettings& settings);
 void saveLastDirectory(QSettings& settings, const QString& directory);
+/// The folder save dialogs start in: the last directory when it is writable, else the
+/// user's Pictures folder, else the home folder. Files are often opened from read-only
+/// folders (shared data, a mounted archive), where Export Image used to start.
+[[nodiscard]] QString loadSaveDirectory(const QSettings& settings);
+/// The same with `writable` deciding which folders can be written (tests stand in for a
+/// read-only mount, which permissions cannot make for the root user).
+[[nodiscard]] QString loadSaveDirectory(const QSettings& settings,
+                                        const std::function<bool(const QString&)>& writable);
 
 } // namespace trimlab::ui

@@ -17,6 +17,8 @@ namespace trimlab::ui {
 void WindowContext::showStatus(const QString& message, int timeoutMs) const
 {
     m_window.statusBar()->showMessage(message, timeoutMs);
+    // A long message is cut at the frame numbers on the right: hovering shows all of it.
+    m_window.statusBar()->setToolTip(message);
 }
 
 void WindowContext::showMessage(QMessageBox::Icon icon, const QString& title, const QString& text,
@@ -69,6 +71,11 @@ QString WindowContext::lastDirectory() const
     return loadLastDirectory(m_settings);
 }
 
+QString WindowContext::saveDirectory() const
+{
+    return loadSaveDirectory(m_settings);
+}
+
 void WindowContext::rememberDirectory(const QString& directory) const
 {
     saveLastDirectory(m_settings, directory);
@@ -78,7 +85,7 @@ QString WindowContext::askSavePath(const QString& title, const QStringList& filt
                                    const QString& suggestedName) const
 {
     QString filter = filters.front();
-    QString path = QFileDialog::getSaveFileName(&m_window, title, lastDirectory() + QLatin1Char('/') + suggestedName,
+    QString path = QFileDialog::getSaveFileName(&m_window, title, saveDirectory() + QLatin1Char('/') + suggestedName,
                                                 filters.join(QStringLiteral(";;")), &filter);
     if (path.isEmpty())
         return {};

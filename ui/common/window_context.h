@@ -53,8 +53,10 @@ public:
 
     /// The folder file dialogs start in (ui/common/last_directory.h).
     [[nodiscard]] QString lastDirectory() const;
+    /// The folder save dialogs start in (a writable one: loadSaveDirectory()).
+    [[nodiscard]] QString saveDirectory() const;
     void rememberDirectory(const QString& directory) const;
-    /// Asks for a file to write, starting in the last folder at `suggestedName`; `filters`
+    /// Asks for a file to write, starting in saveDirectory() at `suggestedName`; `filters`
     /// are dialog filters with one suffix each ("glTF (*.gltf)"). A name that ends in none
     /// of the filters' suffixes gets the chosen filter's. Remembers the folder; "" when the
     /// user cancels.

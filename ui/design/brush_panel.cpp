@@ -21,9 +21,11 @@ QString latin1(std::string_view text)
 }
 
 /// Enough decimals to show a length of about `scale` with three significant digits.
-int decimalsFor(double scale)
+// Enough decimals to show `smallest` with one significant digit (0.005 → 3): the radius
+// reads "0.150", not "0.150000" (a newcomer's complaint), and the minimum stays exact.
+int decimalsFor(double smallest)
 {
-    return std::clamp(3 - int(std::floor(std::log10(scale))), 2, 8);
+    return std::clamp(-int(std::floor(std::log10(smallest))), 1, 8);
 }
 
 } // namespace

@@ -1,4 +1,6 @@
 #include "ui/design/brush_tool.h"
+
+#include "ui/common/count_text.h"
 #include "ui/common/glm_points.h"
 
 #include "ui/design/control_brush_drag.h"
@@ -20,6 +22,16 @@
 namespace trimlab::ui {
 
 namespace {
+
+QString vertexCount(std::size_t count)
+{
+    return countOf((long long)count, BrushTool::tr("vertex"), BrushTool::tr("vertices"));
+}
+
+QString controlPointCount(int count)
+{
+    return countOf(count, BrushTool::tr("control point"), BrushTool::tr("control points"));
+}
 
 /// The hue the brush region is tinted toward (a magenta the trim palette does not use).
 constexpr glm::vec3 kRegionColor{0.86f, 0.22f, 0.52f};
@@ -230,8 +242,8 @@ void BrushTool::released(QMouseEvent&)
     timeline::Frame frame = drag->frame();
     const std::size_t moved = frame.vertices.size();
     m_session->undoStack()->push(
-        new AppendFrameCommand(*m_session, std::move(frame), tr("Stroke (%n vertices)", nullptr, int(moved))));
-    emit statusMessage(tr("Stroke %1: %n vertices moved.", nullptr, int(moved)).arg(m_session->lastFrame()));
+        new AppendFrameCommand(*m_session, std::move(frame), tr("Stroke (%1)").arg(vertexCount(moved))));
+    emit statusMessage(tr("Stroke %1: %2 moved.").arg(m_session->lastFrame()).arg(vertexCount(moved)));
 }
 
 void BrushTool::releaseControlDrag()
@@ -262,9 +274,9 @@ void BrushTool::releaseControlDrag()
         }
         const int points = int(frame.controlMoves.size());
         m_session->undoStack()->push(new AppendFrameCommand(
-            *m_session, std::move(frame), tr("Brush on %n control point(s)", nullptr, points)));
-        emit statusMessage(tr("Frame %1: the brush moved %n control points.", nullptr, points)
-                               .arg(m_session->lastFrame()));
+            *m_session, std::move(frame), tr("Brush on %1").arg(controlPointCount(points))));
+        emit statusMessage(
+            tr("Frame %1: the brush moved %2.").arg(m_session->lastFrame()).arg(controlPointCount(points)));
     } catch (const std::invalid_argument& e) {
         m_session->syncSurface();
         m_viewport->showPose(m_session->shownPositions());
@@ -320,6 +332,11 @@ void BrushTool::clearRegionTint()
         return;
     m_tinted = false;
     m_viewport->setVertexColors({});
+}
+
+QString BrushTool::mouseHelp() const
+{
+    return tr("Drag on the surface: deform it in the view plane (Shift: along the surface normal) · Drag on the background or Alt+drag: orbit · Right/middle drag: pan · Wheel: zoom");
 }
 
 } // namespace trimlab::ui

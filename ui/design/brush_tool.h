@@ -75,6 +75,7 @@ public:
     void released(QMouseEvent& event) override;
     void hovered(QPointF position) override;
     void left() override;
+    [[nodiscard]] QString mouseHelp() const override;
 
 signals:
     void statusMessage(const QString& message);

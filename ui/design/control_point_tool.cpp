@@ -1,4 +1,6 @@
 #include "ui/design/control_point_tool.h"
+
+#include "ui/common/count_text.h"
 #include "ui/common/glm_points.h"
 
 #include "ui/design/append_frame_command.h"
@@ -224,7 +226,7 @@ void ControlPointTool::commit(const std::vector<ControlPointTarget>& targets)
         const int points = int(frame.controlMoves.size());
         const int vertices = int(frame.vertices.size());
         m_session->undoStack()->push(new AppendFrameCommand(
-            *m_session, std::move(frame), tr("Move %n control point(s)", nullptr, points)));
+            *m_session, std::move(frame), tr("Move %1").arg(countOf(points, tr("control point"), tr("control points")))));
         emit statusMessage(tr("Frame %1: %2 control points moved, %3 vertices changed.")
                                .arg(m_session->lastFrame())
                                .arg(points)
@@ -266,6 +268,11 @@ void ControlPointTool::hovered(QPointF position)
 void ControlPointTool::left()
 {
     m_overlay->setHovered(std::nullopt);
+}
+
+QString ControlPointTool::mouseHelp() const
+{
+    return tr("Click a control point: select it (Shift: add to the selection) · Drag a selected point: move the selection · Drag elsewhere: orbit · Right/middle drag: pan · Wheel: zoom");
 }
 
 } // namespace trimlab::ui

@@ -1,5 +1,6 @@
 #include "ui/design/design_workspace.h"
 
+#include "ui/common/count_text.h"
 #include "ui/common/window_context.h"
 #include "ui/design/append_frame_command.h"
 #include "ui/design/brush_panel.h"
@@ -327,7 +328,7 @@ void DesignWorkspace::moveSelectionAlongNormal(double distance)
         }
         const int points = int(frame.controlMoves.size());
         m_session->undoStack()->push(new AppendFrameCommand(
-            *m_session, std::move(frame), tr("Move %n control point(s) along the normal", nullptr, points)));
+            *m_session, std::move(frame), tr("Move %1 along the normal").arg(countOf(points, tr("control point"), tr("control points")))));
     } catch (const std::invalid_argument& e) {
         m_session->syncSurface();
         emit statusMessage(tr("No edit recorded: %1").arg(QString::fromStdString(e.what())));

@@ -54,6 +54,7 @@ ClipPlaneEditor::ClipPlaneEditor(QWidget* parent) : QGroupBox(tr("Clipping plane
     setToolTip(tr("Cut the scene with the plane n·x + offset = 0, keeping the side n·x + offset ≥ 0. The winding "
                   "index is counted exactly, so the trimmed interior stays correct behind the cut."));
     auto* form = new QFormLayout(this);
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows); // a narrow dock puts the label above its row
     form->addRow(tr("Normal"), createNormalRow());
     form->addRow(tr("Presets"), createPresetRow());
     form->addRow(tr("Offset"), createOffsetRow());

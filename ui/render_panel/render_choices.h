@@ -51,15 +51,16 @@ struct RenderChoices {
     }
 };
 
-/// What a new user sees first: the alternating border rule, and a clipping plane
-/// n = (0, 0, −1), offset 0 that removes the half of a demo scene (centred at the origin)
-/// facing fitCamera's default view, so the trimmed interior is visible at once.
+/// What a new user sees first: the alternating border rule on the whole scene. Plane 1
+/// is prepared (n = (0, 0, −1), offset 0: it removes the half of a scene centred at the
+/// origin that faces fitCamera's default view) but off — a newly opened mesh that
+/// appeared cut in half confused first-time users; ticking it shows the interior.
 [[nodiscard]] inline RenderChoices firstStartRenderChoices()
 {
     RenderChoices choices;
     choices.trim.trimEnabled = true;
     choices.trim.rule = StaticRule::AlternatingBorder;
-    choices.trim.clip = ClipPlane{true, {0.0, 0.0, -1.0}, 0.0};
+    choices.trim.clip = ClipPlane{false, {0.0, 0.0, -1.0}, 0.0};
     return choices;
 }
 

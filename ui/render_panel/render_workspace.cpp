@@ -53,8 +53,9 @@ void RenderWorkspace::createStatsDock()
     layout->addWidget(m_statsPanel);
     layout->addWidget(m_timingPanel);
     layout->addStretch();
-    m_statsDock = m_context.addSideDock(tr("Frame statistics"), QStringLiteral("frameStatsDock"), content);
-    m_context.window().splitDockWidget(m_dock, m_statsDock, Qt::Vertical);
+    // A tab beside the Render panel rather than a split below it: the panel keeps the
+    // window's height (the status bar shows the frame's main numbers meanwhile).
+    m_statsDock = m_context.addSideDock(tr("Frame statistics"), QStringLiteral("frameStatsDock"), content, m_dock);
 }
 
 void RenderWorkspace::connectViewport()

@@ -33,6 +33,7 @@ public:
     void released(QMouseEvent& event) override;
     void hovered(QPointF position) override;
     void left() override;
+    [[nodiscard]] QString mouseHelp() const override;
 
 signals:
     void boneSelected(int bone);

@@ -65,11 +65,13 @@ QWidget* SkeletonSettingsForm::createContractionGroup()
 {
     auto* group = new QGroupBox(tr("Contraction"));
     m_initialWeight = realBox("skeletonInitialWeightSpinBox", 0.0, 1000.0, 6, 0.001,
-                              tr("W_L⁰, the initial contraction weight; 0 = the paper's 10⁻³·√Ā with Ā as unit"));
+                              tr("How strongly the first iteration pulls the surface inward (the paper's W_L⁰); 0 = the "
+                                 "paper's 10⁻³·√Ā, Ā the mean face area"));
     m_initialWeight->setSpecialValueText(tr("paper default (10⁻³)"));
-    m_growth = realBox("skeletonGrowthSpinBox", 1.1, 10.0, 2, 0.1, tr("s_L: W_L is multiplied by this every iteration"));
-    m_maxContraction = realBox("skeletonMaxContractionSpinBox", 1.0, 1e6, 1, 100.0, tr("Cap of W_L (paper: 2048)"));
-    m_maxAttraction = realBox("skeletonMaxAttractionSpinBox", 1.0, 1e7, 1, 1000.0, tr("Cap of W_H (paper: 10000)"));
+    m_growth = realBox("skeletonGrowthSpinBox", 1.1, 10.0, 2, 0.1, tr("How much stronger the inward pull gets each iteration (the paper's s_L)"));
+    m_maxContraction = realBox("skeletonMaxContractionSpinBox", 1.0, 1e6, 1, 100.0, tr("The strongest inward pull, as a multiple of the first (the cap of the paper's W_L; paper: 2048)"));
+    m_maxAttraction = realBox("skeletonMaxAttractionSpinBox", 1.0, 1e7, 1, 1000.0, tr("How firmly vertices that stopped shrinking hold their place at most (the cap of the paper's W_H; "
+                                 "paper: 10000)"));
     m_iterations = intBox("skeletonIterationsSpinBox", 1, 200, tr("At most this many contraction solves"));
     m_ordering = new QComboBox;
     m_ordering->setObjectName(QStringLiteral("skeletonOrderingComboBox"));
@@ -82,10 +84,10 @@ QWidget* SkeletonSettingsForm::createContractionGroup()
     m_solver->addItem(QStringLiteral("CHOLMOD"), int(SparseBackend::Cholmod));
     m_solver->addItem(QStringLiteral("LDLT (Eigen)"), int(SparseBackend::EigenSimplicialLdlt));
     auto* form = new QFormLayout(group);
-    form->addRow(tr("W_L⁰"), m_initialWeight);
-    form->addRow(tr("s_L"), m_growth);
-    form->addRow(tr("W_L cap"), m_maxContraction);
-    form->addRow(tr("W_H cap"), m_maxAttraction);
+    form->addRow(tr("Initial pull"), m_initialWeight);
+    form->addRow(tr("Pull growth"), m_growth);
+    form->addRow(tr("Strongest pull"), m_maxContraction);
+    form->addRow(tr("Strongest hold"), m_maxAttraction);
     form->addRow(tr("Max iterations"), m_iterations);
     form->addRow(tr("Ordering"), m_ordering);
     form->addRow(tr("Solver"), m_solver);
@@ -96,15 +98,16 @@ QWidget* SkeletonSettingsForm::createSimplificationGroup()
 {
     auto* group = new QGroupBox(tr("Simplification and refinement"));
     m_delta = realBox("skeletonDeltaSpinBox", 0.0, 0.1, 5, 0.0005,
-                      tr("δ of the pre-collapse, as a fraction of the bounding-box diagonal; 0 disables it"));
-    m_shapeWeight = realBox("skeletonShapeWeightSpinBox", 0.0, 1000.0, 3, 0.1, tr("w_a, the shape cost's weight"));
-    m_samplingWeight = realBox("skeletonSamplingWeightSpinBox", 0.0, 1000.0, 3, 0.05, tr("w_b, the sampling cost's weight"));
+                      tr("Edges shorter than this (a fraction of the bounding-box diagonal) collapse before the "
+                         "simplification (the paper's δ); 0 disables it"));
+    m_shapeWeight = realBox("skeletonShapeWeightSpinBox", 0.0, 1000.0, 3, 0.1, tr("How much keeping the curve's shape counts when collapsing edges (the paper's w_a)"));
+    m_samplingWeight = realBox("skeletonSamplingWeightSpinBox", 0.0, 1000.0, 3, 0.05, tr("How much even spacing of the nodes counts when collapsing edges (the paper's w_b)"));
     m_refine = new QCheckBox(tr("Refine (centre the nodes)"));
     m_refine->setObjectName(QStringLiteral("skeletonRefineCheckBox"));
     auto* form = new QFormLayout(group);
-    form->addRow(tr("δ"), m_delta);
-    form->addRow(tr("w_a"), m_shapeWeight);
-    form->addRow(tr("w_b"), m_samplingWeight);
+    form->addRow(tr("Short edges"), m_delta);
+    form->addRow(tr("Shape weight"), m_shapeWeight);
+    form->addRow(tr("Spacing weight"), m_samplingWeight);
     form->addRow(m_refine);
     return group;
 }
@@ -116,7 +119,8 @@ QWidget* SkeletonSettingsForm::createSelectionGroup()
     m_root = intBox("skeletonRootSpinBox", -1, 39, tr("Root joint of the rig, or automatic"));
     m_root->setSpecialValueText(tr("automatic"));
     m_heat = realBox("skeletonHeatConstantSpinBox", 0.01, 100.0, 3, 0.05,
-                     tr("c of the bone-heat weights (Pinocchio: 1; the paper: ≈ 0.22 mimics heat in the volume)"));
+                     tr("How far each bone's influence spreads over the surface (the bone-heat constant c; "
+                        "Pinocchio: 1; the paper: ≈ 0.22 mimics heat in the volume)"));
     m_skinning = new QComboBox;
     m_skinning->setObjectName(QStringLiteral("skeletonSkinningComboBox"));
     m_skinning->addItem(tr("Linear blend (LBS)"), int(SkinningMethod::Lbs));
@@ -124,7 +128,7 @@ QWidget* SkeletonSettingsForm::createSelectionGroup()
     auto* form = new QFormLayout(group);
     form->addRow(tr("Target nodes"), m_nodes);
     form->addRow(tr("Root joint"), m_root);
-    form->addRow(tr("Weights c"), m_heat);
+    form->addRow(tr("Weight spread"), m_heat);
     form->addRow(tr("Skinning"), m_skinning);
     return group;
 }

@@ -446,7 +446,10 @@ void SkinningPanel::showResult()
     }
     const SkinningFitResult& result = m_session->fit().result;
     const SkinningError& error = m_session->error();
-    QString text = tr("E_RMS %1 (%2 of the diagonal) · max distance %3")
+    // E_RMS is in thousandths of a length unit (the thesis's scale) and the largest error
+    // in length units: both named, so that the RMS does not look larger than the maximum.
+    QString text = tr("E_RMS %1 thousandths of a unit (%2 ‰ of the model's diagonal) · largest vertex error %3 "
+                      "units")
                        .arg(formatERms(error.eRms))
                        .arg(error.eRmsDiagonal, 0, 'g', 3)
                        .arg(error.maxDistance, 0, 'g', 3);

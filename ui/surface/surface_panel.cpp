@@ -1,5 +1,7 @@
 #include "ui/surface/surface_panel.h"
 
+#include "ui/common/count_text.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -192,7 +194,7 @@ void SurfacePanel::setSurface(Kind kind, const QString& description, double boun
 void SurfacePanel::setSelectionCount(int count)
 {
     m_selectionCount = std::max(count, 0);
-    m_selection->setText(tr("%n control point(s) selected", nullptr, m_selectionCount));
+    m_selection->setText(tr("%1 selected").arg(countOf(m_selectionCount, tr("control point"), tr("control points"))));
     updateEnabled();
 }
 
@@ -205,7 +207,7 @@ void SurfacePanel::updateEnabled()
     m_moveAlongNormal->setEnabled(m_kind != Kind::None && m_selectionCount > 0);
     m_normalStep->setEnabled(m_kind != Kind::None);
     if (m_selection->text().isEmpty())
-        m_selection->setText(tr("%n control point(s) selected", nullptr, m_selectionCount));
+        m_selection->setText(tr("%1 selected").arg(countOf(m_selectionCount, tr("control point"), tr("control points"))));
 }
 
 } // namespace trimlab::ui

@@ -7,6 +7,7 @@
 /// the view. Positions are the events' logical widget coordinates.
 
 #include <QPointF>
+#include <QString>
 
 class QMouseEvent;
 
@@ -21,6 +22,8 @@ public:
     virtual void released(QMouseEvent& event) = 0;
     virtual void hovered(QPointF position) = 0;
     virtual void left() = 0;
+    /// What the mouse does in the view while the tool is on: the viewport's tooltip.
+    [[nodiscard]] virtual QString mouseHelp() const = 0;
 
 protected:
     ViewportTool() = default;

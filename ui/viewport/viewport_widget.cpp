@@ -41,9 +41,13 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent), m_cpuSt
     setFormat(render::OffscreenGlContext::requestedFormat());
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
-    setToolTip(tr("Left drag: orbit · Right/middle or Shift+left drag: pan · Wheel: zoom (Ctrl: toward the "
-                  "cursor) · Double click or F: fit · Ctrl+left drag on an object: move it (when the Scene panel "
-                  "allows)"));
+    setToolTip(cameraHelp());
+}
+
+QString ViewportWidget::cameraHelp()
+{
+    return tr("Left drag: orbit · Right/middle or Shift+left drag: pan · Wheel: zoom (Ctrl: toward the cursor) · "
+              "Double click or F: fit · Ctrl+left drag on an object: move it (when the Scene panel allows)");
 }
 
 ViewportWidget::~ViewportWidget()
@@ -76,6 +80,7 @@ void ViewportWidget::setSceneTransforms(std::shared_ptr<const Scene> scene)
 void ViewportWidget::setTool(ViewportTool* tool)
 {
     m_tool = tool;
+    setToolTip(tool ? tool->mouseHelp() : cameraHelp()); // what the mouse does now, not the camera alone
     setMouseTracking(tool != nullptr); // hover feedback (the brush's region) needs moves without buttons
     if (m_drag == Drag::Tool)
         m_drag = Drag::None;
@@ -231,6 +236,13 @@ void ViewportWidget::fitToView()
 void ViewportWidget::resetView()
 {
     m_orbit.fit(aspect());
+    m_resetPending = false;
+    update();
+}
+
+void ViewportWidget::viewAlong(const glm::dvec3& direction)
+{
+    m_orbit.fit(aspect(), direction);
     m_resetPending = false;
     update();
 }

@@ -129,6 +129,9 @@ public:
     void fitToView();
     /// Frames the scene from the default direction (fitCamera's).
     void resetView();
+    /// Frames the scene looking along `direction` (eye → target): the view presets
+    /// (front looks along −z, top along −y, …).
+    void viewAlong(const glm::dvec3& direction);
 
     /// The size frames are rendered at: the widget size in device pixels.
     [[nodiscard]] QSize framePixelSize() const;
@@ -157,6 +160,8 @@ public:
     /// The mouse tool asked first on every press (nullptr: none). Not owned; the tool
     /// must outlive the viewport or be reset first. Turns on hover tracking.
     void setTool(ViewportTool* tool);
+    /// The tooltip without a tool: how the mouse and keys move the camera.
+    [[nodiscard]] static QString cameraHelp();
     /// The tool set last (nullptr: none).
     [[nodiscard]] ViewportTool* tool() const { return m_tool; }
 

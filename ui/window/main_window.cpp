@@ -17,6 +17,8 @@
 #include "ui/surface/surface_workspace.h"
 #include "ui/viewport/viewport_widget.h"
 #include "ui/common/mesh_file_filter.h"
+#include "ui/window/dock_tab_bars.h"
+#include "ui/window/help_dialogs.h"
 #include "ui/window/scene_switch.h"
 
 #include "core/catalog/scene_source.h"
@@ -35,6 +37,8 @@
 #include <QSettings>
 #include <QTimer>
 #include <QToolBar>
+
+#include <glm/vec3.hpp>
 
 #include <initializer_list>
 
@@ -85,6 +89,10 @@ MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
     setObjectName(QStringLiteral("mainWindow"));
     setWindowIcon(QIcon(QStringLiteral(":/icons/trimlab.svg")));
     setAcceptDrops(true);
+    // Tabs beside the side docks, not below them: six panels' titles do not fit across a
+    // 400-pixel dock ("Re…", "Segmenta…"), and a column of tabs has room for more.
+    setDockOptions(dockOptions() | QMainWindow::VerticalTabs);
+    keepDockTabTitlesWhole(*this);
     createCentralView();
     m_switch = new SceneSwitch(this, m_viewport);
     m_context = std::make_unique<WindowContext>(*this, *m_settings, *m_switch);
@@ -217,6 +225,7 @@ void MainWindow::createViewMenu()
     reset->setShortcut(QKeySequence(Qt::Key_Home));
     reset->setShortcutContext(Qt::WidgetShortcut);
     m_viewport->addAction(reset);
+    addViewPresets(view);
     view->addSeparator();
     addDockToggle(view, m_render->dock(), tr("Render &Panel"));
     addDockToggle(view, m_inspect->dock(), tr("S&cene Panel"));
@@ -226,12 +235,49 @@ void MainWindow::createViewMenu()
     addDockToggle(view, m_skeleton->dock(), tr("Ske&leton Panel"));
     addDockToggle(view, m_animation->timelineDock(), tr("&Timeline"));
     addDockToggle(view, m_design->brushDock(), tr("&Brush Panel"));
+    addDockToggle(view, m_surface->dock(), tr("S&urface Panel"));
     addDockToggle(view, m_design->timelineDock(), tr("&Deformation Timeline"));
+}
+
+// Front, back, left, right, top and bottom on 1, 3 and 7 as on Blender's numeric keypad
+// (Ctrl: the opposite side; keypad and top-row digits alike) while the view has the focus.
+void MainWindow::addViewPresets(QMenu* view)
+{
+    QMenu* presets = view->addMenu(tr("View &From"));
+    presets->setObjectName(QStringLiteral("viewPresetsMenu"));
+    struct Preset {
+        const char* text;
+        const char* name;
+        glm::dvec3 direction; // eye → target
+        QKeySequence keys;
+    };
+    const Preset list[] = {
+        {QT_TR_NOOP("&Front"), "viewFrontAction", {0.0, 0.0, -1.0}, QKeySequence(Qt::Key_1)},
+        {QT_TR_NOOP("&Back"), "viewBackAction", {0.0, 0.0, 1.0}, QKeySequence(Qt::ControlModifier | Qt::Key_1)},
+        {QT_TR_NOOP("&Right"), "viewRightAction", {-1.0, 0.0, 0.0}, QKeySequence(Qt::Key_3)},
+        {QT_TR_NOOP("&Left"), "viewLeftAction", {1.0, 0.0, 0.0}, QKeySequence(Qt::ControlModifier | Qt::Key_3)},
+        {QT_TR_NOOP("&Top"), "viewTopAction", {0.0, -1.0, 0.0}, QKeySequence(Qt::Key_7)},
+        {QT_TR_NOOP("B&ottom"), "viewBottomAction", {0.0, 1.0, 0.0}, QKeySequence(Qt::ControlModifier | Qt::Key_7)},
+    };
+    for (const Preset& preset : list) {
+        const glm::dvec3 direction = preset.direction;
+        QAction* action = presets->addAction(tr(preset.text), m_viewport, [this, direction] { m_viewport->viewAlong(direction); });
+        action->setObjectName(QLatin1String(preset.name));
+        action->setShortcut(preset.keys);
+        action->setShortcutContext(Qt::WidgetShortcut);
+        m_viewport->addAction(action);
+    }
 }
 
 void MainWindow::createHelpMenu()
 {
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* guide = help->addAction(tr("&User Guide"), this, [this] { showUserGuide(this); });
+    guide->setObjectName(QStringLiteral("userGuideAction"));
+    guide->setShortcut(QKeySequence::HelpContents);
+    QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, [this] { showKeyboardShortcuts(*this); });
+    keys->setObjectName(QStringLiteral("keyboardShortcutsAction"));
+    help->addSeparator();
     QAction* about = help->addAction(tr("&About TrimLab"), this, &MainWindow::showAbout);
     about->setMenuRole(QAction::AboutRole);
 }
@@ -272,8 +318,7 @@ void MainWindow::restoreSettings()
     if (!restoreGeometry(m_settings->value(kGeometryKey).toByteArray()))
         resize(1100, 720);
     if (!restoreState(m_settings->value(kStateKey).toByteArray())) {
-        resizeDocks({m_render->dock()}, {380}, Qt::Horizontal);
-        resizeDocks({m_render->dock(), m_render->statsDock()}, {440, 300}, Qt::Vertical); // the Render panel is the taller
+        resizeDocks({m_render->dock()}, {400}, Qt::Horizontal);
     }
     m_animation->hideAnimationDocks(); // until an animation is opened
     m_design->timelineDock()->hide();   // until a deformation history starts

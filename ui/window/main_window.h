@@ -41,6 +41,7 @@
 
 #include <memory>
 
+class QMenu;
 class QSettings;
 
 namespace trimlab::ui {
@@ -130,6 +131,7 @@ private:
     void createEditMenu();
     void createViewMenu();
     void createHelpMenu();
+    void addViewPresets(QMenu* view);
     void connectWorkspaces();
     void restoreSettings();
     void saveWindowState();

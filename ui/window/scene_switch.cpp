@@ -45,6 +45,15 @@ QString sceneLabel(const QString& source)
     return QFileInfo(source).fileName();
 }
 
+/// " — no trimming: REASON" for a scene the trim modes cannot classify, "" otherwise (it
+/// said "trim modes unavailable" without the reason).
+QString trimUnavailableNote(const LoadedScene& scene)
+{
+    if (scene.trimmable())
+        return {};
+    return SceneSwitch::tr(" — no trimming: %1").arg(QString::fromStdString(scene.trimUnavailableReason()));
+}
+
 /// A one-object scene of `history`'s base mesh named `name`, opened from `source`.
 std::shared_ptr<LoadedScene> historyScene(const timeline::Timeline& history, const QString& name,
                                           const QString& source)
@@ -237,7 +246,7 @@ void SceneSwitch::onSceneLoaded(std::shared_ptr<const LoadedScene> loaded)
     m_context->showStatus(tr("%1: %2 triangles%3")
                               .arg(QString::fromStdString(m_scene->displayName))
                               .arg(m_scene->scene.triangleCount())
-                              .arg(m_scene->trimmable() ? QString() : tr(" — trim modes unavailable")));
+                              .arg(trimUnavailableNote(*m_scene)));
     emit sceneLoaded(source);
 }
 
@@ -256,7 +265,7 @@ void SceneSwitch::onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loade
                               .arg(animation.poseCount())
                               .arg(animation.vertexCount())
                               .arg(animation.triangleCount())
-                              .arg(m_scene->trimmable() ? QString() : tr(" — trim modes unavailable")));
+                              .arg(trimUnavailableNote(*m_scene)));
     emit animationLoaded(source);
 }
 

@@ -124,6 +124,8 @@ void TestInspectClip::highlightCountsReachTheStatusBar()
     auto* label = child<QLabel>(window.get(), "highlightLabel");
     QVERIFY(label);
     QVERIFY(!label->isVisibleTo(window.get()));
+    // The cut shows surfaces inside the other objects (unclipped, only the outer hull shows).
+    clickButton(child<QCheckBox>(window.get(), "clipPlaneEnabled0"));
     clickButton(child<QCheckBox>(window.get(), "highlightCollisionsCheckBox"));
     QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return f.settings.highlight.collisions; }));
     const std::uint64_t collisions = window->viewport()->lastFrame()->stats.counts.collisionPixels;

@@ -1,11 +1,14 @@
 // What the GUI persists, without a window: render choices (with fallbacks for missing
 // or broken values) and the recent-files list (order, limit, duplicates, demos).
+#include "ui/common/last_directory.h"
 #include "ui/window/recent_files.h"
 #include "ui/render_panel/render_settings_store.h"
 
 #include "render/mfr/kplus_buffer.h"
 #include "render/mfr/fragment_method.h"
 
+#include <QDir>
+#include <QFileInfo>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -21,6 +24,7 @@ private slots:
     void renderChoicesRoundTrip();
     void brokenValuesFallBackFieldByField();
     void recentFilesKeepTheNewestTen();
+    void saveDialogsStartInAWritableFolder();
 
 private:
     std::unique_ptr<QTemporaryDir> m_dir;
@@ -39,7 +43,7 @@ void TestSettingsStore::missingSettingsGiveFirstStartChoices()
     const RenderChoices choices = loadRenderChoices(settings);
     QVERIFY(choices.trim.trimEnabled);
     QCOMPARE(choices.trim.rule, StaticRule::AlternatingBorder);
-    QVERIFY(choices.trim.clip.enabled);
+    QVERIFY(!choices.trim.clip.enabled); // prepared, off: a new user sees the whole scene
     QCOMPARE(choices.trim.clip.normal, glm::dvec3(0.0, 0.0, -1.0));
     QCOMPARE(choices.trim.clip.offset, 0.0);
     QCOMPARE(choices.k, 16);
@@ -113,6 +117,24 @@ void TestSettingsStore::recentFilesKeepTheNewestTen()
     const QSettings settings(iniPath(), QSettings::IniFormat);
     restored.load(settings);
     QCOMPARE(restored.paths(), recent.paths());
+}
+
+// A file opened from a read-only folder (shared data, a mounted archive) must not make
+// Export Image start there: save dialogs fall back to a writable folder.
+void TestSettingsStore::saveDialogsStartInAWritableFolder()
+{
+    QSettings settings(iniPath(), QSettings::IniFormat);
+    const QString writable = m_dir->filePath(QStringLiteral("writable"));
+    const QString readOnly = m_dir->filePath(QStringLiteral("read-only"));
+    QVERIFY(QDir().mkpath(writable) && QDir().mkpath(readOnly));
+    const auto mount = [&](const QString& folder) { return folder != readOnly; }; // read-only as a mount is
+    saveLastDirectory(settings, writable);
+    QCOMPARE(loadSaveDirectory(settings, mount), writable);
+    saveLastDirectory(settings, readOnly);
+    QCOMPARE(loadLastDirectory(settings), readOnly); // opening still starts where the user was
+    const QString start = loadSaveDirectory(settings, mount);
+    QVERIFY(start != readOnly);
+    QVERIFY(QFileInfo(start).isDir());
 }
 
 QTEST_GUILESS_MAIN(TestSettingsStore)
