@@ -81,6 +81,20 @@ void OrbitController::fit(double aspect, const glm::dvec3& viewDirection)
     setCamera(fitCamera(m_bounds, aspect > 0.0 ? aspect : 1.0, viewDirection));
 }
 
+void OrbitController::frame(const Bounds& shown, double aspect)
+{
+    setCamera(fitCamera(shown.valid() ? shown : m_bounds, aspect > 0.0 ? aspect : 1.0));
+}
+
+void OrbitController::frame(const Bounds& shown, double aspect, const glm::dvec3& viewDirection)
+{
+    if (!usableDirection(viewDirection)) {
+        frame(shown, aspect);
+        return;
+    }
+    setCamera(fitCamera(shown.valid() ? shown : m_bounds, aspect > 0.0 ? aspect : 1.0, viewDirection));
+}
+
 void OrbitController::fitKeepingDirection(double aspect)
 {
     fit(aspect, viewDirection());

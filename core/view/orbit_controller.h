@@ -44,6 +44,12 @@ public:
     void fit(double aspect, const glm::dvec3& viewDirection);
     /// Frames the scene keeping the current view direction ("fit to view").
     void fitKeepingDirection(double aspect);
+    /// The same three framings of `shown` (what the view shows now: the current pose and
+    /// anything drawn over it, such as a control net) instead of the scene bounds, which
+    /// may hold every frame of a history; the depth range still encloses the scene
+    /// bounds. An invalid `shown` frames the scene bounds.
+    void frame(const Bounds& shown, double aspect);
+    void frame(const Bounds& shown, double aspect, const glm::dvec3& viewDirection);
 
     /// Adopts `camera`'s eye, target and fovy; its up vector and depth range are replaced
     /// (world +y, withDepthRange). A pitch beyond kMaxPitchDegrees is clamped, which moves

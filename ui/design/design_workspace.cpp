@@ -250,6 +250,7 @@ void DesignWorkspace::endSession()
     if (!m_session)
         return;
     m_foreignPose.clear();
+    m_viewport->setFramingPoints({});
     m_brush->setSession(nullptr);
     m_points->setSession(nullptr);
     m_overlay->clearNet();
@@ -284,11 +285,22 @@ void DesignWorkspace::setBrushSettings(const deform::BrushSettings& settings)
     m_brush->setSettings(settings);
 }
 
+// Fit and Home frame the net with the surface: its points reach past the surface.
+void DesignWorkspace::frameControlNet(const std::vector<glm::dvec3>& points)
+{
+    std::vector<glm::dvec3> world;
+    world.reserve(points.size());
+    for (const glm::dvec3& p : points)
+        world.push_back(glm::dvec3(m_session->modelMatrix() * glm::dvec4(p, 1.0)));
+    m_viewport->setFramingPoints(std::move(world));
+}
+
 void DesignWorkspace::showControlNet()
 {
     const EditableSurface* surface = m_session ? m_session->surface() : nullptr;
     if (!surface) {
         m_overlay->clearNet();
+        m_viewport->setFramingPoints({});
         return;
     }
     std::vector<std::array<std::uint32_t, 2>> edges;
@@ -390,8 +402,10 @@ void DesignWorkspace::refreshView()
     refreshTimelinePanel();
     if (!m_session)
         return;
-    if (const EditableSurface* surface = m_session->surface())
+    if (const EditableSurface* surface = m_session->surface()) {
         m_overlay->setPoints(surface->controlPoints());
+        frameControlNet(surface->controlPoints());
+    }
     m_viewport->showPose(m_foreignPose.empty() ? m_session->shownPositions() : m_foreignPose);
     if (!showsDynamicRules()) {
         m_viewport->setDynamicChain(nullptr);

@@ -141,6 +141,7 @@ private:
     void refreshView();
     [[nodiscard]] DynamicChain shownChain() const;
     void showControlNet();
+    void frameControlNet(const std::vector<glm::dvec3>& points);
     void onHistoryChanged();
     void extendViewBounds(const std::vector<glm::vec3>& positions);
     void refreshTimelinePanel();

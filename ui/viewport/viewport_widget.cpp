@@ -215,8 +215,26 @@ void ViewportWidget::applyPendingReset()
 {
     if (!m_resetPending)
         return;
-    m_orbit.fit(aspect());
+    m_orbit.frame(shownBounds(), aspect());
     m_resetPending = false;
+}
+
+void ViewportWidget::setFramingPoints(std::vector<glm::dvec3> worldPoints)
+{
+    m_framingPoints = std::move(worldPoints);
+}
+
+// What Home and Fit frame: the surface as shown now (the pose, not every frame of the
+// history the depth range must hold, so Home frames a mesh the same way whatever was
+// drawn before) and the points drawn over it (a control net reaches past its surface).
+Bounds ViewportWidget::shownBounds()
+{
+    Bounds bounds;
+    if (const std::shared_ptr<const Scene> posed = m_view.posedScene())
+        bounds = posed->worldBounds();
+    for (const glm::dvec3& p : m_framingPoints)
+        bounds.extend(p);
+    return bounds;
 }
 
 void ViewportWidget::setCamera(const Camera& camera)
@@ -229,20 +247,20 @@ void ViewportWidget::setCamera(const Camera& camera)
 void ViewportWidget::fitToView()
 {
     applyPendingReset();
-    m_orbit.fitKeepingDirection(aspect());
+    m_orbit.frame(shownBounds(), aspect(), m_orbit.viewDirection());
     update();
 }
 
 void ViewportWidget::resetView()
 {
-    m_orbit.fit(aspect());
+    m_orbit.frame(shownBounds(), aspect());
     m_resetPending = false;
     update();
 }
 
 void ViewportWidget::viewAlong(const glm::dvec3& direction)
 {
-    m_orbit.fit(aspect(), direction);
+    m_orbit.frame(shownBounds(), aspect(), direction);
     m_resetPending = false;
     update();
 }

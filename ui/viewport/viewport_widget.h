@@ -125,10 +125,15 @@ public:
     [[nodiscard]] Camera camera() const;
     /// Adopts `camera` (see OrbitController::setCamera) and re-renders.
     void setCamera(const Camera& camera);
-    /// Frames the scene keeping the view direction.
+    /// Frames what is shown (shownBounds) keeping the view direction.
     void fitToView();
-    /// Frames the scene from the default direction (fitCamera's).
+    /// Frames what is shown from the default direction (fitCamera's).
     void resetView();
+    /// World points beyond the surface that Fit and Home must frame too (a control net);
+    /// empty: none.
+    void setFramingPoints(std::vector<glm::dvec3> worldPoints);
+    /// The bounds of the posed scene and the framing points.
+    [[nodiscard]] Bounds shownBounds();
     /// Frames the scene looking along `direction` (eye → target): the view presets
     /// (front looks along −z, top along −y, …).
     void viewAlong(const glm::dvec3& direction);
@@ -265,6 +270,7 @@ private:
     /// The content, the renderers of the current context, the frame policy, the last frame.
     render::ViewportRenderer m_view;
     bool m_resetPending = false;
+    std::vector<glm::dvec3> m_framingPoints; ///< setFramingPoints
     QString m_error;
     QString m_reportedError;
     ViewportTool* m_tool = nullptr;

@@ -15,10 +15,12 @@
 #include "ui/skeleton/skeleton_workspace.h"
 #include "ui/skinning/skinning_workspace.h"
 #include "ui/surface/surface_workspace.h"
+#include "ui/viewport/orientation_axes.h"
 #include "ui/viewport/viewport_widget.h"
 #include "ui/common/mesh_file_filter.h"
 #include "ui/window/dock_tab_bars.h"
 #include "ui/window/help_dialogs.h"
+#include "ui/window/scene_statistics.h"
 #include "ui/window/scene_switch.h"
 
 #include "core/catalog/scene_source.h"
@@ -132,12 +134,14 @@ void MainWindow::createCentralView()
         m_viewport = new ViewportWidget(this);
         m_viewport->setObjectName(QStringLiteral("viewport"));
         setCentralWidget(m_viewport);
+        m_axes = new OrientationAxes(m_viewport);
         return;
     }
     // No usable OpenGL: a QOpenGLWidget in the window would break the window itself, so
     // the viewport stays detached (loading and the panel still work) and a text explains.
     m_detachedViewport = std::make_unique<ViewportWidget>();
     m_viewport = m_detachedViewport.get();
+    m_axes = new OrientationAxes(m_viewport);
     m_viewport->setUnavailable(glProblem);
     auto* label = new QLabel(tr("The 3D view is unavailable.\n\n%1").arg(glProblem), this);
     label->setObjectName(QStringLiteral("viewportUnavailableLabel"));
@@ -226,6 +230,18 @@ void MainWindow::createViewMenu()
     reset->setShortcutContext(Qt::WidgetShortcut);
     m_viewport->addAction(reset);
     addViewPresets(view);
+    QAction* statistics = view->addAction(tr("&Mesh Statistics…"), this, &MainWindow::showSceneStatistics);
+    statistics->setObjectName(QStringLiteral("meshStatisticsAction"));
+    statistics->setShortcut(QKeySequence(tr("Ctrl+I")));
+    QAction* axes = view->addAction(tr("Orientation &Axes"));
+    axes->setObjectName(QStringLiteral("showAxesAction"));
+    axes->setCheckable(true);
+    axes->setChecked(m_settings->value(QStringLiteral("view/showAxes"), true).toBool());
+    m_axes->setVisible(axes->isChecked());
+    connect(axes, &QAction::toggled, this, [this](bool on) {
+        m_axes->setVisible(on);
+        m_settings->setValue(QStringLiteral("view/showAxes"), on);
+    });
     view->addSeparator();
     addDockToggle(view, m_render->dock(), tr("Render &Panel"));
     addDockToggle(view, m_inspect->dock(), tr("S&cene Panel"));
@@ -457,6 +473,18 @@ void MainWindow::showExportDialog()
         m_context->showStatus(tr("Saved %1").arg(path));
     else
         m_context->showMessage(QMessageBox::Warning, tr("Export Image"), tr("The image was not saved."), error);
+}
+
+void MainWindow::showSceneStatistics()
+{
+    if (!m_statistics) {
+        m_statistics = new SceneStatisticsDialog(this);
+        // Follows what is shown while it stays open.
+        connect(m_switch, &SceneSwitch::sceneShown, m_statistics, [this] { m_statistics->showScene(scene()); });
+    }
+    m_statistics->showScene(scene());
+    m_statistics->show();
+    m_statistics->raise();
 }
 
 void MainWindow::showAbout()

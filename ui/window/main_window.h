@@ -55,6 +55,8 @@ class SceneLoader;
 class SceneSwitch;
 class SkeletonWorkspace;
 class SurfaceWorkspace;
+class OrientationAxes;
+class SceneStatisticsDialog;
 class ViewportWidget;
 class WindowContext;
 struct LoadedAnimation;
@@ -139,12 +141,15 @@ private:
     void showOpenAnimationDialog();
     void showExportDialog();
     void showAbout();
+    void showSceneStatistics();
     void openDefaultIfNothingRequested();
     void applyRenderChoices();
     void updateTitle();
 
     std::unique_ptr<QSettings> m_settings;
     ViewportWidget* m_viewport = nullptr;
+    OrientationAxes* m_axes = nullptr; ///< the gizmo over the view
+    SceneStatisticsDialog* m_statistics = nullptr; ///< View ▸ Mesh Statistics, made when first asked
     /// Owns the viewport when OpenGL is unavailable and it is kept out of the window.
     std::unique_ptr<ViewportWidget> m_detachedViewport;
     SceneSwitch* m_switch = nullptr;

@@ -129,6 +129,7 @@ private slots:
     void setsAndRulesAreUndoable();
     void brushRefusesEarlierFrames();
     void strokeInsideAnEarlierDentMovesAPatch();
+    void homeFramesWhatIsShown();
     void dynamicRulesRenderInTheViewport();
     void dynamicRulesSetAsideStaticOnlyFeatures();
     void homogeneousConfluentRefusesTrimmedParts();
@@ -336,6 +337,32 @@ void TestDesignWorkflow::strokeInsideAnEarlierDentMovesAPatch()
     const std::size_t second = session->timeline().frame(2).vertices.size();
     qInfo("first stroke %zu vertices, second from inside it %zu", first, second);
     QVERIFY2(second * 2 >= first, qPrintable(QStringLiteral("%1 of %2").arg(second).arg(first)));
+}
+
+// Home frames the mesh as shown: the same camera before a stroke and after the stroke was
+// undone (it framed every frame the history had held, so a stroke pulled far out and
+// undone left Home framing empty space).
+void TestDesignWorkflow::homeFramesWhatIsShown()
+{
+    auto window = showWindow(QStringLiteral("home"));
+    QVERIFY(test::openDesignAndWait(*window, m_sphereObj));
+    ViewportWidget* viewport = window->viewport();
+    viewport->setFocus();
+    QTest::keyClick(viewport, Qt::Key_Home);
+    const Camera before = viewport->camera();
+    window->designWorkspace()->brushAction()->setChecked(true);
+    const QPoint centre(kViewportSize.width() / 2, kViewportSize.height() / 2);
+    shiftBrushDrag(viewport, centre, centre - QPoint(0, 90)); // pulled far out along the normal
+    const DesignSession* session = window->designWorkspace()->session();
+    QVERIFY(QTest::qWaitFor([&] { return session->timeline().frameCount() == 2; }, kWaitMs));
+    window->designWorkspace()->undoAction()->trigger();
+    QCOMPARE(session->timeline().frameCount(), 1);
+    window->designWorkspace()->brushAction()->setChecked(false);
+    viewport->setFocus();
+    QTest::keyClick(viewport, Qt::Key_Home);
+    const Camera after = viewport->camera();
+    QVERIFY2(glm::distance(after.eye, before.eye) < 1e-9 && glm::distance(after.target, before.target) < 1e-9,
+             qPrintable(QStringLiteral("eye moved by %1").arg(glm::distance(after.eye, before.eye))));
 }
 
 // Two sets under the dynamic rules render through the DynamicTrimRenderer (both levels),

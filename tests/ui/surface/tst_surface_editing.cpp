@@ -135,6 +135,7 @@ private slots:
     void everyCreateActionStartsASurfaceSession();
     void surfaceDemoOpensAsSurfaceSession();
     void historyDemosOpenWithTheirHistory();
+    void fitFramesTheControlNet();
     void pickShiftPickDragUndoRedo();
     void brushMovesControlPoints();
     void subdivisionLevelAndShowNet();
@@ -281,6 +282,23 @@ void TestSurfaceEditing::historyDemosOpenWithTheirHistory()
                  expected->surface()->controlPointCount());
         QVERIFY(window->designWorkspace()->timelineDock()->isVisible());
     }
+}
+
+// F frames the control net with the surface: every point of the subdivision cube's cage
+// is in the view afterwards (the cage's corners reach well past the limit surface, and
+// Fit framed the surface alone).
+void TestSurfaceEditing::fitFramesTheControlNet()
+{
+    auto window = showWindow(QStringLiteral("fit-net"));
+    QVERIFY(create(*window, "createSubdivision_cubeAction"));
+    ViewportWidget* viewport = window->viewport();
+    viewport->setFocus();
+    QTest::keyClick(viewport, Qt::Key_F);
+    const std::vector<std::optional<QPointF>> points = window->designWorkspace()->controlNetOverlay()->projectedPoints();
+    QVERIFY(!points.empty());
+    const QRectF view(QPointF(0.0, 0.0), QSizeF(viewport->size()));
+    for (std::size_t i = 0; i < points.size(); ++i)
+        QVERIFY2(points[i] && view.contains(*points[i]), qPrintable(QStringLiteral("control point %1 is out of view").arg(i)));
 }
 
 // Click picks one point, Shift+click adds a second, a drag from the first moves both:

@@ -14,6 +14,7 @@
 #include "trim_comparison.h"
 
 #include "ui/render_panel/clip_plane_editor.h"
+#include "ui/viewport/orientation_axes.h"
 #include "ui/window/main_window.h"
 #include "ui/render_panel/render_workspace.h"
 #include "ui/render_panel/render_panel.h"
@@ -34,12 +35,14 @@
 #include <QMimeData>
 #include <QProgressDialog>
 #include <QPushButton>
+#include <QSettings>
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextBrowser>
+#include <QTextEdit>
 #include <QThreadPool>
 #include <QToolBar>
 #include <QToolButton>
@@ -525,6 +528,17 @@ void TestMainWindow::viewPresetsAndHelp()
     QVERIFY2(glm::dot(lookDirection(), glm::dvec3(0.0, -1.0, 0.0)) > 0.999, "the top view does not look down");
     QTest::keyClick(viewport, Qt::Key_1); // front
     QVERIFY(glm::dot(lookDirection(), glm::dvec3(0.0, 0.0, -1.0)) > 0.999);
+    // The orientation axes turn with the view: from the front x points right, y up and z
+    // at the viewer (a dot).
+    auto* axes = window->findChild<OrientationAxes*>(QStringLiteral("orientationAxes"));
+    QVERIFY(axes && axes->isVisible());
+    {
+        const QPointF centre = axes->centre();
+        const std::array<QPointF, 3> ends = axes->axisEnds();
+        QVERIFY(ends[0].x() > centre.x() + 20.0 && std::abs(ends[0].y() - centre.y()) < 1.0);
+        QVERIFY(ends[1].y() < centre.y() - 20.0 && std::abs(ends[1].x() - centre.x()) < 1.0);
+        QVERIFY(QLineF(ends[2], centre).length() < 1.0);
+    }
     QTest::keyClick(viewport, Qt::Key_1, Qt::ControlModifier); // back
     QVERIFY(glm::dot(lookDirection(), glm::dvec3(0.0, 0.0, 1.0)) > 0.999);
     child<QAction>(window.get(), "viewRightAction")->trigger();
@@ -556,6 +570,19 @@ void TestMainWindow::viewPresetsAndHelp()
     const QString message = window->statusBar()->currentMessage();
     QVERIFY(!message.isEmpty());
     QCOMPARE(window->statusBar()->toolTip(), message);
+
+    // View ▸ Mesh Statistics shows what `trimlab info` prints for the shown scene.
+    child<QAction>(window.get(), "meshStatisticsAction")->trigger();
+    auto* statistics = window->findChild<QTextEdit*>(QStringLiteral("sceneStatisticsText"));
+    QVERIFY(statistics);
+    const LoadedScene& shown = *window->scene();
+    QVERIFY(statistics->toPlainText().contains(
+        QString::fromStdString(formatReport(shown.reports.front(), shown.scene.objects.front().name))));
+    statistics->window()->close();
+    // Hiding the axes persists.
+    child<QAction>(window.get(), "showAxesAction")->trigger();
+    QVERIFY(!axes->isVisible());
+    QVERIFY(!QSettings(path(QStringLiteral("presets.ini")), QSettings::IniFormat).value(QStringLiteral("view/showAxes")).toBool());
 }
 
 TRIMLAB_WIDGET_TEST_MAIN(TestMainWindow)
