@@ -128,6 +128,9 @@ QWidget* ClipPlaneEditor::createOffsetRow()
     m_offsetSpin->setObjectName(QStringLiteral("clipOffsetSpin"));
     m_offsetSpin->setRange(-kOffsetLimit, kOffsetLimit);
     m_offsetSpin->setDecimals(4);
+    // Its ±1e9 range made it as wide as its longest value and left the slider 80 pixels
+    // to sweep the whole model: it gets room for realistic offsets, the slider the rest.
+    m_offsetSpin->setMaximumWidth(m_offsetSpin->fontMetrics().horizontalAdvance(QStringLiteral("−0000.0000")) + 36);
     layout->addWidget(m_offsetSlider, 1);
     layout->addWidget(m_offsetSpin);
     connect(m_offsetSlider, &QSlider::valueChanged, this, &ClipPlaneEditor::onSliderMoved);

@@ -127,7 +127,8 @@ bool TestMainWindow::waitForFrame(MainWindow& window)
 
 // A new user sees the whole pushed sphere trimmed by the alternating border rule: the
 // tunnel the finger left is open, and no clipping plane cuts the scene (it confused
-// first-time users; Plane 1 is prepared, off). Also the README screenshot.
+// first-time users; Plane 1 is prepared, off). The screenshots in docs/ come from
+// tst_window_layout.cpp.
 void TestMainWindow::firstStartShowsTrimmedDemo()
 {
     auto window = showWindow(QStringLiteral("first-start"), QSize());

@@ -18,6 +18,7 @@
 #include <QScrollArea>
 #include <QStyle>
 #include <QScrollBar>
+#include <QSlider>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTemporaryDir>
@@ -97,6 +98,11 @@ void TestWindowLayout::firstStartFitsTheWindow()
     QVERIFY(render);
     for (const QScrollArea* area : render->findChildren<QScrollArea*>())
         QVERIFY2(!area->horizontalScrollBar()->isVisible(), "the Render panel scrolls sideways");
+    // The clip offset slider gets most of its row (it had 80 pixels to sweep the model).
+    auto* slider = render->findChild<QSlider*>(QStringLiteral("clipOffsetSlider"));
+    QVERIFY(slider);
+    qInfo("clip offset slider: %d px of a %d px row", slider->width(), slider->parentWidget()->width());
+    QVERIFY2(slider->width() * 2 >= slider->parentWidget()->width(), qPrintable(QString::number(slider->width())));
     // The first scene is shown whole: no clipping plane on first start.
     QVERIFY(!window->viewport()->lastFrame()->settings.clipSet().anyEnabled());
     const QString message = window->statusBar()->currentMessage();
