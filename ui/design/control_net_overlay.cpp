@@ -124,6 +124,17 @@ void ControlNetOverlay::paintEvent(QPaintEvent*)
         painter.setPen(QPen(QColor(255, 255, 255), 1.5));
         painter.drawEllipse(*points[*m_hovered], 8.0, 8.0);
     }
+    if (m_box) {
+        painter.setBrush(QColor(255, 255, 255, 40));
+        painter.setPen(QPen(QColor(255, 255, 255), 1.0, Qt::DashLine));
+        painter.drawRect(*m_box);
+    }
+}
+
+void ControlNetOverlay::setSelectionBox(std::optional<QRectF> box)
+{
+    m_box = box;
+    update();
 }
 
 } // namespace trimlab::ui

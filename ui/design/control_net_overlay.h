@@ -16,6 +16,8 @@
 
 #include <array>
 #include <cstdint>
+#include <QRectF>
+
 #include <optional>
 #include <vector>
 
@@ -49,6 +51,8 @@ public:
     /// The ringed point (nullopt: none).
     void setHovered(std::optional<std::uint32_t> point);
     [[nodiscard]] std::optional<std::uint32_t> hovered() const { return m_hovered; }
+    /// The box being dragged out to select points (widget coordinates); nullopt: none.
+    void setSelectionBox(std::optional<QRectF> box);
 
     [[nodiscard]] std::size_t pointCount() const { return m_points.size(); }
     [[nodiscard]] std::size_t edgeCount() const { return m_edges.size(); }
@@ -63,6 +67,7 @@ protected:
 
 private:
     void updateVisibility();
+    std::optional<QRectF> m_box;
 
     glm::dmat4 m_model{1.0};
     std::vector<glm::dvec3> m_points; ///< world space

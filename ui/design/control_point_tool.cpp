@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace trimlab::ui {
 
@@ -78,6 +79,10 @@ bool ControlPointTool::pressed(QMouseEvent& event)
     const std::vector<std::optional<QPointF>> points = m_overlay->projectedPoints();
     const std::optional<std::uint32_t> picked = nearestPoint(toGlm(event.position()), toGlm(points), kPickPixels);
     const bool toggle = event.modifiers() & Qt::ShiftModifier;
+    if (!picked && (event.modifiers() & Qt::ControlModifier)) {
+        m_boxStart = event.position(); // box selection (the camera keeps still)
+        return true;
+    }
     if (!picked || toggle) {
         setSelection(clickedSelection(m_selection, picked, toggle));
         return picked.has_value(); // empty space: the camera still orbits or pans
@@ -98,6 +103,25 @@ bool ControlPointTool::pressed(QMouseEvent& event)
 
 // The grabbed point fixes the depth of the view-plane drag; the selection's average
 // normal (taken once, at the press) the direction of a Ctrl drag.
+// The points projected inside `box` join the selection (a box selection adds, as Shift
+// + click does).
+void ControlPointTool::selectInBox(const QRectF& box)
+{
+    m_overlay->setSelectionBox(std::nullopt);
+    const std::vector<std::optional<QPointF>> points = m_overlay->projectedPoints();
+    std::vector<std::uint32_t> selection = m_selection;
+    for (std::uint32_t i = 0; i < points.size(); ++i)
+        if (points[i] && box.contains(*points[i]))
+            selection.push_back(i);
+    std::sort(selection.begin(), selection.end());
+    selection.erase(std::unique(selection.begin(), selection.end()), selection.end());
+    const std::size_t added = selection.size() - m_selection.size();
+    setSelection(std::move(selection));
+    emit statusMessage(tr("The box added %1; %2 selected.")
+                           .arg(countOf(qint64(added), tr("control point"), tr("control points")))
+                           .arg(m_selection.size()));
+}
+
 bool ControlPointTool::startDrag(std::uint32_t grabbed, QPointF position, bool alongNormal)
 {
     const auto& frame = m_viewport->lastFrame();
@@ -153,6 +177,10 @@ std::vector<ControlPointTarget> ControlPointTool::targetsFor(QPointF position) c
 
 void ControlPointTool::moved(QMouseEvent& event)
 {
+    if (m_boxStart) {
+        m_overlay->setSelectionBox(QRectF(*m_boxStart, event.position()).normalized());
+        return;
+    }
     if (!m_dragging || !m_session)
         return;
     QElapsedTimer timer;
@@ -188,8 +216,12 @@ void ControlPointTool::showPreviewPositions(const std::vector<glm::vec3>& positi
     }
 }
 
-void ControlPointTool::released(QMouseEvent&)
+void ControlPointTool::released(QMouseEvent& event)
 {
+    if (m_boxStart) {
+        selectInBox(QRectF(*std::exchange(m_boxStart, std::nullopt), event.position()).normalized());
+        return;
+    }
     if (!m_dragging)
         return;
     m_dragging = false;
@@ -272,7 +304,7 @@ void ControlPointTool::left()
 
 QString ControlPointTool::mouseHelp() const
 {
-    return tr("Click a control point: select it (Shift: add to the selection) · Drag a selected point: move the selection · Drag elsewhere: orbit · Right/middle drag: pan · Wheel: zoom");
+    return tr("Click a control point: select it (Shift: add to the selection) · Drag a point: move the selection (Ctrl: along the normal) · Ctrl+drag elsewhere: box select · Drag elsewhere: orbit · Right/middle drag: pan · Wheel: zoom");
 }
 
 } // namespace trimlab::ui

@@ -14,6 +14,8 @@
 ///   its dynamic shown level under the dynamic rules, as the brush's drag does), the net
 ///   follows; the release records ONE undoable frame (AppendFrameCommand with
 ///   controlEditFrame), a click without movement records nothing;
+/// - Ctrl + left drag from empty space draws a box; the points inside it join the
+///   selection on release (box selection);
 /// - Alt + left, right and middle drag move the camera; hovering rings the point under
 ///   the cursor.
 /// On an earlier frame than the last the press is refused with a status message.
@@ -25,7 +27,9 @@
 #include "core/trim/dynamic_rule.h"
 
 #include <QObject>
+#include <QPointF>
 #include <QPointer>
+#include <QRectF>
 
 #include <cstdint>
 #include <functional>
@@ -93,6 +97,7 @@ private:
     void showPreviewPositions(const std::vector<glm::vec3>& positions);
     void commit(const std::vector<ControlPointTarget>& targets);
     void cancelDrag();
+    void selectInBox(const QRectF& box);
     void endPreview();
 
     ViewportWidget* m_viewport;
@@ -102,6 +107,7 @@ private:
     bool m_dynamic = false;
     std::vector<std::uint32_t> m_selection;
 
+    std::optional<QPointF> m_boxStart; ///< Ctrl + drag from empty space: the box's first corner
     bool m_dragging = false;
     bool m_dragMoved = false;
     bool m_alongNormal = false;

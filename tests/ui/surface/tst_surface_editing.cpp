@@ -136,6 +136,7 @@ private slots:
     void surfaceDemoOpensAsSurfaceSession();
     void historyDemosOpenWithTheirHistory();
     void fitFramesTheControlNet();
+    void boxSelectsControlPoints();
     void pickShiftPickDragUndoRedo();
     void brushMovesControlPoints();
     void subdivisionLevelAndShowNet();
@@ -299,6 +300,36 @@ void TestSurfaceEditing::fitFramesTheControlNet()
     const QRectF view(QPointF(0.0, 0.0), QSizeF(viewport->size()));
     for (std::size_t i = 0; i < points.size(); ++i)
         QVERIFY2(points[i] && view.contains(*points[i]), qPrintable(QStringLiteral("control point %1 is out of view").arg(i)));
+}
+
+// Ctrl + drag from empty space draws a box: the points inside it join the selection, the
+// others stay out, the camera keeps still, and no frame is recorded.
+void TestSurfaceEditing::boxSelectsControlPoints()
+{
+    auto window = showWindow(QStringLiteral("box"));
+    QVERIFY(create(*window, "createNurbsSphereAction"));
+    ViewportWidget* viewport = window->viewport();
+    ControlNetOverlay* overlay = window->designWorkspace()->controlNetOverlay();
+    ControlPointTool* tool = window->designWorkspace()->controlPointTool();
+    const std::vector<std::optional<QPointF>> points = overlay->projectedPoints();
+    const QPoint from(4, 4); // a corner: no point there
+    const QPoint to(kViewportSize.width() / 2, kViewportSize.height() / 2);
+    std::vector<std::uint32_t> expected;
+    const QRectF box = QRectF(from, to).normalized();
+    for (std::uint32_t i = 0; i < points.size(); ++i)
+        if (points[i] && box.contains(*points[i]))
+            expected.push_back(i);
+    QVERIFY(!expected.empty() && expected.size() < points.size());
+    const Camera before = viewport->camera();
+    const int frames = window->designWorkspace()->session()->timeline().frameCount();
+    QTest::mousePress(viewport, Qt::LeftButton, Qt::ControlModifier, from);
+    QTest::mouseMove(viewport, (from + to) / 2);
+    QTest::mouseMove(viewport, to);
+    QTest::mouseRelease(viewport, Qt::LeftButton, Qt::ControlModifier, to);
+    QCOMPARE(tool->selection(), expected);
+    QCOMPARE(overlay->selection(), expected);
+    QVERIFY(glm::distance(viewport->camera().eye, before.eye) < 1e-12);
+    QCOMPARE(window->designWorkspace()->session()->timeline().frameCount(), frames);
 }
 
 // Click picks one point, Shift+click adds a second, a drag from the first moves both:
