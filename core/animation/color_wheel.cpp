@@ -1,5 +1,7 @@
 #include "core/animation/color_wheel.h"
 
+#include <glm/geometric.hpp>
+
 #include <array>
 #include <cmath>
 
@@ -35,6 +37,18 @@ glm::vec3 hsv(double hue, double s, double v)
     return glm::vec3(rgb + glm::dvec3(v - c));
 }
 
+// sRGB in [0, 1] to CIELAB (D65 white): linearise, to XYZ, then the CIE L*a*b* curve.
+glm::dvec3 cieLab(const glm::vec3& srgb)
+{
+    const auto linear = [](double u) { return u <= 0.04045 ? u / 12.92 : std::pow((u + 0.055) / 1.055, 2.4); };
+    const double r = linear(srgb.r), g = linear(srgb.g), b = linear(srgb.b);
+    const double x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047;
+    const double y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+    const double z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
+    const auto f = [](double t) { return t > 216.0 / 24389.0 ? std::cbrt(t) : (24389.0 / 27.0 * t + 16.0) / 116.0; };
+    return {116.0 * f(y) - 16.0, 500.0 * (f(x) - f(y)), 200.0 * (f(y) - f(z))};
+}
+
 } // namespace
 
 glm::vec3 WheelColor::rgb() const
@@ -62,7 +76,12 @@ double hueDistance(double a, double b)
 
 bool nearlySame(const WheelColor& a, const WheelColor& b)
 {
-    return a.ring == b.ring && hueDistance(a.hue, b.hue) < 15.0;
+    return deltaE(a.rgb(), b.rgb()) < kNearlySameDeltaE;
+}
+
+double deltaE(const glm::vec3& a, const glm::vec3& b)
+{
+    return glm::distance(cieLab(a), cieLab(b));
 }
 
 bool complementary(const WheelColor& a, const WheelColor& b)

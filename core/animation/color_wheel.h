@@ -33,9 +33,15 @@ struct WheelColor {
 /// Angular distance of two hues in degrees, in [0, 180].
 [[nodiscard]] double hueDistance(double a, double b);
 
-/// Colours a viewer cannot tell apart next to each other: the same ring and hues less
-/// than 15° apart.
+/// Colours a viewer cannot tell apart next to each other: their rgb() lie less than
+/// kNearlySameDeltaE apart in CIELAB (ΔE*76). Same-ring hues less than 15° apart always
+/// do; hue alone missed the overflow rings' neighbouring hues (15° apart, ΔE 4–13: two
+/// dark blues side by side) and ring 0's green beside spring green (ΔE 17.3).
 [[nodiscard]] bool nearlySame(const WheelColor& a, const WheelColor& b);
+/// The CIELAB distance below which nearlySame() holds.
+inline constexpr double kNearlySameDeltaE = 20.0;
+/// ΔE*76 between two sRGB colours in [0, 1] (D65).
+[[nodiscard]] double deltaE(const glm::vec3& a, const glm::vec3& b);
 
 /// Complementary colours: hues within 15° of opposite (their RGB average is grey).
 [[nodiscard]] bool complementary(const WheelColor& a, const WheelColor& b);

@@ -30,6 +30,17 @@ bool noNeighbourConflicts(const VertexGraph& graph, const VertexLabeling& labeli
     return true;
 }
 
+double smallestNeighbourDeltaE(const VertexGraph& graph, const VertexLabeling& labeling,
+                               const std::vector<WheelColor>& colors)
+{
+    double smallest = 1e9;
+    const auto adjacency = labelAdjacency(graph, labeling);
+    for (std::uint32_t a = 0; a < adjacency.size(); ++a)
+        for (const std::uint32_t b : adjacency[a])
+            smallest = std::min(smallest, deltaE(colors[a].rgb(), colors[b].rgb()));
+    return smallest;
+}
+
 struct Strip {
     TriangleMesh mesh = test::stripMesh(12);
     VertexGraph graph = buildVertexGraph(24, mesh.triangles);
@@ -43,6 +54,7 @@ class TestAnimationColors : public QObject {
 private slots:
     void wheelOrder();
     void mixing();
+    void nearlySameIsPerceptual();
     void restColoringOnAStrip();
     void unchangedSegmentsKeepTheirColours();
     void splitKeepsColourOnTheLargerPart();
@@ -69,6 +81,27 @@ void TestAnimationColors::wheelOrder()
     QCOMPARE(hues.size(), std::size_t(12)); // all 12 divisions, 30° apart
     QCOMPARE(paletteColor(12).ring, 1);     // overflow: a further ring
     QVERIFY(!nearlySame(paletteColor(12), paletteColor(0)));
+}
+
+// Neighbouring segments must not get colours a viewer cannot tell apart. By hue alone,
+// two overflow-ring colours 15° apart passed (palette 28 and 35: two dark blues, ΔE 4);
+// in CIELAB they are nearly the same, while the primaries and a ring's darker twin of a
+// hue stay distinct. Same-ring hues under 15° apart stay nearly the same.
+void TestAnimationColors::nearlySameIsPerceptual()
+{
+    QVERIFY(std::abs(deltaE(glm::vec3(1.0f), glm::vec3(0.0f)) - 100.0) < 0.1); // white to black: L* 100
+    QCOMPARE(paletteColor(28), (WheelColor{240.0, 1}));
+    QCOMPARE(paletteColor(35), (WheelColor{255.0, 1}));
+    QVERIFY(nearlySame(paletteColor(28), paletteColor(35)));
+    QVERIFY(deltaE(paletteColor(28).rgb(), paletteColor(35).rgb()) < 5.0);
+    QVERIFY(!nearlySame(paletteColor(0), paletteColor(1))); // red, green
+    QVERIFY(!nearlySame(paletteColor(0), paletteColor(2))); // red, blue
+    for (std::size_t i = 0; i < 60; ++i)
+        for (std::size_t j = 0; j < 60; ++j) {
+            const WheelColor a = paletteColor(i), b = paletteColor(j);
+            if (a.ring == b.ring && hueDistance(a.hue, b.hue) < 15.0)
+                QVERIFY2(nearlySame(a, b), qPrintable(QStringLiteral("palette %1 and %2").arg(i).arg(j)));
+        }
 }
 
 void TestAnimationColors::mixing()
@@ -158,8 +191,11 @@ void TestAnimationColors::sequenceOnRealData()
     for (const double h : {0.0, 0.05, 0.1, 0.2, 0.5})
         sweep.push_back(segmenter.segment(h));
     const auto sweepColors = colorSequence(segmenter.graph(), segmenter.vertexAreas(), sweep);
-    for (std::size_t i = 0; i < sweep.size(); ++i)
+    for (std::size_t i = 0; i < sweep.size(); ++i) {
         QVERIFY(noNeighbourConflicts(segmenter.graph(), sweep[i], sweepColors[i]));
+        qInfo("h sweep %zu: %u segments, neighbours at least ΔE %.1f apart", i, sweep[i].count,
+              smallestNeighbourDeltaE(segmenter.graph(), sweep[i], sweepColors[i]));
+    }
     // The largest segment at h = 0.2 keeps its colour at h = 0.5 if it still exists whole.
     QVERIFY(sweep[4].count <= sweep[3].count);
 }
