@@ -107,7 +107,6 @@ void TimelinePanel::play()
     m_shownSinceStart = 0;
     m_achievedFps = 0.0;
     m_rateLabel->clear();
-    m_step = 0;
     m_playStart.start();
     restartClock();
     m_timer.start();
@@ -136,11 +135,11 @@ void TimelinePanel::togglePlaying()
 // the poses in between are dropped and the animation keeps its duration.
 void TimelinePanel::advance()
 {
-    const qint64 step = m_clockStartStep + m_clock.elapsed() * qint64(fps()) / 1000;
-    if (step == m_step)
-        return;
-    m_step = step;
-    const qint64 target = qint64(m_clockStartPose) + (step - m_clockStartStep);
+    const qint64 step = m_clock.elapsed() * qint64(fps()) / 1000;
+    if (step == m_clockStep)
+        return; // that pose is shown already
+    m_clockStep = step;
+    const qint64 target = qint64(m_clockStartPose) + step;
     const int count = poseCount();
     m_advancing = true;
     if (target >= count && !loops()) {
@@ -158,7 +157,7 @@ void TimelinePanel::restartClock()
 {
     m_clock.start();
     m_clockStartPose = pose();
-    m_clockStartStep = m_step;
+    m_clockStep = 0;
 }
 
 // Over the whole play, once a second has passed; the last figure stays after a pause.

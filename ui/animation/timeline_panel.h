@@ -79,8 +79,7 @@ private:
     QElapsedTimer m_playStart; ///< since Play: the rate shown
     QElapsedTimer m_clock;     ///< since Play, or since the fps changed while playing
     int m_clockStartPose = 0;  ///< the pose shown when m_clock started
-    qint64 m_clockStartStep = 0; ///< poses the clock had counted at its start (unwrapped)
-    qint64 m_step = 0;         ///< poses the clock has counted (unwrapped, for looping)
+    qint64 m_clockStep = 0;    ///< poses the clock has counted since it started, the last one shown
     int m_shownSinceStart = 0; ///< poses shown since Play
     double m_achievedFps = 0.0;
     bool m_advancing = false;  ///< advance() is moving the slider (not the user)

@@ -158,10 +158,7 @@ bool SceneSwitch::openHistoryDemo(const QString& source)
     const std::string text = source.toStdString();
     if (!isDemoSource(text))
         return false;
-    const std::string_view name = std::string_view(text).substr(kDemoPrefix.size());
-    if (!hasSurfaceDemoHistory(name))
-        return false;
-    std::optional<timeline::Timeline> history = surfaceDemoHistory(name);
+    std::optional<timeline::Timeline> history = surfaceDemoHistory(std::string_view(text).substr(kDemoPrefix.size()));
     if (!history)
         return false;
     m_features.inspect->objectLoader()->cancel();
