@@ -439,14 +439,6 @@ void DesignWorkspace::showForeignPose(std::vector<glm::vec3> positions)
     refreshView();
 }
 
-void DesignWorkspace::clearForeignPose()
-{
-    if (m_foreignPose.empty())
-        return;
-    m_foreignPose.clear();
-    refreshView();
-}
-
 void DesignWorkspace::refreshTimelinePanel()
 {
     if (m_session)

@@ -117,10 +117,9 @@ public:
     /// Shows `positions` (object 0's, e.g. the skeleton panel's posed mesh) in place of the
     /// shown frame: under the dynamic rules as the current set's deformation from its
     /// reference, so the trim follows the pose; under the static rule as the pose. Kept
-    /// across render-mode changes until the history changes, another frame is shown or
-    /// clearForeignPose(); without a session it goes to the viewport directly.
+    /// across render-mode changes until the history changes or another frame is shown;
+    /// without a session it goes to the viewport directly.
     void showForeignPose(std::vector<glm::vec3> positions);
-    void clearForeignPose();
 
     /// Milliseconds the last homogeneous confluent check took (chain and rays), 0 before.
     [[nodiscard]] double lastTrimCheckMilliseconds() const;

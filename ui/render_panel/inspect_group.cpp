@@ -225,11 +225,6 @@ void InspectGroup::setUnavailableReason(const QString& reason)
     updateEnabled();
 }
 
-QString InspectGroup::unavailableReason() const
-{
-    return m_unavailable->text();
-}
-
 void InspectGroup::updateEnabled()
 {
     const bool available = m_unavailable->text().isEmpty();

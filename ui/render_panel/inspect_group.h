@@ -43,7 +43,6 @@ public:
     /// Why nothing in the group applies now ("" when it does): the controls are disabled,
     /// keeping their choices, and a line in the group says why.
     void setUnavailableReason(const QString& reason);
-    [[nodiscard]] QString unavailableReason() const;
 
 signals:
     /// Any user edit.
