@@ -16,6 +16,7 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -40,17 +41,20 @@ void addSkinOptions(QCommandLineParser& parser)
 {
     parser.setApplicationDescription(
         "Approximates a mesh animation by skinning: B proxy bones from a segmentation into exactly B segments, "
-        "a linear blend (LBS) or dual quaternion (DQS) fit of every pose, optional corrections, and a glTF 2.0 "
-        "export. Prints E_RMS of the fit and of the exported file. See docs/skinning.md.");
+        "a fit of every pose, corrections, and a glTF 2.0 export. By default it fits the model a glTF skin plays "
+        "(rigid joints, linear blend), which gives the lowest exported error. Prints E_RMS of the fit and of the "
+        "exported file. See docs/skinning.md.");
     parser.addPositionalArgument("animation", "A folder of .obj/.ply/.off/.stl(.gz) poses, a pattern such as "
                                               "dir/mesh_%04d.obj.gz or dir/mesh_*.obj.gz, or a .gltf/.glb file.");
     parser.addOptions({
         {"bones", "Number of bones B (required, 1-65535): the animation is segmented into exactly B parts.", "B"},
-        {"method", "lbs (affine bone transforms) | dqs (rigid, dual quaternions). Required.", "name"},
-        {"chain", "pose-to-pose (p2p-skinning, thesis 4.1) | rest-to-pose (classical). Default: pose-to-pose.",
-         "name"},
-        {"corrections", "none | v (rest-pose vertex corrections) | w (weight corrections) | v,w. Default: none.",
-         "list"},
+        {"method", "rigid (rigid joints blended linearly, fitted with weight and rest updates: what the glTF "
+                   "skin plays) | lbs (affine bone transforms, thesis 4.1) | dqs (rigid, dual quaternions). "
+                   "Default: rigid.", "name"},
+        {"chain", "lbs and dqs only: pose-to-pose (p2p-skinning, thesis 4.1) | rest-to-pose (classical). "
+                  "Default: pose-to-pose. The rigid fit is always rest-to-pose.", "name"},
+        {"corrections", "none | v (rest-pose vertex corrections) | w (weight corrections) | v,w. Default: v,w "
+                        "for rigid, none for lbs and dqs.", "list"},
         {"fps", "Frames per second of the exported animation (pose t at t/F seconds). Default: 24.", "F"},
         {"export", "rigid (a skin with one joint per bone) | morph (one morph target per pose, exact). "
                    "Default: rigid.", "kind"},
@@ -86,16 +90,23 @@ std::optional<QString> parseNumbers(const QCommandLineParser& parser, SkinOption
 
 std::optional<QString> parseMethod(const QCommandLineParser& parser, SkinOptions& options)
 {
-    const QString method = parser.value("method");
+    const QString method = parser.isSet("method") ? parser.value("method") : QStringLiteral("rigid");
     if (method == "lbs" || method == "dqs")
         options.fit.method = method == "lbs" ? SkinningMethod::Lbs : SkinningMethod::Dqs;
+    else if (method == "rigid")
+        options.fit.fitExported = true;
     else
-        return QStringLiteral("unknown --method '%1' (use lbs or dqs)").arg(method);
+        return QStringLiteral("unknown --method '%1' (use rigid, lbs or dqs)").arg(method);
     const QString chain = parser.value("chain");
     if (parser.isSet("chain") && chain != "pose-to-pose" && chain != "rest-to-pose")
         return QStringLiteral("unknown --chain '%1' (use pose-to-pose or rest-to-pose)").arg(chain);
-    options.fit.chain = chain == "rest-to-pose" ? SkinningChain::RestToPose : SkinningChain::PoseToPose;
-    const QString corrections = parser.isSet("corrections") ? parser.value("corrections") : QStringLiteral("none");
+    if (parser.isSet("chain") && options.fit.fitExported)
+        return QStringLiteral("--chain applies to --method lbs or dqs; the rigid fit always maps the rest pose to "
+                              "each pose");
+    options.fit.chain = chain == "rest-to-pose" || options.fit.fitExported ? SkinningChain::RestToPose
+                                                                           : SkinningChain::PoseToPose;
+    const QString defaultCorrections = options.fit.fitExported ? QStringLiteral("v,w") : QStringLiteral("none");
+    const QString corrections = parser.isSet("corrections") ? parser.value("corrections") : defaultCorrections;
     if (corrections != "none" && corrections != "v" && corrections != "w" && corrections != "v,w" &&
         corrections != "w,v")
         return QStringLiteral("unknown --corrections '%1' (use none, v, w or v,w)").arg(corrections);
@@ -135,8 +146,8 @@ std::variant<SkinOptions, QString> parseSkinOptions(const QStringList& arguments
     if (parser.positionalArguments().size() != 1)
         return QStringLiteral("skin needs exactly one animation (a folder, a pattern or a glTF file); see trimlab skin "
                               "--help");
-    if (!parser.isSet("bones") || !parser.isSet("method"))
-        return QStringLiteral("skin needs --bones B and --method lbs|dqs; see trimlab skin --help");
+    if (!parser.isSet("bones"))
+        return QStringLiteral("skin needs --bones B; see trimlab skin --help");
     SkinOptions options;
     options.source = parser.positionalArguments().first().toStdString();
     for (const auto& error : {parseNumbers(parser, options), parseMethod(parser, options), parseExport(parser, options)}) {
@@ -158,6 +169,8 @@ struct SkinRun {
 
 QString methodText(const SkinOptions& o)
 {
+    if (o.fit.fitExported)
+        return QStringLiteral("rigid joints blended linearly (the glTF skin), rest-to-pose");
     QString text = o.fit.method == SkinningMethod::Lbs ? QStringLiteral("LBS") : QStringLiteral("DQS");
     text += o.fit.chain == SkinningChain::PoseToPose ? QStringLiteral(", pose-to-pose") : QStringLiteral(", rest-to-pose");
     return text;
@@ -175,6 +188,20 @@ QString correctionsText(const SkinOptions& o, const SkinningFitResult& fit)
     return parts.join(", ");
 }
 
+// Segments far below the average size spend a bone on little of the mesh: say how the
+// vertices are spread over the segments the bones come from.
+QString segmentSizesText(const VertexLabeling& segmentation)
+{
+    std::vector<std::size_t> sizes(segmentation.count, 0);
+    for (std::uint32_t label : segmentation.labels)
+        ++sizes[label];
+    std::sort(sizes.begin(), sizes.end());
+    const std::size_t vertices = segmentation.labels.size();
+    const auto small = std::count_if(sizes.begin(), sizes.end(), [&](std::size_t s) { return 100 * s < vertices; });
+    return QStringLiteral("segment sizes (vertices): smallest %1, median %2, largest %3; %4 of %5 under 1 %")
+        .arg(sizes.front()).arg(sizes[sizes.size() / 2]).arg(sizes.back()).arg(small).arg(sizes.size());
+}
+
 void printSummary(const SkinOptions& o, const SkinRun& r)
 {
     printLine(QStringLiteral("%1: %2 poses, %3 vertices, %4 faces")
@@ -182,13 +209,17 @@ void printSummary(const SkinOptions& o, const SkinRun& r)
     printLine(QStringLiteral("bones: %1 (segmentation: %2 clusters per pose, h = %3, %4 cleaned segments, %5 merged)")
                   .arg(r.segmentation.segmentation.count).arg(r.segmentation.clusters).arg(r.segmentation.h, 0, 'g', 4)
                   .arg(r.segmentation.cleanedCount).arg(r.segmentation.merged));
-    printLine(QStringLiteral("method: %1; corrections: %2").arg(methodText(o), correctionsText(o, r.fit)));
+    printLine(segmentSizesText(r.segmentation.segmentation));
+    printLine(QStringLiteral("method: %1; corrections: %2").arg(methodText(o), correctionsText(o, r.fit)) +
+              (r.fit.iterations > 0 ? QStringLiteral("; %1 iterations").arg(r.fit.iterations) : QString()));
     printLine(QStringLiteral("E_RMS fit: %1 (E_RMS/diagonal %2; before corrections %3)")
                   .arg(r.fit.error.eRms, 0, 'f', 4).arg(r.fit.error.eRmsDiagonal, 0, 'g', 4)
                   .arg(r.fit.uncorrectedError.eRms, 0, 'f', 4));
     printLine(QStringLiteral("E_RMS exported: %1 (E_RMS/diagonal %2; %3, %4 joints)")
                   .arg(r.exportedError.eRms, 0, 'f', 4).arg(r.exportedError.eRmsDiagonal, 0, 'g', 4)
                   .arg(QString::fromLatin1(skinExportKindName(r.exported.kind).data())).arg(r.exported.joints));
+    printLine(QStringLiteral("RMSE exported: %1 (per-vertex distance, length units, as Dem Bones prints it)")
+                  .arg(r.exportedError.rmse, 0, 'g', 6));
     const SkinningStageTimes& t = r.fit.times;
     printLine(QStringLiteral("times (ms): load %1, segmentation %2, weights %3, fit %4, corrections %5, error %6, "
                              "export %7")

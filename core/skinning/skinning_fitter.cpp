@@ -4,6 +4,7 @@
 #include "core/skinning/skinning_reconstruction.h"
 
 #include <chrono>
+#include <cmath>
 
 namespace trimlab {
 
@@ -81,7 +82,42 @@ void applyVertexCorrections(SkinningFitResult& result, const std::vector<PosePos
     }
 }
 
+// The decomposition's weight and rest updates are the corrections; they are part of the
+// descent (each block lowers the error or changes nothing), so they are always kept.
+SkinningFitResult fitDecomposition(const MeshAnimation& animation, const std::vector<PosePositions>& poses,
+                                   SkinningWeights weights, const SkinningFitOptions& options,
+                                   const TaskControl& control)
+{
+    SkinningFitResult result;
+    const auto start = Clock::now();
+    SkinningDecompositionOptions decomposition = options.decomposition;
+    decomposition.rigidJoints = options.fitExported;
+    decomposition.updateWeights = options.weightCorrections;
+    decomposition.updateRestPositions = options.vertexCorrections;
+    decomposition.threads = options.threads;
+    const VertexGraph graph = buildVertexGraph(animation.vertexCount(), animation.triangles);
+    const SkinningDecomposition d = decomposeSkinning(poses, animation.restPose, poses[animation.restPose],
+                                                      std::move(weights), graph, decomposition, control);
+    result.model = decomposedSkinningModel(d, animation.restPose, animation.triangles);
+    result.times.fitMs = msSince(start);
+    result.error = evaluate(result.model, poses, result.times.errorMs);
+    result.uncorrectedError.eRms = d.firstFitERms;
+    result.uncorrectedError.diagonal = result.error.diagonal;
+    result.uncorrectedError.eRmsDiagonal = result.error.diagonal > 0.0 ? d.firstFitERms / result.error.diagonal : 0.0;
+    result.uncorrectedError.rmse = d.firstFitERms * std::sqrt(3.0) / 1000.0;
+    result.weightCorrectionsKept = options.weightCorrections;
+    result.vertexCorrectionsKept = options.vertexCorrections;
+    result.iterations = d.eRmsHistory.size();
+    return result;
+}
+
 } // namespace
+
+bool usesDecomposition(const SkinningFitOptions& options)
+{
+    return options.fitExported || (options.method == SkinningMethod::Lbs && options.chain == SkinningChain::RestToPose &&
+                                   (options.weightCorrections || options.vertexCorrections));
+}
 
 SkinningFitResult fitSkinning(const MeshAnimation& animation, SkinningWeights weights,
                               const SkinningFitOptions& options, const TaskControl& control)
@@ -89,6 +125,11 @@ SkinningFitResult fitSkinning(const MeshAnimation& animation, SkinningWeights we
     const auto start = Clock::now();
     requireWellFormed(animation);
     const std::vector<PosePositions> poses = animationPositions(animation);
+    if (usesDecomposition(options)) {
+        SkinningFitResult result = fitDecomposition(animation, poses, std::move(weights), options, control);
+        result.times.totalMs = msSince(start);
+        return result;
+    }
     SkinningFitResult result;
     result.model = fitModel(animation, poses, poses[animation.restPose], std::move(weights), options, control,
                             result.times.fitMs);

@@ -14,6 +14,7 @@
 ///   editPose(r.model, e, newPositions)                               // 4.1.3, propagates
 
 #include "core/animation/mesh_animation.h"
+#include "core/skinning/skinning_decomposition.h"
 #include "core/skinning/skinning_corrections.h"
 #include "core/skinning/skinning_error.h"
 #include "core/skinning/skinning_fit_options.h"
@@ -25,6 +26,17 @@
 namespace trimlab {
 
 struct SkinningFitOptions {
+    /// Fit the model a glTF skin plays — rigid joints blended linearly, rest-to-pose —
+    /// by the decomposition of skinning_decomposition.h, whose weight and rest updates
+    /// are the weight and vertex corrections computed against that model. The fitted
+    /// model is then LBS, rest-to-pose, with rigid matrices: `method`, `chain`, `poseFit`
+    /// and `neighbourBones` are not used. The lowest exported error; what `trimlab skin`
+    /// and the Skinning panel use unless told otherwise.
+    bool fitExported = false;
+    /// Iterations, stopping rule and re-seeding of the decomposition, which runs for
+    /// fitExported and for LBS rest-to-pose with corrections (usesDecomposition); its
+    /// rigidJoints, updateWeights, updateRestPositions and threads come from the fields here.
+    SkinningDecompositionOptions decomposition;
     SkinningMethod method = SkinningMethod::Lbs;
     SkinningChain chain = SkinningChain::PoseToPose; ///< RestToPose: the classical fit
     PoseFitOptions poseFit;                          ///< solver, DQS iterations
@@ -48,14 +60,23 @@ struct SkinningStageTimes {
 struct SkinningFitResult {
     SkinningModel model;
     SkinningError error;            ///< of `model`, after the corrections that were kept
-    SkinningError uncorrectedError; ///< after the first fit, before any correction
+    /// After the first fit, before any correction. For fitExported only the scalars eRms,
+    /// eRmsDiagonal, rmse and diagonal are set (after the first joint block).
+    SkinningError uncorrectedError;
     /// A correction is kept only when it does not raise E_RMS. The weight corrections
     /// minimise eq. 4.13 with the original previous poses (the thesis's assumption), not
     /// E_RMS itself, so on rare data the refit with them is worse; it is then dropped.
     bool weightCorrectionsKept = false;
     bool vertexCorrectionsKept = false;
+    std::size_t iterations = 0; ///< decomposition iterations run (0: the thesis's one-shot fit)
     SkinningStageTimes times;
 };
+
+/// Whether fitSkinning runs the decomposition (skinning_decomposition.h): for fitExported,
+/// and for LBS rest-to-pose with a correction, where the corrections are iterated with the
+/// transforms until the error stops falling (for the pose-to-pose chain and for DQS they
+/// are the thesis's single pass, eq. 4.12–4.17).
+[[nodiscard]] bool usesDecomposition(const SkinningFitOptions& options);
 
 /// Fits `animation` (requireWellFormed) with the given initial weights (#V, convex; one
 /// bone per proxy joint). The rest pose is animation.restPose. Progress stages "fit",

@@ -52,7 +52,7 @@
 namespace trimlab {
 
 enum class SkinExportKind {
-    RigidTransforms,    ///< a DQS model: its rigid bone motions as joint TRS channels
+    RigidTransforms,    ///< a DQS model or a rigid decomposition: its rigid bone motions as joint TRS channels
     RigidApproximation, ///< an LBS (affine) model: the best rigid approximation per bone and pose
     MorphTargets,       ///< one morph target per pose (exact)
 };

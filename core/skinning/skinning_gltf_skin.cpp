@@ -151,6 +151,23 @@ void addAnimation(tinygltf::Model& model, const JointTracks& tracks, const std::
     model.animations.push_back(animation);
 }
 
+// An LBS model whose every matrix is a rotation plus translation (the rigid decomposition,
+// skinning_decomposition.h) is exported as it is, not approximated.
+bool hasRigidMatrices(const SkinningModel& skinning)
+{
+    for (const std::vector<Affine3>& pose : skinning.affine)
+        for (const Affine3& m : pose) {
+            const glm::dmat3 gram = glm::transpose(m.linear) * m.linear;
+            for (int c = 0; c < 3; ++c)
+                for (int r = 0; r < 3; ++r)
+                    if (std::abs(gram[c][r] - (r == c ? 1.0 : 0.0)) > 1e-9)
+                        return false;
+            if (glm::determinant(m.linear) < 0.0)
+                return false;
+        }
+    return true;
+}
+
 } // namespace
 
 ExportedSkin addSkin(tinygltf::Model& model, const SkinningModel& skinning, const std::vector<PosePositions>& target,
@@ -164,8 +181,9 @@ ExportedSkin addSkin(tinygltf::Model& model, const SkinningModel& skinning, cons
     RigidJointAnimation exported;
     addAnimation(model, jointTracks(joints, pivots, exported), times, step);
     ExportedSkin report;
-    report.kind = skinning.method == SkinningMethod::Dqs ? SkinExportKind::RigidTransforms
-                                                         : SkinExportKind::RigidApproximation;
+    report.kind = skinning.method == SkinningMethod::Dqs || hasRigidMatrices(skinning)
+                      ? SkinExportKind::RigidTransforms
+                      : SkinExportKind::RigidApproximation;
     report.joints = skinning.boneCount();
     const std::vector<glm::vec3> rest = toFloat(skinning.restPositions);
     report.positions = rigidSkinPositions(std::vector<glm::dvec3>(rest.begin(), rest.end()), written, exported);

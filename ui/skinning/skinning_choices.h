@@ -1,6 +1,8 @@
 #pragma once
 /// \file
-/// What the Skinning panel lets the user choose for a fit, as one value: LBS or DQS, the
+/// What the Skinning panel lets the user choose for a fit, as one value: the model a glTF
+/// skin plays (rigid joints blended linearly, fitted by the skinning decomposition; the
+/// default, for the lowest exported error), LBS or DQS, the
 /// pose-to-pose (p2p-skinning, thesis 4.1.1) or classical rest-to-pose chain, and the
 /// two corrections of thesis 4.1.2 (weights, eq. 4.13–4.15; rest-pose vertices, eq. 4.12 /
 /// 4.16) — and where the bones come from: one per segment of the segmentation the
@@ -21,15 +23,17 @@ struct SkinningChoices {
 
     BoneSource boneSource = BoneSource::Segmentation;
     int boneCount = 8; ///< 1 … kMaxBones, for BoneSource::GivenCount
+    bool fitExported = true; ///< SkinningFitOptions::fitExported; `method` and `chain` then unused
     SkinningMethod method = SkinningMethod::Lbs;
     SkinningChain chain = SkinningChain::PoseToPose;
-    bool weightCorrections = false;
-    bool vertexCorrections = false;
+    bool weightCorrections = true;
+    bool vertexCorrections = true;
 
     /// The core options these choices ask for (every other option at its default).
     [[nodiscard]] SkinningFitOptions fitOptions() const
     {
         SkinningFitOptions options;
+        options.fitExported = fitExported;
         options.method = method;
         options.chain = chain;
         options.weightCorrections = weightCorrections;

@@ -11,6 +11,11 @@
 
 namespace trimlab::ui {
 
+namespace {
+// The method box's data for the rigid-joint fit (the other items hold a SkinningMethod).
+constexpr int kFitExported = 100;
+} // namespace
+
 SkinningSettingsForm::SkinningSettingsForm(QWidget* parent) : QWidget(parent)
 {
     m_boneSource = namedComboBox("skinningBoneSourceComboBox",
@@ -28,21 +33,25 @@ SkinningSettingsForm::SkinningSettingsForm(QWidget* parent) : QWidget(parent)
     m_bones->setToolTip(tr("One proxy bone per segment of the segmentation shown in the Segmentation panel "
                            "(its h included); weights blend across segment borders"));
     m_method = namedComboBox("skinningMethodComboBox",
-                             {{tr("LBS (affine bones)"), int(SkinningMethod::Lbs)},
+                             {{tr("Rigid joints (glTF skin)"), kFitExported},
+                              {tr("LBS (affine bones)"), int(SkinningMethod::Lbs)},
                               {tr("DQS (rigid bones)"), int(SkinningMethod::Dqs)}},
-                             tr("Linear blend skinning with affine bone transforms, or dual quaternion skinning with "
-                                "rigid ones"));
+                             tr("Rigid joints blended linearly, fitted together with the weights and rest pose: "
+                                "exactly what a glTF skin plays, so the exported file has the lowest error. Or "
+                                "linear blend skinning with affine bone transforms, or dual quaternion skinning with "
+                                "rigid ones (thesis chapter 4)"));
     m_chain = namedComboBox("skinningChainComboBox",
                             {{tr("Pose to pose (p2p)"), int(SkinningChain::PoseToPose)},
                              {tr("Rest to pose (classical)"), int(SkinningChain::RestToPose)}},
                             tr("p2p-skinning fits each pose from the pose before it; the classical fit maps the rest "
                                "pose to every pose"));
     m_weightCorrections = namedCheckBox(tr("Weight corrections"), "weightCorrectionsCheckBox",
-                                        tr("Re-estimate the weights from the fitted transforms and refit (kept only "
-                                           "when E_RMS does not rise)"));
+                                        tr("Re-estimate the weights from the fitted transforms and refit (rigid joints "
+                                           "and rest-to-pose LBS: alternated with the fit until the error stops "
+                                           "falling; otherwise once, kept only when E_RMS does not rise)"));
     m_vertexCorrections = namedCheckBox(tr("Vertex corrections"), "vertexCorrectionsCheckBox",
-                                        tr("Move the rest-pose vertices to lower the error (kept only when E_RMS "
-                                           "does not rise)"));
+                                        tr("Move the rest-pose vertices to lower the error (alternated like the weight "
+                                           "corrections, or once, kept only when E_RMS does not rise)"));
     auto* form = new QFormLayout(this);
     form->setContentsMargins(0, 0, 0, 0);
     form->addRow(tr("Bones"), m_boneSource);
@@ -55,6 +64,9 @@ SkinningSettingsForm::SkinningSettingsForm(QWidget* parent) : QWidget(parent)
     for (QComboBox* box : {m_boneSource, m_method, m_chain})
         connect(box, &QComboBox::currentIndexChanged, this, &SkinningSettingsForm::changed);
     connect(m_boneSource, &QComboBox::currentIndexChanged, this, &SkinningSettingsForm::updateBoneCountEnabled);
+    connect(m_method, &QComboBox::currentIndexChanged, this, &SkinningSettingsForm::updateChainEnabled);
+    connect(m_chain, &QComboBox::currentIndexChanged, this,
+            [this] { m_chosenChain = SkinningChain(m_chain->currentData().toInt()); });
     connect(m_boneCount, &QSpinBox::valueChanged, this, &SkinningSettingsForm::changed);
     for (QCheckBox* box : {m_weightCorrections, m_vertexCorrections})
         connect(box, &QCheckBox::toggled, this, &SkinningSettingsForm::changed);
@@ -68,11 +80,12 @@ void SkinningSettingsForm::setChoices(const SkinningChoices& choices)
         b5(m_boneSource), b6(m_boneCount);
     selectItemWithData(m_boneSource, int(choices.boneSource));
     m_boneCount->setValue(choices.boneCount);
-    selectItemWithData(m_method, int(choices.method));
-    selectItemWithData(m_chain, int(choices.chain));
+    selectItemWithData(m_method, choices.fitExported ? kFitExported : int(choices.method));
+    m_chosenChain = choices.chain;
     m_weightCorrections->setChecked(choices.weightCorrections);
     m_vertexCorrections->setChecked(choices.vertexCorrections);
     updateBoneCountEnabled();
+    updateChainEnabled();
 }
 
 SkinningChoices SkinningSettingsForm::choices() const
@@ -80,8 +93,9 @@ SkinningChoices SkinningSettingsForm::choices() const
     SkinningChoices choices;
     choices.boneSource = BoneSource(m_boneSource->currentData().toInt());
     choices.boneCount = m_boneCount->value();
-    choices.method = SkinningMethod(m_method->currentData().toInt());
-    choices.chain = SkinningChain(m_chain->currentData().toInt());
+    choices.fitExported = m_method->currentData().toInt() == kFitExported;
+    choices.method = choices.fitExported ? SkinningMethod::Lbs : SkinningMethod(m_method->currentData().toInt());
+    choices.chain = m_chosenChain;
     choices.weightCorrections = m_weightCorrections->isChecked();
     choices.vertexCorrections = m_vertexCorrections->isChecked();
     return choices;
@@ -91,6 +105,16 @@ void SkinningSettingsForm::setSegmentCount(std::size_t count)
 {
     m_bones->setText(count == 0 ? tr("The segmentation shown: none yet")
                                 : tr("The segmentation shown: %1 segments").arg(count));
+}
+
+// The rigid-joint fit always maps the rest pose to each pose (nothing to drift): the chain
+// box shows that and is disabled; LBS and DQS get back the chain last chosen for them.
+void SkinningSettingsForm::updateChainEnabled()
+{
+    const bool fitExported = m_method->currentData().toInt() == kFitExported;
+    const QSignalBlocker blocker(m_chain);
+    selectItemWithData(m_chain, int(fitExported ? SkinningChain::RestToPose : m_chosenChain));
+    m_chain->setEnabled(!fitExported);
 }
 
 void SkinningSettingsForm::updateBoneCountEnabled()

@@ -32,11 +32,13 @@ signals:
 
 private:
     void updateBoneCountEnabled();
+    void updateChainEnabled();
 
     QComboBox* m_boneSource = nullptr;
     QSpinBox* m_boneCount = nullptr;
     QLabel* m_bones = nullptr;
     QComboBox* m_method = nullptr;
+    SkinningChain m_chosenChain = SkinningChain::PoseToPose; ///< for LBS and DQS (the rigid fit has none)
     QComboBox* m_chain = nullptr;
     QCheckBox* m_weightCorrections = nullptr;
     QCheckBox* m_vertexCorrections = nullptr;

@@ -306,6 +306,11 @@ void TestSkinningPanel::boneEditPropagatesAndUndoes()
     auto* apply = child<QPushButton>(panel, "applyBoneEditButton");
     auto* undo = child<QPushButton>(panel, "undoSkinningEditButton");
     auto* redo = child<QPushButton>(panel, "redoSkinningEditButton");
+    // Propagation is the pose-to-pose chain's (thesis 4.1.3): the thesis's LBS, no corrections.
+    QVERIFY(chooseByKeys(child<QComboBox>(panel, "skinningMethodComboBox"), QStringLiteral("LBS (affine bones)")));
+    QCOMPARE(panel->choices().chain, SkinningChain::PoseToPose);
+    QTest::keyClick(child<QCheckBox>(panel, "weightCorrectionsCheckBox"), Qt::Key_Space);
+    QTest::keyClick(child<QCheckBox>(panel, "vertexCorrectionsCheckBox"), Qt::Key_Space);
     QVERIFY(fitAndWait(panel));
     SkinningSession* session = panel->session();
     const std::shared_ptr<const SkinningModel> fitted = session->model();
@@ -489,10 +494,13 @@ void TestSkinningPanel::givenBoneCountSegmentsAnew()
     QVERIFY(chooseByKeys(child<QComboBox>(panel, "skinningBoneSourceComboBox"), QStringLiteral("Given count")));
     QVERIFY(count->isEnabled());
     typeInto(count, 3);
+    // The corrections are on by default; the chain box is disabled under the rigid-joint fit.
+    QVERIFY(panel->choices().fitExported);
+    QVERIFY(!child<QComboBox>(panel, "skinningChainComboBox")->isEnabled());
     QVERIFY(chooseByKeys(child<QComboBox>(panel, "skinningMethodComboBox"), QStringLiteral("DQS (rigid bones)")));
-    QTest::keyClick(child<QCheckBox>(panel, "weightCorrectionsCheckBox"), Qt::Key_Space);
-    QTest::keyClick(child<QCheckBox>(panel, "vertexCorrectionsCheckBox"), Qt::Key_Space);
+    QVERIFY(child<QComboBox>(panel, "skinningChainComboBox")->isEnabled());
     const SkinningChoices chosen = panel->choices();
+    QVERIFY(!chosen.fitExported);
     QCOMPARE(chosen.boneSource, BoneSource::GivenCount);
     QCOMPARE(chosen.boneCount, 3);
     QCOMPARE(chosen.method, SkinningMethod::Dqs);
