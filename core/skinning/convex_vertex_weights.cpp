@@ -34,16 +34,17 @@ Eigen::MatrixXd subGram(const Eigen::MatrixXd& gram, const std::vector<Eigen::In
 } // namespace
 
 VertexInfluences bestConvexInfluences(const Eigen::MatrixXd& gram, const std::vector<std::uint32_t>& bones,
-                                      const VertexInfluences& old)
+                                      const VertexInfluences& old, std::size_t limit)
 {
+    limit = std::clamp<std::size_t>(limit, 1, kMaxInfluences);
     Eigen::VectorXd x = simplexMinimiser(gram);
     std::vector<Eigen::Index> order(bones.size());
     for (std::size_t i = 0; i < order.size(); ++i)
         order[i] = Eigen::Index(i);
     std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) { return x(a) > x(b); });
     const auto positive = std::count_if(order.begin(), order.end(), [&](Eigen::Index i) { return x(i) > 0.0; });
-    if (positive > Eigen::Index(kMaxInfluences)) {
-        order.resize(kMaxInfluences);
+    if (positive > Eigen::Index(limit)) {
+        order.resize(limit);
         const Eigen::VectorXd y = simplexMinimiser(subGram(gram, order));
         x.setZero();
         for (std::size_t i = 0; i < order.size(); ++i)
@@ -57,7 +58,7 @@ VertexInfluences bestConvexInfluences(const Eigen::MatrixXd& gram, const std::ve
     std::vector<std::pair<std::uint32_t, double>> influences;
     for (std::size_t i = 0; i < bones.size(); ++i)
         influences.emplace_back(bones[i], x(Eigen::Index(i)));
-    return sparseInfluences(std::move(influences), old.bones[0]);
+    return sparseInfluences(std::move(influences), old.bones[0], limit);
 }
 
 } // namespace trimlab

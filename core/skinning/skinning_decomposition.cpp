@@ -71,6 +71,49 @@ void updateRigidTransforms(std::vector<std::vector<Affine3>>& transforms, const 
         control, "fit");
 }
 
+// Procrustes descent has local minima: a pose whose joints settled in a poor one often
+// does better started from its neighbour's joints (poses are close in time). In chain order
+// (so each pose can pass its improvement on), pose t is solved again from pose t∓1's joints
+// and keeps whichever start ends lower — as the glTF export does (skinning_gltf_joints.h).
+void improveFromNeighbourPoses(std::vector<std::vector<Affine3>>& transforms, const std::vector<PosePositions>& poses,
+                               std::size_t restPose, const std::vector<glm::dvec3>& rest,
+                               const SkinningWeights& weights, unsigned sweeps, const TaskControl& control)
+{
+    const RigidJointSolver solver(weights, rest);
+    const auto joints = [&](const std::vector<Affine3>& matrices) {
+        std::vector<RigidJointPose> result(matrices.size());
+        for (std::size_t b = 0; b < matrices.size(); ++b)
+            result[b] = {glm::normalize(glm::quat_cast(matrices[b].linear)), matrices[b].translation};
+        return result;
+    };
+    for (std::size_t t : chainOrder(poses.size(), restPose)) {
+        if (t == restPose)
+            continue;
+        control.throwIfCancelled();
+        std::vector<RigidJointPose> own = joints(transforms[t]);
+        const double ownError = solver.solve(own, poses[t], 0);
+        std::vector<RigidJointPose> neighbour = joints(transforms[t > restPose ? t - 1 : t + 1]);
+        const std::vector<RigidJointPose>& best = solver.solve(neighbour, poses[t], sweeps) < ownError ? neighbour : own;
+        for (std::size_t b = 0; b < best.size(); ++b)
+            transforms[t][b] = {glm::mat3_cast(best[b].rotation), best[b].translation};
+    }
+}
+
+// Once the weights and rest positions are final, the rest positions are a bind pose fitted
+// for all poses, no longer the rest pose itself: the rest pose gets joints of its own (the
+// gauge they fixed during the descent is no longer needed), as every other pose.
+void fitRestPoseJoints(std::vector<Affine3>& transforms, const PosePositions& restTarget,
+                       const std::vector<glm::dvec3>& rest, const SkinningWeights& weights, unsigned sweeps)
+{
+    double identityError = 0.0;
+    for (std::size_t j = 0; j < rest.size(); ++j)
+        identityError += glm::dot(rest[j] - restTarget[j], rest[j] - restTarget[j]);
+    std::vector<RigidJointPose> joints(transforms.size());
+    if (RigidJointSolver(weights, rest).solve(joints, restTarget, sweeps) < identityError)
+        for (std::size_t b = 0; b < joints.size(); ++b)
+            transforms[b] = {glm::mat3_cast(joints[b].rotation), joints[b].translation};
+}
+
 // Block 1, affine: the classical rest-to-pose LBS fit of every pose.
 void updateAffineTransforms(std::vector<std::vector<Affine3>>& transforms, const std::vector<PosePositions>& poses,
                             std::size_t restPose, const std::vector<glm::dvec3>& rest, const SkinningWeights& weights,
@@ -135,13 +178,13 @@ void forEachVertex(std::size_t vertices, unsigned threads, const TaskControl& co
 // Block 2.
 void updateWeights(SkinningWeights& weights, const std::vector<PosePositions>& poses,
                    const std::vector<glm::dvec3>& rest, const std::vector<std::vector<Affine3>>& matrices,
-                   const VertexGraph& graph, unsigned threads, const TaskControl& control)
+                   const VertexGraph& graph, std::size_t limit, unsigned threads, const TaskControl& control)
 {
     const SkinningWeights old = weights;
     forEachVertex(rest.size(), threads, control, [&](std::size_t j) {
         const std::vector<std::uint32_t> bones = candidateBones(old, graph, j);
         weights.vertices[j] =
-            bestConvexInfluences(predictionGram(poses, matrices, rest[j], j, bones), bones, old.vertices[j]);
+            bestConvexInfluences(predictionGram(poses, matrices, rest[j], j, bones), bones, old.vertices[j], limit);
     });
 }
 
@@ -229,10 +272,12 @@ std::size_t reseedWeakBones(SkinningDecomposition& d, const std::vector<PosePosi
         for (std::uint32_t i = 0; i < in.count; ++i)
             if (!isWeak[in.bones[i]])
                 kept.emplace_back(in.bones[i], in.weights[i]);
-        if (kept.empty())
+        if (kept.empty()) {
             orphans.push_back(std::uint32_t(j));
-        else
-            d.weights.vertices[j] = sparseInfluences(std::move(kept), kept.front().first);
+        } else {
+            const std::uint32_t fallback = kept.front().first;
+            d.weights.vertices[j] = sparseInfluences(std::move(kept), fallback, kMaxInfluences);
+        }
     }
     std::vector<char> orphan(d.weights.vertices.size(), 0);
     for (std::uint32_t j : orphans)
@@ -329,7 +374,8 @@ SkinningDecomposition decomposeSkinning(const std::vector<PosePositions>& poses,
             d.firstFitERms = eRmsOf(squaredError(poses, d.restPositions, d.weights, d.transforms, options.threads, inner),
                                     n, poses.size());
         if (options.updateWeights)
-            updateWeights(d.weights, poses, d.restPositions, d.transforms, graph, options.threads, inner);
+            updateWeights(d.weights, poses, d.restPositions, d.transforms, graph, options.maxInfluences,
+                          options.threads, inner);
         if (options.updateRestPositions)
             updateRestPositions(d.restPositions, poses, d.weights, d.transforms, options.threads, inner);
         const std::size_t moved = iteration < options.reseedIterations && options.updateWeights
@@ -340,6 +386,7 @@ SkinningDecomposition decomposeSkinning(const std::vector<PosePositions>& poses,
         const bool reseeded = moved > 0;
         const double e = squaredError(poses, d.restPositions, d.weights, d.transforms, options.threads, inner);
         d.eRmsHistory.push_back(eRmsOf(e, n, poses.size()));
+        d.iterations = iteration + 1;
         control.report("fit", iteration + 1, iterations);
         if (reseeded) {
             previous = 0.0; // the descent starts again from the moved bones
@@ -348,6 +395,22 @@ SkinningDecomposition decomposeSkinning(const std::vector<PosePositions>& poses,
         if (previous > 0.0 && !(previous - e > options.minRelativeGain * previous))
             break;
         previous = e;
+    }
+    // The last weight and rest updates moved the optimum of the transforms: one more
+    // transform block (more sweeps for rigid joints), which can only lower E.
+    if (options.updateWeights || options.updateRestPositions) {
+        if (options.rigidJoints) {
+            updateRigidTransforms(d.transforms, poses, restPose, d.restPositions, d.weights, options.finalJointSweeps,
+                                  options.threads, inner);
+            improveFromNeighbourPoses(d.transforms, poses, restPose, d.restPositions, d.weights,
+                                      options.finalJointSweeps, inner);
+            fitRestPoseJoints(d.transforms[restPose], poses[restPose], d.restPositions, d.weights,
+                              options.finalJointSweeps);
+        } else
+            updateAffineTransforms(d.transforms, poses, restPose, d.restPositions, d.weights, options.threads, inner);
+        d.eRmsHistory.push_back(
+            eRmsOf(squaredError(poses, d.restPositions, d.weights, d.transforms, options.threads, inner), n,
+                   poses.size()));
     }
     control.report("fit", iterations, iterations);
     return d;

@@ -4,8 +4,8 @@
 /// alternating exact block updates (issue 21: "fit what is exported"), in the manner of
 /// Le & Deng's SSDR (2012, the method behind Electronic Arts' Dem Bones). It minimises
 ///     E = Σ_t Σ_j ‖Σ_b w_bj M_b^t v_j − y_j^t‖²
-/// (rest positions v_j, ≤ 4 convex weights w_bj, target poses y^t) where M_b^t maps the
-/// rest pose to pose t and is either
+/// (rest positions v_j, convex weights w_bj — 4 per vertex unless asked for up to 8 —,
+/// target poses y^t) where M_b^t maps the rest pose to pose t and is either
 /// - rigid (`rigidJoints`): x ↦ R x + t, blended linearly — exactly what a glTF skin
 ///   plays, so the exported file reproduces the fit (skinning_gltf.h); or
 /// - affine: the classical rest-to-pose LBS of thesis 2.3.2, whose export must drop the
@@ -15,8 +15,9 @@
 /// 1. transforms: per pose — rigid: RigidJointSolver (weighted Procrustes bone by bone,
 ///    then all translations by least squares), warm-started; affine: the rest-to-pose
 ///    least-squares fit (skinning_pose_fit.h);
-/// 2. weights: per vertex, the best convex ≤ 4 weights over its own bones and those of its
-///    mesh neighbours (convex_vertex_weights.h), kept only when strictly better — the
+/// 2. weights: per vertex, the best convex weights (≤ maxInfluences) over its own bones
+///    and those of its mesh neighbours (convex_vertex_weights.h), kept only when strictly
+///    better — the
 ///    thesis's weight corrections (eq. 4.13–4.15) computed against this model;
 /// 3. rest positions: per vertex, the 3×3 least-squares solve of the thesis's vertex
 ///    corrections (eq. 4.12) with this model's blended matrices.
@@ -32,7 +33,8 @@
 /// error is largest (it takes a ball of vertices around the worst vertex; the vertices it
 /// leaves go to their other bones or a neighbour's), as SSDR re-initialises
 /// insignificant bones. Iterations stop when one lowers E by less than `minRelativeGain`
-/// or after `maxIterations`. Rest-to-pose by construction: nothing accumulates from pose
+/// or after `maxIterations`; a last transform block then fits the transforms to the final
+/// weights and rest positions. Rest-to-pose by construction: nothing accumulates from pose
 /// to pose (the pose-to-pose chain's drift cannot occur).
 
 #include "core/animation/vertex_graph.h"
@@ -50,9 +52,13 @@ namespace trimlab {
 
 struct SkinningDecompositionOptions {
     bool rigidJoints = true;          ///< rigid transforms (the glTF skin) or affine ones
-    unsigned maxIterations = 40;      ///< transform + weight + rest updates
-    double minRelativeGain = 1e-3;    ///< stop when an iteration lowers E by less than this fraction
+    unsigned maxIterations = 100;     ///< transform + weight + rest updates
+    double minRelativeGain = 3e-4;    ///< stop when an iteration lowers E by less than this fraction
     bool updateWeights = true;        ///< block 2 (the weight corrections)
+    /// Influences per vertex the weight block may use: 4 (kDefaultInfluences) plays in every
+    /// engine; up to 8 (kMaxInfluences) are exported as JOINTS_1/WEIGHTS_1 and lower the
+    /// error where parts blend over wide regions (cloth), but not every viewer reads them.
+    std::size_t maxInfluences = kDefaultInfluences;
     bool updateRestPositions = true;  ///< block 3 (the vertex corrections)
     /// During the first `reseedIterations` iterations (with weight updates), bones whose
     /// support is below `minBoneSupport` × (#V / B) are re-seeded (file comment).
@@ -60,16 +66,19 @@ struct SkinningDecompositionOptions {
     double minBoneSupport = 0.5;
     unsigned firstJointSweeps = 30;   ///< rigid: Procrustes sweeps of the first block (from the identity)
     unsigned jointSweeps = 1;         ///< rigid: sweeps of later blocks (warm-started)
+    unsigned finalJointSweeps = 8;    ///< rigid: sweeps of the transform block after the last iteration
     unsigned threads = 0;             ///< 0 = hardware; results do not depend on it
 };
 
 struct SkinningDecomposition {
     std::vector<glm::dvec3> restPositions;           ///< #V, the bind pose
-    SkinningWeights weights;                         ///< #V, convex, ≤ 4 influences
+    SkinningWeights weights;                         ///< #V, convex, ≤ maxInfluences influences
     std::vector<std::vector<Affine3>> transforms;    ///< #P × B rest-to-pose (rigid when rigidJoints)
-    /// E_RMS (1000·√(E / 3nk), skinning_error.h) after each iteration; back() is the result's.
+    /// E_RMS (1000·√(E / 3nk), skinning_error.h) after each iteration and after the last
+    /// transform block; back() is the result's.
     std::vector<double> eRmsHistory;
     double firstFitERms = 0.0; ///< after the first transform block, before any weight or rest update
+    std::size_t iterations = 0;    ///< iterations run (the last transform block not counted)
     std::size_t reseededBones = 0; ///< bone re-seedings done (a bone can be moved more than once)
 };
 

@@ -107,7 +107,7 @@ SkinningFitResult fitDecomposition(const MeshAnimation& animation, const std::ve
     result.uncorrectedError.rmse = d.firstFitERms * std::sqrt(3.0) / 1000.0;
     result.weightCorrectionsKept = options.weightCorrections;
     result.vertexCorrectionsKept = options.vertexCorrections;
-    result.iterations = d.eRmsHistory.size();
+    result.iterations = d.iterations;
     return result;
 }
 

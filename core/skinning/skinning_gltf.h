@@ -8,9 +8,11 @@
 ///   "skeleton" (identity); 2 … B+1 the joints "bone_b", children of the skeleton root (a
 ///   flat hierarchy: no bone is parented to another).
 /// - The mesh: POSITION = the model's rest positions (with min/max), JOINTS_0 (VEC4
-///   unsigned short) and WEIGHTS_0 (VEC4 float) = the model's ≤ 4 influences, sorted by
-///   decreasing weight, unused slots joint 0 / weight 0, and the written floats summing to
-///   1 (the largest weight takes the float rounding), UNSIGNED_INT indices.
+///   unsigned short) and WEIGHTS_0 (VEC4 float) = the model's first 4 influences, sorted
+///   by decreasing weight, unused slots joint 0 / weight 0, and the written floats summing
+///   to 1 (the largest weight takes the float rounding), UNSIGNED_INT indices. A model
+///   with more than 4 influences somewhere (up to 8) adds JOINTS_1/WEIGHTS_1 for the
+///   influences 5–8 of every vertex.
 /// - Bind convention: joint b rests at its pivot c_b (the weighted centroid of its
 ///   vertices, skinning_gltf_joints.h) with no rotation, and its inverse bind matrix is
 ///   the translation by −c_b. So at the bind pose every joint matrix is the identity and

@@ -78,6 +78,8 @@ std::vector<std::vector<Affine3>> boneRestToPose(const SkinningModel& model)
         for (std::size_t b = 0; b < model.boneCount(); ++b)
             result[t][b] = compose(boneTransform(model, t, b), result[model.previousPose(t)][b]);
     }
+    if (restPoseMoves(model)) // rest-to-pose: no other pose composes the rest pose's own transforms
+        result[model.restPose] = model.affine[model.restPose];
     return result;
 }
 

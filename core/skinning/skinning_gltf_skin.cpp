@@ -6,6 +6,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -41,24 +42,33 @@ SkinningWeights writtenWeights(const SkinningWeights& weights)
     return written;
 }
 
+// JOINTS_0/WEIGHTS_0, and JOINTS_1/WEIGHTS_1 only when some vertex has more than 4
+// influences (so a 4-influence skin plays in viewers that read only the first set).
 void addJointAttributes(tinygltf::Model& model, const SkinningWeights& written)
 {
-    std::vector<std::uint16_t> joints;
-    std::vector<float> weights;
+    std::uint32_t most = 0;
     for (const VertexInfluences& in : written.vertices)
-        for (std::size_t i = 0; i < kMaxInfluences; ++i) {
-            joints.push_back(std::uint16_t(in.bones[i]));
-            weights.push_back(float(in.weights[i]));
-        }
+        most = std::max(most, in.count);
+    const std::size_t sets = most > 4 ? 2 : 1;
     tinygltf::Primitive& primitive = model.meshes[0].primitives[0];
-    const int jointView =
-        addGltfBufferView(model, joints.data(), joints.size() * sizeof(std::uint16_t), TINYGLTF_TARGET_ARRAY_BUFFER);
-    primitive.attributes["JOINTS_0"] = addGltfAccessor(model, jointView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                                                       TINYGLTF_TYPE_VEC4, written.vertices.size());
-    const int weightView =
-        addGltfBufferView(model, weights.data(), weights.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
-    primitive.attributes["WEIGHTS_0"] = addGltfAccessor(model, weightView, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                                        TINYGLTF_TYPE_VEC4, written.vertices.size());
+    for (std::size_t set = 0; set < sets; ++set) {
+        std::vector<std::uint16_t> joints;
+        std::vector<float> weights;
+        for (const VertexInfluences& in : written.vertices)
+            for (std::size_t i = 4 * set; i < 4 * set + 4; ++i) {
+                joints.push_back(std::uint16_t(in.bones[i]));
+                weights.push_back(float(in.weights[i]));
+            }
+        const std::string suffix = std::to_string(set);
+        const int jointView = addGltfBufferView(model, joints.data(), joints.size() * sizeof(std::uint16_t),
+                                                TINYGLTF_TARGET_ARRAY_BUFFER);
+        primitive.attributes["JOINTS_" + suffix] = addGltfAccessor(
+            model, jointView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC4, written.vertices.size());
+        const int weightView =
+            addGltfBufferView(model, weights.data(), weights.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+        primitive.attributes["WEIGHTS_" + suffix] = addGltfAccessor(model, weightView, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                                                    TINYGLTF_TYPE_VEC4, written.vertices.size());
+    }
 }
 
 // Node 1 "skeleton" with the joints 2 … B+1 as children; skin 0 on node 0.

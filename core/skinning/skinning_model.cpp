@@ -36,7 +36,8 @@ void requireConvexWeights(const SkinningWeights& weights, double tolerance)
     }
 }
 
-VertexInfluences sparseInfluences(std::vector<std::pair<std::uint32_t, double>> influences, std::uint32_t fallbackBone)
+VertexInfluences sparseInfluences(std::vector<std::pair<std::uint32_t, double>> influences, std::uint32_t fallbackBone,
+                                  std::size_t limit)
 {
     std::erase_if(influences, [](const auto& p) { return !(p.second > 0.0); });
     std::sort(influences.begin(), influences.end(), [](const auto& a, const auto& b) {
@@ -49,7 +50,7 @@ VertexInfluences sparseInfluences(std::vector<std::pair<std::uint32_t, double>> 
         result.count = 1;
         return result;
     }
-    result.count = std::uint32_t(std::min(influences.size(), kMaxInfluences));
+    result.count = std::uint32_t(std::min({influences.size(), std::max<std::size_t>(1, limit), kMaxInfluences}));
     double sum = 0.0;
     for (std::uint32_t i = 0; i < result.count; ++i)
         sum += influences[i].second;
@@ -65,6 +66,17 @@ std::size_t SkinningModel::previousPose(std::size_t pose) const
     if (chain == SkinningChain::RestToPose || pose == restPose)
         return restPose;
     return pose > restPose ? pose - 1 : pose + 1;
+}
+
+bool restPoseMoves(const SkinningModel& model)
+{
+    if (model.method != SkinningMethod::Lbs || model.chain != SkinningChain::RestToPose ||
+        model.restPose >= model.affine.size())
+        return false;
+    for (const Affine3& m : model.affine[model.restPose])
+        if (!(m == Affine3{}))
+            return true;
+    return false;
 }
 
 std::vector<std::size_t> chainOrder(std::size_t poseCount, std::size_t restPose)

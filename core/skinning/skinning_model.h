@@ -20,9 +20,13 @@
 
 namespace trimlab {
 
-/// At most this many bones influence a vertex (thesis 2.3: "l = 4 influences per vertex
-/// are adequate"; it is also what a GPU vertex shader takes).
-inline constexpr std::size_t kMaxInfluences = 4;
+/// At most this many bones influence a vertex: a glTF skin carries them as JOINTS_0/
+/// WEIGHTS_0 and JOINTS_1/WEIGHTS_1. Fits use kDefaultInfluences unless asked for more.
+inline constexpr std::size_t kMaxInfluences = 8;
+
+/// The usual limit (thesis 2.3: "l = 4 influences per vertex are adequate"): what every
+/// engine and GPU skinning shader plays, JOINTS_0 alone.
+inline constexpr std::size_t kDefaultInfluences = 4;
 
 /// The influences of one vertex: `count` ≤ kMaxInfluences pairs (bone, weight), sorted by
 /// decreasing weight (ties by bone index); entries past `count` are bone 0, weight 0.
@@ -48,11 +52,12 @@ struct SkinningWeights {
 /// sum differs from 1 by more than `tolerance`.
 void requireConvexWeights(const SkinningWeights& weights, double tolerance = 1e-9);
 
-/// Sorts `influences` by decreasing weight (ties: smaller bone first), keeps the
-/// kMaxInfluences largest positive ones and rescales them to sum 1. Used wherever dense
-/// or candidate weights are made sparse. All-zero input keeps `fallbackBone` with weight 1.
+/// Sorts `influences` by decreasing weight (ties: smaller bone first), keeps the `limit`
+/// (1 … kMaxInfluences) largest positive ones and rescales them to sum 1. Used wherever
+/// dense or candidate weights are made sparse. All-zero input keeps `fallbackBone` with
+/// weight 1.
 [[nodiscard]] VertexInfluences sparseInfluences(std::vector<std::pair<std::uint32_t, double>> influences,
-                                                std::uint32_t fallbackBone);
+                                                std::uint32_t fallbackBone, std::size_t limit = kDefaultInfluences);
 
 enum class SkinningMethod {
     Lbs, ///< linear blend skinning with affine bone transforms (eq. 2.4, 4.7)
@@ -68,7 +73,10 @@ enum class SkinningChain {
 /// - `restPositions`: #V rest-pose positions v^0 (the animation's rest pose, plus the
 ///   rest-pose corrections e^V of eq. 4.12 once applied).
 /// - `affine` (LBS): #P × B matrices; `rigid` (DQS): #P × B unit dual quaternions. Exactly
-///   one of them is filled, as `method` says. The entry of the rest pose is the identity.
+///   one of them is filled, as `method` says. The entry of the rest pose is the identity,
+///   except in a rest-to-pose LBS model whose rest positions are a bind pose fitted for
+///   all poses (the skinning decomposition): its rest-pose matrices then carry the bind
+///   pose to the rest pose like any other pose's (restPoseMoves).
 /// - `restPose`: the pose the chain starts from. In the thesis it is p_0; here any pose:
 ///   the p2p chain runs rest → rest+1 → … → #P−1 and rest → rest−1 → … → 0.
 struct SkinningModel {
@@ -91,6 +99,10 @@ struct SkinningModel {
     /// rest pose, t+1 before it; the rest pose for RestToPose and for the rest pose itself).
     [[nodiscard]] std::size_t previousPose(std::size_t pose) const;
 };
+
+/// Whether the rest pose has transforms of its own (see `affine` above): a rest-to-pose LBS
+/// model with a rest-pose matrix that is not the identity.
+[[nodiscard]] bool restPoseMoves(const SkinningModel& model);
 
 /// Every pose once, each after its previousPose: the rest pose, then rest+1 … #P−1, then
 /// rest−1 … 0.

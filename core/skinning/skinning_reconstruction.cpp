@@ -27,12 +27,19 @@ Affine3 blendedTransform(const SkinningModel& model, std::size_t pose, std::size
 std::vector<PosePositions> reconstructPoses(const SkinningModel& model)
 {
     std::vector<PosePositions> poses(model.poseCount());
+    const bool restMoves = restPoseMoves(model);
     for (std::size_t t : chainOrder(model.poseCount(), model.restPose)) {
         if (t == model.restPose) {
             poses[t] = model.restPositions;
+            if (restMoves)
+                for (std::size_t j = 0; j < poses[t].size(); ++j)
+                    poses[t][j] = blendedTransform(model, t, j).apply(model.restPositions[j]);
             continue;
         }
-        const PosePositions& previous = poses[model.previousPose(t)];
+        // Rest-to-pose transforms act on the rest positions (the same as the rest pose's
+        // reconstruction, unless the rest pose moves).
+        const PosePositions& previous =
+            model.chain == SkinningChain::RestToPose ? model.restPositions : poses[model.previousPose(t)];
         PosePositions& current = poses[t];
         current.resize(model.vertexCount());
         for (std::size_t j = 0; j < current.size(); ++j)
@@ -41,11 +48,25 @@ std::vector<PosePositions> reconstructPoses(const SkinningModel& model)
     return poses;
 }
 
-PosePositions reconstructPose(const SkinningModel& model, std::size_t pose)
+namespace {
+
+// The poses whose transforms carry the rest positions to `pose`, last first: `pose`, its
+// previous pose, ... down to (excluding) the rest pose — or including it when it moves.
+std::vector<std::size_t> pathToPose(const SkinningModel& model, std::size_t pose)
 {
-    std::vector<std::size_t> path; // pose, its previous pose, ... down to (excluding) the rest pose
+    std::vector<std::size_t> path;
     for (std::size_t t = pose; t != model.restPose; t = model.previousPose(t))
         path.push_back(t);
+    if (restPoseMoves(model) && pose == model.restPose)
+        path.push_back(pose);
+    return path;
+}
+
+} // namespace
+
+PosePositions reconstructPose(const SkinningModel& model, std::size_t pose)
+{
+    const std::vector<std::size_t> path = pathToPose(model, pose);
     PosePositions positions = model.restPositions;
     for (auto it = path.rbegin(); it != path.rend(); ++it)
         for (std::size_t j = 0; j < positions.size(); ++j)
@@ -59,14 +80,14 @@ void vertexRestToPose(const SkinningModel& model, std::size_t vertex, std::vecto
     for (std::size_t t : chainOrder(model.poseCount(), model.restPose))
         if (t != model.restPose)
             out[t] = compose(blendedTransform(model, t, vertex), out[model.previousPose(t)]);
+    if (restPoseMoves(model)) // rest-to-pose: no pose composes the rest pose's own transform
+        out[model.restPose] = blendedTransform(model, model.restPose, vertex);
 }
 
 std::vector<Affine3> restToPoseTransforms(const SkinningModel& model, std::size_t pose)
 {
     std::vector<Affine3> result(model.vertexCount());
-    std::vector<std::size_t> path;
-    for (std::size_t t = pose; t != model.restPose; t = model.previousPose(t))
-        path.push_back(t);
+    const std::vector<std::size_t> path = pathToPose(model, pose);
     for (std::size_t j = 0; j < result.size(); ++j)
         for (auto it = path.rbegin(); it != path.rend(); ++it)
             result[j] = compose(blendedTransform(model, *it, j), result[j]);

@@ -17,6 +17,9 @@
 
 #include <QtTest>
 
+#include <fstream>
+#include <iterator>
+
 using namespace trimlab;
 using namespace trimlab::test;
 
@@ -77,6 +80,7 @@ private slots:
     void affineFitExportsItsRigidApproximation_data();
     void affineFitExportsItsRigidApproximation();
     void morphTargetsReproduceTheFit();
+    void moreThanFourInfluencesWriteJointsOne();
     void closestRotationIsProper();
     void rigidJointsOfARigidModelAreItsBones();
     void solverSweepsLowerTheError();
@@ -160,6 +164,45 @@ void TestSkinningGltf::morphTargetsReproduceTheFit()
     requireReproduced(path, report, 30.0, animation.triangles);
     const SkinningError exported = measureSkinningError(animationPositions(animation), report.positions);
     QVERIFY(std::abs(exported.eRms - fitted.error.eRms) < 1e-3 * fitted.error.eRms + 1e-4);
+}
+
+// Up to 8 influences (the skinning decomposition's option): JOINTS_1/WEIGHTS_1 carry the
+// influences 5-8, and the glTF loader, which blends every set, plays the fitted model.
+void TestSkinningGltf::moreThanFourInfluencesWriteJointsOne()
+{
+    const MeshAnimation rest = tubeRestPose(kRings, kSides);
+    constexpr std::size_t bones = 6;
+    SkinningWeights weights;
+    weights.boneCount = bones;
+    for (std::size_t j = 0; j < rest.vertexCount(); ++j) {
+        std::vector<std::pair<std::uint32_t, double>> all;
+        for (std::uint32_t b = 0; b < bones; ++b) // every bone, more where the ring is near the bone's
+            all.emplace_back(b, 1.0 / (1.0 + std::abs(double(j / kSides) - 2.0 * b)));
+        weights.vertices.push_back(sparseInfluences(std::move(all), 0, kMaxInfluences));
+    }
+    QCOMPARE(weights.vertices.front().count, std::uint32_t(bones));
+    SkinningModel model = randomModel(SkinningMethod::Dqs, SkinningChain::RestToPose, rest, weights, kPoses, 3);
+    SkinningModel rigidLbs = identitySkinningModel(SkinningMethod::Lbs, SkinningChain::RestToPose, kPoses, 0,
+                                                   model.restPositions, weights, model.triangles);
+    for (std::size_t t = 0; t < kPoses; ++t)
+        for (std::size_t b = 0; b < bones; ++b)
+            rigidLbs.affine[t][b] = toAffine(model.rigid[t][b]);
+    const std::vector<PosePositions> target = reconstructPoses(rigidLbs);
+    const std::filesystem::path path = outputDir() / "eight.glb";
+    SkinExportOptions options;
+    options.target = &target;
+    const ExportedSkin report = exportSkinnedGltf(rigidLbs, path, 24.0, options);
+    QCOMPARE(report.kind, SkinExportKind::RigidTransforms);
+    requireValidGltf(path);
+    requireReproduced(path, report, 24.0, rigidLbs.triangles);
+    const SkinningError error = measureSkinningError(target, report.positions);
+    QVERIFY2(error.maxDistance <= 1e-5 * error.diagonal, qPrintable(QString::number(error.maxDistance)));
+    // The file has the second set.
+    const std::string bytes = [&] {
+        std::ifstream in(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    }();
+    QVERIFY(bytes.find("\"JOINTS_1\"") != std::string::npos && bytes.find("\"WEIGHTS_1\"") != std::string::npos);
 }
 
 void TestSkinningGltf::closestRotationIsProper()

@@ -28,6 +28,9 @@ struct SkinningChoices {
     SkinningChain chain = SkinningChain::PoseToPose;
     bool weightCorrections = true;
     bool vertexCorrections = true;
+    /// Bones per vertex for the fits that re-solve the weights (usesDecomposition): 4 plays
+    /// everywhere; 5–8 are exported as JOINTS_1/WEIGHTS_1.
+    int influences = int(kDefaultInfluences);
 
     /// The core options these choices ask for (every other option at its default).
     [[nodiscard]] SkinningFitOptions fitOptions() const
@@ -38,6 +41,7 @@ struct SkinningChoices {
         options.chain = chain;
         options.weightCorrections = weightCorrections;
         options.vertexCorrections = vertexCorrections;
+        options.decomposition.maxInfluences = std::size_t(influences);
         return options;
     }
 

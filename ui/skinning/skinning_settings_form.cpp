@@ -52,6 +52,12 @@ SkinningSettingsForm::SkinningSettingsForm(QWidget* parent) : QWidget(parent)
     m_vertexCorrections = namedCheckBox(tr("Vertex corrections"), "vertexCorrectionsCheckBox",
                                         tr("Move the rest-pose vertices to lower the error (alternated like the weight "
                                            "corrections, or once, kept only when E_RMS does not rise)"));
+    m_influences = new QSpinBox;
+    m_influences->setObjectName(QStringLiteral("skinningInfluencesSpinBox"));
+    m_influences->setRange(1, int(kMaxInfluences));
+    m_influences->setToolTip(tr("Bones per vertex when the weights are re-solved (rigid joints, or rest-to-pose LBS "
+                                "with corrections). 4 plays in every engine; 5-8 lower the error on cloth-like parts "
+                                "and are written as JOINTS_1/WEIGHTS_1, which not every viewer reads"));
     auto* form = new QFormLayout(this);
     form->setContentsMargins(0, 0, 0, 0);
     form->addRow(tr("Bones"), m_boneSource);
@@ -61,6 +67,7 @@ SkinningSettingsForm::SkinningSettingsForm(QWidget* parent) : QWidget(parent)
     form->addRow(tr("Chain"), m_chain);
     form->addRow(m_weightCorrections);
     form->addRow(m_vertexCorrections);
+    form->addRow(tr("Influences"), m_influences);
     for (QComboBox* box : {m_boneSource, m_method, m_chain})
         connect(box, &QComboBox::currentIndexChanged, this, &SkinningSettingsForm::changed);
     connect(m_boneSource, &QComboBox::currentIndexChanged, this, &SkinningSettingsForm::updateBoneCountEnabled);
@@ -68,6 +75,8 @@ SkinningSettingsForm::SkinningSettingsForm(QWidget* parent) : QWidget(parent)
     connect(m_chain, &QComboBox::currentIndexChanged, this,
             [this] { m_chosenChain = SkinningChain(m_chain->currentData().toInt()); });
     connect(m_boneCount, &QSpinBox::valueChanged, this, &SkinningSettingsForm::changed);
+    connect(m_influences, &QSpinBox::valueChanged, this, &SkinningSettingsForm::changed);
+    connect(this, &SkinningSettingsForm::changed, this, &SkinningSettingsForm::updateInfluencesEnabled);
     for (QCheckBox* box : {m_weightCorrections, m_vertexCorrections})
         connect(box, &QCheckBox::toggled, this, &SkinningSettingsForm::changed);
     setChoices(SkinningChoices{});
@@ -77,15 +86,17 @@ SkinningSettingsForm::SkinningSettingsForm(QWidget* parent) : QWidget(parent)
 void SkinningSettingsForm::setChoices(const SkinningChoices& choices)
 {
     const QSignalBlocker b1(m_method), b2(m_chain), b3(m_weightCorrections), b4(m_vertexCorrections),
-        b5(m_boneSource), b6(m_boneCount);
+        b5(m_boneSource), b6(m_boneCount), b7(m_influences);
     selectItemWithData(m_boneSource, int(choices.boneSource));
     m_boneCount->setValue(choices.boneCount);
     selectItemWithData(m_method, choices.fitExported ? kFitExported : int(choices.method));
     m_chosenChain = choices.chain;
     m_weightCorrections->setChecked(choices.weightCorrections);
     m_vertexCorrections->setChecked(choices.vertexCorrections);
+    m_influences->setValue(choices.influences);
     updateBoneCountEnabled();
     updateChainEnabled();
+    updateInfluencesEnabled();
 }
 
 SkinningChoices SkinningSettingsForm::choices() const
@@ -98,6 +109,7 @@ SkinningChoices SkinningSettingsForm::choices() const
     choices.chain = m_chosenChain;
     choices.weightCorrections = m_weightCorrections->isChecked();
     choices.vertexCorrections = m_vertexCorrections->isChecked();
+    choices.influences = m_influences->value();
     return choices;
 }
 
@@ -115,6 +127,12 @@ void SkinningSettingsForm::updateChainEnabled()
     const QSignalBlocker blocker(m_chain);
     selectItemWithData(m_chain, int(fitExported ? SkinningChain::RestToPose : m_chosenChain));
     m_chain->setEnabled(!fitExported);
+}
+
+// Only the fits that re-solve the weights can use more (or fewer) than the segmentation's 4.
+void SkinningSettingsForm::updateInfluencesEnabled()
+{
+    m_influences->setEnabled(usesDecomposition(choices().fitOptions()));
 }
 
 void SkinningSettingsForm::updateBoneCountEnabled()

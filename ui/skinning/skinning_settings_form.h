@@ -33,6 +33,7 @@ signals:
 private:
     void updateBoneCountEnabled();
     void updateChainEnabled();
+    void updateInfluencesEnabled();
 
     QComboBox* m_boneSource = nullptr;
     QSpinBox* m_boneCount = nullptr;
@@ -42,6 +43,7 @@ private:
     QComboBox* m_chain = nullptr;
     QCheckBox* m_weightCorrections = nullptr;
     QCheckBox* m_vertexCorrections = nullptr;
+    QSpinBox* m_influences = nullptr;
 };
 
 } // namespace trimlab::ui

@@ -497,8 +497,14 @@ void TestSkinningPanel::givenBoneCountSegmentsAnew()
     // The corrections are on by default; the chain box is disabled under the rigid-joint fit.
     QVERIFY(panel->choices().fitExported);
     QVERIFY(!child<QComboBox>(panel, "skinningChainComboBox")->isEnabled());
+    auto* influences = child<QSpinBox>(panel, "skinningInfluencesSpinBox");
+    QCOMPARE(influences->value(), 4);
+    QVERIFY(influences->isEnabled());
+    typeInto(influences, 6);
+    QCOMPARE(panel->choices().fitOptions().decomposition.maxInfluences, std::size_t(6));
     QVERIFY(chooseByKeys(child<QComboBox>(panel, "skinningMethodComboBox"), QStringLiteral("DQS (rigid bones)")));
     QVERIFY(child<QComboBox>(panel, "skinningChainComboBox")->isEnabled());
+    QVERIFY(!influences->isEnabled()); // the thesis's DQS fit keeps the segmentation's weights
     const SkinningChoices chosen = panel->choices();
     QVERIFY(!chosen.fitExported);
     QCOMPARE(chosen.boneSource, BoneSource::GivenCount);
