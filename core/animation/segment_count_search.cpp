@@ -1,5 +1,7 @@
 #include "core/animation/segment_count_search.h"
 
+#include "core/animation/motion_merge.h"
+
 #include "core/animation/label_adjacency.h"
 #include "core/animation/vertex_areas.h"
 
@@ -12,66 +14,6 @@
 namespace trimlab {
 
 namespace {
-
-// Segment-level state of mergeSmallestSegments: areas, neighbour sets, and where each
-// original segment went.
-struct MergeState {
-    std::vector<double> area;
-    std::vector<std::set<std::uint32_t>> neighbours;
-    std::vector<std::uint32_t> into; // union-find parent
-    std::vector<bool> alive;
-
-    std::uint32_t find(std::uint32_t s)
-    {
-        while (into[s] != s)
-            s = into[s] = into[into[s]];
-        return s;
-    }
-};
-
-std::uint32_t smallestAlive(const MergeState& state)
-{
-    std::uint32_t best = 0;
-    bool found = false;
-    for (std::uint32_t s = 0; s < state.area.size(); ++s)
-        if (state.alive[s] && (!found || state.area[s] < state.area[best])) {
-            best = s;
-            found = true;
-        }
-    return best;
-}
-
-std::uint32_t largestOf(const MergeState& state, std::uint32_t except, const std::set<std::uint32_t>* among)
-{
-    std::uint32_t best = except;
-    auto consider = [&](std::uint32_t s) {
-        if (s != except && state.alive[s] && (best == except || state.area[s] > state.area[best]))
-            best = s;
-    };
-    if (among) {
-        for (std::uint32_t s : *among)
-            consider(s);
-    } else {
-        for (std::uint32_t s = 0; s < state.area.size(); ++s)
-            consider(s);
-    }
-    return best;
-}
-
-void mergeInto(MergeState& state, std::uint32_t from, std::uint32_t to)
-{
-    state.area[to] += state.area[from];
-    for (std::uint32_t n : state.neighbours[from]) {
-        state.neighbours[n].erase(from);
-        if (n != to) {
-            state.neighbours[n].insert(to);
-            state.neighbours[to].insert(n);
-        }
-    }
-    state.neighbours[from].clear();
-    state.alive[from] = false;
-    state.into[from] = to;
-}
 
 // The cleaned count at h; `best` keeps the largest h whose count is still ≥ count.
 struct HSearch {
@@ -125,31 +67,6 @@ void partitionForCount(AnimationSegmenter& segmenter, std::size_t count, const T
 
 } // namespace
 
-VertexLabeling mergeSmallestSegments(const VertexGraph& graph, std::span<const double> areas,
-                                     const VertexLabeling& labeling, std::size_t count)
-{
-    if (labeling.count <= count)
-        return labeling;
-    MergeState state;
-    state.area = labelAreas(labeling.labels, labeling.count, areas);
-    for (const auto& list : labelAdjacency(graph, labeling))
-        state.neighbours.emplace_back(list.begin(), list.end());
-    state.into.resize(labeling.count);
-    std::iota(state.into.begin(), state.into.end(), 0u);
-    state.alive.assign(labeling.count, true);
-    for (std::size_t alive = labeling.count; alive > count; --alive) {
-        const std::uint32_t small = smallestAlive(state);
-        std::uint32_t target = largestOf(state, small, &state.neighbours[small]);
-        if (target == small)
-            target = largestOf(state, small, nullptr);
-        mergeInto(state, small, target);
-    }
-    std::vector<std::uint32_t> labels(labeling.labels.size());
-    for (std::size_t v = 0; v < labels.size(); ++v)
-        labels[v] = state.find(labeling.labels[v]);
-    return canonicalLabeling(labels);
-}
-
 SegmentCountSearch segmentIntoCount(AnimationSegmenter& segmenter, std::size_t count, const TaskControl& control)
 {
     requireSearchable(segmenter, count);
@@ -163,19 +80,23 @@ SegmentCountSearch segmentIntoCount(AnimationSegmenter& segmenter, std::size_t c
     partitionForCount(segmenter, count, control);
     result.clusters = segmenter.settings().partition.clusters;
     result.overSegments = segmenter.overSegmentation().count;
-    HSearch search{segmenter, count, 0.0, {}};
+    // Aim at twice the count, then merge by motion: the merges remove the slivers a
+    // cleaning strength alone leaves (they join the part they move with), so the bones
+    // made from the segments cover parts of the mesh, not a few vertices each.
+    const std::size_t target = std::min(result.overSegments, 2 * count);
+    HSearch search{segmenter, target, 0.0, {}};
     double lo = 0.0, hi = 1.0;
     search.probe(lo);
-    if (search.probe(hi) < count) {
-        for (int step = 0; step < 40 && search.best.count != count; ++step) {
+    if (search.probe(hi) < target) {
+        for (int step = 0; step < 40 && search.best.count != target; ++step) {
             const double mid = 0.5 * (lo + hi);
-            (search.probe(mid) >= count ? lo : hi) = mid;
+            (search.probe(mid) >= target ? lo : hi) = mid;
         }
     }
     result.h = search.bestH;
     result.cleanedCount = search.best.count;
-    result.segmentation = mergeSmallestSegments(segmenter.graph(), segmenter.vertexAreas(), search.best, count);
-    result.merged = result.cleanedCount - count;
+    result.segmentation = mergeByMotion(segmenter.animation(), segmenter.graph(), search.best, count);
+    result.merged = result.cleanedCount - result.segmentation.count;
     return result;
 }
 

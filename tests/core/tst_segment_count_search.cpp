@@ -1,35 +1,25 @@
 // A segmentation with exactly B segments (segment_count_search.h): every requested count
-// from 1 to well past the natural parts is met exactly, the merge rule joins the smallest
-// segment into its largest neighbour, and impossible counts are refused.
+// from 1 to well past the natural parts is met exactly, the merges join slivers to the part
+// they move with (motion_merge.h), and impossible counts are refused.
 #include "core/animation/segment_count_search.h"
+#include "core/animation/motion_merge.h"
 
 #include "skinning_fixtures.h"
 
 #include <QtTest>
 
+#include <algorithm>
 #include <set>
 
 using namespace trimlab;
 using namespace trimlab::test;
 
-namespace {
-
-// A path of `n` vertices 0 − 1 − … − n−1 as degenerate triangles (edges only).
-VertexGraph pathGraph(std::size_t n)
-{
-    std::vector<glm::uvec3> triangles;
-    for (std::uint32_t v = 0; v + 1 < n; ++v)
-        triangles.emplace_back(v, v + 1, v + 1);
-    return buildVertexGraph(n, triangles);
-}
-
-} // namespace
 
 class TestSegmentCountSearch : public QObject {
     Q_OBJECT
 private slots:
     void meetsEveryCount();
-    void mergesSmallestIntoLargestNeighbour();
+    void sliversJoinThePartTheyMoveWith();
     void refusesImpossibleCounts();
 };
 
@@ -53,22 +43,32 @@ void TestSegmentCountSearch::meetsEveryCount()
     }
 }
 
-void TestSegmentCountSearch::mergesSmallestIntoLargestNeighbour()
+void TestSegmentCountSearch::sliversJoinThePartTheyMoveWith()
 {
-    // Segments along a path: 0 0 0 | 1 | 2 2 | 3 3 3 3; unit areas.
-    const VertexGraph graph = pathGraph(10);
-    const VertexLabeling labels{{0, 0, 0, 1, 2, 2, 3, 3, 3, 3}, 4};
-    const std::vector<double> areas(10, 1.0);
-    // Segment 1 (area 1) joins its larger neighbour 0 (area 3) rather than 2 (area 2).
-    QCOMPARE(mergeSmallestSegments(graph, areas, labels, 3), (VertexLabeling{{0, 0, 0, 0, 1, 1, 2, 2, 2, 2}, 3}));
-    // Then segment 2 (area 2) has two neighbours of area 4; the tie goes to the smaller label.
-    QCOMPARE(mergeSmallestSegments(graph, areas, labels, 2), (VertexLabeling{{0, 0, 0, 0, 0, 0, 1, 1, 1, 1}, 2}));
-    // With more area on the right, it joins the right.
-    std::vector<double> heavier = areas;
-    heavier[9] = 2.0;
-    QCOMPARE(mergeSmallestSegments(graph, heavier, labels, 2), (VertexLabeling{{0, 0, 0, 0, 1, 1, 1, 1, 1, 1}, 2}));
-    QCOMPARE(mergeSmallestSegments(graph, areas, labels, 1).count, 1u);
-    QCOMPARE(mergeSmallestSegments(graph, areas, labels, 7), labels);
+    // Three rigid parts of a tube: rings 0-5, 6-8, 9-11, each moved by its own random
+    // rigid motions. Over-segmented into 0-5 | 6 | 7-8 | 9-10 | 11, the sliver at ring 6
+    // touches the big first part and its own part: merging by motion puts it with its
+    // own part (merging the smallest into the largest neighbour would put it with the
+    // big one), and the three parts come back exactly.
+    constexpr unsigned rings = 12, sides = 10;
+    const auto ringLabels = [&](std::initializer_list<unsigned> firstRings) {
+        const std::vector<unsigned> starts(firstRings);
+        VertexLabeling l;
+        l.count = std::uint32_t(starts.size());
+        for (unsigned r = 0; r < rings; ++r)
+            for (unsigned s = 0; s < sides; ++s)
+                l.labels.push_back(std::uint32_t(std::upper_bound(starts.begin(), starts.end(), r) - starts.begin() - 1));
+        return l;
+    };
+    const VertexLabeling parts = ringLabels({0, 6, 9});
+    const MeshAnimation rest = tubeRestPose(rings, sides);
+    const MeshAnimation animation = animationOfModel(
+        randomModel(SkinningMethod::Dqs, SkinningChain::RestToPose, rest, rigidWeights(parts), 5, 11));
+    const VertexGraph graph = buildVertexGraph(animation.vertexCount(), animation.triangles);
+    const VertexLabeling over = ringLabels({0, 6, 7, 9, 11});
+    QCOMPARE(mergeByMotion(animation, graph, over, 3), parts);
+    QCOMPARE(mergeByMotion(animation, graph, over, 5), over); // nothing to merge
+    QCOMPARE(mergeByMotion(animation, graph, over, 1).count, 1u);
 }
 
 void TestSegmentCountSearch::refusesImpossibleCounts()
