@@ -85,6 +85,11 @@ void TestSkinVerb::badArgumentsExitWithTwo_data()
     QTest::newRow("unwritable output") << QStringList{"skin", bar, "--bones", "2", "--method", "dqs", "-o",
                                                       "/nonexistent/x.glb"}
                                        << "-o /nonexistent/x.glb: the folder /nonexistent does not exist";
+    QTest::newRow("too many influences") << (QStringList{"skin", bar, "--bones", "2", "--influences", "9"} + tail)
+                                         << "--influences";
+    QTest::newRow("influences of a one-pass fit")
+        << (QStringList{"skin", bar, "--bones", "2", "--method", "dqs", "--influences", "6"} + tail)
+        << "--influences applies to --method rigid";
     QTest::newRow("bad method") << (QStringList{"skin", bar, "--bones", "2", "--method", "sad"} + tail)
                                 << "unknown --method 'sad' (use rigid, lbs or dqs)";
     QTest::newRow("bad chain") << (QStringList{"skin", bar, "--bones", "2", "--method", "lbs", "--chain", "x"} + tail)
