@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <tuple>
 #include <set>
 #include <vector>
 
@@ -90,7 +92,7 @@ SegmentSums united(const SegmentSums& a, const SegmentSums& b)
 } // namespace
 
 VertexLabeling mergeByMotion(const MeshAnimation& animation, const VertexGraph& graph, const VertexLabeling& labeling,
-                             std::size_t count)
+                             std::size_t count, std::size_t minVertices)
 {
     if (labeling.count <= count)
         return labeling;
@@ -135,12 +137,48 @@ VertexLabeling mergeByMotion(const MeshAnimation& animation, const VertexGraph& 
             for (std::uint32_t b = 0; b < labeling.count; ++b)
                 if (b != a)
                     push(a, b);
-    for (std::size_t remaining = labeling.count; remaining > count && !queue.empty();) {
-        const Entry top = *queue.begin();
-        queue.erase(queue.begin());
-        const std::uint32_t a = top.a, b = top.b;
-        if (!alive[a] || !alive[b] || version[a] != top.versionA || version[b] != top.versionB)
-            continue;
+    // The smallest segment under the minimum size and its cheapest partner, if any.
+    const auto undersized = [&]() -> std::optional<std::pair<std::uint32_t, std::uint32_t>> {
+        std::optional<std::uint32_t> small;
+        for (std::uint32_t s = 0; s < alive.size(); ++s)
+            if (alive[s] && sums[s][0].n < double(minVertices) && (!small || sums[s][0].n < sums[*small][0].n))
+                small = s;
+        if (!small)
+            return std::nullopt;
+        std::optional<std::uint32_t> partner;
+        double best = std::numeric_limits<double>::infinity();
+        const auto consider = [&](std::uint32_t n) {
+            if (n == *small || !alive[n])
+                return;
+            const double cost = pairCost(std::min(*small, n), std::max(*small, n));
+            if (!partner || cost < best) {
+                best = cost;
+                partner = n;
+            }
+        };
+        for (std::uint32_t n : neighbours[*small])
+            consider(n);
+        if (!partner)
+            for (std::uint32_t n = 0; n < alive.size(); ++n)
+                consider(n);
+        if (!partner)
+            return std::nullopt;
+        return std::pair{std::min(*small, *partner), std::max(*small, *partner)};
+    };
+    for (std::size_t remaining = labeling.count; remaining > count;) {
+        std::uint32_t a = 0, b = 0;
+        if (const auto forced = undersized()) {
+            std::tie(a, b) = *forced;
+        } else {
+            if (queue.empty())
+                break;
+            const Entry top = *queue.begin();
+            queue.erase(queue.begin());
+            a = top.a;
+            b = top.b;
+            if (!alive[a] || !alive[b] || version[a] != top.versionA || version[b] != top.versionB)
+                continue;
+        }
         // b joins a.
         ++version[a];
         sums[a] = united(sums[a], sums[b]);

@@ -95,7 +95,9 @@ SegmentCountSearch segmentIntoCount(AnimationSegmenter& segmenter, std::size_t c
     }
     result.h = search.bestH;
     result.cleanedCount = search.best.count;
-    result.segmentation = mergeByMotion(segmenter.animation(), segmenter.graph(), search.best, count);
+    // A segment needs a tenth of the average size: below that it is noise, not a part.
+    const std::size_t minVertices = segmenter.animation().vertexCount() / (10 * count);
+    result.segmentation = mergeByMotion(segmenter.animation(), segmenter.graph(), search.best, count, minVertices);
     result.merged = result.cleanedCount - result.segmentation.count;
     return result;
 }

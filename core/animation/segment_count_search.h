@@ -37,7 +37,8 @@ struct SegmentCountSearch {
 ///    cleaning strength alone leaves slivers of a few vertices beside large segments
 ///    (samba at 30: 14 of 30 segments under 1 % of the vertices, the largest 2,820 of
 ///    9,971; with the motion merges 9, and 1,552), and each sliver then joins the part it
-///    moves with. `count` == 1 gives one segment without running anything.
+///    moves with. Segments under a tenth of the average size (#V / (10·count)) are merged
+///    first. `count` == 1 gives one segment without running anything.
 /// Throws std::invalid_argument when `count` is 0 or above #V, std::runtime_error when the
 /// animation has too few poses to be partitioned or the over-segmentation cannot reach
 /// `count` segments; OperationCancelled from the segmenter's stages.

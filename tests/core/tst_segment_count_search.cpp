@@ -20,6 +20,7 @@ class TestSegmentCountSearch : public QObject {
 private slots:
     void meetsEveryCount();
     void sliversJoinThePartTheyMoveWith();
+    void tinySegmentsMergeFirst();
     void refusesImpossibleCounts();
 };
 
@@ -69,6 +70,44 @@ void TestSegmentCountSearch::sliversJoinThePartTheyMoveWith()
     QCOMPARE(mergeByMotion(animation, graph, over, 3), parts);
     QCOMPARE(mergeByMotion(animation, graph, over, 5), over); // nothing to merge
     QCOMPARE(mergeByMotion(animation, graph, over, 1).count, 1u);
+}
+
+void TestSegmentCountSearch::tinySegmentsMergeFirst()
+{
+    // One vertex of the first part jitters on its own and is a segment of its own; the
+    // second part is split in two halves that move together. Asked for 4 segments, the
+    // motion rule alone joins the halves (they cost nothing) and leaves the jittering
+    // vertex a segment; with a minimum size of 2 vertices it is merged first.
+    constexpr unsigned rings = 12, sides = 10;
+    VertexLabeling parts;
+    parts.count = 3;
+    for (unsigned r = 0; r < rings; ++r)
+        for (unsigned s = 0; s < sides; ++s)
+            parts.labels.push_back(r < 6 ? 0u : (r < 9 ? 1u : 2u));
+    MeshAnimation animation = animationOfModel(randomModel(SkinningMethod::Dqs, SkinningChain::RestToPose,
+                                                           tubeRestPose(rings, sides), rigidWeights(parts), 5, 5));
+    constexpr std::size_t odd = 2 * sides + 3; // in the first part
+    for (std::size_t t = 1; t < animation.poseCount(); ++t)
+        animation.poses[t][odd] += glm::vec3(0.05f * float(t), -0.03f * float(t), 0.02f);
+    VertexLabeling over = parts;
+    over.count = 5;
+    over.labels[odd] = 3;
+    for (unsigned s = 0; s < sides; ++s)
+        over.labels[8 * sides + s] = 4; // ring 8: the second half of part 1
+    const VertexGraph graph = buildVertexGraph(animation.vertexCount(), animation.triangles);
+    const VertexLabeling plain = mergeByMotion(animation, graph, over, 4);
+    const VertexLabeling sized = mergeByMotion(animation, graph, over, 4, 2);
+    const auto smallest = [](const VertexLabeling& l) {
+        std::vector<std::size_t> sizes(l.count, 0);
+        for (std::uint32_t label : l.labels)
+            ++sizes[label];
+        return *std::min_element(sizes.begin(), sizes.end());
+    };
+    QCOMPARE(plain.count, 4u);
+    QCOMPARE(smallest(plain), std::size_t(1));
+    QCOMPARE(sized.count, 4u);
+    QVERIFY(smallest(sized) >= 10);
+    QCOMPARE(sized.labels[odd], sized.labels[0]); // it went with its own part
 }
 
 void TestSegmentCountSearch::refusesImpossibleCounts()
