@@ -9,6 +9,7 @@
 #include "core/animation/animation_loader.h"
 #include "core/animation/animation_segmenter.h"
 #include "core/animation/segment_count_search.h"
+#include "core/animation/segment_sizes.h"
 #include "core/skinning/skinning_fitter.h"
 #include "core/skinning/skinning_gltf.h"
 
@@ -200,14 +201,10 @@ QString correctionsText(const SkinOptions& o, const SkinningFitResult& fit)
 // vertices are spread over the segments the bones come from.
 QString segmentSizesText(const VertexLabeling& segmentation)
 {
-    std::vector<std::size_t> sizes(segmentation.count, 0);
-    for (std::uint32_t label : segmentation.labels)
-        ++sizes[label];
-    std::sort(sizes.begin(), sizes.end());
-    const std::size_t vertices = segmentation.labels.size();
-    const auto small = std::count_if(sizes.begin(), sizes.end(), [&](std::size_t s) { return 100 * s < vertices; });
+    const SegmentSizes s = segmentSizes(segmentation);
     return QStringLiteral("segment sizes (vertices): smallest %1, median %2, largest %3; %4 of %5 under 1 %")
-        .arg(sizes.front()).arg(sizes[sizes.size() / 2]).arg(sizes.back()).arg(small).arg(sizes.size());
+        .arg(s.sorted.front()).arg(s.sorted[s.sorted.size() / 2]).arg(s.sorted.back()).arg(s.underOnePercent)
+        .arg(s.sorted.size());
 }
 
 void printSummary(const SkinOptions& o, const SkinRun& r)

@@ -16,6 +16,7 @@
 #include "core/animation/animation_loader.h"
 #include "core/animation/animation_segmenter.h"
 #include "core/animation/segment_count_search.h"
+#include "core/animation/segment_sizes.h"
 #include "core/skinning/skinning_error.h"
 #include "core/skinning/skinning_fitter.h"
 #include "core/skinning/skinning_gltf.h"
@@ -84,15 +85,11 @@ std::string anchor(const std::string& source, std::size_t bones)
 
 void printSegmentSizes(const VertexLabeling& segmentation)
 {
-    std::vector<std::size_t> sizes(segmentation.count, 0);
-    for (std::uint32_t label : segmentation.labels)
-        ++sizes[label];
-    std::sort(sizes.begin(), sizes.end());
-    const std::size_t n = segmentation.labels.size();
-    const auto small = std::count_if(sizes.begin(), sizes.end(), [&](std::size_t s) { return 100 * s < n; });
+    const SegmentSizes found = segmentSizes(segmentation);
+    const std::vector<std::size_t>& sizes = found.sorted;
     std::printf("  segments: %zu; vertices per segment: smallest %zu, median %zu, largest %zu; under 1 %% of the "
-                "vertices: %ld\n  sizes:",
-                sizes.size(), sizes.front(), sizes[sizes.size() / 2], sizes.back(), static_cast<long>(small));
+                "vertices: %zu\n  sizes:",
+                sizes.size(), sizes.front(), sizes[sizes.size() / 2], sizes.back(), found.underOnePercent);
     for (std::size_t s : sizes)
         std::printf(" %zu", s);
     std::printf("\n");

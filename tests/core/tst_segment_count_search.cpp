@@ -3,6 +3,7 @@
 // they move with (motion_merge.h), and impossible counts are refused.
 #include "core/animation/segment_count_search.h"
 #include "core/animation/motion_merge.h"
+#include "core/animation/segment_sizes.h"
 
 #include "skinning_fixtures.h"
 
@@ -21,6 +22,7 @@ private slots:
     void meetsEveryCount();
     void sliversJoinThePartTheyMoveWith();
     void tinySegmentsMergeFirst();
+    void reportsSegmentSizes();
     void refusesImpossibleCounts();
 };
 
@@ -108,6 +110,18 @@ void TestSegmentCountSearch::tinySegmentsMergeFirst()
     QCOMPARE(sized.count, 4u);
     QVERIFY(smallest(sized) >= 10);
     QCOMPARE(sized.labels[odd], sized.labels[0]); // it went with its own part
+}
+
+void TestSegmentCountSearch::reportsSegmentSizes()
+{
+    VertexLabeling l;
+    l.count = 3;
+    l.labels.assign(198, 2);
+    l.labels.push_back(0);
+    l.labels.push_back(1);
+    const SegmentSizes sizes = segmentSizes(l);
+    QCOMPARE(sizes.sorted, (std::vector<std::size_t>{1, 1, 198}));
+    QCOMPARE(sizes.underOnePercent, std::size_t(2)); // 1 of 200 is 0.5 %; 2 of 200 would not be
 }
 
 void TestSegmentCountSearch::refusesImpossibleCounts()
