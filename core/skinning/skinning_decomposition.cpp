@@ -20,6 +20,43 @@ namespace trimlab {
 
 namespace {
 
+// Σ_t ‖Σ_b w_bj M_b^t v_j − y_j^t‖²: vertex j's error over every pose.
+double vertexSquaredError(const std::vector<PosePositions>& poses, const std::vector<glm::dvec3>& rest,
+                          const SkinningWeights& weights, const std::vector<std::vector<Affine3>>& matrices,
+                          std::size_t j)
+{
+    const VertexInfluences& in = weights.vertices[j];
+    double sum = 0.0;
+    for (std::size_t t = 0; t < poses.size(); ++t) {
+        glm::dvec3 p(0.0);
+        for (std::uint32_t i = 0; i < in.count; ++i)
+            p += in.weights[i] * matrices[t][in.bones[i]].apply(rest[j]);
+        const glm::dvec3 d = p - poses[t][j];
+        sum += glm::dot(d, d);
+    }
+    return sum;
+}
+
+// The rigid matrix as the solver's rotation and translation, and back.
+RigidJointPose toJoint(const Affine3& m)
+{
+    return {glm::normalize(glm::quat_cast(m.linear)), m.translation};
+}
+
+Affine3 toMatrix(const RigidJointPose& joint)
+{
+    return {glm::mat3_cast(joint.rotation), joint.translation};
+}
+
+std::vector<RigidJointPose> toJoints(const std::vector<Affine3>& matrices)
+{
+    std::vector<RigidJointPose> joints;
+    joints.reserve(matrices.size());
+    for (const Affine3& m : matrices)
+        joints.push_back(toJoint(m));
+    return joints;
+}
+
 // Σ over poses and vertices of the squared distance, summed per chunk in chunk order.
 double squaredError(const std::vector<PosePositions>& poses, const std::vector<glm::dvec3>& rest,
                     const SkinningWeights& weights, const std::vector<std::vector<Affine3>>& matrices,
@@ -32,15 +69,8 @@ double squaredError(const std::vector<PosePositions>& poses, const std::vector<g
         [&](std::size_t c) {
             const auto [begin, end] = detail::chunkRange(rest.size(), c);
             double sum = 0.0;
-            for (std::size_t t = 0; t < poses.size(); ++t)
-                for (std::size_t j = begin; j < end; ++j) {
-                    const VertexInfluences& in = weights.vertices[j];
-                    glm::dvec3 p(0.0);
-                    for (std::uint32_t i = 0; i < in.count; ++i)
-                        p += in.weights[i] * matrices[t][in.bones[i]].apply(rest[j]);
-                    const glm::dvec3 d = p - poses[t][j];
-                    sum += glm::dot(d, d);
-                }
+            for (std::size_t j = begin; j < end; ++j)
+                sum += vertexSquaredError(poses, rest, weights, matrices, j);
             partial[c] = sum;
         },
         control, "fit");
@@ -61,12 +91,10 @@ void updateRigidTransforms(std::vector<std::vector<Affine3>>& transforms, const 
         [&](std::size_t t) {
             if (t == restPose)
                 return;
-            std::vector<RigidJointPose> joints(weights.boneCount);
-            for (std::size_t b = 0; b < joints.size(); ++b)
-                joints[b] = {glm::normalize(glm::quat_cast(transforms[t][b].linear)), transforms[t][b].translation};
+            std::vector<RigidJointPose> joints = toJoints(transforms[t]);
             (void)solver.solve(joints, poses[t], sweeps);
             for (std::size_t b = 0; b < joints.size(); ++b)
-                transforms[t][b] = {glm::mat3_cast(joints[b].rotation), joints[b].translation};
+                transforms[t][b] = toMatrix(joints[b]);
         },
         control, "fit");
 }
@@ -80,22 +108,16 @@ void improveFromNeighbourPoses(std::vector<std::vector<Affine3>>& transforms, co
                                const SkinningWeights& weights, unsigned sweeps, const TaskControl& control)
 {
     const RigidJointSolver solver(weights, rest);
-    const auto joints = [&](const std::vector<Affine3>& matrices) {
-        std::vector<RigidJointPose> result(matrices.size());
-        for (std::size_t b = 0; b < matrices.size(); ++b)
-            result[b] = {glm::normalize(glm::quat_cast(matrices[b].linear)), matrices[b].translation};
-        return result;
-    };
     for (std::size_t t : chainOrder(poses.size(), restPose)) {
         if (t == restPose)
             continue;
         control.throwIfCancelled();
-        std::vector<RigidJointPose> own = joints(transforms[t]);
+        std::vector<RigidJointPose> own = toJoints(transforms[t]);
         const double ownError = solver.solve(own, poses[t], 0);
-        std::vector<RigidJointPose> neighbour = joints(transforms[t > restPose ? t - 1 : t + 1]);
+        std::vector<RigidJointPose> neighbour = toJoints(transforms[t > restPose ? t - 1 : t + 1]);
         const std::vector<RigidJointPose>& best = solver.solve(neighbour, poses[t], sweeps) < ownError ? neighbour : own;
         for (std::size_t b = 0; b < best.size(); ++b)
-            transforms[t][b] = {glm::mat3_cast(best[b].rotation), best[b].translation};
+            transforms[t][b] = toMatrix(best[b]);
     }
 }
 
@@ -111,7 +133,7 @@ void fitRestPoseJoints(std::vector<Affine3>& transforms, const PosePositions& re
     std::vector<RigidJointPose> joints(transforms.size());
     if (RigidJointSolver(weights, rest).solve(joints, restTarget, sweeps) < identityError)
         for (std::size_t b = 0; b < joints.size(); ++b)
-            transforms[b] = {glm::mat3_cast(joints[b].rotation), joints[b].translation};
+            transforms[b] = toMatrix(joints[b]);
 }
 
 // Block 1, affine: the classical rest-to-pose LBS fit of every pose.
@@ -213,17 +235,9 @@ void updateRestPositions(std::vector<glm::dvec3>& rest, const std::vector<PosePo
 std::vector<double> vertexErrors(const std::vector<PosePositions>& poses, const std::vector<glm::dvec3>& rest,
                                  const SkinningWeights& weights, const std::vector<std::vector<Affine3>>& matrices)
 {
-    std::vector<double> errors(rest.size(), 0.0);
-    for (std::size_t j = 0; j < rest.size(); ++j) {
-        const VertexInfluences& in = weights.vertices[j];
-        for (std::size_t t = 0; t < poses.size(); ++t) {
-            glm::dvec3 p(0.0);
-            for (std::uint32_t i = 0; i < in.count; ++i)
-                p += in.weights[i] * matrices[t][in.bones[i]].apply(rest[j]);
-            const glm::dvec3 d = p - poses[t][j];
-            errors[j] += glm::dot(d, d);
-        }
-    }
+    std::vector<double> errors(rest.size());
+    for (std::size_t j = 0; j < rest.size(); ++j)
+        errors[j] = vertexSquaredError(poses, rest, weights, matrices, j);
     return errors;
 }
 
