@@ -52,7 +52,7 @@ void setObjectWalkUniforms(const TrimFrame& frame, GLuint program)
     const TrimSettings& settings = frame.settings;
     std::array<GLint, kMaxCsgOperands> rules{};
     for (int o = 0; o < kMaxCsgOperands; ++o)
-        rules[std::size_t(o)] = static_cast<GLint>(settings.objectRule(o));
+        rules[std::size_t(o)] = GLint(shaderRuleCode(settings.objectRule(o)));
     const CsgTruthTable table = csgTruthTable(settings.csg.expression); // all zero when empty
     const GLsizei objects = frame.objectWindings ? frame.objectWindings->objects() : 1;
     gl.glUniform1iv(gl.glGetUniformLocation(program, "u_objectRules"), objects, rules.data());
@@ -99,7 +99,7 @@ void setTransparencyUniforms(const TrimFrame& frame, GLuint program)
 void setTrimWalkUniforms(const TrimFrame& frame, GLuint program)
 {
     frame.gl.glUniform1i(frame.gl.glGetUniformLocation(program, "u_trimEnabled"), frame.settings.trimEnabled ? 1 : 0);
-    frame.gl.glUniform1i(frame.gl.glGetUniformLocation(program, "u_rule"), static_cast<int>(frame.settings.rule));
+    frame.gl.glUniform1i(frame.gl.glGetUniformLocation(program, "u_rule"), shaderRuleCode(frame.settings.rule));
     frame.gl.glUniform1i(frame.gl.glGetUniformLocation(program, "u_dynamicRule"), frame.dynamicRule);
     frame.gl.glUniform1i(frame.gl.glGetUniformLocation(program, "u_referenceIsBase"), frame.referenceIsBase ? 1 : 0);
     setClipUniforms(frame, program);

@@ -1,5 +1,5 @@
-// Every multi-fragment method × every static rule × two clip planes × three scenes against
-// the CPU reference (issue: multi-fragment backends): a self-crossing surface, coplanar
+// Every multi-fragment method × the thesis's three static rules × two clip planes (and the
+// nonzero, negative and threshold rules through one) × three scenes against the CPU reference (issue: multi-fragment backends): a self-crossing surface, coplanar
 // duplicated triangles (a doubly covered sphere: depth ties), and 17 nested spheres (34
 // layers through the centre, beyond k = 16). Exact methods must agree everywhere;
 // bounded ones wherever they report no overflow, and report overflow wherever they are
@@ -12,6 +12,9 @@
 #include "core/scene/shape_generators.h"
 
 #include <glm/geometric.hpp>
+
+#include <utility>
+#include <vector>
 
 #include <QtTest>
 
@@ -43,12 +46,23 @@ Scene nestedSpheres()
     return scene;
 }
 
+// The nested spheres turned inside out: w runs down to -17 towards the centre.
+Scene insideOutNestedSpheres()
+{
+    Scene scene = nestedSpheres();
+    for (glm::uvec3& t : scene.objects.front().mesh.triangles)
+        std::swap(t.y, t.z);
+    return scene;
+}
+
 Scene sceneNamed(const std::string& name)
 {
     if (name == "doubly-covered")
         return doublyCoveredSphere();
     if (name == "nested-17")
         return nestedSpheres();
+    if (name == "inside-out-17")
+        return insideOutNestedSpheres();
     return *makeDemoScene(name);
 }
 
@@ -89,15 +103,33 @@ void TestMethodMatrix::agreesWithReference_data()
     QTest::addColumn<StaticRule>("rule");
     QTest::addColumn<int>("plane");
     QTest::addColumn<FragmentMethodKind>("method");
+    const auto addRow = [](const char* scene, StaticRule rule, int plane, const MethodInfo& info) {
+        QTest::newRow(qPrintable(QString("%1 %2 %3 plane %4")
+                                     .arg(QString::fromLatin1(info.id.data()), scene,
+                                          QString::fromStdString(ruleName(rule)))
+                                     .arg(plane)))
+            << QString(scene) << rule << plane << info.kind;
+    };
     for (const char* scene : {"pushed-sphere", "doubly-covered", "nested-17"})
-        for (StaticRule rule : {StaticRule::Parity, StaticRule::PositiveIndex, StaticRule::AlternatingBorder})
-            for (int plane : {0, 1})
-                for (const MethodInfo& info : fragmentMethods())
-                    QTest::newRow(qPrintable(QString("%1 %2 %3 plane %4")
-                                                 .arg(QString::fromLatin1(info.id.data()), scene,
-                                                      QString::fromLatin1(ruleName(rule).data()))
-                                                 .arg(plane)))
-                        << QString(scene) << rule << plane << info.kind;
+        for (const MethodInfo& info : fragmentMethods())
+            for (StaticRule rule : {StaticRule::Parity, StaticRule::PositiveIndex, StaticRule::AlternatingBorder})
+                for (int plane : {0, 1})
+                    addRow(scene, rule, plane, info);
+    // The rules beyond the thesis's three, through the oblique plane only (it cuts every
+    // layer), on the scenes where they keep something: the doubly covered sphere has
+    // w = 2, the nested spheres up to 17 (K = 9 lies past the k = 16 of the bounded
+    // methods), the inside-out nested spheres down to -17.
+    const std::pair<StaticRule, std::vector<const char*>> newer[] = {
+        {StaticRule::Nonzero, {"pushed-sphere", "doubly-covered", "nested-17"}},
+        {StaticRule::Negative, {"inside-out-17"}},
+        {StaticRule::atLeast(2), {"doubly-covered", "nested-17"}},
+        {StaticRule::atLeast(9), {"nested-17"}},
+        {StaticRule::absAtLeast(2), {"doubly-covered", "inside-out-17"}},
+    };
+    for (const auto& [rule, scenes] : newer)
+        for (const char* scene : scenes)
+            for (const MethodInfo& info : fragmentMethods())
+                addRow(scene, rule, 1, info);
 }
 
 void TestMethodMatrix::agreesWithReference()

@@ -1,5 +1,6 @@
 #include "ui/inspect/scene_panel.h"
 
+#include "ui/common/rule_labels.h"
 #include "ui/inspect/csg_expression_field.h"
 #include "ui/inspect/inspect_scene.h"
 #include "ui/inspect/object_transform_form.h"
@@ -14,26 +15,10 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
-#include <array>
 
 namespace trimlab::ui {
 
 namespace {
-
-/// Rule combo box order after "Scene rule" (item 0).
-constexpr std::array<StaticRule, 3> kRuleOrder = {StaticRule::Parity, StaticRule::PositiveIndex,
-                                                  StaticRule::AlternatingBorder};
-constexpr std::array<const char*, 3> kRuleLabels = {QT_TRANSLATE_NOOP("ScenePanel", "Parity"),
-                                                    QT_TRANSLATE_NOOP("ScenePanel", "Positive index"),
-                                                    QT_TRANSLATE_NOOP("ScenePanel", "Alternating border")};
-
-int ruleComboIndex(const std::optional<StaticRule>& rule)
-{
-    if (!rule)
-        return 0;
-    const auto found = std::find(kRuleOrder.begin(), kRuleOrder.end(), *rule);
-    return found == kRuleOrder.end() ? 0 : int(found - kRuleOrder.begin()) + 1;
-}
 
 QTableWidgetItem* readOnlyItem(const QString& text)
 {
@@ -162,8 +147,7 @@ void ScenePanel::rebuildTable()
         auto* rule = new QComboBox(m_table);
         rule->setObjectName(QStringLiteral("objectRuleCombo%1").arg(i));
         rule->addItem(tr("Scene rule"));
-        for (const char* label : kRuleLabels)
-            rule->addItem(tr(label));
+        addRuleItems(rule);
         rule->setEnabled(i < kMaxCsgOperands); // per-object classification addresses 8 objects
         connect(rule, &QComboBox::activated, this, [this, i](int index) { onRuleChosen(i, index); });
         m_table->setCellWidget(i, RuleColumn, rule);
@@ -186,7 +170,12 @@ void ScenePanel::refreshCsgColumns()
             item->setText(inCsg ? QStringLiteral("✓") : QString());
         if (auto* rule = qobject_cast<QComboBox*>(m_table->cellWidget(i, RuleColumn))) {
             const QSignalBlocker blocker(rule);
-            rule->setCurrentIndex(i < kMaxCsgOperands ? ruleComboIndex(csg.objectRules[std::size_t(i)]) : 0);
+            const std::optional<StaticRule> chosen =
+                i < kMaxCsgOperands ? csg.objectRules[std::size_t(i)] : std::optional<StaticRule>();
+            if (chosen)
+                selectRule(rule, *chosen);
+            else
+                rule->setCurrentIndex(0);
         }
     }
     m_csg->setExpression(csg.expression);
@@ -223,11 +212,11 @@ void ScenePanel::onRuleChosen(int object, int comboIndex)
     if (object < 0 || object >= kMaxCsgOperands)
         return;
     CsgSettings csg = m_scene.csg();
-    std::optional<StaticRule> rule;
-    if (comboIndex > 0 && comboIndex <= int(kRuleOrder.size()))
-        rule = kRuleOrder[std::size_t(comboIndex - 1)];
+    const auto* combo = qobject_cast<QComboBox*>(m_table->cellWidget(object, RuleColumn));
+    const std::optional<StaticRule> rule =
+        combo && comboIndex > 0 ? parseStaticRule(combo->itemData(comboIndex).toString().toStdString()) : std::nullopt;
     csg.objectRules[std::size_t(object)] = rule;
-    const QString name = rule ? tr(kRuleLabels[std::size_t(comboIndex - 1)]) : tr("scene rule");
+    const QString name = rule ? ruleLabel(*rule) : tr("scene rule");
     m_scene.editCsg(csg, tr("Object %1 rule: %2").arg(object).arg(name));
 }
 

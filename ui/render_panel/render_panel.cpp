@@ -1,6 +1,7 @@
 #include "ui/render_panel/render_panel.h"
 
 #include "ui/common/form_controls.h"
+#include "ui/common/rule_labels.h"
 #include "ui/render_panel/clip_set_editor.h"
 #include "ui/render_panel/inspect_group.h"
 #include "ui/render_panel/method_group.h"
@@ -11,34 +12,20 @@
 #include <QGroupBox>
 #include <QLabel>
 #include <QSignalBlocker>
+#include <QSpinBox>
 #include <QVBoxLayout>
-
-#include <array>
 
 namespace trimlab::ui {
 
 namespace {
 
-struct RuleEntry {
-    StaticRule rule;
-    const char* label;
-    const char* toolTip;
-};
+// The item data of the threshold kinds: the rule name without K (the spin box holds K).
+const QString kAtLeastPrefix = QStringLiteral("w>=");
+const QString kAbsAtLeastPrefix = QStringLiteral("|w|>=");
 
-/// Combo box order. The item data is the stable ruleName().
-constexpr std::array<RuleEntry, 3> kRules = {{
-    {StaticRule::Parity, QT_TRANSLATE_NOOP("RenderPanel", "Parity"),
-     QT_TRANSLATE_NOOP("RenderPanel", "Interior where the winding index is odd")},
-    {StaticRule::PositiveIndex, QT_TRANSLATE_NOOP("RenderPanel", "Positive index"),
-     QT_TRANSLATE_NOOP("RenderPanel", "Interior where the winding index is at least 1")},
-    {StaticRule::AlternatingBorder, QT_TRANSLATE_NOOP("RenderPanel", "Alternating border"),
-     QT_TRANSLATE_NOOP("RenderPanel", "Interior where the winding index mod 4 is 1 or 2")},
-}};
-
-QString ruleKey(StaticRule rule)
+bool isThresholdItem(const QString& key)
 {
-    const std::string_view name = ruleName(rule);
-    return QString::fromLatin1(name.data(), qsizetype(name.size()));
+    return key == kAtLeastPrefix || key == kAbsAtLeastPrefix;
 }
 
 } // namespace
@@ -73,11 +60,24 @@ QWidget* RenderPanel::createTrimGroup()
     form->addRow(m_trim);
     m_rule = new QComboBox(group);
     m_rule->setObjectName(QStringLiteral("ruleComboBox"));
-    for (const RuleEntry& entry : kRules) {
-        m_rule->addItem(tr(entry.label), ruleKey(entry.rule));
-        m_rule->setItemData(m_rule->count() - 1, tr(entry.toolTip), Qt::ToolTipRole);
+    for (StaticRule rule : {StaticRule::Parity, StaticRule::PositiveIndex, StaticRule::AlternatingBorder,
+                            StaticRule::Nonzero, StaticRule::Negative}) {
+        m_rule->addItem(ruleLabel(rule), ruleKey(rule));
+        m_rule->setItemData(m_rule->count() - 1, ruleToolTip(rule), Qt::ToolTipRole);
     }
+    m_rule->addItem(tr("w ≥ K"), kAtLeastPrefix);
+    m_rule->setItemData(m_rule->count() - 1, tr("Interior where K or more layers of the surface overlap"),
+                        Qt::ToolTipRole);
+    m_rule->addItem(tr("|w| ≥ K"), kAbsAtLeastPrefix);
+    m_rule->setItemData(m_rule->count() - 1,
+                        tr("Interior where K or more layers overlap, counting either orientation"), Qt::ToolTipRole);
     form->addRow(tr("Rule"), m_rule);
+    m_threshold = new QSpinBox(group);
+    m_threshold->setObjectName(QStringLiteral("ruleThresholdSpinBox"));
+    m_threshold->setRange(2, StaticRule::kMaxThreshold);
+    m_threshold->setToolTip(tr("K of the rules w ≥ K and |w| ≥ K: the number of overlapping layers that counts as "
+                               "interior"));
+    form->addRow(tr("Layers K"), m_threshold);
     m_classification = new QComboBox(group);
     m_classification->setObjectName(QStringLiteral("classificationComboBox"));
     m_classification->addItem(tr("Static rule"), false);
@@ -89,7 +89,11 @@ QWidget* RenderPanel::createTrimGroup()
     m_trimUnavailable = noticeLabel(group, "trimUnavailableLabel", NoticeKind::Warning);
     form->addRow(m_trimUnavailable);
     connect(m_trim, &QCheckBox::toggled, this, &RenderPanel::renderChoicesChanged);
-    connect(m_rule, &QComboBox::currentIndexChanged, this, &RenderPanel::renderChoicesChanged);
+    connect(m_rule, &QComboBox::currentIndexChanged, this, [this] {
+        refreshThresholdEnabled();
+        emit renderChoicesChanged();
+    });
+    connect(m_threshold, &QSpinBox::valueChanged, this, &RenderPanel::renderChoicesChanged);
     connect(m_classification, &QComboBox::currentIndexChanged, this, &RenderPanel::renderChoicesChanged);
     return group;
 }
@@ -99,9 +103,18 @@ void RenderPanel::setRenderChoices(const RenderChoices& choices)
     const QSignalBlocker trimBlocker(m_trim);
     const QSignalBlocker ruleBlocker(m_rule);
     const QSignalBlocker classificationBlocker(m_classification);
+    const QSignalBlocker thresholdBlocker(m_threshold);
     m_classification->setCurrentIndex(choices.dynamicRules ? 1 : 0);
     m_trim->setChecked(choices.trim.trimEnabled);
-    m_rule->setCurrentIndex(m_rule->findData(ruleKey(choices.trim.rule)));
+    const StaticRule rule = choices.trim.rule;
+    if (rule.isThreshold()) {
+        m_rule->setCurrentIndex(
+            m_rule->findData(rule.kind() == StaticRule::Kind::AtLeast ? kAtLeastPrefix : kAbsAtLeastPrefix));
+        m_threshold->setValue(rule.threshold());
+    } else {
+        m_rule->setCurrentIndex(m_rule->findData(ruleKey(rule)));
+    }
+    refreshThresholdEnabled();
     m_clip->setClipSet(choices.trim.clipSet());
     m_inspect->setChoices(choices.trim.cap, choices.capSpacingFraction, choices.trim.highlight);
     m_inspect->setTransparency(choices.trim.transparency);
@@ -113,8 +126,7 @@ RenderChoices RenderPanel::renderChoices() const
 {
     RenderChoices choices;
     choices.trim.trimEnabled = m_trim->isChecked();
-    const auto rule = parseStaticRule(m_rule->currentData().toString().toStdString());
-    choices.trim.rule = rule.value_or(StaticRule::AlternatingBorder);
+    choices.trim.rule = chosenRule();
     choices.trim.setClipSet(m_clip->clipSet());
     choices.capSpacingFraction = m_inspect->spacingFraction();
     choices.trim.cap = m_inspect->cap();
@@ -131,6 +143,19 @@ RenderChoices RenderPanel::renderChoices() const
     return choices;
 }
 
+StaticRule RenderPanel::chosenRule() const
+{
+    QString key = m_rule->currentData().toString();
+    if (isThresholdItem(key))
+        key += QString::number(m_threshold->value());
+    return parseStaticRule(key.toStdString()).value_or(StaticRule::AlternatingBorder);
+}
+
+void RenderPanel::refreshThresholdEnabled()
+{
+    m_threshold->setEnabled(m_rule->isEnabled() && isThresholdItem(m_rule->currentData().toString()));
+}
+
 void RenderPanel::setSceneInfo(const Bounds& bounds, bool trimmable, const QString& reason)
 {
     m_trimmable = trimmable;
@@ -138,6 +163,7 @@ void RenderPanel::setSceneInfo(const Bounds& bounds, bool trimmable, const QStri
     m_clip->setSceneBounds(bounds);
     m_trim->setEnabled(trimmable);
     m_rule->setEnabled(trimmable);
+    refreshThresholdEnabled();
     m_classification->setEnabled(trimmable);
     m_trimUnavailable->setText(trimmable ? QString() : tr("Trim modes unavailable: %1").arg(reason));
     m_trimUnavailable->setVisible(!trimmable);

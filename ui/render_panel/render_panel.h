@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The Render panel (the content of the main window's "Render" dock): trim on/off, the
-/// static rule, the classification of a designer session (the static rule alone, or the
+/// static rule (with K for the threshold rules), the classification of a designer session (the static rule alone, or the
 /// dynamic rules per set with the static rule classifying the base mesh), the clipping
 /// planes (clip_set_editor.h: up to six, e.g. a box), capping and highlighting
 /// (inspect_group.h) and the multi-fragment method with its parameters and the GPU
@@ -19,6 +19,7 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QSpinBox;
 
 namespace trimlab::ui {
 
@@ -62,9 +63,14 @@ signals:
 
 private:
     QWidget* createTrimGroup();
+    /// The rule of the combo box, K from the spin box for the threshold kinds.
+    [[nodiscard]] StaticRule chosenRule() const;
+    /// K applies to the threshold kinds only.
+    void refreshThresholdEnabled();
 
     QCheckBox* m_trim = nullptr;
     QComboBox* m_rule = nullptr;
+    QSpinBox* m_threshold = nullptr;
     QComboBox* m_classification = nullptr;
     QLabel* m_trimUnavailable = nullptr;
     ClipSetEditor* m_clip = nullptr;

@@ -163,8 +163,7 @@ RenderChoices loadRenderChoices(const QSettings& settings)
 void saveRenderChoices(QSettings& settings, const RenderChoices& choices)
 {
     settings.setValue(kTrimEnabled, choices.trim.trimEnabled);
-    settings.setValue(kRule, QString::fromLatin1(ruleName(choices.trim.rule).data(),
-                                                 qsizetype(ruleName(choices.trim.rule).size())));
+    settings.setValue(kRule, QString::fromStdString(ruleName(choices.trim.rule)));
     for (int i = 0; i < kMaxClipPlanes; ++i)
         saveClipPlane(settings, clipKeys(i), choices.trim.clipPlane(i));
     settings.setValue(kCapEnabled, choices.trim.cap.enabled);

@@ -81,6 +81,7 @@ private slots:
     void loadErrorKeepsPreviousScene();
     void openSurfaceDisablesTrimControls();
     void settingsRoundTrip();
+    void thresholdRulePersists();
     void recentFilesAndDrop();
     void exportWritesTheViewportImage();
     void cancelDiscardsTheLoad();
@@ -286,6 +287,49 @@ void TestMainWindow::settingsRoundTrip()
     QCOMPARE(restored.trim.clip.offset, 0.25);
     QCOMPARE(window->viewport()->k(), 24);
     QCOMPARE(window->viewport()->trimSettings().clip.offset, 0.25);
+}
+
+// The threshold rules: choosing "|w| ≥ K" with the keyboard enables the K spin box; on
+// the crossing loop (w = 2 where the tube passes through itself) the viewport renders
+// |w| >= 2 in agreement with the CPU reference, and the rule with its K persists into a
+// new window.
+void TestMainWindow::thresholdRulePersists()
+{
+    const QString settings = QStringLiteral("threshold-rule");
+    {
+        auto window = showWindow(settings);
+        window->openSource(QStringLiteral("demo:crossing-loop"));
+        QVERIFY(waitForScene(*window, QStringLiteral("demo:crossing-loop")));
+        QVERIFY(waitForFrame(*window));
+        auto* rule = child<QComboBox>(window.get(), "ruleComboBox");
+        auto* threshold = child<QSpinBox>(window.get(), "ruleThresholdSpinBox");
+        QVERIFY(rule && threshold);
+        QVERIFY(!threshold->isEnabled());
+        QTest::keyClick(rule, Qt::Key_End);
+        QCOMPARE(rule->currentData().toString(), QStringLiteral("|w|>="));
+        QVERIFY(threshold->isEnabled());
+        QTest::keyClick(threshold, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(threshold, QStringLiteral("2"));
+        QTest::keyClick(threshold, Qt::Key_Return);
+        QVERIFY(QTest::qWaitFor([&] {
+            const auto& frame = window->viewport()->lastFrame();
+            return frame && frame->settings.rule == StaticRule::absAtLeast(2);
+        }, kWaitMs));
+        const ViewportFrame frame = *window->viewport()->lastFrame();
+        const TrimImage actual = window->viewport()->readTrimImage();
+        const ReferenceResult expected = ReferenceRenderer(window->scene()->scene)
+                                             .render(frame.camera, frame.pixelSize.width(),
+                                                     frame.pixelSize.height(), frame.settings);
+        const test::TrimComparison comparison = test::compareTrimImages(actual, expected.trim, expected.diagnostics);
+        qInfo("%s", qPrintable(comparison.summary()));
+        QVERIFY2(comparison.agreement() >= 0.999, qPrintable(comparison.summary()));
+        // The loop's crossing (w = 2) is the only interior: some pixels, far from all.
+        QVERIFY(comparison.coveredPixels > 0);
+        window->close();
+    }
+    auto window = showWindow(settings);
+    QCOMPARE(window->renderWorkspace()->panel()->renderChoices().trim.rule, StaticRule::absAtLeast(2));
+    QCOMPARE(child<QSpinBox>(window.get(), "ruleThresholdSpinBox")->value(), 2);
 }
 
 // Opened files enter Open Recent; a dropped file opens; a recent file that vanished is
