@@ -7,6 +7,7 @@
 #include "app/bench_scenes.h"
 #include "ui/render_panel/render_choices.h"
 #include "app/render_options.h"
+#include "core/trim/static_rule.h"
 
 #include <QCommandLineParser>
 #include <QFileInfo>
@@ -32,6 +33,10 @@ void addBenchOptions(QCommandLineParser& parser)
         "Measures every multi-fragment method on a fixed camera path over named scenes and checks each frame "
         "against the exact CPU reference. Prints a table (and --json); exits 1 if a method disagrees with the "
         "reference beyond the render tests' threshold, never because of speed.");
+    parser.addPositionalArgument("sources", "Optional mesh files or demo:NAME forming one more scene (object ids "
+                                            "across them in order), drawn with --rule, --csg, --object-rule and "
+                                            "--object-transform; alone unless --scenes is given.",
+                                 "[SOURCE...]");
     parser.addOptions({
         {"scenes", QStringLiteral("Comma-separated scenes. Default: %1. Also any demo:NAME or mesh file.").arg(catalogText()),
          "a,b"},
@@ -48,6 +53,13 @@ void addBenchOptions(QCommandLineParser& parser)
                   "measured again with the spin-lock). Default: auto.",
          "auto|spin|both"},
         {"json", "Also write the results as JSON.", "file.json"},
+        {"rule", QStringLiteral("Rule of the scene of the positional sources: %1, or none. Default: "
+                                "alternating-border.")
+                     .arg(QString::fromStdString(staticRuleNamesHelp())),
+         "rule"},
+        {"csg", "CSG over the objects of the positional sources, as trimlab render --csg.", "expression"},
+        {"object-rule", "Rule of one object of the positional sources, e.g. 1=parity. Repeatable.", "id=rule"},
+        {"object-transform", objectTransformHelp(), "id=tx,ty,tz[,rx,ry,rz[,s]]"},
         {"data", "The shared data folder with the catalog's meshes. Default: $TRIMLAB_DATA_DIR or ../shared/data "
                  "beside the source tree.",
          "dir"},
@@ -161,6 +173,39 @@ std::optional<QString> parseLists(const QCommandLineParser& parser, BenchOptions
     return std::nullopt;
 }
 
+// The positional sources and the options that draw their scene.
+std::optional<QString> parseComposedScene(const QCommandLineParser& parser, BenchOptions& options)
+{
+    const QStringList positional = parser.positionalArguments();
+    if (positional.isEmpty()) {
+        for (const char* name : {"rule", "csg", "object-rule", "object-transform"})
+            if (parser.isSet(name))
+                return QStringLiteral("--%1 applies to the scene of the positional sources (trimlab bench A.obj B.obj "
+                                      "--%1 ...); the --scenes keep their own settings")
+                    .arg(QLatin1String(name));
+        return std::nullopt;
+    }
+    if (auto e = takeSources(positional, QStringLiteral("bench"), options.sources))
+        return e;
+    TrimSettings& trim = options.composedTrim;
+    trim.rule = StaticRule::AlternatingBorder;
+    if (parser.isSet("rule"))
+        if (auto e = parseRuleOption(parser.value("rule"), trim))
+            return e;
+    if (parser.isSet("csg"))
+        if (auto e = parseCsgOption(parser.value("csg"), trim.csg))
+            return e;
+    for (const QString& text : parser.values("object-rule"))
+        if (auto e = parseObjectRuleOption(text, trim.csg))
+            return e;
+    for (const QString& text : parser.values("object-transform"))
+        if (auto e = parseObjectTransform(text, options.objectTransforms))
+            return e;
+    if (trim.csg.enabled() && !trim.trimEnabled)
+        return QStringLiteral("--rule none has no interior: --csg needs a rule");
+    return std::nullopt;
+}
+
 } // namespace
 
 std::variant<BenchOptions, QString> parseBenchOptions(const QStringList& arguments, QString* helpText)
@@ -174,10 +219,9 @@ std::variant<BenchOptions, QString> parseBenchOptions(const QStringList& argumen
             *helpText = verbHelpText(parser, QStringLiteral("bench"));
         return QString();
     }
-    if (!parser.positionalArguments().isEmpty())
-        return QStringLiteral("bench takes no positional arguments (got '%1'); use --scenes")
-            .arg(parser.positionalArguments().first());
     BenchOptions options;
+    if (auto e = parseComposedScene(parser, options))
+        return *e;
     options.jsonOutput = parser.value("json");
     if (auto e = checkOutputPaths({{"--json", options.jsonOutput}}))
         return *e;

@@ -3,12 +3,15 @@
 /// The options of `trimlab bench`, parsed before any scene is loaded or any OpenGL context
 /// exists, so that bad arguments fail fast with one line (exit code 2).
 
+#include "app/scene_composition.h"
 #include "render/mfr/fragment_method.h"
+#include "core/trim/trim_settings.h"
 
 #include <QSize>
 #include <QString>
 #include <QStringList>
 
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -36,6 +39,12 @@ struct BenchOptions {
     BenchLocks locks = BenchLocks::Auto;
     QString jsonOutput;      ///< --json FILE
     QString dataDirectory;   ///< --data DIR: where the catalog's mesh files are
+    /// Positional sources: one more scene made of them (object ids across the sources in
+    /// order), measured after the --scenes (alone when --scenes is not given), drawn with
+    /// `composedTrim` (--rule, --csg, --object-rule) and `objectTransforms`.
+    std::vector<std::string> sources;
+    TrimSettings composedTrim;
+    std::vector<ObjectTransformOption> objectTransforms;
 };
 
 /// Parses the arguments after "bench". Returns the options or a one-line error;

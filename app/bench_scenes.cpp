@@ -210,4 +210,25 @@ std::optional<BenchScene> loadBenchScene(const std::string& name, const std::fil
     return scene;
 }
 
+BenchScene composeBenchScene(const std::vector<std::string>& sources,
+                              const std::vector<ObjectTransformOption>& transforms, const TrimSettings& trim)
+{
+    BenchScene scene{{}, loadScenes(sources), trim};
+    scene.name = scene.loaded.displayName;
+    // A scene project's CSG and object rules, where --csg and --object-rule gave none.
+    CsgSettings& csg = scene.settings.csg;
+    for (std::size_t id = 0; id < csg.objectRules.size(); ++id)
+        if (!csg.objectRules[id])
+            csg.objectRules[id] = scene.loaded.savedCsg.objectRules[id];
+    if (!csg.enabled() && scene.settings.trimEnabled)
+        csg.expression = scene.loaded.savedCsg.expression;
+    std::optional<QString> error = applyObjectTransforms(transforms, scene.loaded.scene);
+    if (!error)
+        error = checkObjectIds(trim.csg, scene.loaded.scene.objects.size());
+    if (error)
+        throw std::invalid_argument(error->toStdString());
+    scene.settings.trimEnabled = trim.trimEnabled && scene.loaded.trimmable();
+    return scene;
+}
+
 } // namespace trimlab::app

@@ -16,6 +16,7 @@
 /// file only skips its scene. Any other demo:NAME or mesh file is accepted too and drawn
 /// with the alternating border rule (untrimmed when the mesh is not a closed surface).
 
+#include "app/scene_composition.h"
 #include "core/catalog/scene_source.h"
 #include "core/trim/trim_settings.h"
 
@@ -47,5 +48,13 @@ struct BenchScene {
 [[nodiscard]] std::optional<BenchScene> loadBenchScene(const std::string& name,
                                                        const std::filesystem::path& dataDirectory,
                                                        std::string* skipReason);
+
+/// The scene of `trimlab bench A.obj B.obj ...`: the sources as one scene (loadScenes),
+/// placed by `transforms` and drawn with `trim` (trimming off when an object is not a
+/// closed surface; a scene project's saved CSG and object rules where `trim` has none). Throws what loadScenes throws, and std::invalid_argument naming the
+/// option when a transform, --csg or --object-rule names an object the scene lacks.
+[[nodiscard]] BenchScene composeBenchScene(const std::vector<std::string>& sources,
+                                           const std::vector<ObjectTransformOption>& transforms,
+                                           const TrimSettings& trim);
 
 } // namespace trimlab::app

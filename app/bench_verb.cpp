@@ -40,7 +40,7 @@ BenchHeader makeHeader(const BenchOptions& options, const render::TrimRenderer& 
 
 QStringList sceneNames(const BenchOptions& options)
 {
-    if (!options.scenes.isEmpty())
+    if (!options.scenes.isEmpty() || !options.sources.empty())
         return options.scenes;
     QStringList names;
     for (const std::string& name : benchSceneNames())
@@ -49,14 +49,15 @@ QStringList sceneNames(const BenchOptions& options)
 }
 
 /// Loads and measures one scene; false when it could not be loaded (a missing catalog
-/// file is a skip, not a failure).
-bool measureNamedScene(const QString& name, const std::filesystem::path& data, BenchRunner& runner,
-                       BenchReport& report)
+/// file is a skip, not a failure). `load` returns the scene, or nullopt with the skip
+/// reason.
+template<typename Load>
+bool measureScene(const QString& name, Load&& load, BenchRunner& runner, BenchReport& report)
 {
     std::string skipReason;
     std::optional<BenchScene> scene;
     try {
-        scene = loadBenchScene(name.toStdString(), data, &skipReason);
+        scene = load(&skipReason);
     } catch (const std::exception& e) {
         printError(QStringLiteral("%1: %2").arg(name, QString::fromUtf8(e.what())));
         report.skipped.push_back({name, QStringLiteral("could not be loaded: %1").arg(QString::fromUtf8(e.what()))});
@@ -67,7 +68,7 @@ bool measureNamedScene(const QString& name, const std::filesystem::path& data, B
         report.skipped.push_back({name, QString::fromStdString(skipReason)});
         return true;
     }
-    if (!scene->settings.trimEnabled)
+    if (!scene->settings.trimEnabled && !scene->loaded.trimmable())
         printNote(QStringLiteral("%1 renders untrimmed: %2").arg(name, QString::fromStdString(scene->loaded.trimUnavailableReason())));
     report.header.scenes << name;
     runner.measureScene(*scene, report);
@@ -87,7 +88,20 @@ int runBench(const BenchOptions& options)
     BenchRunner runner(renderer, options);
     bool allLoaded = true;
     for (const QString& name : sceneNames(options))
-        allLoaded = measureNamedScene(name, data, runner, report) && allLoaded;
+        allLoaded = measureScene(
+                        name, [&](std::string* skip) { return loadBenchScene(name.toStdString(), data, skip); },
+                        runner, report) &&
+                    allLoaded;
+    if (!options.sources.empty()) {
+        QStringList sources;
+        for (const std::string& source : options.sources)
+            sources << QString::fromStdString(source);
+        const auto compose = [&](std::string*) {
+            return std::optional<BenchScene>(
+                composeBenchScene(options.sources, options.objectTransforms, options.composedTrim));
+        };
+        allLoaded = measureScene(sources.join(QStringLiteral(" + ")), compose, runner, report) && allLoaded;
+    }
     printLine(QString());
     for (const QString& line : benchTableLines(report))
         printLine(line);

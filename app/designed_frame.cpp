@@ -39,7 +39,7 @@ int chosenFrame(const RenderOptions& options, int lastFrame, const std::string& 
 
 DesignedFrame replayScript(const RenderOptions& options)
 {
-    const LoadedScene loaded = loadScene(options.source);
+    const LoadedScene loaded = loadScene(options.sources.front());
     const SceneObject& object = designedObject(loaded);
     const std::filesystem::path scriptPath = options.script.toStdString();
     const timeline::StrokeScript script = timeline::loadStrokeScript(scriptPath);
@@ -57,7 +57,7 @@ DesignedFrame replayScript(const RenderOptions& options)
 
 DesignedFrame loadProjectFile(const RenderOptions& options)
 {
-    const std::filesystem::path path = options.source;
+    const std::filesystem::path path = options.sources.front();
     DesignedFrame design{timeline::loadProject(path), 0, glm::dmat4(1.0), path.filename().string()};
     design.frame = chosenFrame(options, design.timeline.frameCount() - 1, design.displayName);
     return design;
@@ -66,9 +66,9 @@ DesignedFrame loadProjectFile(const RenderOptions& options)
 // A built-in surface demo with a history of control-point edits (surface_scenes.h).
 std::optional<DesignedFrame> demoHistory(const RenderOptions& options)
 {
-    if (!isDemoSource(options.source))
+    if (!isDemoSource(options.sources.front()))
         return std::nullopt;
-    const std::string name = options.source.substr(kDemoPrefix.size());
+    const std::string name = options.sources.front().substr(kDemoPrefix.size());
     std::optional<timeline::Timeline> history = surfaceDemoHistory(name);
     if (!history)
         return std::nullopt;

@@ -4,17 +4,21 @@
 
 #include "app/cli_messages.h"
 #include "app/option_values.h"
+#include "app/scene_composition.h"
 
 #include "render/mfr/fragment_method.h"
 #include "ui/render_panel/render_choices.h"
 #include "core/catalog/scene_source.h"
 #include "core/catalog/surface_scenes.h"
+#include "core/timeline/project_file.h"
 #include "core/trim/clip_plane.h"
 #include "core/trim/clip_set.h"
 #include "core/trim/csg_expression.h"
 
 #include <QCommandLineParser>
 #include <QRegularExpression>
+
+#include <algorithm>
 
 namespace trimlab::app {
 
@@ -23,22 +27,27 @@ namespace {
 void addRenderOptions(QCommandLineParser& parser)
 {
     parser.setApplicationDescription(
-        "Renders a mesh file or a built-in demo (demo:pushed-sphere, demo:crossing-loop, ...) trimmed by a static rule, "
+        "Renders mesh files or built-in demos (demo:pushed-sphere, demo:crossing-loop, ...) trimmed by a static rule, "
         "or a frame of a design (a stroke script replayed on the mesh, or a .trimlab project) under the dynamic rules.");
-    parser.addPositionalArgument("source", "A mesh file (.obj .ply .stl .off .gltf .glb, optionally .gz), demo:NAME or a "
-                                           ".trimlab project.");
+    parser.addPositionalArgument("sources", "One or more mesh files (.obj .ply .stl .off .gltf .glb, optionally .gz) "
+                                            "or demo:NAME, one scene whose object ids count across them in order; or "
+                                            "one .trimlab project.",
+                                 "SOURCE...");
     parser.addOptions({
-        {"rule", "parity | positive-index | alternating-border | none (no trimming). Default: alternating-border.", "rule"},
+        {"rule", "parity | positive-index | alternating-border | nonzero | negative | 'w>=K' | '|w|>=K' (quoted; "
+                 "or at-least-K, abs-at-least-K) | none (no trimming). Default: alternating-border.",
+         "rule"},
         {"clip", "Clipping plane a,b,c,d keeping a*x+b*y+c*z+d >= 0 (world space). Repeat for up to 6 planes "
                  "(e.g. a clipping box); together they keep the points every plane keeps.", "a,b,c,d"},
         {"cap", "Cap the cut: where a clipping plane cuts into the solid (under the rule, or the CSG result), show "
                 "the plane there, lit flat and cross-hatched in world space. Needs --clip."},
         {"cap-pattern", "Pattern of the caps: hatched, striped or solid. Default: hatched.", "name"},
-        {"csg", "CSG of the scene's objects (ids 0-7 in file/demo order): | union, & intersection, - difference, "
+        {"csg", "CSG of the scene's objects (ids 0-7 in source order): | union, & intersection, - difference, "
                 "parentheses, e.g. \"0 | (1 & 2)\" or \"(0 | 1) - 2\". Each object is classified by its own rule "
                 "(--object-rule, else --rule). Buffer methods only.", "expression"},
         {"object-rule", "Rule of one object for --csg and collision highlighting, e.g. 0=parity. Repeatable.",
          "id=rule"},
+        {"object-transform", objectTransformHelp(), "id=tx,ty,tz[,rx,ry,rz[,s]]"},
         {"highlight", "Tint shown fragments: collisions (inside another object, or where an object overlaps "
                       "itself) and/or coplanar (groups of fragments at equal depth, by group size); comma-separated. "
                       "Buffer methods only.", "what"},
@@ -84,15 +93,7 @@ void addRenderOptions(QCommandLineParser& parser)
 std::optional<QString> parseRule(const QString& text, RenderOptions& options)
 {
     options.ruleGiven = true;
-    if (text == QLatin1String("none")) {
-        options.trim.trimEnabled = false;
-        return std::nullopt;
-    }
-    const std::optional<StaticRule> rule = parseStaticRule(text.toStdString());
-    if (!rule)
-        return QStringLiteral("unknown --rule '%1' (use parity, positive-index, alternating-border or none)").arg(text);
-    options.trim.rule = *rule;
-    return std::nullopt;
+    return parseRuleOption(text, options.trim);
 }
 
 std::optional<QString> parseGeometryOptions(const QCommandLineParser& parser, RenderOptions& options)
@@ -134,6 +135,13 @@ std::optional<QString> parseMethodOptions(const QCommandLineParser& parser, Rend
 std::optional<QString> parseDesignOptions(const QCommandLineParser& parser, RenderOptions& options)
 {
     options.script = parser.value("script");
+    if (options.sources.size() > 1 &&
+        (!options.script.isEmpty() || std::any_of(options.sources.begin(), options.sources.end(), isDesignSource)))
+        return QStringLiteral("--script, .trimlab projects and demos with a history take exactly one source; several "
+                              "sources make a scene of meshes");
+    if (options.designed() && !options.objectTransforms.empty())
+        return QStringLiteral("--object-transform places the objects of mesh sources; a design keeps its own "
+                              "placement");
     if (parser.isSet("frame")) {
         int frame = 0;
         if (auto e = parseIntegerOption("frame", parser.value("frame"), 0, 1000000, frame))
@@ -159,23 +167,6 @@ std::optional<QString> parseDesignOptions(const QCommandLineParser& parser, Rend
     return std::nullopt;
 }
 
-std::optional<QString> parseObjectRule(const QString& text, RenderOptions& options)
-{
-    const qsizetype equals = text.indexOf(QLatin1Char('='));
-    bool ok = false;
-    const int id = equals > 0 ? text.left(equals).toInt(&ok) : -1;
-    if (!ok || id < 0 || id >= kMaxCsgOperands)
-        return QStringLiteral("--object-rule must look like 0=parity with an object id from 0 to %1, got '%2'")
-            .arg(kMaxCsgOperands - 1)
-            .arg(text);
-    const std::optional<StaticRule> rule = parseStaticRule(text.mid(equals + 1).toStdString());
-    if (!rule)
-        return QStringLiteral("--object-rule %1: unknown rule '%2' (use parity, positive-index or alternating-border)")
-            .arg(text, text.mid(equals + 1));
-    options.trim.csg.objectRules[std::size_t(id)] = *rule;
-    return std::nullopt;
-}
-
 // --cap, --csg, --object-rule, --highlight (after --rule and --clip are known).
 std::optional<QString> parseInspectionOptions(const QCommandLineParser& parser, RenderOptions& options)
 {
@@ -188,15 +179,14 @@ std::optional<QString> parseInspectionOptions(const QCommandLineParser& parser, 
             return QStringLiteral("unknown --cap-pattern '%1' (use hatched, striped or solid)").arg(parser.value("cap-pattern"));
         options.trim.cap.pattern = *pattern;
     }
-    if (parser.isSet("csg")) {
-        std::string error;
-        const std::optional<CsgExpression> expression = parseCsgExpression(parser.value("csg").toStdString(), &error);
-        if (!expression)
-            return QStringLiteral("--csg '%1': %2").arg(parser.value("csg"), QString::fromStdString(error));
-        options.trim.csg.expression = *expression;
-    }
+    if (parser.isSet("csg"))
+        if (auto e = parseCsgOption(parser.value("csg"), options.trim.csg))
+            return e;
     for (const QString& text : parser.values("object-rule"))
-        if (auto e = parseObjectRule(text, options))
+        if (auto e = parseObjectRuleOption(text, options.trim.csg))
+            return e;
+    for (const QString& text : parser.values("object-transform"))
+        if (auto e = parseObjectTransform(text, options.objectTransforms))
             return e;
     for (const QString& value : parser.values("highlight")) {
         for (const QString& what : value.split(QLatin1Char(','))) {
@@ -307,10 +297,9 @@ std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& argum
         return QString();
     }
     RenderOptions options;
-    const QStringList positional = parser.positionalArguments();
-    if (positional.size() != 1)
-        return QStringLiteral("render needs exactly one source (a mesh file or demo:NAME); see trimlab render --help");
-    options.source = positional.first().toStdString();
+    if (auto e = takeSources(parser.positionalArguments(), QStringLiteral("render"), options.sources))
+        return *e;
+    options.designSource = options.sources.size() == 1 && isDesignSource(options.sources.front());
     if (!parser.isSet("output"))
         return QStringLiteral("render needs an output image: -o out.png");
     options.output = parser.value("output");
@@ -346,10 +335,17 @@ std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& argum
     return options;
 }
 
+bool isDesignSource(const std::string& source)
+{
+    // A scene project (several objects, no history) renders like any other scene.
+    if (QString::fromStdString(source).endsWith(QLatin1String(".trimlab"), Qt::CaseInsensitive))
+        return !timeline::isSceneProject(source);
+    return isDemoSource(source) && hasSurfaceDemoHistory(std::string_view(source).substr(kDemoPrefix.size()));
+}
+
 bool RenderOptions::designed() const
 {
-    return !script.isEmpty() || QString::fromStdString(source).endsWith(QLatin1String(".trimlab"), Qt::CaseInsensitive) ||
-           (isDemoSource(source) && hasSurfaceDemoHistory(std::string_view(source).substr(kDemoPrefix.size())));
+    return !script.isEmpty() || designSource;
 }
 
 } // namespace trimlab::app

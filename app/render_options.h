@@ -3,6 +3,7 @@
 /// The options of `trimlab render`, parsed without touching the scene or OpenGL so that
 /// bad arguments fail fast with one line.
 
+#include "app/scene_composition.h"
 #include "render/mfr/fragment_method.h"
 #include "core/trim/trim_settings.h"
 #include "core/view/camera.h"
@@ -13,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 namespace trimlab::app {
 
@@ -22,7 +24,13 @@ enum class Backend { KPlus, Reference };
 enum class Classification { Dynamic, Static };
 
 struct RenderOptions {
-    std::string source;         ///< a mesh file or "demo:NAME"
+    /// Mesh files or "demo:NAME", one scene (loadScenes: object ids count across them), or
+    /// one .trimlab project.
+    std::vector<std::string> sources;
+    /// The one source is a design on its own (isDesignSource), looked at once.
+    bool designSource = false;
+    /// --object-transform: placements of objects of mesh sources.
+    std::vector<ObjectTransformOption> objectTransforms;
     /// Rule (or trimming off), clip planes (--clip, repeated), capping (--cap), CSG
     /// (--csg, --object-rule) and highlights (--highlight).
     TrimSettings trim;
@@ -46,9 +54,13 @@ struct RenderOptions {
     /// classified by --rule) or --rule applied statically to the frame.
     Classification classification = Classification::Dynamic;
 
-    /// The source is a design: a stroke script was given or the source is a project.
+    /// The source is a design: a stroke script was given, or the one source is a project or
+    /// a demo with a history.
     [[nodiscard]] bool designed() const;
 };
+
+/// A source that is a design on its own: a .trimlab project or a demo with a history.
+[[nodiscard]] bool isDesignSource(const std::string& source);
 
 /// Parses an integer option --`name` from `text` into `out`, which must lie in [lo, hi];
 /// returns the one-line error text otherwise.

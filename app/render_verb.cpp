@@ -200,7 +200,7 @@ bool resolveTrimAvailability(const LoadedScene& loaded, RenderOptions& options)
     const QString reason = QString::fromStdString(loaded.trimUnavailableReason());
     if (options.ruleGiven) {
         printError(QStringLiteral("--rule %1 is unavailable for %2: %3")
-                       .arg(QString::fromLatin1(ruleName(options.trim.rule).data()),
+                       .arg(QString::fromStdString(ruleName(options.trim.rule)),
                             QString::fromStdString(loaded.displayName), reason));
         return false;
     }
@@ -227,7 +227,7 @@ void writeOutputs(const RenderOutcome& outcome, const RenderOptions& options, co
 
 QString classificationText(const RenderOptions& options, const timeline::Timeline& timeline, int frame)
 {
-    const QString base = QString::fromLatin1(ruleName(options.trim.rule).data());
+    const QString base = QString::fromStdString(ruleName(options.trim.rule));
     if (options.classification == Classification::Static)
         return options.trim.trimEnabled ? base + QStringLiteral(" (static)") : QStringLiteral("no trimming");
     QStringList rules;
@@ -273,22 +273,16 @@ int renderDesigned(const RenderOptions& options)
 }
 
 // The cap pattern's spacing from the scene's size (1/25 of its bounding radius), and the
-// CSG expression checked against the scene's objects. False (after printing why) when the
-// expression names an object the scene lacks.
+// CSG expression and the object rules checked against the scene's objects. False (after
+// printing why) when they name an object the scene lacks.
 bool fitInspection(const Scene& scene, RenderOptions& options)
 {
     const double radius = scene.worldBounds().radius();
     if (radius > 0.0)
         options.trim.cap.spacing = radius / 25.0;
-    if (options.trim.csg.enabled()) {
-        const int maxId = csgMaxObjectId(options.trim.csg.expression);
-        if (maxId >= int(scene.objects.size())) {
-            printError(QStringLiteral("--csg refers to object %1, but the scene has %2 object(s) (ids 0 to %3)")
-                           .arg(maxId)
-                           .arg(scene.objects.size())
-                           .arg(int(scene.objects.size()) - 1));
-            return false;
-        }
+    if (const std::optional<QString> error = checkObjectIds(options.trim.csg, scene.objects.size())) {
+        printError(*error);
+        return false;
     }
     return true;
 }
@@ -296,7 +290,7 @@ bool fitInspection(const Scene& scene, RenderOptions& options)
 // "alternating-border, CSG 0 | 1, capped": the classification and inspection settings.
 QString settingsText(const TrimSettings& trim)
 {
-    QString text = trim.trimEnabled ? QString::fromLatin1(ruleName(trim.rule).data()) : QStringLiteral("no trimming");
+    QString text = trim.trimEnabled ? QString::fromStdString(ruleName(trim.rule)) : QStringLiteral("no trimming");
     if (trim.csg.enabled())
         text += QStringLiteral(", CSG %1").arg(QString::fromStdString(formatCsgExpression(trim.csg.expression)));
     if (trim.clipSet().enabledCount() > 1)
@@ -327,11 +321,43 @@ QString inspectionText(const TrimSettings& trim, const TrimImage& image)
     return parts.isEmpty() ? QString() : QStringLiteral("; ") + parts.join(QStringLiteral(", "));
 }
 
+// A scene project's saved rule, CSG and object rules, where the command line did not give
+// its own. False (after printing why) when the saved CSG needs a method it did not choose.
+bool adoptSavedSettings(const LoadedScene& loaded, RenderOptions& options)
+{
+    if (!options.ruleGiven && loaded.savedRule)
+        options.trim.rule = *loaded.savedRule;
+    CsgSettings& csg = options.trim.csg;
+    for (std::size_t id = 0; id < csg.objectRules.size(); ++id)
+        if (!csg.objectRules[id])
+            csg.objectRules[id] = loaded.savedCsg.objectRules[id];
+    // --rule none has no interior to combine: the saved CSG stays unused.
+    if (csg.enabled() || !loaded.savedCsg.enabled() || !options.trim.trimEnabled)
+        return true;
+    csg.expression = loaded.savedCsg.expression;
+    const render::MethodInfo& method = render::methodInfo(options.method);
+    if (options.backend == Backend::KPlus && !method.inspection) {
+        printError(QStringLiteral("%1 saved the CSG %2, which --method %3 cannot render; use a buffer method such as "
+                                  "kplus-array or abuffer-linked-list")
+                       .arg(QString::fromStdString(loaded.displayName),
+                            QString::fromStdString(formatCsgExpression(csg.expression)),
+                            QString::fromLatin1(method.id.data(), qsizetype(method.id.size()))));
+        return false;
+    }
+    return true;
+}
+
 int renderLoaded(RenderOptions options)
 {
     if (options.designed())
         return renderDesigned(options);
-    const LoadedScene loaded = loadScene(options.source);
+    LoadedScene loaded = loadScenes(options.sources);
+    if (const std::optional<QString> error = applyObjectTransforms(options.objectTransforms, loaded.scene)) {
+        printError(*error);
+        return 2;
+    }
+    if (!adoptSavedSettings(loaded, options))
+        return 2;
     if (!resolveTrimAvailability(loaded, options))
         return 1;
     if (!fitInspection(loaded.scene, options))

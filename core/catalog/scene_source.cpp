@@ -5,7 +5,10 @@
 #include "core/catalog/demo_scenes.h"
 #include "core/surface/nurbs_json.h"
 #include "core/catalog/surface_scenes.h"
+#include "core/timeline/frame_chain.h"
+#include "core/timeline/project_file.h"
 
+#include <cctype>
 #include <filesystem>
 #include <stdexcept>
 
@@ -23,6 +26,37 @@ Scene demoScene(std::string_view name)
     for (const DemoEntry& demo : builtInDemos())
         known += (known.empty() ? "" : ", ") + demo.source;
     throw std::invalid_argument("Unknown demo scene '" + std::string(name) + "'. Known demos: " + known + ".");
+}
+
+bool isProjectFileName(const std::string& path)
+{
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension)
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".trimlab";
+}
+
+// A project as a scene: a scene project's objects and settings, or a history's last frame.
+LoadedScene projectFileScene(const std::string& path, const std::string& displayName)
+{
+    timeline::Project project;
+    try {
+        project = timeline::readProject(path);
+    } catch (const timeline::ProjectFileError& error) {
+        // One error type for every file a scene is read from (the callers catch it).
+        throw MeshLoadError(error.file(), error.reason(), MeshErrorLocation{0, error.where()});
+    }
+    if (project.scene)
+        return projectSceneLoaded(*project.scene, project.extras.staticRule, path, displayName);
+    LoadedScene loaded;
+    loaded.source = path;
+    loaded.displayName = displayName;
+    loaded.scene = timeline::frameScene(project.timeline, project.timeline.frameCount() - 1, glm::dmat4(1.0),
+                                        displayName);
+    loaded.savedRule = project.extras.staticRule;
+    for (const SceneObject& object : loaded.scene.objects)
+        loaded.reports.push_back(validateMesh(object.mesh));
+    return loaded;
 }
 
 Scene fileScene(const std::string& path)
@@ -85,6 +119,8 @@ LoadedScene loadScene(const std::string& source)
     if (isDemoSource(source)) {
         loaded.displayName = source.substr(kDemoPrefix.size());
         loaded.scene = demoScene(loaded.displayName);
+    } else if (isProjectFileName(source)) {
+        return projectFileScene(source, std::filesystem::path(source).filename().string());
     } else {
         loaded.displayName = std::filesystem::path(source).filename().string();
         loaded.scene = fileScene(source);
@@ -92,6 +128,48 @@ LoadedScene loadScene(const std::string& source)
     for (const SceneObject& object : loaded.scene.objects)
         loaded.reports.push_back(validateMesh(object.mesh));
     return loaded;
+}
+
+LoadedScene projectSceneLoaded(const timeline::ProjectScene& scene, const std::optional<StaticRule>& rule,
+                               const std::string& source, const std::string& displayName)
+{
+    LoadedScene loaded;
+    loaded.source = source;
+    loaded.displayName = displayName;
+    loaded.scene.objects = scene.objects;
+    for (const SceneObject& object : loaded.scene.objects)
+        loaded.reports.push_back(validateMesh(object.mesh));
+    loaded.savedCsg = scene.csg;
+    loaded.savedRule = rule;
+    return loaded;
+}
+
+timeline::ProjectScene projectSceneOf(const LoadedScene& loaded, const CsgSettings& csg)
+{
+    return timeline::ProjectScene{loaded.scene.objects, csg};
+}
+
+LoadedScene loadScenes(const std::vector<std::string>& sources)
+{
+    if (sources.empty())
+        throw std::invalid_argument("No scene source given.");
+    LoadedScene all = loadScene(sources.front());
+    for (std::size_t i = 1; i < sources.size(); ++i) {
+        LoadedScene next = loadScene(sources[i]);
+        const std::size_t total = all.scene.objects.size() + next.scene.objects.size();
+        if (total > Scene::maxObjects)
+            throw std::invalid_argument("Too many objects: the sources up to " + sources[i] + " hold " +
+                                        std::to_string(total) + ", a scene holds at most " +
+                                        std::to_string(Scene::maxObjects) + ".");
+        all.displayName += " + " + next.displayName;
+        all.savedCsg = {};
+        all.savedRule.reset();
+        for (SceneObject& object : next.scene.objects)
+            all.scene.objects.push_back(std::move(object));
+        for (MeshValidationReport& report : next.reports)
+            all.reports.push_back(std::move(report));
+    }
+    return all;
 }
 
 } // namespace trimlab

@@ -4,6 +4,8 @@
 #include "core/surface/editable_surface.h"
 #include "core/io/atomic_write.h"
 #include "core/timeline/binary_array.h"
+#include "core/timeline/mesh_json.h"
+#include "core/timeline/scene_json.h"
 #include "core/io/file_bytes.h"
 #include "core/io/json_fields.h"
 #include "core/timeline/stroke_json.h"
@@ -22,15 +24,6 @@ namespace {
 using nlohmann::json;
 
 // ---- writing --------------------------------------------------------------------------
-
-json meshJson(const TriangleMesh& mesh)
-{
-    std::vector<std::uint32_t> indices;
-    indices.reserve(mesh.triangles.size() * 3);
-    for (const glm::uvec3& t : mesh.triangles)
-        indices.insert(indices.end(), {t.x, t.y, t.z});
-    return json{{"positions", positionArrayJson(mesh.positions)}, {"triangles", uint32ArrayJson(indices)}};
-}
 
 json framesJson(const Timeline& timeline)
 {
@@ -74,9 +67,27 @@ json viewJson(const ProjectView& view)
                 {"fovy_degrees", view.fovyDegrees}};
 }
 
+void writeExtras(json& document, const ProjectExtras& extras)
+{
+    if (extras.view)
+        document["view"] = viewJson(*extras.view);
+    if (extras.staticRule)
+        document["static_rule"] = ruleName(*extras.staticRule);
+}
+
+// The rules beyond the thesis's three arrived with version 3.
+bool needsVersion3(const ProjectExtras& extras)
+{
+    if (!extras.staticRule)
+        return false;
+    const StaticRule rule = *extras.staticRule;
+    return !(rule == StaticRule::Parity || rule == StaticRule::PositiveIndex || rule == StaticRule::AlternatingBorder);
+}
+
 // ---- reading --------------------------------------------------------------------------
 
-void checkFormat(const json& document)
+// The document's version, after checking that it is a project this TrimLab reads.
+std::int64_t checkFormat(const json& document)
 {
     if (!document.is_object())
         throw JsonPathError("", "not a TrimLab project (the document is " + jsonTypeText(document) +
@@ -89,22 +100,7 @@ void checkFormat(const json& document)
     if (version > kProjectFormatVersion)
         throw JsonPathError("", "version " + std::to_string(version) + " is newer than this TrimLab (" +
                                     std::to_string(kProjectFormatVersion) + "); update TrimLab to open it");
-}
-
-TriangleMesh readMesh(const json& value, const std::string& path)
-{
-    requireObject(value, path);
-    TriangleMesh mesh;
-    mesh.positions = readPositionArray(requiredField(value, "positions", path), fieldPath(path, "positions"));
-    const std::string trianglesPath = fieldPath(path, "triangles");
-    const std::vector<std::uint32_t> indices = readUint32Array(requiredField(value, "triangles", path), trianglesPath);
-    if (indices.size() % 3 != 0)
-        throw JsonPathError(fieldPath(trianglesPath, "count"), "must be a multiple of 3, not " +
-                                                                   std::to_string(indices.size()));
-    mesh.triangles.resize(indices.size() / 3);
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-        mesh.triangles[t] = {indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]};
-    return mesh;
+    return version;
 }
 
 DynamicRule readRule(const json& value, const std::string& path)
@@ -184,15 +180,21 @@ ProjectExtras readExtras(const json& document)
         const std::string name = stringValue(*rule, "static_rule");
         extras.staticRule = parseStaticRule(name);
         if (!extras.staticRule)
-            throw JsonPathError("static_rule", "unknown static rule '" + name +
-                                                   "' (known: parity, positive-index, alternating-border)");
+            throw JsonPathError("static_rule",
+                                "unknown static rule '" + name + "' (known: " + staticRuleNamesHelp() + ")");
     }
     return extras;
 }
 
 Project readDocument(const json& document)
 {
-    checkFormat(document);
+    const std::int64_t version = checkFormat(document);
+    if (const json* scene = version >= 3 ? optionalField(document, "scene") : nullptr) {
+        Project project;
+        project.scene = readScene(*scene, "scene");
+        project.extras = readExtras(document);
+        return project;
+    }
     TriangleMesh base = readMesh(requiredField(document, "base_mesh", ""), "base_mesh");
     std::vector<DeformationSet> sets = readSets(requiredField(document, "sets", ""), "sets");
     std::vector<Frame> frames = readFrames(requiredField(document, "frames", ""), "frames");
@@ -206,7 +208,7 @@ Project readDocument(const json& document)
         // tessellation: a file where it is not is refused here, not at the first edit.
         if (timeline.surface())
             requireSurfaceMatchesTimeline(EditableSurface(*timeline.surface()), timeline);
-        return Project{std::move(timeline), std::move(extras)};
+        return Project{std::move(timeline), std::move(extras), std::nullopt};
     } catch (const std::invalid_argument& error) {
         throw JsonPathError("", std::string("inconsistent history: ") + error.what());
     } catch (const MemoryBudgetError& error) {
@@ -220,19 +222,27 @@ std::string projectJson(const Timeline& timeline, const ProjectExtras& extras)
 {
     json document = json::object();
     document["format"] = std::string(kProjectFormatName);
-    // Plain mesh histories stay version 1, readable by every TrimLab; only the surface
-    // parts need version 2.
-    document["version"] = timeline.hasSurface() ? kProjectFormatVersion : 1;
+    // Plain mesh histories stay version 1, readable by every TrimLab; the surface parts
+    // need version 2, a rule older TrimLabs do not know version 3.
+    document["version"] = needsVersion3(extras) ? 3 : timeline.hasSurface() ? 2 : 1;
     document["generator"] = "TrimLab";
     if (timeline.surface())
         document["surface"] = surfaceDefinitionJson(*timeline.surface());
     document["base_mesh"] = meshJson(timeline.base());
     document["sets"] = setsJson(timeline);
     document["frames"] = framesJson(timeline);
-    if (extras.view)
-        document["view"] = viewJson(*extras.view);
-    if (extras.staticRule)
-        document["static_rule"] = std::string(ruleName(*extras.staticRule));
+    writeExtras(document, extras);
+    return document.dump(1) + "\n";
+}
+
+std::string sceneProjectJson(const ProjectScene& scene, const ProjectExtras& extras)
+{
+    json document = json::object();
+    document["format"] = std::string(kProjectFormatName);
+    document["version"] = 3;
+    document["generator"] = "TrimLab";
+    document["scene"] = sceneJson(scene);
+    writeExtras(document, extras);
     return document.dump(1) + "\n";
 }
 
@@ -261,6 +271,11 @@ void saveProject(const Timeline& timeline, const std::filesystem::path& path, co
     writeFileAtomically(path, projectJson(timeline, extras));
 }
 
+void saveSceneProject(const ProjectScene& scene, const std::filesystem::path& path, const ProjectExtras& extras)
+{
+    writeFileAtomically(path, sceneProjectJson(scene, extras));
+}
+
 Project readProject(const std::filesystem::path& path)
 {
     std::string bytes;
@@ -272,9 +287,23 @@ Project readProject(const std::filesystem::path& path)
     return parseProject(bytes, path.string());
 }
 
+bool isSceneProject(const std::filesystem::path& path)
+{
+    try {
+        const json document = parseJsonText(readFileBytes(path, kMaxProjectBytes));
+        return checkFormat(document) >= 3 && optionalField(document, "scene") != nullptr;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
 Timeline loadProject(const std::filesystem::path& path)
 {
-    return readProject(path).timeline;
+    Project project = readProject(path);
+    if (project.scene)
+        throw ProjectFileError(path.string(), "scene", "a scene of " + std::to_string(project.scene->objects.size()) +
+                                                           " object(s), not a deformation history");
+    return std::move(project.timeline);
 }
 
 } // namespace trimlab::timeline

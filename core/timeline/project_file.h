@@ -7,6 +7,7 @@
 /// The format is documented in docs/project-format.md.
 
 #include "core/timeline/project_file_error.h"
+#include "core/timeline/project_scene.h"
 #include "core/timeline/timeline.h"
 #include "core/trim/static_rule.h"
 
@@ -22,11 +23,12 @@ namespace trimlab::timeline {
 
 /// The value of the "format" field.
 inline constexpr std::string_view kProjectFormatName = "trimlab-project";
-/// The newest format version this TrimLab reads, and the one it writes for histories of
-/// editable surfaces (version 2 adds "surface" and frames with "control_moves"). Plain
-/// mesh histories are still written as version 1, so older TrimLabs open them; every
-/// version-1 file reads unchanged.
-inline constexpr int kProjectFormatVersion = 2;
+/// The newest format version this TrimLab reads. Version 2 adds editable surfaces
+/// ("surface", frames with "control_moves"); version 3 adds scenes of several objects
+/// ("scene") and the static rules beyond the thesis's three (nonzero, negative, w>=K,
+/// |w|>=K). Each file is written with the lowest version that holds it, so older TrimLabs
+/// keep opening what they can; every older file reads unchanged.
+inline constexpr int kProjectFormatVersion = 3;
 /// The largest project file accepted: 4 GiB.
 inline constexpr std::size_t kMaxProjectBytes = std::size_t(4) << 30;
 
@@ -48,15 +50,22 @@ struct ProjectExtras {
     friend bool operator==(const ProjectExtras&, const ProjectExtras&) = default;
 };
 
-/// Everything a project file holds.
+/// Everything a project file holds: a design history, or (version 3) a scene of objects.
 struct Project {
+    /// The history; empty (no base mesh) for a scene project.
     Timeline timeline;
     ProjectExtras extras;
+    /// Set for a scene project.
+    std::optional<ProjectScene> scene;
 };
 
 /// The project document as UTF-8 JSON text (what saveProject writes).
 /// Throws std::invalid_argument for extras that cannot be stored (a non-finite view).
 [[nodiscard]] std::string projectJson(const Timeline& timeline, const ProjectExtras& extras = {});
+
+/// A scene project document (version 3). Throws std::invalid_argument for a scene or
+/// extras that cannot be stored (scene_json.h says which).
+[[nodiscard]] std::string sceneProjectJson(const ProjectScene& scene, const ProjectExtras& extras = {});
 
 /// Parses a project document. `displayName` names it in errors. Throws ProjectFileError
 /// for every problem: not JSON or not a TrimLab project, truncated, a newer version,
@@ -72,11 +81,20 @@ struct Project {
 /// an existing file at `path` is untouched. Throws std::runtime_error naming the file.
 void saveProject(const Timeline& timeline, const std::filesystem::path& path, const ProjectExtras& extras = {});
 
+/// Writes sceneProjectJson(scene, extras) to `path` atomically, as saveProject.
+void saveSceneProject(const ProjectScene& scene, const std::filesystem::path& path, const ProjectExtras& extras = {});
+
 /// Reads and parses the project at `path` (errors name it as `path.string()`); also
 /// ProjectFileError when it cannot be read, is not a regular file, is empty or is larger
 /// than kMaxProjectBytes.
 [[nodiscard]] Project readProject(const std::filesystem::path& path);
-/// readProject(path).timeline.
+/// True when `path` reads as a project document of version 3 or later with a "scene"
+/// (a quick look at the JSON, no checks of its contents); false for a history and for
+/// anything unreadable, which the full read then reports.
+[[nodiscard]] bool isSceneProject(const std::filesystem::path& path);
+
+/// readProject(path).timeline. Throws ProjectFileError for a scene project (it has no
+/// history), saying so.
 [[nodiscard]] Timeline loadProject(const std::filesystem::path& path);
 
 } // namespace trimlab::timeline

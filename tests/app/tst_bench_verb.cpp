@@ -55,6 +55,7 @@ private slots:
     void missingSharedDataSkipsTheScene();
     void csgGoalSceneSkipsPeelingAndAgrees();
     void spinLocksOnlyMeasuresTheSpinLock();
+    void positionalSourcesMakeOneScene();
 
 private:
     QTemporaryDir m_dir;
@@ -151,6 +152,10 @@ void TestBenchVerb::badArgumentsExitWithTwo_data()
     QTest::newRow("bad repeat") << QStringList{"bench", "--repeat", "0"} << "--repeat";
     QTest::newRow("bad locks") << QStringList{"bench", "--locks", "sometimes"} << "--locks";
     QTest::newRow("bad shared counters") << QStringList{"bench", "--shared-counters", "0"} << "--shared-counters";
+    QTest::newRow("rule without sources") << QStringList{"bench", "--rule", "nonzero"}
+                                          << "--rule applies to the scene of the positional sources";
+    QTest::newRow("bad object transform") << QStringList{"bench", "demo:sphere", "--object-transform", "0=a,b,c"}
+                                          << "is not a finite number";
 }
 
 void TestBenchVerb::badArgumentsExitWithTwo()
@@ -228,6 +233,29 @@ void TestBenchVerb::spinLocksOnlyMeasuresTheSpinLock()
     QCOMPARE(results.size(), 2);
     for (const QJsonValue& value : results)
         QCOMPARE(value.toObject().value("lock").toString(), QStringLiteral("spin-lock"));
+}
+
+// `trimlab bench A B --csg ... --rule ...`: the positional sources are one scene, measured
+// alone (no catalog scenes) with the given rule and CSG, and checked against the reference.
+void TestBenchVerb::positionalSourcesMakeOneScene()
+{
+    const QString json = m_dir.filePath(QStringLiteral("composed.json"));
+    const Run run = runBench({"bench", "demo:pushed-sphere", "demo:sphere", "--object-transform", "1=0,-0.6,0,0,0,0,0.5",
+                              "--csg", "0 - 1", "--rule", "nonzero", "--size", "64x48", "--repeat", "1", "--views", "2",
+                              "--methods", "abuffer-linked-list", "--json", json});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
+    QFile file(json);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonObject report = QJsonDocument::fromJson(file.readAll()).object();
+    const QJsonArray scenes = report.value("header").toObject().value("scenes").toArray();
+    QCOMPARE(scenes.size(), 1);
+    QCOMPARE(scenes.first().toString(), QStringLiteral("demo:pushed-sphere + demo:sphere"));
+    const QJsonArray results = report.value("results").toArray();
+    QCOMPARE(results.size(), 1);
+    const QJsonObject result = results.first().toObject();
+    QCOMPARE(result.value("status").toString(), QStringLiteral("ok"));
+    QVERIFY2(result.value("agreementPercent").toDouble() >= 99.9, qPrintable(run.out));
+    QVERIFY(result.value("comparedPixels").toInt() > 200);
 }
 
 QTEST_GUILESS_MAIN(TestBenchVerb)

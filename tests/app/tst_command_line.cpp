@@ -53,6 +53,7 @@ private slots:
     void badInputsExitWithOne_data();
     void badInputsExitWithOne();
     void infoPrintsTheValidationReport();
+    void infoNumbersTheObjectsOfSeveralSources();
     void helpListsEveryBuiltInDemo();
     void openMeshRendersUntrimmedByDefault();
     void referenceBackendMatchesInProcessReference();
@@ -69,13 +70,15 @@ void TestCommandLine::badArgumentsExitWithTwo_data()
 {
     QTest::addColumn<QStringList>("arguments");
     QTest::addColumn<QString>("message");
-    QTest::newRow("no source") << QStringList{"render", "-o", "x.png"} << "exactly one source";
+    QTest::newRow("no source") << QStringList{"render", "-o", "x.png"} << "at least one source";
     QTest::newRow("no output") << QStringList{"render", "demo:sphere"} << "-o out.png";
     QTest::newRow("bad size") << QStringList{"render", "demo:sphere", "--size", "10", "-o", "x.png"} << "--size";
     QTest::newRow("bad clip") << QStringList{"render", "demo:sphere", "--clip", "1,2", "-o", "x.png"} << "--clip";
     QTest::newRow("zero clip normal") << QStringList{"render", "demo:sphere", "--clip", "0,0,0,1", "-o", "x.png"}
                                       << "must not be zero";
     QTest::newRow("bad rule") << QStringList{"render", "demo:sphere", "--rule", "winding", "-o", "x.png"} << "--rule";
+    QTest::newRow("threshold rule without K")
+        << QStringList{"render", "demo:sphere", "--rule", "w>=0", "-o", "x.png"} << "unknown --rule 'w>=0'";
     QTest::newRow("bad k") << QStringList{"render", "demo:sphere", "--k", "0", "-o", "x.png"} << "--k";
     QTest::newRow("bad camera") << QStringList{"render", "demo:sphere", "--camera", "0,0,3", "-o", "x.png"}
                                 << "--camera";
@@ -87,7 +90,7 @@ void TestCommandLine::badArgumentsExitWithTwo_data()
                                  << "--backend";
     QTest::newRow("unknown option") << QStringList{"render", "demo:sphere", "--frobnicate", "-o", "x.png"}
                                     << "frobnicate";
-    QTest::newRow("info without source") << QStringList{"info"} << "exactly one source";
+    QTest::newRow("info without source") << QStringList{"info"} << "at least one source";
     QTest::newRow("frame without a design") << QStringList{"render", "demo:sphere", "--frame", "1", "-o", "x.png"}
                                             << "--frame and --classification need --script";
     QTest::newRow("bad classification")
@@ -144,6 +147,20 @@ void TestCommandLine::infoPrintsTheValidationReport()
     run = runTrimlab({"info", data("meshes/open_square.obj")});
     QCOMPARE(run.exitCode, 0);
     QVERIFY2(run.out.contains("trim modes: unavailable") && run.out.contains("boundary"), qPrintable(run.out));
+}
+
+// Several sources: one report per object, numbered as --csg counts them, and the scene's
+// world extent after --object-transform (the unit cube [0,1]^3 doubled, moved 10 in x).
+void TestCommandLine::infoNumbersTheObjectsOfSeveralSources()
+{
+    const Run run = runTrimlab({"info", data("meshes/open_square.obj"), data("meshes/cube.obj"), "--object-transform",
+                                "1=10,0,0,0,0,0,2"});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.out.contains("object 0: open_square.obj") && run.out.contains("object 1: cube.obj"),
+             qPrintable(run.out));
+    QVERIFY2(run.out.contains("scene: 2 object(s)") && run.out.contains("(0, 0, 0) - (12, 2, 2)") &&
+                 run.out.contains("trim modes unavailable (Object 'open_square.obj'"),
+             qPrintable(run.out));
 }
 
 // The usage text lists the demos from the scene registry, each one loadable.

@@ -4,12 +4,16 @@
 #include "color_check.h"
 #include "gl_test_context.h"
 #include "ids_png.h"
+#include "plain_obj.h"
 #include "run_trimlab.h"
 #include "trim_comparison.h"
 
 #include "core/io/pfm_image.h"
 #include "core/catalog/scene_source.h"
 #include "core/trim/reference_renderer.h"
+#include "core/timeline/project_file.h"
+#include "core/scene/object_transform.h"
+#include "core/scene/shape_generators.h"
 
 #include <glm/geometric.hpp>
 
@@ -68,6 +72,10 @@ private slots:
     void referenceBackendWritesCapsAndCsg();
     void gpuBackendAgreesWithReference();
     void transparencyColorsAgreeWithReference();
+    void severalSourcesMakeOneScene();
+    void severalSourcesBadIds_data();
+    void severalSourcesBadIds();
+    void sceneProjectRendersWithItsCsg();
 
 private:
     QTemporaryDir m_dir;
@@ -223,6 +231,116 @@ void TestInspectCli::transparencyColorsAgreeWithReference()
     qInfo("%s", qPrintable(colors.summary()));
     const auto violation = test::colorViolation(colors, image, reference.color, "cli-xray", 0.999, 1000);
     QVERIFY2(!violation, violation ? qPrintable(*violation) : "");
+}
+
+// `trimlab render A B --object-transform 1=... --csg "0 - 1" --rule nonzero`: the two
+// sources are objects 0 and 1 of one scene; object 1 is moved and shrunk; the GPU's ids
+// agree with the in-process reference of the same composed scene, and nonzero keeps the
+// pushed sphere's finger below the sphere (w = -1), which the difference leaves alone.
+void TestInspectCli::severalSourcesMakeOneScene()
+{
+    TRIMLAB_SKIP_WITHOUT_GL();
+    const QString ball = m_dir.filePath("ball.obj");
+    QVERIFY(test::writePlainObj(makeIcosphere(glm::dvec3(0.0), 1.0, 3), ball));
+    const QString ids = m_dir.filePath("two-ids.png");
+    const Run run = runTrimlab({"render", "demo:pushed-sphere", ball, "--object-transform", "1=0.6,0.2,0,0,45,0,0.7",
+                                "--csg", "0 - 1", "--rule", "nonzero", "--method", "abuffer-linked-list", "--size",
+                                "160x120", "--ids", ids, "-o", m_dir.filePath("two.png")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains("pushed-sphere + ball.obj") && run.out.contains("nonzero, CSG 0 - 1"),
+             qPrintable(run.out));
+
+    LoadedScene loaded = loadScenes({"demo:pushed-sphere", ball.toStdString()});
+    QCOMPARE(loaded.scene.objects.size(), std::size_t(2));
+    ObjectTransform placed;
+    placed.translation = {0.6, 0.2, 0.0};
+    placed.rotationDegrees = {0.0, 45.0, 0.0};
+    placed.scale = 0.7;
+    loaded.scene.objects[1].modelMatrix = placed.modelMatrix();
+    TrimSettings settings;
+    settings.rule = StaticRule::Nonzero;
+    settings.csg.expression = parseCsgExpression("0 - 1", nullptr).value();
+    const Camera camera = fitCamera(loaded.scene.worldBounds(), double(kWidth) / kHeight);
+    const ReferenceResult reference = ReferenceRenderer(loaded.scene).render(camera, kWidth, kHeight, settings);
+    const test::TrimComparison comparison =
+        test::compareTrimImages(decodeIdsPng(QImage(ids)), idsOnly(reference.trim), reference.diagnostics);
+    qInfo("%s", qPrintable(comparison.summary()));
+    QVERIFY(comparison.coveredPixels > 2000);
+    QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05,
+             qPrintable(comparison.summary()));
+    // The ball (object 1) bites into the sphere: some shown pixels are its inner faces.
+    int ballPixels = 0;
+    for (const TrimPixel& p : reference.trim.pixels)
+        ballPixels += p.covered() && p.objectId == 1 ? 1 : 0;
+    QVERIFY2(ballPixels > 100, qPrintable(QString::number(ballPixels)));
+}
+
+void TestInspectCli::severalSourcesBadIds_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+    const QStringList two = {"render", "demo:sphere", "demo:pushed-sphere", "--backend", "reference", "-o", "x.png"};
+    QTest::newRow("transform of a missing object") << two + QStringList{"--object-transform", "2=1,0,0"}
+                                                   << "--object-transform names object 2, but the scene has 2";
+    QTest::newRow("rule of a missing object") << two + QStringList{"--object-rule", "3=parity"}
+                                              << "--object-rule refers to object 3";
+    QTest::newRow("csg of a missing object") << two + QStringList{"--csg", "0 - 2"} << "--csg refers to object 2";
+    QTest::newRow("transform needs 3, 6 or 7 numbers") << two + QStringList{"--object-transform", "1=1,2"}
+                                                       << "3, 6 or 7 numbers";
+    QTest::newRow("transform with a zero scale") << two + QStringList{"--object-transform", "1=0,0,0,0,0,0,0"}
+                                                 << "the scale must be positive";
+    QTest::newRow("project among several sources")
+        << QStringList{"render", "demo:sphere", "a.trimlab", "-o", "x.png"} << "take exactly one source";
+}
+
+void TestInspectCli::severalSourcesBadIds()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    TRIMLAB_VERIFY_ONE_LINE_ERROR(runTrimlab(arguments), 2, message);
+}
+
+// A scene project renders with the CSG, object rules and static rule it saved (the
+// reference backend is the in-process reference: identical ids), and info names its CSG.
+void TestInspectCli::sceneProjectRendersWithItsCsg()
+{
+    timeline::ProjectScene saved;
+    saved.objects.push_back({"body", makeIcosphere(glm::dvec3(0.0), 1.0, 3), glm::dmat4(1.0)});
+    ObjectTransform placed;
+    placed.translation = {0.7, 0.1, 0.2};
+    placed.scale = 0.6;
+    saved.objects.push_back({"bite", makeIcosphere(glm::dvec3(0.0), 1.0, 2), placed.modelMatrix()});
+    saved.csg.expression = parseCsgExpression("0 - 1", nullptr).value();
+    saved.csg.objectRules[1] = StaticRule::Nonzero;
+    timeline::ProjectExtras extras;
+    extras.staticRule = StaticRule::Parity;
+    const QString project = m_dir.filePath("assembly.trimlab");
+    timeline::saveSceneProject(saved, project.toStdString(), extras);
+
+    const QString ids = m_dir.filePath("assembly-ids.png");
+    const Run run = runTrimlab({"render", project, "--backend", "reference", "--size", "160x120", "--ids", ids, "-o",
+                                m_dir.filePath("assembly.png")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains("assembly.trimlab: 160x120, parity, CSG 0 - 1"), qPrintable(run.out));
+    const LoadedScene loaded = loadScene(project.toStdString());
+    TrimSettings settings;
+    settings.rule = StaticRule::Parity;
+    settings.csg = saved.csg;
+    const Camera camera = fitCamera(loaded.scene.worldBounds(), double(kWidth) / kHeight);
+    const ReferenceResult reference = ReferenceRenderer(loaded.scene).render(camera, kWidth, kHeight, settings);
+    const TrimImage fromFile = decodeIdsPng(QImage(ids));
+    int mismatches = 0, bitePixels = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            mismatches += fromFile.at(x, y).primitiveId == reference.trim.at(x, y).primitiveId ? 0 : 1;
+            bitePixels += reference.trim.at(x, y).objectId == 1 ? 1 : 0;
+        }
+    QCOMPARE(mismatches, 0);
+    QVERIFY(bitePixels > 100); // the difference shows the bite's inner faces
+
+    const Run info = runTrimlab({"info", project});
+    QCOMPARE(info.exitCode, 0);
+    QVERIFY2(info.out.contains("object 1: bite") && info.out.contains("saved CSG: 0 - 1"), qPrintable(info.out));
 }
 
 QTEST_MAIN(TestInspectCli)

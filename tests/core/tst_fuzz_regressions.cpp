@@ -404,7 +404,7 @@ const std::vector<std::pair<const char*, const char*>> kBrokenDocuments = {
     {"project_nan_after.trimlab",
      "project_nan_after.trimlab: inconsistent history: frames[0]: the 'after' position of vertex 2 is not finite"},
     {"project_newer_version.trimlab",
-     "project_newer_version.trimlab: version 7 is newer than this TrimLab (2); update TrimLab to open it"},
+     "project_newer_version.trimlab: version 7 is newer than this TrimLab (3); update TrimLab to open it"},
     {"project_not_json.trimlab",
      "project_not_json.trimlab: not a TrimLab project: invalid JSON at line 1, column 1: syntax error while parsing value - invalid literal; last read: 'h'"},
     {"project_radius_zero.trimlab",

@@ -1,5 +1,6 @@
 // .trimlab project files: exact round trips, atomic replacement, and typed errors for
 // damaged files that never leave a half-loaded timeline behind.
+#include "project_load_error.h"
 #include "test_paths.h"
 #include "tst_timeline_fixtures.h"
 
@@ -81,15 +82,9 @@ ProjectExtras someExtras()
     return extras;
 }
 
-// The error a load of `text` throws; fails the test when it loads.
 ProjectFileError loadError(const std::string& text)
 {
-    try {
-        (void)parseProject(text, "damaged.trimlab");
-    } catch (const ProjectFileError& error) {
-        return error;
-    }
-    return ProjectFileError("damaged.trimlab", "", "<loaded without an error>");
+    return test::projectLoadError(text, "damaged.trimlab");
 }
 
 // Replaces the JSON value `"key": <old>` (first occurrence after `after`) by `value`.
@@ -321,7 +316,7 @@ void TestTimelineProject::errorsNameTheProblem_data()
     row("not json", "solid cube\nfacet normal", "", "not a TrimLab project: invalid JSON at line 1");
     row("a glTF file", R"({"asset": {"version": "2.0"}})", "", "not a TrimLab project");
     row("an array", "[1, 2]", "", "not a TrimLab project");
-    row("newer version", replaceValue(good, "version", "7"), "", "version 7 is newer than this TrimLab (2)");
+    row("newer version", replaceValue(good, "version", "7"), "", "version 7 is newer than this TrimLab (3)");
     row("version zero", replaceValue(good, "version", "0"), "version", "must be an integer in [1, ");
     const std::size_t secondRule = good.find("\"rule\"", good.find("\"rule\"", good.find("\"sets\"")) + 1);
     row("unknown rule", replaceValue(good, "rule", "\"foo\"", secondRule), "sets[1].rule", "unknown rule 'foo'");

@@ -124,13 +124,17 @@ void DesignWorkspace::addFileActions(QMenu* file)
                           &HistoryExports::showExportGltfDialog);
     QAction* script = file->addAction(tr("Save Stroke &Script…"), m_exports, &HistoryExports::showSaveScriptDialog);
     QAction* replay = file->addAction(tr("Re&play Stroke Script…"), m_exports, &HistoryExports::showReplayDialog);
-    const QList<QAction*> needSession{save, saveAs, exportMenu->menuAction(), script, replay};
-    connect(this, &DesignWorkspace::sessionChanged, this, [this, needSession] {
+    const QList<QAction*> needSession{exportMenu->menuAction(), script, replay};
+    // Save Project saves the history, or without one the scene shown (a scene project).
+    const auto refresh = [this, needSession, save, saveAs] {
         for (QAction* action : needSession)
             action->setEnabled(m_session != nullptr);
-    });
-    for (QAction* action : needSession)
-        action->setEnabled(m_session != nullptr);
+        for (QAction* action : {save, saveAs})
+            action->setEnabled(m_projectFiles->canSave());
+    };
+    connect(this, &DesignWorkspace::sessionChanged, this, refresh);
+    connect(m_projectFiles, &ProjectFiles::saveableChanged, this, refresh);
+    refresh();
 }
 
 void DesignWorkspace::connectParts()

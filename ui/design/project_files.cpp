@@ -112,15 +112,31 @@ void ProjectFiles::closeProgress()
     m_progress.clear();
 }
 
-bool ProjectFiles::save()
+void ProjectFiles::sceneShown(const QString& path)
+{
+    m_scenePath = path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath();
+    emit saveableChanged();
+}
+
+bool ProjectFiles::canSave() const
+{
+    return m_workspace.session() || (m_sceneSource && m_sceneSource().scene);
+}
+
+QString ProjectFiles::currentPath() const
 {
     const DesignSession* session = m_workspace.session();
-    if (!session)
+    return session ? session->projectPath() : m_scenePath;
+}
+
+bool ProjectFiles::save()
+{
+    if (!canSave())
         return false;
-    if (session->projectPath().isEmpty())
+    if (currentPath().isEmpty())
         return saveAs();
     QString error;
-    if (saveTo(session->projectPath(), &error))
+    if (saveTo(currentPath(), &error))
         return true;
     warnNotSaved(m_window, error);
     return false;
@@ -128,12 +144,11 @@ bool ProjectFiles::save()
 
 bool ProjectFiles::saveAs()
 {
-    const DesignSession* session = m_workspace.session();
-    if (!session)
+    if (!canSave())
         return false;
-    const QString suggested = session->projectPath().isEmpty()
+    const QString suggested = currentPath().isEmpty()
                                   ? loadLastDirectory(m_settings) + QStringLiteral("/untitled.") + QLatin1String(kSuffix)
-                                  : session->projectPath();
+                                  : currentPath();
     QString path = QFileDialog::getSaveFileName(m_window, tr("Save Project As"), suggested, dialogFilter());
     if (path.isEmpty())
         return false;
@@ -150,15 +165,13 @@ bool ProjectFiles::saveAs()
 bool ProjectFiles::saveTo(const QString& path, QString* error)
 {
     DesignSession* session = m_workspace.session();
+    if (!session)
+        return saveSceneTo(path, error);
     QString reason;
-    if (!session) {
-        reason = tr("There is no deformation history to save.");
-    } else {
-        try {
-            timeline::saveProject(session->timeline(), path.toStdString(), m_extras());
-        } catch (const std::exception& e) {
-            reason = QString::fromStdString(e.what());
-        }
+    try {
+        timeline::saveProject(session->timeline(), path.toStdString(), m_extras());
+    } catch (const std::exception& e) {
+        reason = QString::fromStdString(e.what());
     }
     if (error)
         *error = reason;
@@ -167,6 +180,30 @@ bool ProjectFiles::saveTo(const QString& path, QString* error)
     session->setProjectPath(QFileInfo(path).absoluteFilePath());
     session->undoStack()->setClean();
     emit saved(session->projectPath());
+    return true;
+}
+
+// The shown scene as a scene project: every object's mesh and placement, the CSG
+// expression and per-object rules, and the extras (camera, static rule).
+bool ProjectFiles::saveSceneTo(const QString& path, QString* error)
+{
+    const ShownScene shown = m_sceneSource ? m_sceneSource() : ShownScene{};
+    QString reason;
+    if (!shown.scene) {
+        reason = tr("There is no deformation history or scene to save.");
+    } else {
+        try {
+            timeline::saveSceneProject(projectSceneOf(*shown.scene, shown.csg), path.toStdString(), m_extras());
+        } catch (const std::exception& e) {
+            reason = QString::fromStdString(e.what());
+        }
+    }
+    if (error)
+        *error = reason;
+    if (!reason.isEmpty())
+        return false;
+    m_scenePath = QFileInfo(path).absoluteFilePath();
+    emit saved(m_scenePath);
     return true;
 }
 

@@ -22,7 +22,7 @@ void InspectScene::reset(std::shared_ptr<const LoadedScene> scene)
     if (m_scene)
         for (const SceneObject& object : m_scene->scene.objects)
             m_transforms.push_back(decomposeObjectTransform(object.modelMatrix));
-    m_csg = CsgSettings{};
+    m_csg = m_scene ? m_scene->savedCsg : CsgSettings{}; // a scene project's CSG, else none
     emit sceneReplaced();
     emit csgChanged();
 }

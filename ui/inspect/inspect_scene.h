@@ -33,8 +33,9 @@ public:
     explicit InspectScene(QObject* parent = nullptr);
     ~InspectScene() override;
 
-    /// A newly opened scene (nullptr: none): transforms read from its model matrices, no
-    /// CSG, per-object rules cleared, an empty undo stack. Emits sceneReplaced().
+    /// A newly opened scene (nullptr: none): transforms read from its model matrices, the
+    /// CSG and per-object rules a scene project saved (else none), an empty undo stack.
+    /// Emits sceneReplaced().
     void reset(std::shared_ptr<const LoadedScene> scene);
     /// Appends the objects of `added` (their names, meshes, model matrices and validation
     /// reports) to the scene. Emits sceneReplaced(). False with the reason in `error`

@@ -43,6 +43,8 @@ public:
     [[nodiscard]] QDockWidget* dock() const { return m_dock; }
     [[nodiscard]] SceneLoader* objectLoader() const { return m_loader; }
     [[nodiscard]] const CsgSettings& csg() const;
+    /// The scene shown is an animation's rest pose.
+    [[nodiscard]] bool showsAnimation() const { return m_animation; }
 
     /// Another scene is shown (an animation's rest pose when `animation`): no CSG, its
     /// transforms, a clean scene undo stack.

@@ -109,6 +109,12 @@ void SceneSwitch::connectLoaders()
         m_context->showStatus(tr("Saved %1").arg(path));
     });
     InspectWorkspace* inspect = m_features.inspect;
+    projects->setSceneSource([inspect] {
+        const std::shared_ptr<const LoadedScene>& scene = inspect->scene()->scene();
+        if (!scene || inspect->showsAnimation())
+            return ProjectFiles::ShownScene{};
+        return ProjectFiles::ShownScene{scene, inspect->csg()};
+    });
     connect(inspect, &InspectWorkspace::transformed, this, &SceneSwitch::onSceneTransformed);
     connect(inspect, &InspectWorkspace::objectsAppended, this, &SceneSwitch::onObjectsAppended);
     connect(inspect, &InspectWorkspace::addFailed, this, &SceneSwitch::sceneLoadFailed);
@@ -277,6 +283,10 @@ void SceneSwitch::onProjectOpened(std::shared_ptr<const timeline::Project> proje
         choices.trim.rule = *project->extras.staticRule;
         m_features.render->setChoices(choices);
     }
+    if (project->scene) {
+        showSceneProject(*project, path);
+        return;
+    }
     // The session below widens the view bounds to every frame.
     showScene(historyScene(project->timeline, name, path), timeline::historyBounds(project->timeline));
     design->startSession(project->timeline, glm::dmat4(1.0), QFileInfo(path).absoluteFilePath());
@@ -299,6 +309,28 @@ void SceneSwitch::onProjectOpened(std::shared_ptr<const timeline::Project> proje
     emit sceneLoaded(path);
 }
 
+// A scene project: its objects where they were placed, its CSG and rules (the Scene panel
+// starts from them), its camera. It starts no design session, even for one object: the
+// project is the scene, and Save Project writes it back as one.
+void SceneSwitch::showSceneProject(const timeline::Project& project, const QString& path)
+{
+    const QString name = QFileInfo(path).fileName();
+    auto loaded = std::make_shared<LoadedScene>(projectSceneLoaded(*project.scene, project.extras.staticRule,
+                                                                   path.toStdString(), name.toStdString()));
+    const Bounds bounds = loaded->scene.worldBounds();
+    showScene(std::move(loaded), bounds);
+    m_features.design->projectFiles()->sceneShown(path);
+    if (const auto& view = project.extras.view)
+        m_viewport->setCamera(Camera{view->eye, view->target, view->up, view->fovyDegrees});
+    m_recent->add(path);
+    emit titleChanged();
+    m_context->showStatus(tr("%1: a scene of %2 objects%3")
+                              .arg(name)
+                              .arg(m_scene->scene.objects.size())
+                              .arg(trimUnavailableNote(*m_scene)));
+    emit sceneLoaded(path);
+}
+
 void SceneSwitch::showHistory(timeline::Timeline history, const QString& name)
 {
     cancelPendingLoads();
@@ -313,6 +345,7 @@ void SceneSwitch::showHistory(timeline::Timeline history, const QString& name)
 void SceneSwitch::onObjectsAppended(const QString& source, const QString& displayName)
 {
     m_features.design->endSession(); // before the viewport takes the grown scene; several objects are not designed
+    m_features.design->projectFiles()->sceneShown(QString()); // no longer the scene a project file holds
     const InspectScene* inspect = m_features.inspect->scene();
     m_scene = inspect->scene();
     m_features.render->showSceneInfo(m_scene->scene.worldBounds(), m_scene->trimmable(),
@@ -354,6 +387,7 @@ void SceneSwitch::showScene(std::shared_ptr<const LoadedScene> loaded, const Bou
     m_viewport->setScene(std::shared_ptr<const Scene>(m_scene, &m_scene->scene));
     m_features.skeleton->panel()->setScene(m_scene); // after the viewport: its result never meets another mesh
     m_features.inspect->showScene(m_scene, animation);
+    m_features.design->projectFiles()->sceneShown(QString()); // a scene project says where it came from after this
     emit sceneShown();
 }
 

@@ -102,6 +102,7 @@ private:
     void onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loaded);
     void onProjectOpened(std::shared_ptr<const timeline::Project> project, const QString& path);
     void onObjectsAppended(const QString& source, const QString& displayName);
+    void showSceneProject(const timeline::Project& project, const QString& path);
     void onSceneTransformed();
     void showScene(std::shared_ptr<const LoadedScene> loaded, const Bounds& bounds, bool animation = false);
     void startDesignSession();
