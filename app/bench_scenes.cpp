@@ -216,12 +216,7 @@ BenchScene composeBenchScene(const std::vector<std::string>& sources,
     BenchScene scene{{}, loadScenes(sources), trim};
     scene.name = scene.loaded.displayName;
     // A scene project's CSG and object rules, where --csg and --object-rule gave none.
-    CsgSettings& csg = scene.settings.csg;
-    for (std::size_t id = 0; id < csg.objectRules.size(); ++id)
-        if (!csg.objectRules[id])
-            csg.objectRules[id] = scene.loaded.savedCsg.objectRules[id];
-    if (!csg.enabled() && scene.settings.trimEnabled)
-        csg.expression = scene.loaded.savedCsg.expression;
+    adoptSavedCsg(scene.loaded, scene.settings.csg, scene.settings.csg.enabled(), scene.settings.trimEnabled);
     std::optional<QString> error = applyObjectTransforms(transforms, scene.loaded.scene);
     if (!error)
         error = checkObjectIds(trim.csg, scene.loaded.scene.objects.size());

@@ -328,13 +328,11 @@ bool adoptSavedSettings(const LoadedScene& loaded, RenderOptions& options)
     if (!options.ruleGiven && loaded.savedRule)
         options.trim.rule = *loaded.savedRule;
     CsgSettings& csg = options.trim.csg;
-    for (std::size_t id = 0; id < csg.objectRules.size(); ++id)
-        if (!csg.objectRules[id])
-            csg.objectRules[id] = loaded.savedCsg.objectRules[id];
+    const bool expressionGiven = csg.enabled();
     // --rule none has no interior to combine: the saved CSG stays unused.
-    if (csg.enabled() || !loaded.savedCsg.enabled() || !options.trim.trimEnabled)
+    adoptSavedCsg(loaded, csg, expressionGiven, options.trim.trimEnabled);
+    if (expressionGiven || !csg.enabled())
         return true;
-    csg.expression = loaded.savedCsg.expression;
     const render::MethodInfo& method = render::methodInfo(options.method);
     if (options.backend == Backend::KPlus && !method.inspection) {
         printError(QStringLiteral("%1 saved the CSG %2, which --method %3 cannot render; use a buffer method such as "

@@ -118,6 +118,15 @@ std::optional<QString> parseCsgOption(const QString& text, CsgSettings& csg)
     return std::nullopt;
 }
 
+void adoptSavedCsg(const LoadedScene& loaded, CsgSettings& csg, bool expressionGiven, bool trimEnabled)
+{
+    for (std::size_t id = 0; id < csg.objectRules.size(); ++id)
+        if (!csg.objectRules[id])
+            csg.objectRules[id] = loaded.savedCsg.objectRules[id];
+    if (!expressionGiven && trimEnabled)
+        csg.expression = loaded.savedCsg.expression;
+}
+
 std::optional<QString> checkObjectIds(const CsgSettings& csg, std::size_t objectCount)
 {
     const auto outOfRange = [&](const QString& what, int id) {

@@ -6,6 +6,7 @@
 /// options (--rule, --csg, --object-rule) parsed into TrimSettings. Every parser returns
 /// the one-line error a user sees (exit code 2), or nothing.
 
+#include "core/catalog/scene_source.h"
 #include "core/scene/object_transform.h"
 #include "core/scene/scene.h"
 #include "core/trim/trim_settings.h"
@@ -50,6 +51,11 @@ struct ObjectTransformOption {
 [[nodiscard]] std::optional<QString> parseObjectRuleOption(const QString& text, CsgSettings& csg);
 /// --csg EXPRESSION.
 [[nodiscard]] std::optional<QString> parseCsgOption(const QString& text, CsgSettings& csg);
+
+/// A scene project's saved CSG where the command line gave none: the object rules of the
+/// ids no --object-rule named, and the expression unless --csg gave one
+/// (`expressionGiven`) or there is no rule to combine (`trimEnabled` false).
+void adoptSavedCsg(const LoadedScene& loaded, CsgSettings& csg, bool expressionGiven, bool trimEnabled);
 
 /// After loading: --csg operands and --object-rule ids must be objects of the scene.
 [[nodiscard]] std::optional<QString> checkObjectIds(const CsgSettings& csg, std::size_t objectCount);

@@ -1,6 +1,7 @@
 #include "ui/animation/animation_opener.h"
 
 #include "ui/common/background_task.h"
+#include "ui/common/task_progress_dialog.h"
 
 #include <QFileInfo>
 #include <QProgressDialog>
@@ -116,13 +117,7 @@ void AnimationOpener::updateProgress(const QString& stage, qint64 done, qint64 t
 
 void AnimationOpener::closeProgress()
 {
-    if (!m_progress)
-        return;
-    // Disconnect first: closing a QProgressDialog emits canceled().
-    m_progress->disconnect(this);
-    m_progress->hide();
-    m_progress->deleteLater();
-    m_progress.clear();
+    closeProgressDialog(m_progress);
 }
 
 } // namespace trimlab::ui

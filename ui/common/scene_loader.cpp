@@ -1,4 +1,5 @@
 #include "ui/common/scene_loader.h"
+#include "ui/common/task_progress_dialog.h"
 
 #include "core/mesh/mesh_load_error.h"
 
@@ -109,13 +110,7 @@ void SceneLoader::showProgress(const QString& source)
 
 void SceneLoader::closeProgress()
 {
-    if (!m_progress)
-        return;
-    // Disconnect first: closing a QProgressDialog emits canceled().
-    m_progress->disconnect(this);
-    m_progress->hide();
-    m_progress->deleteLater();
-    m_progress.clear();
+    closeProgressDialog(m_progress);
 }
 
 } // namespace trimlab::ui

@@ -1,6 +1,7 @@
 #include "ui/design/history_exports.h"
 
 #include "ui/common/background_task.h"
+#include "ui/common/task_progress_dialog.h"
 #include "ui/design/design_session.h"
 #include "ui/design/design_workspace.h"
 #include "ui/common/last_directory.h"
@@ -226,12 +227,7 @@ void HistoryExports::finishReplay(bool succeeded, const QString& message)
 
 void HistoryExports::closeProgress()
 {
-    if (!m_progress)
-        return;
-    m_progress->disconnect(m_task);
-    m_progress->hide();
-    m_progress->deleteLater();
-    m_progress.clear();
+    closeProgressDialog(m_progress);
 }
 
 } // namespace trimlab::ui

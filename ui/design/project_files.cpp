@@ -1,6 +1,7 @@
 #include "ui/design/project_files.h"
 
 #include "ui/common/background_task.h"
+#include "ui/common/task_progress_dialog.h"
 #include "ui/design/design_session.h"
 #include "ui/design/design_workspace.h"
 #include "ui/common/last_directory.h"
@@ -16,9 +17,6 @@
 namespace trimlab::ui {
 
 namespace {
-
-/// How long opening runs before its progress dialog appears.
-constexpr int kProgressDelayMs = 400;
 
 void warnNotSaved(QWidget* parent, const QString& reason)
 {
@@ -76,14 +74,8 @@ void ProjectFiles::open(const QString& path)
         std::shared_ptr<timeline::Project> result = m_result;
         const std::filesystem::path file = path.toStdString();
         m_task->start([result, file](const TaskControl&) { *result = timeline::readProject(file); });
-        closeProgress();
-        m_progress = new QProgressDialog(tr("Reading %1…").arg(QFileInfo(path).fileName()), tr("Cancel"), 0, 0,
-                                         m_window);
-        m_progress->setWindowTitle(tr("Opening project"));
-        m_progress->setWindowModality(Qt::WindowModal);
-        m_progress->setMinimumDuration(kProgressDelayMs);
-        connect(m_progress, &QProgressDialog::canceled, m_task, &BackgroundTask::cancel);
-        m_progress->setValue(0);
+        openTaskProgress(m_progress, m_window, m_task, tr("Opening project"),
+                         tr("Reading %1…").arg(QFileInfo(path).fileName()));
     };
     if (m_task->isRunning())
         connect(m_task, &BackgroundTask::finished, this, start, Qt::SingleShotConnection);
@@ -103,13 +95,7 @@ void ProjectFiles::finishOpen(bool succeeded, const QString& message)
 
 void ProjectFiles::closeProgress()
 {
-    if (!m_progress)
-        return;
-    m_progress->disconnect(this);
-    m_progress->disconnect(m_task);
-    m_progress->hide();
-    m_progress->deleteLater();
-    m_progress.clear();
+    closeProgressDialog(m_progress);
 }
 
 void ProjectFiles::sceneShown(const QString& path)
