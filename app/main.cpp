@@ -1,11 +1,12 @@
 // trimlab: the GUI (optionally opening a file or demo) or a batch verb.
 //   trimlab [FILE|demo:NAME]
-//   trimlab render SOURCE [options] -o out.png
-//   trimlab info SOURCE
+//   trimlab render SOURCE... [options] -o out.png
+//   trimlab info SOURCE...
 //   trimlab bench [--scenes a,b] [--methods a,b] [--size WxH] [--json out.json]
 //   trimlab segment ANIMATION --clusters N --h H -o labels.json
 //   trimlab skin ANIMATION --bones B --method lbs|dqs -o out.glb
 //   trimlab skeleton MESH [--nodes N] -o rig.glb --json skeleton.json
+//   trimlab trim SOURCE... --rule R [--csg EXPR] -o out.obj|.ply|.stl|.gltf|.glb
 #include "app/bench_verb.h"
 #include "app/cli_messages.h"
 #include "app/gui_launcher.h"
@@ -14,6 +15,7 @@
 #include "app/segment_verb.h"
 #include "app/skeleton_verb.h"
 #include "app/skin_verb.h"
+#include "app/trim_verb.h"
 
 #include "core/catalog/scene_source.h"
 
@@ -37,8 +39,11 @@ void printUsage()
     trimlab::app::printLine(
         "Usage:\n"
         "  trimlab [FILE|demo:NAME]          open the GUI (default: demo:pushed-sphere)\n"
-        "  trimlab render SOURCE -o out.png  render an image (see trimlab render --help)\n"
-        "  trimlab info SOURCE               print the mesh validation report\n"
+        "  trimlab render SOURCE... -o out.png\n"
+        "                                    render an image (see trimlab render --help)\n"
+        "  trimlab info SOURCE...            print the mesh validation report\n"
+        "  trimlab trim SOURCE... --rule R -o out.obj\n"
+        "                                    export the trimmed solid as a closed mesh (see trimlab trim --help)\n"
         "  trimlab bench [options]           time every multi-fragment method (see trimlab bench --help)\n"
         "  trimlab segment ANIMATION [options] -o labels.json\n"
         "                                    segment a mesh animation (see trimlab segment --help)\n"
@@ -69,6 +74,7 @@ constexpr BatchVerb kVerbs[] = {
     {"segment", trimlab::app::runSegmentVerb},
     {"skin", trimlab::app::runSkinVerb},
     {"skeleton", trimlab::app::runSkeletonVerb},
+    {"trim", trimlab::app::runTrimVerb},
 };
 
 } // namespace

@@ -163,7 +163,33 @@ void MainWindow::createWorkspaces()
     m_skeleton = new SkeletonWorkspace(*m_context, m_viewport, m_render->dock(), m_design->brushAction(), this);
     m_inspect = new InspectWorkspace(*m_context, m_viewport, m_render->dock(), m_design->undoGroup(), this);
     m_inspect->setSaveGuard([this] { return m_design->projectFiles()->maybeSave(); });
+    m_solidExport = new SolidExport(*m_context, [this] { return shownSolid(); }, this);
     m_render->dock()->raise();
+}
+
+// What File ▸ Export Trimmed Solid writes: the scene of the last frame under its static
+// rule or CSG, or why the view shows no solid.
+SolidExport::Shown MainWindow::shownSolid() const
+{
+    SolidExport::Shown shown;
+    const auto& frame = m_viewport->lastFrame();
+    const std::shared_ptr<const LoadedScene> loaded = scene();
+    if (!frame || !frame->scene || !loaded) {
+        shown.refusal = tr("Nothing is shown yet.");
+        return shown;
+    }
+    shown.scene = frame->scene;
+    shown.settings = frame->settings;
+    shown.name = m_context->sceneBaseName(QStringLiteral("trimlab"));
+    if (!loaded->trimmable())
+        shown.refusal = tr("The scene has no inside: %1").arg(QString::fromStdString(loaded->trimUnavailableReason()));
+    else if (!frame->settings.trimEnabled)
+        shown.refusal = tr("Trimming is off; turn it on in the Render panel to choose the rule that makes the solid.");
+    else if (m_render->choices().dynamicRules && m_design->session())
+        shown.refusal = tr("The view classifies by the dynamic rules of the deformation history, which remember "
+                           "more than one surface; choose Static rule under Classification to export what a static "
+                           "rule keeps of the frame shown.");
+    return shown;
 }
 
 void MainWindow::createFileMenu()
@@ -190,6 +216,11 @@ void MainWindow::createFileMenu()
     file->addSeparator();
     QAction* exportImage = file->addAction(tr("&Export Image…"), this, &MainWindow::showExportDialog);
     exportImage->setShortcut(QKeySequence(tr("Ctrl+E")));
+    QAction* exportSolid =
+        file->addAction(tr("Export &Trimmed Solid…"), m_solidExport, &SolidExport::showExportDialog);
+    exportSolid->setObjectName(QStringLiteral("exportTrimmedSolidAction"));
+    exportSolid->setStatusTip(tr("Write the solid the view shows (its rule or CSG, exact) as a closed mesh: OBJ, "
+                                 "PLY, STL or glTF"));
     file->addSeparator();
     m_design->addFileActions(file);
     file->addSeparator();

@@ -33,6 +33,8 @@
 /// the user's settings. Without saved settings the window starts with
 /// firstStartRenderChoices().
 
+#include "ui/inspect/solid_export.h"
+
 #include "core/catalog/scene_source.h"
 
 #include <QMainWindow>
@@ -102,6 +104,7 @@ public:
     /// The feature workspaces (their panels and actions: renderWorkspace()->panel(), …).
     [[nodiscard]] RenderWorkspace* renderWorkspace() const { return m_render; }
     [[nodiscard]] InspectWorkspace* inspectWorkspace() const { return m_inspect; }
+    [[nodiscard]] SolidExport* solidExport() const { return m_solidExport; }
     [[nodiscard]] AnimationWorkspace* animationWorkspace() const { return m_animation; }
     [[nodiscard]] DesignWorkspace* designWorkspace() const { return m_design; }
     [[nodiscard]] SurfaceWorkspace* surfaceWorkspace() const { return m_surface; }
@@ -125,6 +128,7 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
+    [[nodiscard]] SolidExport::Shown shownSolid() const;
     MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent);
 
     void createCentralView();
@@ -160,6 +164,7 @@ private:
     SurfaceWorkspace* m_surface = nullptr;
     SkeletonWorkspace* m_skeleton = nullptr;
     InspectWorkspace* m_inspect = nullptr;
+    SolidExport* m_solidExport = nullptr;
 };
 
 } // namespace trimlab::ui

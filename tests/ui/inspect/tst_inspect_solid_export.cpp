@@ -1,0 +1,88 @@
+// File ▸ Export Trimmed Solid in the window: the CSG of the csg-trio demo as the Scene
+// panel holds it, exported off the UI thread, is the closed mesh the core computes for
+// the frame's own scene and settings (read back by TrimLab's loader); a view without a
+// solid (trimming off) is refused with its reason and writes nothing.
+#include "inspect_window.h"
+#include "message_box_closer.h"
+#include "test_paths.h"
+
+#include "ui/inspect/inspect_scene.h"
+#include "ui/inspect/inspect_workspace.h"
+#include "ui/inspect/solid_export.h"
+
+#include "core/catalog/scene_source.h"
+#include "core/mesh/mesh_validation.h"
+#include "core/trim/csg_expression.h"
+
+#include <QCheckBox>
+#include <QSignalSpy>
+#include <QStatusBar>
+#include <QTemporaryDir>
+
+using namespace trimlab;
+using namespace trimlab::ui;
+using namespace trimlab::test;
+
+Q_DECLARE_METATYPE(trimlab::TrimmedSolidStats)
+
+class TestInspectSolidExport : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void exportsTheCsgShown();
+    void refusesWithoutASolid();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestInspectSolidExport::initTestCase()
+{
+    TRIMLAB_SKIP_WITHOUT_GL();
+    QVERIFY(m_dir.isValid());
+}
+
+void TestInspectSolidExport::exportsTheCsgShown()
+{
+    auto window = showInspectWindow(m_dir.filePath(QStringLiteral("export.ini")), QStringLiteral("demo:csg-trio"));
+    InspectScene* scene = window->inspectWorkspace()->scene();
+    CsgSettings csg = scene->csg();
+    csg.expression = parseCsgExpression("0 | 1 - 2", nullptr).value();
+    csg.objectRules[0] = StaticRule::AlternatingBorder;
+    scene->editCsg(csg, QStringLiteral("test CSG"));
+    QVERIFY(waitForFrame(*window, [&](const ViewportFrame& f) { return f.settings.csg == csg; }));
+    const ViewportFrame frame = *window->viewport()->lastFrame();
+
+    const QString path = m_dir.filePath(QStringLiteral("trio.ply"));
+    QSignalSpy exported(window->solidExport(), &SolidExport::exported);
+    window->solidExport()->exportTo(path);
+    QVERIFY(window->solidExport()->isExporting() || !exported.isEmpty());
+    QVERIFY(exported.wait(60000));
+    QCOMPARE(exported.front().at(0).toString(), path);
+
+    const TrimmedSolid expected = trimmedSolid(*frame.scene, frame.settings);
+    const LoadedScene written = loadScene(path.toStdString());
+    QCOMPARE(written.scene.objects.front().mesh.triangles.size(), expected.mesh.triangles.size());
+    const MeshValidationReport& report = written.reports.front();
+    QVERIFY2(report.closed(), formatReport(report, "export").c_str());
+    QVERIFY(std::abs(report.signedVolume - expected.stats.signedVolume) <= 1e-4 * expected.stats.signedVolume);
+    QVERIFY(window->statusBar()->currentMessage().contains(QStringLiteral("Exported the trimmed solid")));
+}
+
+void TestInspectSolidExport::refusesWithoutASolid()
+{
+    auto window = showInspectWindow(m_dir.filePath(QStringLiteral("refuse.ini")), QStringLiteral("demo:csg-trio"));
+    QTest::keyClick(revealed(child<QCheckBox>(window.get(), "trimCheckBox")), Qt::Key_Space);
+    QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return !f.settings.trimEnabled; }));
+    MessageBoxCloser closer;
+    QSignalSpy failed(window->solidExport(), &SolidExport::failed);
+    const QString path = m_dir.filePath(QStringLiteral("nothing.obj"));
+    window->solidExport()->exportTo(path);
+    QVERIFY(failed.count() == 1 || failed.wait(10000));
+    QVERIFY2(failed.front().at(1).toString().contains(QStringLiteral("Trimming is off")),
+             qPrintable(failed.front().at(1).toString()));
+    QVERIFY(!QFile::exists(path));
+}
+
+QTEST_MAIN(TestInspectSolidExport)
+#include "tst_inspect_solid_export.moc"

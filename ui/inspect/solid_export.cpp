@@ -1,0 +1,105 @@
+#include "ui/inspect/solid_export.h"
+
+#include "ui/common/background_task.h"
+#include "ui/common/task_progress_dialog.h"
+#include "ui/common/window_context.h"
+
+#include "core/mesh/mesh_export.h"
+#include "core/trim/static_rule.h"
+
+#include <QFileInfo>
+#include <QMainWindow>
+#include <QMessageBox>
+
+namespace trimlab::ui {
+
+SolidExport::SolidExport(const WindowContext& context, ShownSource shown, QObject* parent)
+    : QObject(parent), m_context(context), m_shown(std::move(shown)), m_task(new BackgroundTask(this))
+{
+    connect(m_task, &BackgroundTask::succeeded, this, [this] { finish(true, {}); });
+    connect(m_task, &BackgroundTask::failed, this, [this](const QString& message) { finish(false, message); });
+    connect(m_task, &BackgroundTask::canceled, this, [this] {
+        closeProgress();
+        m_context.showStatus(tr("Export of the trimmed solid canceled."));
+    });
+}
+
+SolidExport::~SolidExport()
+{
+    closeProgress();
+}
+
+bool SolidExport::isExporting() const
+{
+    return m_task->isRunning();
+}
+
+void SolidExport::showExportDialog()
+{
+    const Shown shown = m_shown();
+    if (!shown.refusal.isEmpty()) {
+        m_context.showMessage(QMessageBox::Information, tr("Export Trimmed Solid"),
+                              tr("The view shows no solid to export."), shown.refusal);
+        return;
+    }
+    const QString path = m_context.askSavePath(
+        tr("Export Trimmed Solid"),
+        {tr("Wavefront OBJ (*.obj)"), tr("PLY, binary (*.ply)"), tr("STL, binary (*.stl)"), tr("glTF binary (*.glb)"),
+         tr("glTF (*.gltf)")},
+        (shown.name.isEmpty() ? QStringLiteral("trimmed") : shown.name + QStringLiteral("-trimmed")) +
+            QStringLiteral(".obj"));
+    if (!path.isEmpty())
+        exportTo(path);
+}
+
+void SolidExport::exportTo(const QString& path)
+{
+    const Shown shown = m_shown();
+    if (!shown.refusal.isEmpty() || m_task->isRunning()) {
+        const QString reason = !shown.refusal.isEmpty() ? shown.refusal : tr("An export is already running.");
+        m_context.showMessage(QMessageBox::Information, tr("Export Trimmed Solid"),
+                              tr("The trimmed solid was not exported."), reason);
+        emit failed(path, reason);
+        return;
+    }
+    m_path = path;
+    m_stats = std::make_shared<TrimmedSolidStats>();
+    const std::string comment = shown.name.toStdString() + " trimmed by " + ruleName(shown.settings.rule);
+    m_task->start([scene = shown.scene, settings = shown.settings, file = path.toStdString(), comment,
+                   stats = m_stats](const TaskControl& control) {
+        const TrimmedSolid solid = trimmedSolid(*scene, settings, control);
+        control.throwIfCancelled();
+        saveTriangleMesh(file, solid.mesh, comment);
+        *stats = solid.stats;
+    });
+    openTaskProgress(m_progress, &m_context.window(), m_task, tr("Export Trimmed Solid"),
+                     tr("Computing the trimmed solid of %1…").arg(shown.name));
+}
+
+void SolidExport::finish(bool succeeded, const QString& message)
+{
+    closeProgress();
+    if (!succeeded) {
+        m_context.showMessage(QMessageBox::Warning, tr("Export Trimmed Solid"),
+                              tr("The trimmed solid was not exported to “%1”.").arg(QFileInfo(m_path).fileName()),
+                              message);
+        emit failed(m_path, message);
+        return;
+    }
+    const TrimmedSolidStats& stats = *m_stats;
+    QString text = tr("Exported the trimmed solid to %1: %2 triangles, volume %3")
+                       .arg(m_path)
+                       .arg(stats.keptFaces - stats.roundingDroppedFaces)
+                       .arg(stats.signedVolume, 0, 'g', 6);
+    if (stats.nonManifoldEdges > 0)
+        text += tr(" (%1 edges where kept cells touch: not manifold there)").arg(stats.nonManifoldEdges);
+    m_context.showStatus(text);
+    emit exported(m_path, stats);
+}
+
+void SolidExport::closeProgress()
+{
+    closeProgressDialog(m_progress);
+}
+
+} // namespace trimlab::ui

@@ -1,0 +1,67 @@
+#pragma once
+/// \file
+/// File ▸ Export Trimmed Solid…: the solid the view shows under its static rule or CSG
+/// expression, as exact geometry (core/solid/trimmed_solid.h), computed off the UI thread
+/// with a progress dialog and Cancel, written as OBJ, PLY, STL or glTF through a
+/// temporary file. Refused with the reason when the view shows no solid (trimming off,
+/// an open surface, the dynamic rules of a history).
+
+#include "core/scene/scene.h"
+#include "core/solid/trimmed_solid.h"
+#include "core/trim/trim_settings.h"
+
+#include <QObject>
+#include <QPointer>
+#include <QString>
+
+#include <functional>
+#include <memory>
+
+class QProgressDialog;
+
+namespace trimlab::ui {
+
+class BackgroundTask;
+class WindowContext;
+
+class SolidExport : public QObject {
+    Q_OBJECT
+public:
+    /// What the view shows: the scene and the settings it is trimmed with, or why it has
+    /// no solid to export (`refusal` not empty).
+    struct Shown {
+        std::shared_ptr<const Scene> scene;
+        TrimSettings settings;
+        QString name; ///< suggests the file name
+        QString refusal;
+    };
+    using ShownSource = std::function<Shown()>;
+
+    SolidExport(const WindowContext& context, ShownSource shown, QObject* parent = nullptr);
+    ~SolidExport() override;
+
+    /// Asks for the file, then exportTo().
+    void showExportDialog();
+    /// Starts the export of what is shown to `path` (its extension picks the format);
+    /// exported() or failed() follows, nothing when canceled. A refusal is shown at once
+    /// and reported through failed().
+    void exportTo(const QString& path);
+    [[nodiscard]] bool isExporting() const;
+
+signals:
+    void exported(const QString& path, const trimlab::TrimmedSolidStats& stats);
+    void failed(const QString& path, const QString& message);
+
+private:
+    void finish(bool succeeded, const QString& message);
+    void closeProgress();
+
+    const WindowContext& m_context;
+    ShownSource m_shown;
+    BackgroundTask* m_task = nullptr;
+    QPointer<QProgressDialog> m_progress;
+    QString m_path;
+    std::shared_ptr<TrimmedSolidStats> m_stats;
+};
+
+} // namespace trimlab::ui
