@@ -87,10 +87,16 @@ void sortAroundEdge(const RefinedSoup& soup, const ExactPoint& a, const ExactVec
         faces[i] = keyed[i].face;
 }
 
-// Whether face f's front looks towards growing angles about d at the edge.
-bool frontFacesGrowingAngle(const RefinedSoup& soup, const ExactPoint& a, const ExactVector& d, const EdgeFace& e)
+// Whether face f's front looks towards growing angles about d = b - a at the edge: its
+// normal is (b - a) x (c - a) when it runs a -> b, the opposite when it runs b -> a, and
+// the rotation's tangent at f is d x (c - a); so it is a matter of f's vertex order.
+bool frontFacesGrowingAngle(const RefinedSoup& soup, std::uint32_t a, const EdgeFace& e)
 {
-    return CGAL::is_positive(faceNormal(soup, e.face) * CGAL::cross_product(d, soup.points[e.third] - a));
+    const auto& v = soup.faces[e.face].vertices;
+    for (int k = 0; k < 3; ++k)
+        if (v[std::size_t(k)] == a)
+            return v[std::size_t((k + 2) % 3)] == e.third; // a -> b -> third
+    return false;
 }
 
 // Joins the two face sides that look into each wedge between consecutive faces.
@@ -99,14 +105,16 @@ void joinWedges(const RefinedSoup& soup, UnionFind& sides)
     for (auto& [key, faces] : edgeFaces(soup)) {
         if (faces.size() < 2)
             continue; // an open edge: the windings are not defined there (counted as contradictions)
-        const ExactPoint& a = soup.points[std::uint32_t(key >> 32)];
-        const ExactVector d = soup.points[std::uint32_t(key & 0xffffffffu)] - a;
-        sortAroundEdge(soup, a, d, faces);
+        const std::uint32_t a = std::uint32_t(key >> 32);
+        // Two faces are in order whatever their angles; more (along an intersection
+        // curve) are sorted exactly.
+        if (faces.size() > 2)
+            sortAroundEdge(soup, soup.points[a], soup.points[std::uint32_t(key & 0xffffffffu)] - soup.points[a], faces);
         for (std::size_t i = 0; i < faces.size(); ++i) {
             const EdgeFace& f = faces[i];
             const EdgeFace& g = faces[(i + 1) % faces.size()];
-            const std::size_t sideOfF = frontFacesGrowingAngle(soup, a, d, f) ? frontSide(f.face) : backSide(f.face);
-            const std::size_t sideOfG = frontFacesGrowingAngle(soup, a, d, g) ? backSide(g.face) : frontSide(g.face);
+            const std::size_t sideOfF = frontFacesGrowingAngle(soup, a, f) ? frontSide(f.face) : backSide(f.face);
+            const std::size_t sideOfG = frontFacesGrowingAngle(soup, a, g) ? backSide(g.face) : frontSide(g.face);
             sides.unite(sideOfF, sideOfG);
         }
     }

@@ -1,3 +1,10 @@
+// CGAL's experimental autorefinement checks the configurations it does not handle with
+// CGAL_assertion only; without the check it runs into undefined behaviour on them (on the
+// shared cow mesh: a missing intersection node, then front() of an empty list). The assertions stay on in this file
+// so that such input throws, and the user gets a message instead of a crash.
+#ifdef NDEBUG
+#undef NDEBUG
+#endif
 #include "core/solid/refined_soup.h"
 
 #include "core/scene/scene.h"
@@ -17,6 +24,10 @@ namespace trimlab::solid {
 
 namespace {
 
+// The refinement runs in the exact kernel: CGAL's autorefinement would round the
+// intersection points of a double-precision mesh to doubles, and then faces meeting along
+// an intersection curve no longer meet exactly there (their order around the curve's
+// edges, which the windings rest on, would be wrong).
 using Mesh = CGAL::Surface_mesh<ExactPoint>;
 using FaceIndex = Mesh::Face_index;
 using StackMap = Mesh::Property_map<FaceIndex, int>;
@@ -132,7 +143,8 @@ Mesh buildMesh(const std::vector<Stack>& stacks, StackMap& stackOf)
         if (face == Mesh::null_face()) {
             std::array<Mesh::Vertex_index, 3> own;
             for (int k = 0; k < 3; ++k)
-                own[std::size_t(k)] = mesh.add_vertex(ExactPoint(c[std::size_t(k)].x, c[std::size_t(k)].y, c[std::size_t(k)].z));
+                own[std::size_t(k)] =
+                    mesh.add_vertex(ExactPoint(c[std::size_t(k)].x, c[std::size_t(k)].y, c[std::size_t(k)].z));
             face = mesh.add_face(own[0], own[1], own[2]);
         }
         stackOf[face] = int(s);
@@ -169,7 +181,9 @@ RefinedSoup refineScene(const Scene& scene, const TaskControl& control)
                                  "copies): the exact refinement cannot split them; move one of the objects a "
                                  "little, or remove the duplicated part of the surface");
     } catch (const CGAL::Failure_exception& failure) {
-        throw std::runtime_error(std::string("the exact refinement failed: ") + failure.what());
+        throw std::runtime_error("the exact refinement (CGAL's autorefinement) met an intersection pattern it does "
+                                 "not handle (its check '" + failure.expression() + "' failed); no solid was "
+                                 "exported");
     }
     control.throwIfCancelled();
     control.report("refine", 1, 2);
