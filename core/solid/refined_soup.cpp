@@ -78,12 +78,27 @@ bool isDegenerate(const InputTriangle& t)
     return CGAL::collinear(p(0), p(1), p(2));
 }
 
+// A key for a triangle whatever its orientation: its corners in cyclic order from the
+// smallest, the other two ascending. `reversed` tells whether that ascending order runs
+// against the triangle's own cyclic order; two triangles with one key run the same way
+// round iff their `reversed` agree.
+template <class T>
+std::array<T, 3> unorientedKey(std::array<T, 3> corners, bool& reversed)
+{
+    std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
+    reversed = corners[1] > corners[2];
+    if (reversed)
+        std::swap(corners[1], corners[2]);
+    return corners;
+}
+
 // Identical input triangles (the same three corners, either orientation: a doubly
 // covered surface, an object and its inside-out copy) are one stack with a winding delta
 // per object: the refinement cannot take coplanar overlaps three at a time, and needs
 // only one of them.
 struct Stack {
     std::array<glm::dvec3, 3> corners; ///< the first triangle's, in its orientation
+    bool reversed = false;             ///< the first triangle's unorientedKey flag
     std::vector<int> delta;
 };
 
@@ -92,25 +107,15 @@ std::vector<Stack> stackTriangles(const std::vector<InputTriangle>& triangles, s
     std::vector<Stack> stacks;
     std::map<std::array<std::array<double, 3>, 3>, std::size_t> index;
     for (const InputTriangle& t : triangles) {
-        std::array<std::array<double, 3>, 3> key;
+        std::array<std::array<double, 3>, 3> corners;
         for (int k = 0; k < 3; ++k)
-            key[std::size_t(k)] = {t.corners[std::size_t(k)].x, t.corners[std::size_t(k)].y, t.corners[std::size_t(k)].z};
-        // The same cyclic order from the smallest corner; a reversed triangle swaps the rest.
-        std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
-        const bool reversed = key[1] > key[2];
-        if (reversed)
-            std::swap(key[1], key[2]);
-        const auto [it, inserted] = index.emplace(key, stacks.size());
+            corners[std::size_t(k)] = {t.corners[std::size_t(k)].x, t.corners[std::size_t(k)].y, t.corners[std::size_t(k)].z};
+        bool reversed = false;
+        const auto [it, inserted] = index.emplace(unorientedKey(corners, reversed), stacks.size());
         if (inserted)
-            stacks.push_back({t.corners, std::vector<int>(objects, 0)});
-        // Whether t runs the same way round as the stack's first triangle.
-        const Stack& stack = stacks[it->second];
-        std::array<std::array<double, 3>, 3> first;
-        for (int k = 0; k < 3; ++k)
-            first[std::size_t(k)] = {stack.corners[std::size_t(k)].x, stack.corners[std::size_t(k)].y, stack.corners[std::size_t(k)].z};
-        std::rotate(first.begin(), std::min_element(first.begin(), first.end()), first.end());
-        const bool firstReversed = first[1] > first[2];
-        stacks[it->second].delta[std::size_t(t.object)] += reversed == firstReversed ? 1 : -1;
+            stacks.push_back({t.corners, reversed, std::vector<int>(objects, 0)});
+        Stack& stack = stacks[it->second];
+        stack.delta[std::size_t(t.object)] += reversed == stack.reversed ? 1 : -1;
     }
     return stacks;
 }
@@ -191,6 +196,7 @@ RefinedSoup refineScene(const Scene& scene, const TaskControl& control)
     // Equal points become one vertex; faces over the same three vertices one face.
     std::map<ExactPoint, std::uint32_t, PointLess> pointIndex;
     std::map<std::array<std::uint32_t, 3>, std::size_t> faceIndex;
+    std::vector<bool> firstReversed; ///< per face: the unorientedKey flag of its first face
     const std::size_t objectCount = scene.objects.size();
     for (FaceIndex f : mesh.faces()) {
         std::array<std::uint32_t, 3> v{};
@@ -204,22 +210,15 @@ RefinedSoup refineScene(const Scene& scene, const TaskControl& control)
         }
         if (CGAL::collinear(soup.points[v[0]], soup.points[v[1]], soup.points[v[2]]))
             continue; // bounds nothing
-        // The key starts at the smallest index; the orientation says whether the rest
-        // follows in the same cyclic order as the stack's first face.
-        std::array<std::uint32_t, 3> key = v;
-        std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
-        const bool reversed = key[1] > key[2];
-        if (reversed)
-            std::swap(key[1], key[2]);
-        const auto [it, inserted] = faceIndex.emplace(key, soup.faces.size());
+        // Faces over the same three vertices: the first one's orientation is the face's.
+        bool reversed = false;
+        const auto [it, inserted] = faceIndex.emplace(unorientedKey(v, reversed), soup.faces.size());
         if (inserted) {
-            RefinedFace face;
-            face.vertices = reversed ? std::array<std::uint32_t, 3>{key[0], key[2], key[1]} : key;
-            face.delta.assign(objectCount, 0);
-            soup.faces.push_back(std::move(face));
+            soup.faces.push_back({v, std::vector<int>(objectCount, 0)});
+            firstReversed.push_back(reversed);
         }
         RefinedFace& face = soup.faces[it->second];
-        const bool sameAsFirst = (face.vertices == key) != reversed;
+        const bool sameAsFirst = reversed == firstReversed[it->second];
         const std::vector<int>& delta = stacks[std::size_t(stackOf[f])].delta;
         for (std::size_t o = 0; o < delta.size(); ++o)
             face.delta[o] += sameAsFirst ? delta[o] : -delta[o];
