@@ -1,33 +1,16 @@
 #include "core/mesh/mesh_validation.h"
 
+#include "core/util/union_find.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 namespace trimlab {
 
 namespace {
-
-class UnionFind {
-public:
-    explicit UnionFind(std::size_t n) : m_parent(n) { std::iota(m_parent.begin(), m_parent.end(), std::size_t(0)); }
-
-    std::size_t find(std::size_t i)
-    {
-        while (m_parent[i] != i) {
-            m_parent[i] = m_parent[m_parent[i]]; // path halving
-            i = m_parent[i];
-        }
-        return i;
-    }
-    void unite(std::size_t a, std::size_t b) { m_parent[find(a)] = find(b); }
-
-private:
-    std::vector<std::size_t> m_parent;
-};
 
 // One side of a triangle, from corner `corner` to the next corner, keyed by its
 // undirected edge so that sorting groups all sides along the same edge.

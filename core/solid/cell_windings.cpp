@@ -1,7 +1,8 @@
 #include "core/solid/cell_windings.h"
 
+#include "core/util/union_find.h"
+
 #include <algorithm>
-#include <numeric>
 #include <optional>
 #include <queue>
 #include <unordered_map>
@@ -9,21 +10,6 @@
 namespace trimlab::solid {
 
 namespace {
-
-class UnionFind {
-public:
-    explicit UnionFind(std::size_t n) : m_parent(n) { std::iota(m_parent.begin(), m_parent.end(), std::size_t(0)); }
-    std::size_t find(std::size_t x)
-    {
-        while (m_parent[x] != x)
-            x = m_parent[x] = m_parent[m_parent[x]];
-        return x;
-    }
-    void unite(std::size_t a, std::size_t b) { m_parent[find(a)] = find(b); }
-
-private:
-    std::vector<std::size_t> m_parent;
-};
 
 // Face side ids: 2f is the front of face f, 2f + 1 its back.
 std::size_t frontSide(std::size_t f) { return 2 * f; }

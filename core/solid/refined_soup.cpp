@@ -1,17 +1,9 @@
-// CGAL's experimental autorefinement checks the configurations it does not handle with
-// CGAL_assertion only; without the check it runs into undefined behaviour on them (on the
-// shared cow mesh: a missing intersection node, then front() of an empty list). The assertions stay on in this file
-// so that such input throws, and the user gets a message instead of a crash.
-#ifdef NDEBUG
-#undef NDEBUG
-#endif
 #include "core/solid/refined_soup.h"
 
 #include "core/scene/scene.h"
+#include "core/solid/triangle_arrangement.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/corefinement.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <glm/vec4.hpp>
 
@@ -23,31 +15,6 @@
 namespace trimlab::solid {
 
 namespace {
-
-// The refinement runs in the exact kernel: CGAL's autorefinement would round the
-// intersection points of a double-precision mesh to doubles, and then faces meeting along
-// an intersection curve no longer meet exactly there (their order around the curve's
-// edges, which the windings rest on, would be wrong).
-using Mesh = CGAL::Surface_mesh<ExactPoint>;
-using FaceIndex = Mesh::Face_index;
-using StackMap = Mesh::Property_map<FaceIndex, int>;
-
-// Keeps each face's stack through the refinement: a face split by an intersection hands
-// its stack to every sub-face (the corefinement visitor protocol: one
-// before_subface_creations, then after_subface_created per new face).
-struct StackKeeper : CGAL::Polygon_mesh_processing::Corefinement::Default_visitor<Mesh> {
-    StackMap objects;
-    std::shared_ptr<int> current = std::make_shared<int>(0);
-    const TaskControl* control = nullptr;
-
-    void before_subface_creations(FaceIndex split, const Mesh&) { *current = objects[split]; }
-    void after_subface_created(FaceIndex created, const Mesh&) { objects[created] = *current; }
-    void after_subface_creations(const Mesh&)
-    {
-        if (control)
-            control->throwIfCancelled();
-    }
-};
 
 struct InputTriangle {
     std::array<glm::dvec3, 3> corners;
@@ -94,8 +61,7 @@ std::array<T, 3> unorientedKey(std::array<T, 3> corners, bool& reversed)
 
 // Identical input triangles (the same three corners, either orientation: a doubly
 // covered surface, an object and its inside-out copy) are one stack with a winding delta
-// per object: the refinement cannot take coplanar overlaps three at a time, and needs
-// only one of them.
+// per object, refined once; a stack whose deltas cancel bounds nothing and is dropped.
 struct Stack {
     std::array<glm::dvec3, 3> corners; ///< the first triangle's, in its orientation
     bool reversed = false;             ///< the first triangle's unorientedKey flag
@@ -125,36 +91,19 @@ bool cancels(const std::vector<int>& delta)
     return std::all_of(delta.begin(), delta.end(), [](int d) { return d == 0; });
 }
 
-// The stacks as one halfedge mesh: vertices shared where the position is the same; a
-// face the mesh cannot take there (a non-manifold edge or vertex) gets its own copies of
-// its corners, so every stack is in. Sets each face's stack.
-Mesh buildMesh(const std::vector<Stack>& stacks, StackMap& stackOf)
+// The stacks that do not cancel, as exact triangles, with the index of their stack.
+std::vector<std::array<ExactPoint, 3>> exactTriangles(const std::vector<Stack>& stacks, std::vector<std::size_t>& stackOf)
 {
-    Mesh mesh;
-    stackOf = mesh.add_property_map<FaceIndex, int>("f:stack", 0).first;
-    std::map<std::array<double, 3>, Mesh::Vertex_index> shared;
-    const auto vertexAt = [&](const glm::dvec3& p) {
-        const std::array<double, 3> key{p.x, p.y, p.z};
-        auto it = shared.find(key);
-        if (it == shared.end())
-            it = shared.emplace(key, mesh.add_vertex(ExactPoint(p.x, p.y, p.z))).first;
-        return it->second;
-    };
+    std::vector<std::array<ExactPoint, 3>> triangles;
     for (std::size_t s = 0; s < stacks.size(); ++s) {
         if (cancels(stacks[s].delta))
             continue;
         const auto& c = stacks[s].corners;
-        FaceIndex face = mesh.add_face(vertexAt(c[0]), vertexAt(c[1]), vertexAt(c[2]));
-        if (face == Mesh::null_face()) {
-            std::array<Mesh::Vertex_index, 3> own;
-            for (int k = 0; k < 3; ++k)
-                own[std::size_t(k)] =
-                    mesh.add_vertex(ExactPoint(c[std::size_t(k)].x, c[std::size_t(k)].y, c[std::size_t(k)].z));
-            face = mesh.add_face(own[0], own[1], own[2]);
-        }
-        stackOf[face] = int(s);
+        triangles.push_back({ExactPoint(c[0].x, c[0].y, c[0].z), ExactPoint(c[1].x, c[1].y, c[1].z),
+                             ExactPoint(c[2].x, c[2].y, c[2].z)});
+        stackOf.push_back(s);
     }
-    return mesh;
+    return triangles;
 }
 
 struct PointLess {
@@ -174,22 +123,8 @@ RefinedSoup refineScene(const Scene& scene, const TaskControl& control)
     control.report("refine", 0, 2);
 
     const std::vector<Stack> stacks = stackTriangles(triangles, scene.objects.size());
-    StackMap stackOf;
-    Mesh mesh = buildMesh(stacks, stackOf);
-    StackKeeper keeper;
-    keeper.objects = stackOf;
-    keeper.control = &control;
-    try {
-        CGAL::Polygon_mesh_processing::experimental::autorefine(mesh, CGAL::parameters::visitor(keeper));
-    } catch (const CGAL::Polygon_mesh_processing::Corefinement::Triple_intersection_exception&) {
-        throw std::runtime_error("three faces overlap in one plane (coplanar faces that are not identical "
-                                 "copies): the exact refinement cannot split them; move one of the objects a "
-                                 "little, or remove the duplicated part of the surface");
-    } catch (const CGAL::Failure_exception& failure) {
-        throw std::runtime_error("the exact refinement (CGAL's autorefinement) met an intersection pattern it does "
-                                 "not handle (its check '" + failure.expression() + "' failed); no solid was "
-                                 "exported");
-    }
+    std::vector<std::size_t> stackOf;
+    const std::vector<ArrangedTriangle> pieces = arrangeTriangles(exactTriangles(stacks, stackOf), control);
     control.throwIfCancelled();
     control.report("refine", 1, 2);
 
@@ -198,15 +133,14 @@ RefinedSoup refineScene(const Scene& scene, const TaskControl& control)
     std::map<std::array<std::uint32_t, 3>, std::size_t> faceIndex;
     std::vector<bool> firstReversed; ///< per face: the unorientedKey flag of its first face
     const std::size_t objectCount = scene.objects.size();
-    for (FaceIndex f : mesh.faces()) {
+    for (const ArrangedTriangle& piece : pieces) {
         std::array<std::uint32_t, 3> v{};
-        int k = 0;
-        for (Mesh::Vertex_index vertex : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-            const ExactPoint& p = mesh.point(vertex);
+        for (int k = 0; k < 3; ++k) {
+            const ExactPoint& p = piece.corners[std::size_t(k)];
             const auto [it, inserted] = pointIndex.emplace(p, std::uint32_t(soup.points.size()));
             if (inserted)
                 soup.points.push_back(p);
-            v[std::size_t(k++)] = it->second;
+            v[std::size_t(k)] = it->second;
         }
         if (CGAL::collinear(soup.points[v[0]], soup.points[v[1]], soup.points[v[2]]))
             continue; // bounds nothing
@@ -219,7 +153,7 @@ RefinedSoup refineScene(const Scene& scene, const TaskControl& control)
         }
         RefinedFace& face = soup.faces[it->second];
         const bool sameAsFirst = reversed == firstReversed[it->second];
-        const std::vector<int>& delta = stacks[std::size_t(stackOf[f])].delta;
+        const std::vector<int>& delta = stacks[stackOf[piece.source]].delta;
         for (std::size_t o = 0; o < delta.size(); ++o)
             face.delta[o] += sameAsFirst ? delta[o] : -delta[o];
     }

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The arrangement of a scene's triangles: every triangle in world space, refined along
-/// its intersections with the others (CGAL's autorefinement, exact) so that faces meet
+/// its intersections with the others (exactly: triangle_arrangement.h) so that faces meet
 /// only at shared edges and vertices; equal points merged; faces over the same three
 /// points merged into one face carrying, per object, how much the winding number grows
 /// from its front to its back (+1 for an outward face of that object, the sum for a

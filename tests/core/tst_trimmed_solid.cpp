@@ -145,6 +145,41 @@ Scene ballBitingSphere()
     return scene;
 }
 
+// Three icosahedra turned about the axis through the centre of one face: that face's
+// plane holds three triangles overlapping in part (and other faces cross).
+Scene coplanarTrio()
+{
+    const TriangleMesh icosahedron = makeIcosphere(glm::dvec3(0.0), 1.0, 0);
+    const glm::uvec3 t = icosahedron.triangles.front();
+    const glm::dvec3 a(icosahedron.positions[t.x]), b(icosahedron.positions[t.y]), c(icosahedron.positions[t.z]);
+    const glm::dvec3 centre = (a + b + c) / 3.0;
+    const glm::dvec3 axis = glm::normalize(glm::cross(b - a, c - a));
+    const auto turned = [&](double radians) {
+        return glm::translate(glm::dmat4(1.0), centre) * glm::rotate(glm::dmat4(1.0), radians, axis) *
+               glm::translate(glm::dmat4(1.0), -centre);
+    };
+    Scene scene = oneObject("a", icosahedron);
+    scene.objects.push_back({"b", icosahedron, turned(0.5)});
+    scene.objects.push_back({"c", icosahedron, turned(1.1)});
+    return scene;
+}
+
+Scene sceneNamed(const QString& name)
+{
+    if (name == "pushed-sphere")
+        return oneObject("pushed", makePushedSphere(24, 14));
+    if (name == "crossing-loop")
+        return oneObject("loop", makeCrossingLoop(40, 10));
+    if (name == "ball-sphere")
+        return ballBitingSphere();
+    if (name == "coplanar-trio")
+        return coplanarTrio();
+    // A shared mesh: the first meshes CGAL 5.5's experimental autorefinement refused (a
+    // vertex of one triangle on another's edge).
+    const LoadedScene loaded = loadScene(test::sharedDataPath(name.toStdString()).string());
+    return loaded.scene;
+}
+
 } // namespace
 
 Q_DECLARE_METATYPE(trimlab::StaticRule)
@@ -155,9 +190,7 @@ private slots:
     void matchesTheTrim_data();
     void matchesTheTrim();
     void coincidentOppositeFacesCancel();
-    void partialCoplanarOverlapIsReported();
     void trimmingOffIsRefused();
-    void unhandledIntersectionPatternIsAnError();
 };
 
 void TestTrimmedSolid::matchesTheTrim_data()
@@ -166,15 +199,24 @@ void TestTrimmedSolid::matchesTheTrim_data()
     QTest::addColumn<StaticRule>("rule");
     QTest::addColumn<QString>("csg");
     QTest::addColumn<long>("openEdges");
+    // Whether the 20 views must agree: not where objects have coincident faces and the
+    // CSG tells them apart, because there the image-space trim meets two fragments at
+    // one depth and classifies by whichever it takes first (a z-fight), while the export
+    // is exact; the random samples check that case.
+    QTest::addColumn<bool>("compareViews");
     for (StaticRule rule : {StaticRule::AlternatingBorder, StaticRule::Nonzero, StaticRule::PositiveIndex,
                             StaticRule::Negative, StaticRule::Parity})
         QTest::newRow(qPrintable("pushed sphere " + QString::fromStdString(ruleName(rule))))
-            << "pushed-sphere" << rule << QString() << 0L;
-    QTest::newRow("crossing loop w>=2") << "crossing-loop" << StaticRule::atLeast(2) << QString() << 0L;
-    QTest::newRow("crossing loop positive") << "crossing-loop" << StaticRule::PositiveIndex << QString() << 0L;
-    QTest::newRow("ball minus sphere") << "ball-sphere" << StaticRule::PositiveIndex << "1 - 0" << 0L;
-    QTest::newRow("sphere minus ball") << "ball-sphere" << StaticRule::PositiveIndex << "0 - 1" << 0L;
-    QTest::newRow("sphere and ball") << "ball-sphere" << StaticRule::PositiveIndex << "0 & 1" << 0L;
+            << "pushed-sphere" << rule << QString() << 0L << true;
+    QTest::newRow("crossing loop w>=2") << "crossing-loop" << StaticRule::atLeast(2) << QString() << 0L << true;
+    QTest::newRow("crossing loop positive") << "crossing-loop" << StaticRule::PositiveIndex << QString() << 0L << true;
+    QTest::newRow("ball minus sphere") << "ball-sphere" << StaticRule::PositiveIndex << "1 - 0" << 0L << true;
+    QTest::newRow("sphere minus ball") << "ball-sphere" << StaticRule::PositiveIndex << "0 - 1" << 0L << true;
+    QTest::newRow("sphere and ball") << "ball-sphere" << StaticRule::PositiveIndex << "0 & 1" << 0L << true;
+    QTest::newRow("coplanar trio nonzero") << "coplanar-trio" << StaticRule::Nonzero << QString() << 0L << true;
+    QTest::newRow("coplanar trio a - b - c") << "coplanar-trio" << StaticRule::PositiveIndex << "0 - 1 - 2" << 0L << false;
+    QTest::newRow("cow alternating border")
+        << "selfintersect/cgal-cow.off.gz" << StaticRule::AlternatingBorder << QString() << 0L << true;
 }
 
 void TestTrimmedSolid::matchesTheTrim()
@@ -183,9 +225,8 @@ void TestTrimmedSolid::matchesTheTrim()
     QFETCH(StaticRule, rule);
     QFETCH(QString, csg);
     QFETCH(long, openEdges);
-    const Scene input = scene == "pushed-sphere"   ? oneObject("pushed", makePushedSphere(24, 14))
-                        : scene == "crossing-loop" ? oneObject("loop", makeCrossingLoop(40, 10))
-                                                   : ballBitingSphere();
+    QFETCH(bool, compareViews);
+    const Scene input = sceneNamed(scene);
     TrimSettings settings;
     settings.rule = rule;
     if (!csg.isEmpty())
@@ -223,6 +264,8 @@ void TestTrimmedSolid::matchesTheTrim()
     QCOMPARE(mismatches, 0);
     QVERIFY(kept > 0);
 
+    if (!compareViews)
+        return;
     const ViewAgreement views = agreementFromViews(input, settings, solid);
     qInfo("views: %ld of %ld covered pixels agree", views.agreeing, views.covered);
     QVERIFY(views.covered > 500);
@@ -253,59 +296,12 @@ void TestTrimmedSolid::coincidentOppositeFacesCancel()
     QCOMPARE(separate.stats.contradictions, std::size_t(0));
 }
 
-// Coplanar faces overlapping in part, three at a time, are beyond the exact refinement:
-// a clear error, no crash.
-void TestTrimmedSolid::partialCoplanarOverlapIsReported()
-{
-    TriangleMesh box = makeIcosphere(glm::dvec3(0.0), 1.0, 0);
-    Scene scene = oneObject("a", box);
-    // The same icosahedron rotated about an axis through a face's centre keeps that
-    // face's plane: the two faces overlap in part.
-    const glm::uvec3 t = box.triangles.front();
-    const glm::dvec3 a(box.positions[t.x]), b(box.positions[t.y]), c(box.positions[t.z]);
-    const glm::dvec3 centre = (a + b + c) / 3.0;
-    const glm::dvec3 axis = glm::normalize(glm::cross(b - a, c - a));
-    const glm::dmat4 turn = glm::translate(glm::dmat4(1.0), centre) * glm::rotate(glm::dmat4(1.0), 0.5, axis) *
-                            glm::translate(glm::dmat4(1.0), -centre);
-    scene.objects.push_back({"b", box, turn});
-    scene.objects.push_back({"c", box, glm::translate(glm::dmat4(1.0), centre) *
-                                           glm::rotate(glm::dmat4(1.0), 1.1, axis) *
-                                           glm::translate(glm::dmat4(1.0), -centre)});
-    TrimSettings settings;
-    settings.rule = StaticRule::Nonzero;
-    try {
-        const TrimmedSolid solid = trimmedSolid(scene, settings);
-        // Where the refinement copes, the result must still be consistent.
-        QCOMPARE(solid.stats.contradictions, std::size_t(0));
-    } catch (const std::runtime_error& error) {
-        QVERIFY2(QString(error.what()).contains("overlap in one plane"), error.what());
-    }
-}
-
 void TestTrimmedSolid::trimmingOffIsRefused()
 {
     TrimSettings settings;
     settings.trimEnabled = false;
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                              (void)trimmedSolid(oneObject("sphere", makeIcosphere(glm::dvec3(0.0), 1.0, 1)), settings));
-}
-
-// CGAL 5.5's experimental autorefinement does not handle every way triangles can meet
-// (the shared cow: its check fails); that is an error naming the refinement, never a
-// crash and never a wrong solid.
-void TestTrimmedSolid::unhandledIntersectionPatternIsAnError()
-{
-    const LoadedScene cow = loadScene(test::sharedDataPath("selfintersect/cgal-cow.off.gz").string());
-    QVERIFY(cow.trimmable());
-    TrimSettings settings;
-    settings.rule = StaticRule::AlternatingBorder;
-    try {
-        (void)trimmedSolid(cow.scene, settings);
-        QFAIL("the cow was refined: the refinement handles it now; move this case to matchesTheTrim");
-    } catch (const std::runtime_error& error) {
-        QVERIFY2(QString(error.what()).contains("autorefinement) met an intersection pattern it does not handle"),
-                 error.what());
-    }
 }
 
 QTEST_APPLESS_MAIN(TestTrimmedSolid)
