@@ -41,7 +41,7 @@ void setClipUniforms(const TrimFrame& frame, GLuint program)
     gl.glUniform1f(gl.glGetUniformLocation(program, "u_zNear"), float(frame.camera.zNear));
     gl.glUniform1f(gl.glGetUniformLocation(program, "u_zFar"), float(frame.camera.zFar));
     if (frame.objectWindings)
-        frame.objectWindings->bind();
+        frame.objectWindings->bind(program);
 }
 
 namespace {

@@ -9,17 +9,11 @@
 
 namespace trimlab::render {
 
-namespace {
-
-constexpr std::size_t kHeaderBytes = 2 * sizeof(GLuint); // width, padding
-
-} // namespace
-
 ObjectWindingBuffer::ObjectWindingBuffer(GlFunctions& gl) : m_gl(gl), m_buffer(gl) {}
 
 std::size_t ObjectWindingBuffer::bytesFor(int width, int height, int objects)
 {
-    return kHeaderBytes + std::size_t(width) * std::size_t(height) * std::size_t(objects) * sizeof(GLint);
+    return std::size_t(width) * std::size_t(height) * std::size_t(objects) * sizeof(GLint);
 }
 
 void ObjectWindingBuffer::allocate(int width, int height, int objects)
@@ -45,14 +39,13 @@ void ObjectWindingBuffer::clear()
     const GLuint zero = 0;
     m_gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_buffer.id());
     m_gl.glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    const GLuint header[2] = {GLuint(m_width), 0u};
-    m_gl.glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(header), header);
     m_gl.glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
-void ObjectWindingBuffer::bind()
+void ObjectWindingBuffer::bind(GLuint program)
 {
     m_gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectWindingsStorage, m_buffer.id());
+    m_gl.glUniform1ui(m_gl.glGetUniformLocation(program, "u_objectWindingWidth"), GLuint(m_width));
 }
 
 } // namespace trimlab::render

@@ -4,13 +4,16 @@
 // the far side in the same geometry pass as the summed index (winding_count.glsl) and read
 // by the resolve to start the walk. The includer defines OBJECT_WINDINGS_ACCESS.
 
+// The row length is a uniform, not a header in the buffer: on NVIDIA's driver a header
+// written with glBufferSubData right after the buffer's glClearBufferData was not seen by
+// the first frame after allocation (every row read width 0: vertical stripes).
+uniform uint u_objectWindingWidth; // pixels per row
+
 layout(std430, binding = STORAGE_OBJECT_WINDINGS) OBJECT_WINDINGS_ACCESS buffer ObjectWindingCounts {
-    uint objectWindingWidth; // pixels per row
-    uint objectWindingPad;
     int objectWindings[];
 };
 
 uint objectWindingBase(ivec2 pixel)
 {
-    return (uint(pixel.y) * objectWindingWidth + uint(pixel.x)) * uint(OBJECT_WINDINGS);
+    return (uint(pixel.y) * u_objectWindingWidth + uint(pixel.x)) * uint(OBJECT_WINDINGS);
 }
