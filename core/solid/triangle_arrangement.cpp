@@ -7,6 +7,7 @@
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
 
+#include <algorithm>
 #include <optional>
 #include <utility>
 
@@ -31,6 +32,10 @@ using PlaneTriangulation = CGAL::Constrained_triangulation_2<ExactKernel, Tds, C
 
 using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
 
+// Corners are kept as points, not read from a Triangle_3: each corner read from a lazy
+// exact triangle builds a new lazy construction (measured: the largest single cost).
+using Corners = std::array<ExactPoint, 3>;
+
 /// What other triangles leave on a triangle: points where they touch it, segments where
 /// they cross it.
 struct Marks {
@@ -38,12 +43,12 @@ struct Marks {
     std::vector<std::array<ExactPoint, 2>> segments;
 };
 
-std::vector<std::pair<std::size_t, std::size_t>> overlappingBoxes(const std::vector<Triangle3>& triangles)
+std::vector<std::pair<std::size_t, std::size_t>> overlappingBoxes(const std::vector<Corners>& triangles)
 {
     std::vector<Box> boxes;
     boxes.reserve(triangles.size());
-    for (std::size_t i = 0; i < triangles.size(); ++i)
-        boxes.emplace_back(triangles[i].bbox(), i); // exact: the corners are doubles
+    for (std::size_t i = 0; i < triangles.size(); ++i) // exact boxes: the corners are doubles
+        boxes.emplace_back(triangles[i][0].bbox() + triangles[i][1].bbox() + triangles[i][2].bbox(), i);
     std::vector<std::pair<std::size_t, std::size_t>> pairs;
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
         pairs.emplace_back(a.info(), b.info());
@@ -52,56 +57,102 @@ std::vector<std::pair<std::size_t, std::size_t>> overlappingBoxes(const std::vec
 }
 
 // Whether both corners q, r lie strictly on one side of the plane of `t`.
-bool strictlyOnOneSide(const Triangle3& t, const ExactPoint& q, const ExactPoint& r)
+bool strictlyOnOneSide(const Corners& t, const ExactPoint& q, const ExactPoint& r)
 {
     const CGAL::Orientation side = CGAL::orientation(t[0], t[1], t[2], q);
     return side != CGAL::COPLANAR && side == CGAL::orientation(t[0], t[1], t[2], r);
 }
 
+// Whether corners q and r lie strictly on opposite sides of the plane of `t`.
+bool straddles(const Corners& t, const ExactPoint& q, const ExactPoint& r)
+{
+    const CGAL::Orientation side = CGAL::orientation(t[0], t[1], t[2], q);
+    return side != CGAL::COPLANAR && side == -CGAL::orientation(t[0], t[1], t[2], r);
+}
+
+// Where the segment from p to q crosses the plane of `t` (p and q strictly on opposite
+// sides), as lazy exact arithmetic: its interval approximation usually decides the
+// predicates it feeds without rationals.
+ExactPoint segmentCrossing(const ExactPoint& p, const ExactPoint& q, const Corners& t)
+{
+    const Plane3 plane(t[0], t[1], t[2]);
+    const auto height = [&](const ExactPoint& x) { return plane.a() * x.x() + plane.b() * x.y() + plane.c() * x.z() + plane.d(); };
+    const FT hp = height(p);
+    const FT along = hp / (hp - height(q));
+    return p + (q - p) * along;
+}
+
 // Most candidate pairs are neighbours in a mesh. Decides with predicates alone whether
 // two triangles that share one or two corners meet nowhere else (then they leave nothing
 // on each other); false when they share none or may meet elsewhere.
-bool meetOnlyAtSharedCorners(const Triangle3& a, const Triangle3& b)
+bool meetOnlyAtSharedCorners(const Corners& a, const Corners& b)
 {
-    std::array<int, 3> matchInB{-1, -1, -1};
+    constexpr std::size_t none = 3;
+    std::array<std::size_t, 3> matchInB{none, none, none};
     int shared = 0;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j)
             if (a[i] == b[j]) {
-                matchInB[std::size_t(i)] = j;
+                matchInB[i] = j;
                 ++shared;
             }
+    const auto next = [](std::size_t k, std::size_t step) { return (k + step) % 3; };
     if (shared == 1) {
         // a's other two corners strictly on one side of b's plane: a touches that plane
         // only at the shared corner (or the same the other way round).
-        const int i = int(std::find_if(matchInB.begin(), matchInB.end(), [](int m) { return m >= 0; }) - matchInB.begin());
-        const int j = matchInB[std::size_t(i)];
-        return strictlyOnOneSide(b, a[(i + 1) % 3], a[(i + 2) % 3]) ||
-               strictlyOnOneSide(a, b[(j + 1) % 3], b[(j + 2) % 3]);
+        const std::size_t i = std::size_t(std::find_if(matchInB.begin(), matchInB.end(),
+                                                       [](std::size_t m) { return m != none; }) - matchInB.begin());
+        const std::size_t j = matchInB[i];
+        const ExactPoint& v = a[i];
+        const ExactPoint &a1 = a[next(i, 1)], &a2 = a[next(i, 2)], &b1 = b[next(j, 1)], &b2 = b[next(j, 2)];
+        if (strictlyOnOneSide(b, a1, a2) || strictlyOnOneSide(a, b1, b2))
+            return true;
+        if (straddles(b, a1, a2) && straddles(a, b1, b2)) {
+            // Each meets the other's plane in a segment from v along the planes' common
+            // line: [v, p] and [v, q]. They share more than v only if p and q lie on the
+            // same side of v (the angle p v q is 0, not 180 degrees). Deciding this here
+            // keeps the exact intersection, which falls back to rationals at a shared
+            // corner, for the few pairs that really cross.
+            const ExactPoint p = segmentCrossing(a1, a2, b);
+            const ExactPoint q = segmentCrossing(b1, b2, a);
+            return CGAL::angle(p, v, q) == CGAL::OBTUSE;
+        }
+        if (CGAL::orientation(a[0], a[1], a[2], b1) != CGAL::COPLANAR ||
+            CGAL::orientation(a[0], a[1], a[2], b2) != CGAL::COPLANAR)
+            return false;
+        // In one plane (a fan in a flat region): the two corners at v are convex sectors,
+        // which meet only at v iff a line along one of their four edges separates them.
+        const auto beyond = [&](const ExactPoint& edge, const ExactPoint& own, const ExactPoint& p, const ExactPoint& q) {
+            return CGAL::coplanar_orientation(v, edge, own, p) == CGAL::NEGATIVE &&
+                   CGAL::coplanar_orientation(v, edge, own, q) == CGAL::NEGATIVE;
+        };
+        return beyond(a1, a2, b1, b2) || beyond(a2, a1, b1, b2) || beyond(b1, b2, a1, a2) || beyond(b2, b1, a1, a2);
     }
     if (shared == 2) {
         // A shared edge: the planes meet in its line, which each triangle meets in the
         // edge alone; in one plane, the triangles meet only there when they lie on
         // opposite sides of it.
-        const int i = int(std::find(matchInB.begin(), matchInB.end(), -1) - matchInB.begin());
-        int j = 0;
-        while (j == matchInB[std::size_t((i + 1) % 3)] || j == matchInB[std::size_t((i + 2) % 3)])
+        const std::size_t i = std::size_t(std::find(matchInB.begin(), matchInB.end(), none) - matchInB.begin());
+        std::size_t j = 0;
+        while (j == matchInB[next(i, 1)] || j == matchInB[next(i, 2)])
             ++j;
         if (CGAL::orientation(a[0], a[1], a[2], b[j]) != CGAL::COPLANAR)
             return true;
-        return CGAL::coplanar_orientation(a[(i + 1) % 3], a[(i + 2) % 3], a[i], b[j]) == CGAL::NEGATIVE;
+        return CGAL::coplanar_orientation(a[next(i, 1)], a[next(i, 2)], a[i], b[j]) == CGAL::NEGATIVE;
     }
     return false;
 }
 
 // Records what triangles i and j leave on each other; those that overlap in their
 // common plane become one group (triangulated together).
-void markIntersection(std::size_t i, std::size_t j, const std::vector<Triangle3>& triangles, std::vector<Marks>& marks,
+void markIntersection(std::size_t i, std::size_t j, const std::vector<Corners>& triangles, std::vector<Marks>& marks,
                       UnionFind& groups)
 {
-    const Triangle3& a = triangles[i];
-    const Triangle3& b = triangles[j];
-    if (meetOnlyAtSharedCorners(a, b) || !CGAL::do_intersect(a, b))
+    if (meetOnlyAtSharedCorners(triangles[i], triangles[j]))
+        return;
+    const Triangle3 a(triangles[i][0], triangles[i][1], triangles[i][2]);
+    const Triangle3 b(triangles[j][0], triangles[j][1], triangles[j][2]);
+    if (!CGAL::do_intersect(a, b))
         return;
     const auto meeting = CGAL::intersection(a, b);
     if (!meeting)
@@ -152,10 +203,11 @@ struct Projection {
 // Triangulates one group (coplanar triangles that overlap, or a lone triangle) with
 // every member's edges and marks as constraints, and gives each piece to every member
 // that covers it, in that member's orientation.
-void triangulateGroup(const std::vector<std::size_t>& members, const std::vector<Triangle3>& triangles,
+void triangulateGroup(const std::vector<std::size_t>& members, const std::vector<Corners>& triangles,
                       const std::vector<Marks>& marks, std::vector<ArrangedTriangle>& pieces)
 {
-    const Plane3 plane = triangles[members.front()].supporting_plane();
+    const Corners& first = triangles[members.front()];
+    const Plane3 plane(first[0], first[1], first[2]);
     const Projection project{plane, dominantAxis(plane.orthogonal_vector())};
     PlaneTriangulation triangulation;
     const auto vertexAt = [&](const ExactPoint& p) {
@@ -170,8 +222,8 @@ void triangulateGroup(const std::vector<std::size_t>& members, const std::vector
             triangulation.insert_constraint(vp, vq);
     };
     for (std::size_t m : members) {
-        const Triangle3& t = triangles[m];
-        for (int k = 0; k < 3; ++k)
+        const Corners& t = triangles[m];
+        for (std::size_t k = 0; k < 3; ++k)
             constrain(t[k], t[(k + 1) % 3]);
         for (const ExactPoint& p : marks[m].points)
             vertexAt(p);
@@ -203,14 +255,9 @@ void triangulateGroup(const std::vector<std::size_t>& members, const std::vector
 
 } // namespace
 
-std::vector<ArrangedTriangle> arrangeTriangles(const std::vector<std::array<ExactPoint, 3>>& input,
+std::vector<ArrangedTriangle> arrangeTriangles(const std::vector<std::array<ExactPoint, 3>>& triangles,
                                                const TaskControl& control)
 {
-    std::vector<Triangle3> triangles;
-    triangles.reserve(input.size());
-    for (const auto& t : input)
-        triangles.emplace_back(t[0], t[1], t[2]);
-
     const auto pairs = overlappingBoxes(triangles);
     std::vector<Marks> marks(triangles.size());
     UnionFind groups(triangles.size());
@@ -234,7 +281,7 @@ std::vector<ArrangedTriangle> arrangeTriangles(const std::vector<std::array<Exac
             continue;
         const bool untouched = group.size() == 1 && marks[root].points.empty() && marks[root].segments.empty();
         if (untouched)
-            pieces.push_back({input[root], root});
+            pieces.push_back({triangles[root], root});
         else
             triangulateGroup(group, triangles, marks, pieces);
     }
