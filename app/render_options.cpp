@@ -86,6 +86,10 @@ void addRenderOptions(QCommandLineParser& parser)
                   "last.", "N"},
         {"classification", "For a script or project: dynamic (each set's rule, the base mesh classified by --rule) "
                            "or static (--rule on the frame alone). Default: dynamic.", "name"},
+        {"pose", "The source is a mesh animation (a folder or numbered pattern of meshes such as 'walk_%04d.obj', or "
+                 "a glTF file): render its pose N (0 = the first).", "N"},
+        {"poses", "The source is a mesh animation: render poses A to B, one image each, with one camera for all; "
+                  "-o (and --depth, --ids) hold the pose number as %d or %04d, e.g. frame_%04d.png.", "A:B"},
     });
     parser.addHelpOption();
 }
@@ -164,6 +168,29 @@ std::optional<QString> parseDesignOptions(const QCommandLineParser& parser, Rend
     if (options.designed() && !options.trim.trimEnabled && options.classification == Classification::Dynamic)
         return QStringLiteral("--rule none cannot classify the base mesh of the dynamic rules; use --classification "
                               "static to render without trimming");
+    return std::nullopt;
+}
+
+// --pose / --poses: one animation source, one object, an output name per pose.
+std::optional<QString> parsePoseOptions(const QCommandLineParser& parser, RenderOptions& options)
+{
+    if (auto e = parsePoseSelection(parser.value("pose"), parser.value("poses"), options.poses))
+        return e;
+    if (!options.poses)
+        return std::nullopt;
+    if (options.sources.size() != 1 || options.designed())
+        return QStringLiteral("--pose and --poses render one mesh animation source (a folder, a numbered pattern or "
+                              "a glTF file), not several sources, a script or a project");
+    if (options.trim.csg.enabled() || !options.objectTransforms.empty())
+        return QStringLiteral("--csg and --object-transform combine several objects; an animation is one object");
+    if (!options.poses->sequence)
+        return std::nullopt;
+    for (const auto& [option, path] : {std::pair{"-o", options.output}, std::pair{"--depth", options.depthOutput},
+                                       std::pair{"--ids", options.idsOutput}})
+        if (!path.isEmpty() && !hasPoseNumber(path))
+            return QStringLiteral("--poses writes one file per pose: %1 '%2' needs the pose number in its name as "
+                                  "%d or %04d (e.g. frame_%04d.png)")
+                .arg(QLatin1String(option), path);
     return std::nullopt;
 }
 
@@ -321,6 +348,8 @@ std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& argum
     if (auto e = parseMethodOptions(parser, options))
         return *e;
     if (auto e = parseDesignOptions(parser, options))
+        return *e;
+    if (auto e = parsePoseOptions(parser, options))
         return *e;
     const render::MethodInfo& method = render::methodInfo(options.method);
     const bool needsWalk = options.trim.perObjectWinding() || options.trim.highlight.coplanar;

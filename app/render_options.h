@@ -3,6 +3,7 @@
 /// The options of `trimlab render`, parsed without touching the scene or OpenGL so that
 /// bad arguments fail fast with one line.
 
+#include "app/pose_frames.h"
 #include "app/scene_composition.h"
 #include "render/mfr/fragment_method.h"
 #include "core/trim/trim_settings.h"
@@ -53,6 +54,10 @@ struct RenderOptions {
     /// --classification: with a script or project, the sets' dynamic rules (the base mesh
     /// classified by --rule) or --rule applied statically to the frame.
     Classification classification = Classification::Dynamic;
+    /// --pose N / --poses A:B: the one source is a mesh animation (a folder, a numbered
+    /// pattern or a glTF file) and these poses are rendered under the static rule, one
+    /// image each, all with one camera fitted to the poses together.
+    std::optional<PoseSelection> poses;
 
     /// The source is a design: a stroke script was given, or the one source is a project or
     /// a demo with a history.

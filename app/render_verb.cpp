@@ -9,7 +9,9 @@
 #include "render/gl/context_reset.h"
 #include "render/gl/gl_error.h"
 #include "render/gl/offscreen_gl_context.h"
+#include "core/animation/animation_loader.h"
 #include "core/catalog/scene_source.h"
+#include "core/mesh/mesh_validation.h"
 #include "core/timeline/frame_chain.h"
 #include "core/trim/dynamic_reference_renderer.h"
 #include "core/trim/csg_expression.h"
@@ -25,6 +27,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <vector>
 #include <memory>
 
@@ -94,12 +97,11 @@ void configure(render::TrimRenderer& renderer, const RenderOptions& options)
     renderer.setParameters(parameters);
 }
 
-RenderOutcome renderWithGpu(const Scene& scene, const RenderOptions& options, const Camera& camera)
+// `options.repeat` frames of `scene` on `renderer` (configured), timed.
+RenderOutcome renderOn(render::TrimRenderer& renderer, const QString& rendererName, const Scene& scene,
+                       const RenderOptions& options, const Camera& camera)
 {
-    render::OffscreenGlContext gl;
-    render::TrimRenderer renderer(gl.context());
     renderer.setScene(scene);
-    configure(renderer, options);
     const render::MethodParameters parameters = renderer.parameters();
     render::FrameTimes times;
     for (int i = 0; i < options.repeat; ++i) {
@@ -107,8 +109,16 @@ RenderOutcome renderWithGpu(const Scene& scene, const RenderOptions& options, co
         times.add(renderer.lastStats());
     }
     RenderOutcome outcome{renderer.readColor(), renderer.readTrimImage(), {}};
-    outcome.statistics = gpuStatistics(renderer.lastStats(), parameters, gl.capabilities().renderer, times);
+    outcome.statistics = gpuStatistics(renderer.lastStats(), parameters, rendererName, times);
     return outcome;
+}
+
+RenderOutcome renderWithGpu(const Scene& scene, const RenderOptions& options, const Camera& camera)
+{
+    render::OffscreenGlContext gl;
+    render::TrimRenderer renderer(gl.context());
+    configure(renderer, options);
+    return renderOn(renderer, gl.capabilities().renderer, scene, options, camera);
 }
 
 // A GPU reset during the frames (gl/context_reset.h) takes the context and everything on
@@ -345,8 +355,77 @@ bool adoptSavedSettings(const LoadedScene& loaded, RenderOptions& options)
     return true;
 }
 
+// One pose of a mesh animation as a scene of one object, validated like a loaded mesh.
+LoadedScene poseScene(const MeshAnimation& animation, int pose, const std::string& name)
+{
+    LoadedScene loaded;
+    TriangleMesh mesh = animation.poseMesh(std::size_t(pose));
+    loaded.reports.push_back(validateMesh(mesh));
+    loaded.displayName = name + " pose " + std::to_string(pose);
+    loaded.scene.objects.push_back({name, std::move(mesh), glm::dmat4(1.0)});
+    return loaded;
+}
+
+// --pose / --poses: the chosen poses of an animation under the static rule, each to its
+// own files, on one OpenGL context (or the CPU reference), with one camera fitted to all
+// of them so that the images of a sequence line up.
+int renderPoses(RenderOptions options)
+{
+    const std::string& source = options.sources.front();
+    const MeshAnimation animation = loadAnimation(source);
+    const PoseSelection selection = *options.poses;
+    const int count = int(animation.poseCount());
+    if (selection.last >= count) {
+        printError(QStringLiteral("%1 has %2 poses (0 to %3); pose %4 does not exist")
+                       .arg(QString::fromStdString(source))
+                       .arg(count)
+                       .arg(count - 1)
+                       .arg(selection.last));
+        return 2;
+    }
+    const std::string name = std::filesystem::path(source).filename().string();
+    std::vector<LoadedScene> poses;
+    Bounds bounds;
+    for (int pose = selection.first; pose <= selection.last; ++pose) {
+        poses.push_back(poseScene(animation, pose, name));
+        bounds.extend(poses.back().scene.worldBounds());
+        if (!resolveTrimAvailability(poses.back(), options))
+            return 1;
+    }
+    if (!fitInspection(poses.front().scene, options))
+        return 2;
+    const Camera camera = cameraFor(bounds, options);
+    const bool gpu = options.backend == Backend::KPlus;
+    std::unique_ptr<render::OffscreenGlContext> gl = gpu ? std::make_unique<render::OffscreenGlContext>() : nullptr;
+    std::unique_ptr<render::TrimRenderer> renderer = gpu ? std::make_unique<render::TrimRenderer>(gl->context()) : nullptr;
+    if (renderer)
+        configure(*renderer, options);
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+        const int pose = selection.first + int(i);
+        const RenderOutcome outcome = renderer ? renderOn(*renderer, gl->capabilities().renderer, poses[i].scene, options, camera)
+                                               : renderWithReference(poses[i].scene, options, camera);
+        RenderOptions files = options;
+        files.output = posePath(options.output, pose);
+        files.depthOutput = posePath(options.depthOutput, pose);
+        files.idsOutput = posePath(options.idsOutput, pose);
+        writeOutputs(outcome, files, camera);
+        printLine(QStringLiteral("%1, pose %2 of %3: %4x%5, %6, %7 -> %8")
+                      .arg(QString::fromStdString(name))
+                      .arg(pose)
+                      .arg(count - 1)
+                      .arg(options.width)
+                      .arg(options.height)
+                      .arg(settingsText(options.trim))
+                      .arg(outcome.statistics + inspectionText(options.trim, outcome.trim), files.output));
+    }
+    printLine(QStringLiteral("camera: %1").arg(QString::fromStdString(formatCamera(camera))));
+    return 0;
+}
+
 int renderLoaded(RenderOptions options)
 {
+    if (options.poses)
+        return renderPoses(options);
     if (options.designed())
         return renderDesigned(options);
     LoadedScene loaded = loadScenes(options.sources);

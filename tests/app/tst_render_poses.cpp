@@ -1,0 +1,166 @@
+// `trimlab render ANIMATION --pose N | --poses A:B` as scripts call it: one image per
+// pose, named by the pattern, all with one camera fitted to the poses together, each
+// pose's ids agreeing with the CPU reference of that pose; bad selections and patterns
+// fail with one line before any work.
+#include "gl_test_context.h"
+#include "ids_png.h"
+#include "run_trimlab.h"
+#include "test_paths.h"
+#include "trim_comparison.h"
+
+#include "app/pose_frames.h"
+#include "core/animation/animation_loader.h"
+#include "core/trim/reference_renderer.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace trimlab;
+using trimlab::test::Run;
+using trimlab::test::runTrimlab;
+
+namespace {
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 120;
+
+QString animation(const char* relative)
+{
+    return QString::fromStdString(test::testDataPath(std::string("animations/") + relative).string());
+}
+
+} // namespace
+
+class TestRenderPoses : public QObject {
+    Q_OBJECT
+private slots:
+    void poseNumbersInFileNames();
+    void badSelectionsFailFast_data();
+    void badSelectionsFailFast();
+    void posesAgreeWithTheReference();
+    void onePoseOnTheReferenceBackend();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestRenderPoses::poseNumbersInFileNames()
+{
+    using app::hasPoseNumber;
+    using app::posePath;
+    QVERIFY(hasPoseNumber("frame_%04d.png"));
+    QVERIFY(hasPoseNumber("%d.png"));
+    QVERIFY(hasPoseNumber("100%%_%03d.png"));
+    QVERIFY(!hasPoseNumber("frame.png"));
+    QVERIFY(!hasPoseNumber("frame_%4d.png")); // space padding has no place in a file name
+    QVERIFY(!hasPoseNumber("%d_%d.png"));
+    QVERIFY(!hasPoseNumber("frame_%s.png"));
+    QVERIFY(!hasPoseNumber("frame_%"));
+    QCOMPARE(posePath("frame_%04d.png", 7), QStringLiteral("frame_0007.png"));
+    QCOMPARE(posePath("frame_%04d.png", 123456), QStringLiteral("frame_123456.png"));
+    QCOMPARE(posePath("%d.png", 42), QStringLiteral("42.png"));
+    QCOMPARE(posePath("100%%_%03d.png", 5), QStringLiteral("100%_005.png"));
+    QCOMPARE(posePath("still.png", 5), QStringLiteral("still.png"));
+}
+
+void TestRenderPoses::badSelectionsFailFast_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+    QTest::addColumn<int>("exitCode"); // 2: the command line; 1: the input
+    const QString box = animation("folding_box");
+    QTest::newRow("both") << QStringList{"render", box, "--pose", "1", "--poses", "0:2", "-o", "f_%d.png"}
+                          << "not both" << 2;
+    QTest::newRow("no number in -o") << QStringList{"render", box, "--poses", "0:2", "-o", "f.png"}
+                                     << "f.png' needs the pose number" << 2;
+    QTest::newRow("no number in --ids")
+        << QStringList{"render", box, "--poses", "0:2", "-o", "f_%d.png", "--ids", "ids.png"} << "ids.png' needs the pose number" << 2;
+    QTest::newRow("backwards") << QStringList{"render", box, "--poses", "2:0", "-o", "f_%d.png"} << "runs backwards" << 2;
+    QTest::newRow("not a range") << QStringList{"render", box, "--poses", "0-2", "-o", "f_%d.png"}
+                                 << "not a range A:B" << 2;
+    QTest::newRow("negative") << QStringList{"render", box, "--pose", "-1", "-o", "f.png"} << "not a pose number" << 2;
+    QTest::newRow("two sources") << QStringList{"render", box, box, "--pose", "0", "-o", "f.png"}
+                                 << "one mesh animation source" << 2;
+    QTest::newRow("csg") << QStringList{"render", box, "--pose", "0", "--csg", "0 - 1", "-o", "f.png"}
+                         << "an animation is one object" << 2;
+    QTest::newRow("pose beyond the last") << QStringList{"render", box, "--pose", "3", "-o", "f.png", "--backend",
+                                                         "reference"}
+                                          << "has 3 poses (0 to 2); pose 3 does not exist" << 2;
+    QTest::newRow("poses of different sizes")
+        << QStringList{"render", animation("mismatched_vertices/mesh_%04d.obj"), "--pose", "0", "-o", "f.png",
+                       "--backend", "reference"}
+        << "mesh_0001.obj" << 1;
+}
+
+void TestRenderPoses::badSelectionsFailFast()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    QFETCH(int, exitCode);
+    for (QString& argument : arguments)
+        if (argument.startsWith(QLatin1String("f")) || argument.startsWith(QLatin1String("ids")))
+            argument = m_dir.filePath(argument);
+    const Run run = runTrimlab(arguments);
+    QCOMPARE(run.exitCode, exitCode);
+    QVERIFY2(run.err.contains(message), qPrintable(run.err));
+    QVERIFY2(run.err.count(QLatin1Char('\n')) <= 1, qPrintable(run.err)); // one line
+    QVERIFY(!QFileInfo::exists(m_dir.filePath("f.png")) && !QFileInfo::exists(m_dir.filePath("f_0.png")));
+}
+
+// The folding box's first two poses on the GPU: two images and two ids files; each
+// pose's ids agree with the CPU reference of that pose seen from the camera fitted to the
+// poses together (so the frames line up); the box moves between the poses. (Its last
+// pose folds the box flat: faces closer than float depth resolution make 5.6 % of its
+// pixels depth-order ties, beyond what the comparison excludes.)
+void TestRenderPoses::posesAgreeWithTheReference()
+{
+    TRIMLAB_SKIP_WITHOUT_GL();
+    const Run run = runTrimlab({"render", animation("folding_box"), "--poses", "0:1", "--rule", "alternating-border",
+                                "--method", "abuffer-linked-list", "--size", QStringLiteral("%1x%2").arg(kWidth).arg(kHeight),
+                                "--ids", m_dir.filePath("ids_%d.png"), "-o", m_dir.filePath("frame_%03d.png")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains("folding_box, pose 1 of 2") && run.out.contains("frame_001.png"), qPrintable(run.out));
+    QVERIFY(!QFileInfo::exists(m_dir.filePath("frame_002.png")));
+
+    const MeshAnimation box = loadAnimation(animation("folding_box").toStdString());
+    QCOMPARE(box.poseCount(), std::size_t(3));
+    Bounds together;
+    for (std::size_t p = 0; p < 2; ++p)
+        together.extend(computeBounds(box.poseMesh(p)));
+    const Camera camera = fitCamera(together, double(kWidth) / kHeight);
+    TrimSettings settings;
+    settings.rule = StaticRule::AlternatingBorder;
+    std::vector<TrimImage> shown;
+    for (int pose = 0; pose < 2; ++pose) {
+        QVERIFY(QFileInfo::exists(m_dir.filePath(QStringLiteral("frame_%1.png").arg(pose, 3, 10, QLatin1Char('0')))));
+        const QImage ids(m_dir.filePath(QStringLiteral("ids_%1.png").arg(pose)));
+        QVERIFY(!ids.isNull());
+        Scene scene;
+        scene.objects.push_back({"box", box.poseMesh(std::size_t(pose)), glm::dmat4(1.0)});
+        const ReferenceResult reference = ReferenceRenderer(scene).render(camera, kWidth, kHeight, settings);
+        shown.push_back(test::decodeIdsPng(ids));
+        const test::TrimComparison comparison =
+            test::compareTrimImages(shown.back(), test::idsOnly(reference.trim), reference.diagnostics);
+        qInfo("pose %d: %s", pose, qPrintable(comparison.summary()));
+        QVERIFY(comparison.coveredPixels > 300);
+        QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05,
+                 qPrintable(comparison.summary()));
+    }
+    int moved = 0;
+    for (std::size_t p = 0; p < shown.front().pixels.size(); ++p)
+        moved += shown.front().pixels[p].covered() != shown.back().pixels[p].covered() ? 1 : 0;
+    QVERIFY2(moved > 50, qPrintable(QString::number(moved)));
+}
+
+void TestRenderPoses::onePoseOnTheReferenceBackend()
+{
+    const QString out = m_dir.filePath("one.png");
+    const Run run = runTrimlab({"render", animation("bar"), "--pose", "1", "--backend", "reference", "--size", "64x48",
+                                "-o", out});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains("bar, pose 1 of") && run.out.contains("reference ray caster"), qPrintable(run.out));
+    QVERIFY(!QImage(out).isNull());
+}
+
+QTEST_MAIN(TestRenderPoses)
+#include "tst_render_poses.moc"
