@@ -90,6 +90,12 @@ void addRenderOptions(QCommandLineParser& parser)
                  "a glTF file): render its pose N (0 = the first).", "N"},
         {"poses", "The source is a mesh animation: render poses A to B, one image each, with one camera for all; "
                   "-o (and --depth, --ids) hold the pose number as %d or %04d, e.g. frame_%04d.png.", "A:B"},
+        {"dynamic-rule", "With --pose/--poses: classify each pose by this dynamic rule against --reference, the "
+                         "animation being the deformation history (additive, subtractive, intersection, confluent, "
+                         "homogeneous-confluent); the rest pose is classified by --rule. Default: --rule on each pose "
+                         "alone.", "name"},
+        {"reference", "With --dynamic-rule: rest (each pose against the rest pose) or previous (the classification "
+                      "carries from pose to pose, from the rest pose on). Default: rest.", "name"},
     });
     parser.addHelpOption();
 }
@@ -176,8 +182,31 @@ std::optional<QString> parsePoseOptions(const QCommandLineParser& parser, Render
 {
     if (auto e = parsePoseSelection(parser.value("pose"), parser.value("poses"), options.poses))
         return e;
-    if (!options.poses)
+    if (!options.poses) {
+        if (parser.isSet("dynamic-rule") || parser.isSet("reference"))
+            return QStringLiteral("--dynamic-rule and --reference classify the poses of an animation: give --pose N "
+                                  "or --poses A:B");
         return std::nullopt;
+    }
+    if (parser.isSet("dynamic-rule")) {
+        options.poseRule = parseDynamicRule(parser.value("dynamic-rule").toStdString());
+        if (!options.poseRule)
+            return QStringLiteral("unknown --dynamic-rule '%1' (use additive, subtractive, intersection, confluent or "
+                                  "homogeneous-confluent)")
+                .arg(parser.value("dynamic-rule"));
+    }
+    if (parser.isSet("reference")) {
+        const std::optional<PoseReference> reference = parsePoseReference(parser.value("reference").toStdString());
+        if (!reference)
+            return QStringLiteral("unknown --reference '%1' (use rest or previous)").arg(parser.value("reference"));
+        if (!options.poseRule)
+            return QStringLiteral("--reference is the reference of --dynamic-rule; give a dynamic rule too");
+        options.poseReference = *reference;
+    }
+    const TrimSettings& trim = options.trim;
+    if (options.poseRule && (trim.cap.enabled || trim.highlight.any() || trim.xray() || !trim.trimEnabled))
+        return QStringLiteral("--dynamic-rule classifies the trimmed solid itself: --cap, --highlight, --transparency "
+                              "and --rule none are for static rules");
     if (options.sources.size() != 1 || options.designed())
         return QStringLiteral("--pose and --poses render one mesh animation source (a folder, a numbered pattern or "
                               "a glTF file), not several sources, a script or a project");

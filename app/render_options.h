@@ -5,6 +5,7 @@
 
 #include "app/pose_frames.h"
 #include "app/scene_composition.h"
+#include "core/animation/animation_chain.h"
 #include "render/mfr/fragment_method.h"
 #include "core/trim/trim_settings.h"
 #include "core/view/camera.h"
@@ -58,6 +59,11 @@ struct RenderOptions {
     /// pattern or a glTF file) and these poses are rendered under the static rule, one
     /// image each, all with one camera fitted to the poses together.
     std::optional<PoseSelection> poses;
+    /// --dynamic-rule with --pose/--poses: the animation is a deformation history and each
+    /// pose is classified under this rule against --reference (the rest pose classified
+    /// by --rule); unset: --rule applies to each pose alone.
+    std::optional<DynamicRule> poseRule;
+    PoseReference poseReference = PoseReference::Rest;
 
     /// The source is a design: a stroke script was given, or the one source is a project or
     /// a demo with a history.

@@ -9,6 +9,7 @@
 #include "render/gl/context_reset.h"
 #include "render/gl/gl_error.h"
 #include "render/gl/offscreen_gl_context.h"
+#include "core/animation/animation_chain.h"
 #include "core/animation/animation_loader.h"
 #include "core/catalog/scene_source.h"
 #include "core/mesh/mesh_validation.h"
@@ -160,11 +161,10 @@ RenderOutcome renderWithReference(const Scene& scene, const RenderOptions& optio
     return outcome;
 }
 
-RenderOutcome renderDynamicWithGpu(const DynamicChain& chain, const RenderOptions& options, const Camera& camera)
+// `options.repeat` frames of the chain's shown level on `renderer` (configured).
+RenderOutcome renderDynamicOn(render::TrimRenderer& renderer, const QString& rendererName, const DynamicChain& chain,
+                              const RenderOptions& options, const Camera& camera)
 {
-    render::OffscreenGlContext gl;
-    render::TrimRenderer renderer(gl.context());
-    configure(renderer, options);
     render::DynamicTrimRenderer dynamic(renderer);
     dynamic.setChain(chain);
     render::FrameTimes times;
@@ -175,13 +175,21 @@ RenderOutcome renderDynamicWithGpu(const DynamicChain& chain, const RenderOption
         times.add(renderer.lastStats());
     }
     RenderOutcome outcome{renderer.readColor(), withMeshIds(renderer.readTrimImage(), chain.levels.back().frame), {}};
-    outcome.statistics = gpuStatistics(renderer.lastStats(), renderer.parameters(), gl.capabilities().renderer, times) +
+    outcome.statistics = gpuStatistics(renderer.lastStats(), renderer.parameters(), rendererName, times) +
                          QStringLiteral("; dynamic rules: %1 sets, %2 ms to characterize the reference frames once, "
                                         "%3 moved triangles in the shown set")
                              .arg(chain.levels.size())
                              .arg(characterizeMs, 0, 'f', 2)
                              .arg(chain.levels.back().frame.movedTriangles);
     return outcome;
+}
+
+RenderOutcome renderDynamicWithGpu(const DynamicChain& chain, const RenderOptions& options, const Camera& camera)
+{
+    render::OffscreenGlContext gl;
+    render::TrimRenderer renderer(gl.context());
+    configure(renderer, options);
+    return renderDynamicOn(renderer, gl.capabilities().renderer, chain, options, camera);
 }
 
 RenderOutcome renderDynamicWithReference(const DynamicChain& chain, const RenderOptions& options, const Camera& camera)
@@ -366,8 +374,24 @@ LoadedScene poseScene(const MeshAnimation& animation, int pose, const std::strin
     return loaded;
 }
 
-// --pose / --poses: the chosen poses of an animation under the static rule, each to its
-// own files, on one OpenGL context (or the CPU reference), with one camera fitted to all
+// "confluent against the previous pose (alternating-border on the rest pose 0)", or the
+// static settings.
+QString poseClassificationText(const RenderOptions& options, const MeshAnimation& animation, int pose)
+{
+    if (!options.poseRule)
+        return settingsText(options.trim);
+    const QString base = QString::fromStdString(ruleName(options.trim.rule));
+    if (std::size_t(pose) == animation.restPose)
+        return QStringLiteral("%1 (the rest pose: the base rule of %2)")
+            .arg(base, QString::fromLatin1(dynamicRuleName(*options.poseRule).data()));
+    return QStringLiteral("%1 against the %2 pose (%3 on the rest pose %4)")
+        .arg(QString::fromLatin1(dynamicRuleName(*options.poseRule).data()),
+             QString::fromLatin1(poseReferenceName(options.poseReference).data()), base)
+        .arg(animation.restPose);
+}
+
+// --pose / --poses: the chosen poses of an animation under the static rule (or a dynamic
+// rule over the animation as history), each to its own files, on one OpenGL context (or the CPU reference), with one camera fitted to all
 // of them so that the images of a sequence line up.
 int renderPoses(RenderOptions options)
 {
@@ -386,12 +410,14 @@ int renderPoses(RenderOptions options)
     const std::string name = std::filesystem::path(source).filename().string();
     std::vector<LoadedScene> poses;
     Bounds bounds;
+    options.ruleGiven = options.ruleGiven || options.poseRule.has_value(); // a dynamic rule cannot render untrimmed
     for (int pose = selection.first; pose <= selection.last; ++pose) {
         poses.push_back(poseScene(animation, pose, name));
         bounds.extend(poses.back().scene.worldBounds());
         if (!resolveTrimAvailability(poses.back(), options))
             return 1;
     }
+
     if (!fitInspection(poses.front().scene, options))
         return 2;
     const Camera camera = cameraFor(bounds, options);
@@ -402,8 +428,17 @@ int renderPoses(RenderOptions options)
         configure(*renderer, options);
     for (std::size_t i = 0; i < poses.size(); ++i) {
         const int pose = selection.first + int(i);
-        const RenderOutcome outcome = renderer ? renderOn(*renderer, gl->capabilities().renderer, poses[i].scene, options, camera)
-                                               : renderWithReference(poses[i].scene, options, camera);
+        const std::optional<DynamicChain> chain =
+            options.poseRule ? animationChain(animation, std::size_t(pose), options.poseReference, *options.poseRule,
+                                              options.trim.rule)
+                             : std::nullopt;
+        RenderOutcome outcome;
+        if (chain)
+            outcome = renderer ? renderDynamicOn(*renderer, gl->capabilities().renderer, *chain, options, camera)
+                               : renderDynamicWithReference(*chain, options, camera);
+        else
+            outcome = renderer ? renderOn(*renderer, gl->capabilities().renderer, poses[i].scene, options, camera)
+                               : renderWithReference(poses[i].scene, options, camera);
         RenderOptions files = options;
         files.output = posePath(options.output, pose);
         files.depthOutput = posePath(options.depthOutput, pose);
@@ -415,7 +450,7 @@ int renderPoses(RenderOptions options)
                       .arg(count - 1)
                       .arg(options.width)
                       .arg(options.height)
-                      .arg(settingsText(options.trim))
+                      .arg(poseClassificationText(options, animation, pose))
                       .arg(outcome.statistics + inspectionText(options.trim, outcome.trim), files.output));
     }
     printLine(QStringLiteral("camera: %1").arg(QString::fromStdString(formatCamera(camera))));

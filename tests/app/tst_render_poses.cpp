@@ -8,8 +8,13 @@
 #include "test_paths.h"
 #include "trim_comparison.h"
 
+#include "plain_obj.h"
+
 #include "app/pose_frames.h"
+#include "core/animation/animation_chain.h"
 #include "core/animation/animation_loader.h"
+#include "core/scene/shape_generators.h"
+#include "core/trim/dynamic_reference_renderer.h"
 #include "core/trim/reference_renderer.h"
 
 #include <QTemporaryDir>
@@ -39,6 +44,8 @@ private slots:
     void badSelectionsFailFast();
     void posesAgreeWithTheReference();
     void onePoseOnTheReferenceBackend();
+    void dynamicRulesOverTheAnimation_data();
+    void dynamicRulesOverTheAnimation();
 
 private:
     QTemporaryDir m_dir;
@@ -160,6 +167,84 @@ void TestRenderPoses::onePoseOnTheReferenceBackend()
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
     QVERIFY2(run.out.contains("bar, pose 1 of") && run.out.contains("reference ray caster"), qPrintable(run.out));
     QVERIFY(!QImage(out).isNull());
+}
+
+void TestRenderPoses::dynamicRulesOverTheAnimation_data()
+{
+    QTest::addColumn<QString>("rule");
+    QTest::addColumn<QString>("reference");
+    QTest::newRow("additive, rest") << "additive" << "rest";
+    QTest::newRow("confluent, previous") << "confluent" << "previous";
+    QTest::newRow("subtractive, previous") << "subtractive" << "previous";
+}
+
+// Two balls of one mesh that move into each other over three poses (apart, touching
+// deep, deeper): each pose under a dynamic rule, on the GPU, against the dynamic CPU
+// reference of the chain that animationChain builds for it, cut open by a plane through
+// the balls' centres. Under parity alone the lens where they overlap (winding 2) is
+// carved out and its walls show through the cut; the history (both balls solid before
+// they met) keeps it solid under the additive and confluent rules, and the subtractive
+// rule removes what moved, so the images differ from parity's.
+void TestRenderPoses::dynamicRulesOverTheAnimation()
+{
+    TRIMLAB_SKIP_WITHOUT_GL();
+    QFETCH(QString, rule);
+    QFETCH(QString, reference);
+    const QString folder = m_dir.filePath("balls");
+    if (!QFileInfo::exists(folder)) {
+        QVERIFY(QDir().mkpath(folder));
+        const double offsets[] = {1.4, 0.8, 0.5};
+        for (int pose = 0; pose < 3; ++pose) {
+            TriangleMesh balls = makeIcosphere(glm::dvec3(-offsets[pose], 0.0, 0.0), 1.0, 2);
+            appendMesh(balls, makeIcosphere(glm::dvec3(offsets[pose], 0.1, 0.0), 1.0, 2));
+            QVERIFY(test::writePlainObj(balls, QStringLiteral("%1/pose_%2.obj").arg(folder).arg(pose)));
+        }
+    }
+    const QString tag = rule + QLatin1Char('-') + reference;
+    const QString size = QStringLiteral("%1x%2").arg(kWidth).arg(kHeight);
+    const Run run = runTrimlab({"render", folder, "--poses", "0:2", "--rule", "parity", "--clip", "0,0,-1,0",
+                                "--dynamic-rule", rule,
+                                "--reference", reference, "--method", "abuffer-linked-list", "--size", size, "--ids",
+                                m_dir.filePath(tag + "-ids_%d.png"), "-o", m_dir.filePath(tag + "_%d.png")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains(QStringLiteral("%1 against the %2 pose (parity on the rest pose 0)").arg(rule, reference)),
+             qPrintable(run.out));
+    // The same poses under parity alone (the same camera: fitted to the same poses).
+    const Run still = runTrimlab({"render", folder, "--poses", "0:2", "--rule", "parity", "--clip", "0,0,-1,0", "--method",
+                                  "abuffer-linked-list", "--size", size, "--ids", m_dir.filePath("static-ids_%d.png"),
+                                  "-o", m_dir.filePath("static_%d.png")});
+    QVERIFY2(still.exitCode == 0, qPrintable(still.err));
+
+    const MeshAnimation balls = loadAnimation(folder.toStdString());
+    Bounds together;
+    for (std::size_t p = 0; p < balls.poseCount(); ++p)
+        together.extend(computeBounds(balls.poseMesh(p)));
+    const Camera camera = fitCamera(together, double(kWidth) / kHeight);
+    TrimSettings settings;
+    settings.rule = StaticRule::Parity;
+    settings.clip = ClipPlane{true, {0.0, 0.0, -1.0}, 0.0};
+    for (std::size_t pose = 1; pose < 3; ++pose) {
+        const DynamicChain chain = animationChain(balls, pose, *parsePoseReference(reference.toStdString()),
+                                                  *parseDynamicRule(rule.toStdString()), StaticRule::Parity)
+                                       .value();
+        QCOMPARE(chain.levels.size(), reference == QLatin1String("rest") ? std::size_t(1) : pose);
+        const ReferenceResult expected = DynamicReferenceRenderer(chain).render(camera, kWidth, kHeight, settings);
+        const TrimImage fromFile = test::decodeIdsPng(QImage(m_dir.filePath(tag + QStringLiteral("-ids_%1.png").arg(pose))));
+        const test::TrimComparison comparison = test::compareTrimImages(
+            fromFile, test::idsOnly(withMeshIds(expected.trim, chain.levels.back().frame)), expected.diagnostics);
+        qInfo("pose %zu: %s", pose, qPrintable(comparison.summary()));
+        QVERIFY(comparison.coveredPixels > 200); // the subtractive rule keeps little
+        QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05,
+                 qPrintable(comparison.summary()));
+    }
+    // The history matters: the last pose under the dynamic rule is not parity's picture.
+    const TrimImage dynamicLast = test::decodeIdsPng(QImage(m_dir.filePath(tag + "-ids_2.png")));
+    const TrimImage staticLast = test::decodeIdsPng(QImage(m_dir.filePath("static-ids_2.png")));
+    int differing = 0;
+    for (std::size_t p = 0; p < dynamicLast.pixels.size(); ++p)
+        differing += dynamicLast.pixels[p].primitiveId != staticLast.pixels[p].primitiveId ? 1 : 0;
+    qInfo("%d pixels differ from parity alone", differing);
+    QVERIFY2(differing > 100, qPrintable(QString::number(differing)));
 }
 
 QTEST_MAIN(TestRenderPoses)
