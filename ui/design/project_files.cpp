@@ -189,6 +189,8 @@ bool ProjectFiles::saveSceneTo(const QString& path, QString* error)
     if (!reason.isEmpty())
         return false;
     m_scenePath = QFileInfo(path).absoluteFilePath();
+    if (shown.markSaved)
+        shown.markSaved();
     emit saved(m_scenePath);
     return true;
 }
@@ -201,6 +203,26 @@ bool ProjectFiles::maybeSave()
                     tr("The deformation history has changes that are not saved."),
                     QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_window);
     box.setInformativeText(tr("Save them to a project file first?"));
+    box.setDefaultButton(QMessageBox::Save);
+    switch (box.exec()) {
+    case QMessageBox::Save: return save();
+    case QMessageBox::Discard: return true;
+    default: return false;
+    }
+}
+
+bool ProjectFiles::maybeSaveScene()
+{
+    if (m_workspace.session()) // a design: maybeSave() guards its history
+        return true;
+    const ShownScene shown = m_sceneSource ? m_sceneSource() : ShownScene{};
+    if (!shown.scene || !shown.unsaved)
+        return true;
+    QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
+                    tr("The scene of %1 objects has changes that are not saved.").arg(shown.scene->scene.objects.size()),
+                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_window);
+    box.setObjectName(QStringLiteral("unsavedSceneBox"));
+    box.setInformativeText(tr("Save its objects, placements and CSG to a project file first?"));
     box.setDefaultButton(QMessageBox::Save);
     switch (box.exec()) {
     case QMessageBox::Save: return save();

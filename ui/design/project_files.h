@@ -40,6 +40,10 @@ public:
     struct ShownScene {
         std::shared_ptr<const LoadedScene> scene;
         CsgSettings csg;
+        /// An assembly of several objects with changes no file holds (maybeSaveScene asks).
+        bool unsaved = false;
+        /// Called once the scene is saved.
+        std::function<void()> markSaved;
     };
     using SceneSource = std::function<ShownScene()>;
 
@@ -75,6 +79,9 @@ public:
     /// When the session has unsaved changes, asks Save / Discard / Cancel. True when the
     /// caller may go on (saved, discarded, or nothing to save).
     bool maybeSave();
+    /// The same for a scene of several objects without a session (ShownScene::unsaved),
+    /// before it is replaced or the window closes.
+    bool maybeSaveScene();
 
 signals:
     void opened(std::shared_ptr<const trimlab::timeline::Project> project, const QString& path);

@@ -17,6 +17,7 @@ InspectScene::~InspectScene() = default;
 void InspectScene::reset(std::shared_ptr<const LoadedScene> scene)
 {
     m_undoStack->clear(); // commands refer to the previous scene's objects
+    m_objectsAdded = false;
     m_scene = std::move(scene);
     m_transforms.clear();
     if (m_scene)
@@ -50,8 +51,20 @@ bool InspectScene::appendObjects(const LoadedScene& added, QString* error)
         m_transforms.push_back(decomposeObjectTransform(added.scene.objects[i].modelMatrix));
     }
     m_scene = std::move(grown);
+    m_objectsAdded = true;
     emit sceneReplaced();
     return true;
+}
+
+bool InspectScene::isModified() const
+{
+    return m_objectsAdded || !m_undoStack->isClean();
+}
+
+void InspectScene::markSaved()
+{
+    m_objectsAdded = false;
+    m_undoStack->setClean();
 }
 
 int InspectScene::objectCount() const

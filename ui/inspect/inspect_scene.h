@@ -50,6 +50,11 @@ public:
     [[nodiscard]] std::optional<ObjectTransform> transform(int object) const;
     [[nodiscard]] const CsgSettings& csg() const { return m_csg; }
     [[nodiscard]] QUndoStack* undoStack() const { return m_undoStack; }
+    /// The scene differs from what was opened or last saved: objects were added, or an
+    /// edit (transform, CSG) is not at the undo stack's clean state.
+    [[nodiscard]] bool isModified() const;
+    /// What the scene shows is now what a file holds (after Save Project).
+    void markSaved();
 
     /// Undoable: moves object `object` to `transform`. Consecutive edits of the same
     /// component of one object (spin box steps) merge into one undo step, and so do the
@@ -82,6 +87,7 @@ private:
     std::vector<std::optional<ObjectTransform>> m_transforms;
     CsgSettings m_csg;
     QUndoStack* m_undoStack;
+    bool m_objectsAdded = false; ///< since reset() or markSaved(): not an undoable edit
     int m_typingSession = 0;
     int m_dragSession = 0;
 };

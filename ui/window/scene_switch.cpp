@@ -113,7 +113,11 @@ void SceneSwitch::connectLoaders()
         const std::shared_ptr<const LoadedScene>& scene = inspect->scene()->scene();
         if (!scene || inspect->showsAnimation())
             return ProjectFiles::ShownScene{};
-        return ProjectFiles::ShownScene{scene, inspect->csg()};
+        // Only an assembly asks before it is lost: one mesh's placement is a view of a
+        // file that is unchanged on disk, while objects put together exist nowhere else.
+        InspectScene* shown = inspect->scene();
+        return ProjectFiles::ShownScene{scene, inspect->csg(), shown->isModified() && shown->objectCount() > 1,
+                                        [shown] { shown->markSaved(); }};
     });
     connect(inspect, &InspectWorkspace::transformed, this, &SceneSwitch::onSceneTransformed);
     connect(inspect, &InspectWorkspace::objectsAppended, this, &SceneSwitch::onObjectsAppended);
@@ -132,7 +136,8 @@ QStringList SceneSwitch::recentAnimations() const
 
 bool SceneSwitch::confirmReplacingShown()
 {
-    return m_features.design->projectFiles()->maybeSave() && m_features.animation->confirmDiscardSkinningEdits();
+    ProjectFiles* projects = m_features.design->projectFiles();
+    return projects->maybeSave() && projects->maybeSaveScene() && m_features.animation->confirmDiscardSkinningEdits();
 }
 
 void SceneSwitch::openSource(const QString& source)

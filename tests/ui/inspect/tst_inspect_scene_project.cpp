@@ -5,6 +5,7 @@
 // writing the same scene back to the file it came from.
 #include "ui/inspect/inspect_workspace.h"
 #include "inspect_window.h"
+#include "message_box_closer.h"
 #include "test_paths.h"
 
 #include "ui/design/design_workspace.h"
@@ -33,6 +34,7 @@ class TestInspectSceneProject : public QObject {
 private slots:
     void initTestCase();
     void threeObjectsSaveAndReopenIdentical();
+    void anUnsavedAssemblyAsksBeforeItIsReplaced();
 
 private:
     QTemporaryDir m_dir;
@@ -111,6 +113,60 @@ void TestInspectSceneProject::threeObjectsSaveAndReopenIdentical()
     const timeline::Project again = timeline::readProject(path.toStdString());
     QVERIFY(again.scene.has_value());
     QVERIFY(*again.scene == (timeline::ProjectScene{built->scene.objects, builtCsg}));
+}
+
+// Objects put together exist nowhere else until saved: opening another file asks first
+// (Cancel keeps the assembly, Discard lets the file open); once saved, nothing is asked;
+// a moved object makes it unsaved again.
+void TestInspectSceneProject::anUnsavedAssemblyAsksBeforeItIsReplaced()
+{
+    const QString first = m_dir.filePath(QStringLiteral("a.obj"));
+    const QString second = m_dir.filePath(QStringLiteral("b.obj"));
+    const QString other = m_dir.filePath(QStringLiteral("other.obj"));
+    QVERIFY(writePlainObj(makeIcosphere(glm::dvec3(0.0), 1.0, 2), first));
+    QVERIFY(writePlainObj(makeIcosphere(glm::dvec3(0.5, 0.0, 0.0), 0.6, 2), second));
+    QVERIFY(writePlainObj(makeIcosphere(glm::dvec3(0.0), 0.8, 1), other));
+    auto window = showInspectWindow(m_dir.filePath(QStringLiteral("ask.ini")), first);
+    QSignalSpy added(window.get(), &MainWindow::objectAdded);
+    window->inspectWorkspace()->addObject(second);
+    QVERIFY(added.wait(kInspectWaitMs));
+    InspectScene* scene = window->inspectWorkspace()->scene();
+    QVERIFY(scene->isModified());
+
+    QSignalSpy loaded(window.get(), &MainWindow::sceneLoaded);
+    {
+        MessageBoxAnswerer cancel(QMessageBox::Cancel);
+        window->openSource(other);
+        QCOMPARE(cancel.names(), QStringList{QStringLiteral("unsavedSceneBox")});
+        QVERIFY2(cancel.seen().first().contains(QStringLiteral("2 objects")), qPrintable(cancel.seen().first()));
+    }
+    QVERIFY(!loaded.wait(300));
+    QCOMPARE(scene->objectCount(), 2);
+
+    QString error;
+    QVERIFY2(window->designWorkspace()->projectFiles()->saveTo(m_dir.filePath(QStringLiteral("ab.trimlab")), &error),
+             qPrintable(error));
+    QVERIFY(!scene->isModified());
+    ObjectTransform moved = scene->transform(1).value();
+    moved.translation.x += 0.25;
+    scene->editTransform(1, moved);
+    QVERIFY(scene->isModified());
+    {
+        MessageBoxAnswerer discard(QMessageBox::Discard);
+        window->openSource(other);
+        QCOMPARE(discard.names(), QStringList{QStringLiteral("unsavedSceneBox")});
+    }
+    QVERIFY(loaded.count() > 0 || loaded.wait(kInspectWaitMs));
+    QCOMPARE(scene->objectCount(), 1);
+
+    // One mesh moved is not an assembly: nothing is asked.
+    ObjectTransform nudged = scene->transform(0).value();
+    nudged.translation.y += 0.1;
+    scene->editTransform(0, nudged);
+    MessageBoxAnswerer none(QMessageBox::Cancel);
+    window->openSource(first);
+    QVERIFY(loaded.wait(kInspectWaitMs));
+    QVERIFY(none.seen().isEmpty());
 }
 
 QTEST_MAIN(TestInspectSceneProject)
