@@ -199,16 +199,8 @@ bool ProjectFiles::maybeSave()
 {
     if (!m_workspace.isModified())
         return true;
-    QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
-                    tr("The deformation history has changes that are not saved."),
-                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_window);
-    box.setInformativeText(tr("Save them to a project file first?"));
-    box.setDefaultButton(QMessageBox::Save);
-    switch (box.exec()) {
-    case QMessageBox::Save: return save();
-    case QMessageBox::Discard: return true;
-    default: return false;
-    }
+    return askToSave(tr("The deformation history has changes that are not saved."),
+                     tr("Save them to a project file first?"), QStringLiteral("unsavedHistoryBox"));
 }
 
 bool ProjectFiles::maybeSaveScene()
@@ -218,11 +210,19 @@ bool ProjectFiles::maybeSaveScene()
     const ShownScene shown = m_sceneSource ? m_sceneSource() : ShownScene{};
     if (!shown.scene || !shown.unsaved)
         return true;
-    QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
-                    tr("The scene of %1 objects has changes that are not saved.").arg(shown.scene->scene.objects.size()),
+    return askToSave(tr("The scene of %1 objects has changes that are not saved.").arg(shown.scene->scene.objects.size()),
+                     tr("Save its objects, placements and CSG to a project file first?"),
+                     QStringLiteral("unsavedSceneBox"));
+}
+
+// Save (the default) / Discard / Cancel about unsaved work: true when the caller may go
+// on (saved or discarded).
+bool ProjectFiles::askToSave(const QString& text, const QString& question, const QString& name)
+{
+    QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"), text,
                     QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_window);
-    box.setObjectName(QStringLiteral("unsavedSceneBox"));
-    box.setInformativeText(tr("Save its objects, placements and CSG to a project file first?"));
+    box.setObjectName(name);
+    box.setInformativeText(question);
     box.setDefaultButton(QMessageBox::Save);
     switch (box.exec()) {
     case QMessageBox::Save: return save();

@@ -94,6 +94,7 @@ private:
     void finishOpen(bool succeeded, const QString& message);
     [[nodiscard]] QString currentPath() const;
     bool saveSceneTo(const QString& path, QString* error);
+    bool askToSave(const QString& text, const QString& question, const QString& name);
     void closeProgress();
 
     QWidget* m_window;
