@@ -56,19 +56,12 @@ std::vector<std::pair<std::size_t, std::size_t>> overlappingBoxes(const std::vec
     return pairs;
 }
 
-// Whether both corners q, r lie strictly on one side of the plane of `t`.
-bool strictlyOnOneSide(const Corners& t, const ExactPoint& q, const ExactPoint& r)
-{
-    const CGAL::Orientation side = CGAL::orientation(t[0], t[1], t[2], q);
-    return side != CGAL::COPLANAR && side == CGAL::orientation(t[0], t[1], t[2], r);
-}
+// The side of the plane of `t` that `p` lies on.
+CGAL::Orientation sideOf(const Corners& t, const ExactPoint& p) { return CGAL::orientation(t[0], t[1], t[2], p); }
 
-// Whether corners q and r lie strictly on opposite sides of the plane of `t`.
-bool straddles(const Corners& t, const ExactPoint& q, const ExactPoint& r)
-{
-    const CGAL::Orientation side = CGAL::orientation(t[0], t[1], t[2], q);
-    return side != CGAL::COPLANAR && side == -CGAL::orientation(t[0], t[1], t[2], r);
-}
+// Two corners strictly on one side of a plane, or strictly on opposite sides.
+bool oneSide(CGAL::Orientation x, CGAL::Orientation y) { return x != CGAL::COPLANAR && x == y; }
+bool oppositeSides(CGAL::Orientation x, CGAL::Orientation y) { return x != CGAL::COPLANAR && x == -y; }
 
 // Where the segment from p to q crosses the plane of `t` (p and q strictly on opposite
 // sides), as lazy exact arithmetic: its interval approximation usually decides the
@@ -98,16 +91,19 @@ bool meetOnlyAtSharedCorners(const Corners& a, const Corners& b)
             }
     const auto next = [](std::size_t k, std::size_t step) { return (k + step) % 3; };
     if (shared == 1) {
-        // a's other two corners strictly on one side of b's plane: a touches that plane
-        // only at the shared corner (or the same the other way round).
         const std::size_t i = std::size_t(std::find_if(matchInB.begin(), matchInB.end(),
                                                        [](std::size_t m) { return m != none; }) - matchInB.begin());
         const std::size_t j = matchInB[i];
         const ExactPoint& v = a[i];
         const ExactPoint &a1 = a[next(i, 1)], &a2 = a[next(i, 2)], &b1 = b[next(j, 1)], &b2 = b[next(j, 2)];
-        if (strictlyOnOneSide(b, a1, a2) || strictlyOnOneSide(a, b1, b2))
+        // Each corner's side of the other triangle's plane, decided once (most pairs).
+        const CGAL::Orientation a1InB = sideOf(b, a1), a2InB = sideOf(b, a2);
+        const CGAL::Orientation b1InA = sideOf(a, b1), b2InA = sideOf(a, b2);
+        // a's other two corners strictly on one side of b's plane: a touches that plane
+        // only at the shared corner (or the same the other way round).
+        if (oneSide(a1InB, a2InB) || oneSide(b1InA, b2InA))
             return true;
-        if (straddles(b, a1, a2) && straddles(a, b1, b2)) {
+        if (oppositeSides(a1InB, a2InB) && oppositeSides(b1InA, b2InA)) {
             // Each meets the other's plane in a segment from v along the planes' common
             // line: [v, p] and [v, q]. They share more than v only if p and q lie on the
             // same side of v (the angle p v q is 0, not 180 degrees). Deciding this here
@@ -117,8 +113,7 @@ bool meetOnlyAtSharedCorners(const Corners& a, const Corners& b)
             const ExactPoint q = segmentCrossing(b1, b2, a);
             return CGAL::angle(p, v, q) == CGAL::OBTUSE;
         }
-        if (CGAL::orientation(a[0], a[1], a[2], b1) != CGAL::COPLANAR ||
-            CGAL::orientation(a[0], a[1], a[2], b2) != CGAL::COPLANAR)
+        if (b1InA != CGAL::COPLANAR || b2InA != CGAL::COPLANAR)
             return false;
         // In one plane (a fan in a flat region): the two corners at v are convex sectors,
         // which meet only at v iff a line along one of their four edges separates them.
@@ -136,7 +131,7 @@ bool meetOnlyAtSharedCorners(const Corners& a, const Corners& b)
         std::size_t j = 0;
         while (j == matchInB[next(i, 1)] || j == matchInB[next(i, 2)])
             ++j;
-        if (CGAL::orientation(a[0], a[1], a[2], b[j]) != CGAL::COPLANAR)
+        if (sideOf(a, b[j]) != CGAL::COPLANAR)
             return true;
         return CGAL::coplanar_orientation(a[next(i, 1)], a[next(i, 2)], a[i], b[j]) == CGAL::NEGATIVE;
     }
@@ -235,8 +230,11 @@ void triangulateGroup(const std::vector<std::size_t>& members, const std::vector
             v->info() = project.lift(v->point()); // where two constraints cross
 
     std::vector<Triangle2> shadows;
-    for (std::size_t m : members)
+    std::vector<bool> clockwise; ///< per member: its shadow runs clockwise (the pieces run counter-clockwise)
+    for (std::size_t m : members) {
         shadows.emplace_back(project(triangles[m][0]), project(triangles[m][1]), project(triangles[m][2]));
+        clockwise.push_back(shadows.back().orientation() == CGAL::CLOCKWISE);
+    }
     for (auto f = triangulation.finite_faces_begin(); f != triangulation.finite_faces_end(); ++f) {
         const std::array<ExactPoint, 3> corners{*f->vertex(0)->info(), *f->vertex(1)->info(), *f->vertex(2)->info()};
         // Every member's edges are constraints, so a piece is inside a member or outside
@@ -246,7 +244,7 @@ void triangulateGroup(const std::vector<std::size_t>& members, const std::vector
             if (members.size() > 1 && !shadows[k].has_on_bounded_side(centre))
                 continue;
             ArrangedTriangle piece{corners, members[k]};
-            if (shadows[k].orientation() == CGAL::CLOCKWISE) // the pieces run counter-clockwise
+            if (clockwise[k])
                 std::swap(piece.corners[1], piece.corners[2]);
             pieces.push_back(std::move(piece));
         }
