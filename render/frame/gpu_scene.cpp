@@ -108,6 +108,16 @@ void GpuScene::updatePositions(std::size_t objectIndex, const std::vector<glm::v
     m_gl.glBufferSubData(GL_ARRAY_BUFFER, offset, bytes, normals.data());
 }
 
+GpuObjectGeometry GpuScene::objectGeometry(std::size_t objectIndex) const
+{
+    if (objectIndex >= m_objects.size())
+        throw std::invalid_argument("objectGeometry: object " + std::to_string(objectIndex) + " does not exist; " +
+                                    "the scene has " + std::to_string(m_objects.size()) + " objects.");
+    const ObjectRange& object = m_objects[objectIndex];
+    return {m_positions.id(), m_normals.id(), std::size_t(object.baseVertex), object.vertexCount,
+            object.triangles.size()};
+}
+
 void GpuScene::setModelMatrix(std::size_t objectIndex, const glm::dmat4& model)
 {
     if (objectIndex >= m_objects.size())

@@ -16,6 +16,17 @@
 
 namespace trimlab::render {
 
+/// Where one object's geometry lives in a GpuScene's buffers, for compute passes that
+/// rewrite it in place (frame/gpu_skinning.h): positions and normals are tightly packed
+/// float xyz per vertex, the object's vertices starting at `baseVertex`.
+struct GpuObjectGeometry {
+    GLuint positions = 0;
+    GLuint normals = 0;
+    std::size_t baseVertex = 0;
+    std::size_t vertexCount = 0;
+    std::size_t triangleCount = 0;
+};
+
 class GpuScene {
 public:
     explicit GpuScene(GlFunctions& gl);
@@ -29,6 +40,11 @@ public:
     /// next pose of an animation) and recomputes its normals. Connectivity is unchanged.
     /// Throws std::invalid_argument on a count mismatch.
     void updatePositions(std::size_t objectIndex, const std::vector<glm::vec3>& positions);
+
+    /// The buffers and range of object `objectIndex`, for a pass that writes its positions
+    /// and normals on the GPU instead of updatePositions. Throws std::invalid_argument for an
+    /// index beyond the uploaded objects.
+    [[nodiscard]] GpuObjectGeometry objectGeometry(std::size_t objectIndex) const;
 
     /// Replaces the model matrix of object `objectIndex` (e.g. the Scene panel moved it)
     /// without re-uploading any geometry; takes effect with the next setView(). The matrix

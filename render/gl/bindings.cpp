@@ -34,6 +34,11 @@ QStringList glslBindingDefines()
         define("STORAGE_REFERENCE_BITS", kReferenceBitsStorage),
         define("STORAGE_CHARACTERIZATION_BITS", kCharacterizationBitsStorage),
         define("STORAGE_OBJECT_WINDINGS", kObjectWindingsStorage),
+        define("STORAGE_SKINNING_SOURCE", kSkinningSourceStorage),
+        define("STORAGE_SKINNING_INFLUENCES", kSkinningInfluencesStorage),
+        define("STORAGE_SKINNING_WEIGHTS", kSkinningWeightsStorage),
+        define("STORAGE_SKINNING_TRANSFORMS", kSkinningTransformsStorage),
+        define("STORAGE_VERTEX_RING", kVertexRingStorage),
         define("ATOMIC_FRAME_COUNTERS", kFrameCountersAtomic),
     };
 }

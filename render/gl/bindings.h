@@ -37,6 +37,13 @@ inline constexpr GLuint kDynamicStateStorage = 8;         ///< dynamic rules: pe
 inline constexpr GLuint kReferenceBitsStorage = 9;        ///< dynamic rules: the reference frame's bit vectors
 inline constexpr GLuint kCharacterizationBitsStorage = 10; ///< dynamic rules: the bit vectors a level writes
 inline constexpr GLuint kObjectWindingsStorage = 11;      ///< CSG, collisions: per-object winding per pixel
+// ... and the compute passes that rewrite an object's geometry in place (frame/gpu_skinning.h,
+// frame/gpu_vertex_normals.h), which bind the scene's positions and normals beside these.
+inline constexpr GLuint kSkinningSourceStorage = 12;     ///< double positions[]: the rest pose or the chain's last pose
+inline constexpr GLuint kSkinningInfluencesStorage = 13; ///< uint: per vertex the count, then its bones
+inline constexpr GLuint kSkinningWeightsStorage = 14;    ///< double weights[]: per vertex, beside its bones
+inline constexpr GLuint kSkinningTransformsStorage = 15; ///< double: the bone transforms of the poses applied
+inline constexpr GLuint kVertexRingStorage = 16;         ///< uint: CSR one-ring (offsets, corners, triangles)
 
 // Atomic counter buffers.
 inline constexpr GLuint kFrameCountersAtomic = 0; ///< the per-frame statistics (frame_counters.glsl)

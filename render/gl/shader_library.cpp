@@ -74,6 +74,9 @@ const std::vector<ProgramDescription>& programCatalog()
         {"two_pass_count", {"scene.vert", "two_pass_count.frag"}, {{}}},
         {"two_pass_closest", {"scene.vert", "two_pass_closest.frag"}, {{}}},
         {"two_pass_resolve", {"fullscreen.vert", "two_pass_resolve.frag"}, {{}, {{"CAPPING"}}}},
+        // geometry rewritten on the GPU: skinned poses and their normals (frame/gpu_skinning.h)
+        {"skinning", {"skinning.comp"}, {{}}},
+        {"vertex_normals", {"vertex_normals.comp"}, {{}}},
     };
     return catalog;
 }
