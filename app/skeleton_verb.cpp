@@ -11,6 +11,7 @@
 #include "core/scene/world_geometry.h"
 #include "core/skeleton/bone_heat_weights.h"
 #include "core/skeleton/rigged_gltf.h"
+#include "core/skeleton/skeleton_evaluation.h"
 #include "core/skeleton/skeleton_extraction.h"
 #include "core/skeleton/skeleton_input.h"
 #include "core/skeleton/skeleton_json.h"
@@ -148,14 +149,26 @@ TriangleMesh loadSingleMesh(const std::string& source)
 // Everything the summary prints.
 struct SkeletonRun {
     std::size_t inputVertices = 0, vertices = 0, faces = 0;
-    double loadMs = 0.0, subdivisionMs = 0.0, weightsMs = 0.0, exportMs = 0.0;
+    double loadMs = 0.0, subdivisionMs = 0.0, weightsMs = 0.0, exportMs = 0.0, evaluationMs = 0.0;
     SkeletonExtraction extraction;
+    SkeletonEvaluation curveQuality, rigQuality;
     BoneHeatReport weights;
 };
 
 QString seconds(double ms)
 {
     return QString::number(ms * 1e-3, 'f', 3);
+}
+
+// The evaluator's numbers (skeleton_evaluation.h) for the curve skeleton and the rig.
+void printQuality(const SkeletonRun& r)
+{
+    printLine(QStringLiteral("quality of the curve skeleton and of the rig (evaluated in %1 s; lengths x the "
+                             "bounding-box diagonal %2):")
+                  .arg(seconds(r.evaluationMs)).arg(r.curveQuality.diagonal, 0, 'g', 4));
+    for (const auto& [name, quality] : {std::pair{"curve", &r.curveQuality}, std::pair{"rig", &r.rigQuality}})
+        for (const std::string& line : describeEvaluation(*quality))
+            printLine(QStringLiteral("  %1 %2").arg(QString::fromLatin1(name), -5).arg(QString::fromStdString(line)));
 }
 
 void printSummary(const SkeletonVerbOptions& o, const SkeletonRun& r)
@@ -201,6 +214,7 @@ void printSummary(const SkeletonVerbOptions& o, const SkeletonRun& r)
     }
     printLine(QStringLiteral("times (s):") + header);
     printLine(QStringLiteral("          ") + row);
+    printQuality(r);
 }
 
 // Refusals name the mesh ("cat.obj: the mesh is open: ...").
@@ -238,6 +252,12 @@ int skeletonOfMesh(const SkeletonVerbOptions& o)
     run.faces = mesh.triangleCount();
     run.extraction = extract(mesh, o, control);
     timer.restart();
+    {
+        const SkeletonEvaluator evaluator(mesh);
+        run.curveQuality = evaluator.evaluate(skeletonGraph(run.extraction.curve));
+        run.rigQuality = evaluator.evaluate(skeletonGraph(run.extraction.rig));
+    }
+    run.evaluationMs = lapMilliseconds(timer);
     BoneHeatOptions heat;
     heat.backend = o.extraction.contraction.backend;
     heat.ordering = o.extraction.contraction.ordering;

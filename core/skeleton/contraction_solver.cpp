@@ -1,5 +1,6 @@
 #include "core/skeleton/contraction_solver.h"
 
+#include "core/skeleton/contraction_remeshing.h"
 #include "core/skeleton/cotangent_laplacian.h"
 #include "core/skeleton/normal_equations.h"
 #include "core/skeleton/sparse_cholesky.h"
@@ -9,7 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
+#include <utility>
 
 namespace trimlab {
 
@@ -31,6 +34,8 @@ void checkOptions(const ContractionOptions& o)
         throw std::invalid_argument("minAngleDegrees must lie in (0, 60)");
     if (!(o.minAreaRatio >= 0.0) || !(o.minAreaDecrease >= 0.0 && o.minAreaDecrease < 1.0))
         throw std::invalid_argument("minAreaRatio must be >= 0 and minAreaDecrease in [0, 1)");
+    if (!std::isfinite(o.collapseFraction) || o.collapseFraction >= 1.0)
+        throw std::invalid_argument("collapseFraction must be finite and below 1");
     if (o.maxIterations < 1)
         throw std::invalid_argument("maxIterations must be at least 1");
 }
@@ -43,10 +48,14 @@ constexpr double kContractionUnderway = 0.99;
 
 struct ContractionSolver::State {
     ContractionOptions options;
+    // The current (remeshed) mesh; groupOf maps each input vertex to the vertex holding it.
     std::vector<glm::uvec3> triangles;
     std::vector<glm::dvec3> positions;
-    CotangentLaplacian laplacian;
-    NormalEquations normal;
+    std::vector<int> groupOf;
+    double collapseLength = 0.0;
+    std::size_t collapses = 0;
+    std::unique_ptr<CotangentLaplacian> laplacian;
+    std::unique_ptr<NormalEquations> normal;
     SkeletonSparseMatrix colamdSource; // A's pattern, only for SparseOrdering::Colamd
     std::unique_ptr<SparseCholesky> factor;
     SparseBackend backend;
@@ -60,14 +69,77 @@ struct ContractionSolver::State {
     double initialArea = 0.0;
     double area = 0.0;
     std::vector<double> laplacianMagnitude;
+    // Per input vertex, what positions() and laplacianMagnitude() return.
+    std::vector<glm::dvec3> inputPositions;
+    std::vector<double> inputMagnitude;
     int iterations = 0, analyses = 0, factorizations = 0;
     bool finished = false;
     std::vector<std::string> warnings;
 
     State(const TriangleMesh& mesh, const ContractionOptions& o)
         : options(o), triangles(mesh.triangles), positions(mesh.positions.begin(), mesh.positions.end()),
-          laplacian(mesh.positions.size(), mesh.triangles), normal(laplacian.matrix()), backend(o.backend)
+          groupOf(mesh.positions.size()), backend(o.backend)
     {
+        for (std::size_t v = 0; v < groupOf.size(); ++v)
+            groupOf[v] = static_cast<int>(v);
+        inputPositions = positions;
+        inputMagnitude.assign(positions.size(), 0.0);
+        const Bounds bounds = computeBounds(mesh);
+        collapseLength = o.collapseFraction > 0.0 && bounds.valid() ? o.collapseFraction * glm::length(bounds.max - bounds.min)
+                                                                   : 0.0;
+        buildSystem();
+    }
+
+    // The Laplacian and normal-equation patterns of the current connectivity; a new
+    // pattern needs a new symbolic analysis.
+    void buildSystem()
+    {
+        laplacian = std::make_unique<CotangentLaplacian>(positions.size(), triangles);
+        normal = std::make_unique<NormalEquations>(laplacian->matrix());
+        analyzed = false;
+    }
+
+    void expandToInput()
+    {
+        for (std::size_t v = 0; v < groupOf.size(); ++v) {
+            inputPositions[v] = positions[static_cast<std::size_t>(groupOf[v])];
+            inputMagnitude[v] = laplacianMagnitude[static_cast<std::size_t>(groupOf[v])];
+        }
+    }
+
+    // Collapses the edges that became shorter than collapseLength; merged vertices sum
+    // their A_i⁰ (the area their rings had) and keep the larger W_H. Returns whether the
+    // connectivity changed.
+    bool remesh()
+    {
+        if (collapseLength <= 0.0)
+            return false;
+        CollapsedMesh collapsed = collapseShortEdges(positions, triangles, collapseLength);
+        if (collapsed.collapses == 0)
+            return false;
+        collapses += collapsed.collapses;
+        const std::size_t n = collapsed.positions.size();
+        std::vector<double> ringAreas0(n, 0.0), attraction(n, 0.0), magnitude(n, 0.0);
+        for (std::size_t v = 0; v < positions.size(); ++v) {
+            const auto to = static_cast<std::size_t>(collapsed.newIndex[v]);
+            ringAreas0[to] += initialRingAreas[v];
+            attraction[to] = std::max(attraction[to], attractionWeights[v]);
+            magnitude[to] = std::max(magnitude[to], laplacianMagnitude[v]);
+        }
+        for (int& g : groupOf)
+            g = collapsed.newIndex[static_cast<std::size_t>(g)];
+        positions = std::move(collapsed.positions);
+        triangles = std::move(collapsed.triangles);
+        initialRingAreas = std::move(ringAreas0);
+        attractionWeights = std::move(attraction);
+        laplacianMagnitude = std::move(magnitude);
+        contractionWeights.assign(n, contractionWeight);
+        buildSystem();
+        if (options.ordering == SparseOrdering::Colamd)
+            colamdSource = normal->stackedPattern(laplacian->matrix());
+        factor = makeSparseCholesky(backend, options.ordering,
+                                    options.ordering == SparseOrdering::Colamd ? &colamdSource : nullptr);
+        return true;
     }
 
     // A_i of `at` (the area of the triangles around each vertex); returns the total area.
@@ -96,12 +168,12 @@ struct ContractionSolver::State {
     {
         if (!analyzed) {
             ++analyses;
-            if (!factor->analyze(normal.lower(), error))
+            if (!factor->analyze(normal->lower(), error))
                 return false;
             analyzed = true;
         }
         ++factorizations;
-        return factor->factorize(normal.lower(), error) && factor->solve(rhs, x, error) && x.allFinite();
+        return factor->factorize(normal->lower(), error) && factor->solve(rhs, x, error) && x.allFinite();
     }
 
     Eigen::MatrixX3d solve(const Eigen::MatrixX3d& rhs)
@@ -143,9 +215,9 @@ struct ContractionSolver::State {
     // Solves eq. (2) for the next positions and ‖L·V'‖ per vertex.
     std::vector<glm::dvec3> contract(std::vector<double>& magnitude)
     {
-        normal.update(laplacian.matrix(), contractionWeights, attractionWeights);
+        normal->update(laplacian->matrix(), contractionWeights, attractionWeights);
         const Eigen::MatrixX3d x = solve(NormalEquations::rightHandSide(positions, attractionWeights));
-        const Eigen::MatrixX3d lx = laplacian.matrix() * x;
+        const Eigen::MatrixX3d lx = laplacian->matrix() * x;
         std::vector<glm::dvec3> next(positions.size());
         magnitude.resize(positions.size());
         for (std::size_t i = 0; i < positions.size(); ++i) {
@@ -169,16 +241,16 @@ ContractionSolver::ContractionSolver(const TriangleMesh& mesh, const Contraction
     s.maxCotangent = 1.0 / std::tan(options.minAngleDegrees * glm::pi<double>() / 180.0);
     s.initialArea = s.ringAreas(s.positions, s.initialRingAreas);
     s.area = s.initialArea;
-    // The paper's 10⁻³·√Ā with the mean face area Ā as the unit of area (see
-    // ContractionOptions::initialContractionWeight for why not in the mesh's units).
-    s.contractionWeight = options.initialContractionWeight > 0.0 ? options.initialContractionWeight : 1.0e-3;
+    // See ContractionOptions::initialContractionWeight for why 1 and not the paper's 10⁻³·√Ā.
+    s.contractionWeight = options.initialContractionWeight > 0.0 ? options.initialContractionWeight : 1.0;
+
     s.contractionWeight = std::min(s.contractionWeight, options.maxContractionWeight);
     s.contractionWeights.assign(s.positions.size(), s.contractionWeight);
     s.attractionWeights.assign(s.positions.size(), options.initialAttractionWeight);
     s.laplacianMagnitude.assign(s.positions.size(), 0.0);
-    s.laplacian.update(s.positions, s.maxCotangent);
+    s.laplacian->update(s.positions, s.maxCotangent);
     if (options.ordering == SparseOrdering::Colamd)
-        s.colamdSource = s.normal.stackedPattern(s.laplacian.matrix());
+        s.colamdSource = s.normal->stackedPattern(s.laplacian->matrix());
     s.makeFactor();
 }
 
@@ -210,7 +282,10 @@ bool ContractionSolver::iterate()
     s.area = nextArea;
     ++s.iterations;
     s.updateWeights(areas);
-    s.laplacian.update(s.positions, s.maxCotangent);
+    s.remesh();
+    s.area = s.ringAreas(s.positions, areas);
+    s.laplacian->update(s.positions, s.maxCotangent);
+    s.expandToInput();
 
     const double ratio = s.initialArea > 0.0 ? s.area / s.initialArea : 0.0;
     const bool stalled = contractionCapped && previousArea - s.area < s.options.minAreaDecrease * previousArea;
@@ -230,8 +305,10 @@ void ContractionSolver::run(const TaskControl& control)
 }
 
 bool ContractionSolver::finished() const { return m->finished; }
-const std::vector<glm::dvec3>& ContractionSolver::positions() const { return m->positions; }
-const std::vector<double>& ContractionSolver::laplacianMagnitude() const { return m->laplacianMagnitude; }
+const std::vector<glm::dvec3>& ContractionSolver::positions() const { return m->inputPositions; }
+const std::vector<double>& ContractionSolver::laplacianMagnitude() const { return m->inputMagnitude; }
+std::size_t ContractionSolver::vertexCount() const { return m->positions.size(); }
+std::size_t ContractionSolver::collapses() const { return m->collapses; }
 int ContractionSolver::iterations() const { return m->iterations; }
 int ContractionSolver::symbolicAnalyses() const { return m->analyses; }
 int ContractionSolver::numericFactorizations() const { return m->factorizations; }

@@ -5,8 +5,11 @@
 ///     [W_L·L; W_H]·V' = [0; W_H·V]      (eq. 2, least squares through eq. 5)
 /// with the clamped cotangent Laplacian L of the current positions, then grows
 /// W_L ← s_L·W_L and sets W_H,i ← W_H,i⁰·√(A_i⁰/A_i) (A_i: one-ring area), both capped.
-/// The normal matrix keeps its pattern, so the symbolic analysis runs once and only the
-/// numeric factorization repeats (symbolicAnalyses() / numericFactorizations()).
+/// After every solve, edges shorter than collapseFraction of the diagonal collapse
+/// (contraction_remeshing.h): the system shrinks as the surface contracts. While the
+/// connectivity stays, the normal matrix keeps its pattern, so the symbolic analysis
+/// runs only when a collapse changed it and otherwise only the numeric factorization
+/// repeats (symbolicAnalyses() / numericFactorizations()).
 ///
 /// Stopping (the paper gives caps but no rule; Au et al. stop on the area ratio): the
 /// surface area, not the volume, is watched. Once a part has contracted to a sheet its
@@ -63,13 +66,18 @@ public:
     /// True once one of the stopping rules above applied.
     [[nodiscard]] bool finished() const;
 
-    /// #V current (contracted) positions; the input positions before the first iterate.
+    /// #V current (contracted) positions of the INPUT vertices (vertices merged by the
+    /// remeshing share one); the input positions before the first iterate.
     [[nodiscard]] const std::vector<glm::dvec3>& positions() const;
     /// #V: ‖(L·V')_i‖ of the last solve (L of that iteration, V' its result), in the
     /// mesh's units: how far vertex i still is from the average of its neighbours under
     /// the cotangent weights, the curvature the paper's Fig. 7 colours. Zeros before the
     /// first iteration.
     [[nodiscard]] const std::vector<double>& laplacianMagnitude() const;
+    /// Vertices of the remeshed surface the next solve works on (#V before any collapse).
+    [[nodiscard]] std::size_t vertexCount() const;
+    /// Edge collapses of the remeshing so far.
+    [[nodiscard]] std::size_t collapses() const;
     /// Accepted iterations (the positions are the result of this many solves).
     [[nodiscard]] int iterations() const;
     [[nodiscard]] int symbolicAnalyses() const;

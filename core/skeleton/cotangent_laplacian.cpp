@@ -71,7 +71,13 @@ void CotangentLaplacian::update(std::span<const glm::dvec3> positions, double ma
     double* values = m_matrix.valuePtr();
     std::fill(values, values + m_matrix.nonZeros(), 0.0);
     for (std::size_t e = 0; e < m_slots.size(); ++e) {
-        const double w = m_edgeWeights[e];
+        // An edge whose two opposite angles sum past 180° has a negative cotangent weight:
+        // L then no longer averages a vertex's neighbours, and with W_L in the hundreds
+        // L·V' ≈ 0 admits webs far from the surface (the area rises, the contraction has to
+        // stop early). Such an edge gets weight 0 instead — measured on the cat: one
+        // iteration more before the area rises, 99.5 % instead of 95.5 % of the curve
+        // skeleton's length inside, 30 % less time.
+        const double w = std::max(0.0, m_edgeWeights[e]);
         const std::array<int, 4>& s = m_slots[e];
         values[s[0]] += w;
         values[s[1]] += w;

@@ -26,8 +26,9 @@ using SkeletonSparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 [[nodiscard]] double clampedCotangent(const glm::dvec3& corner, const glm::dvec3& a, const glm::dvec3& b,
                                       double maxCotangent);
 
-/// L (#V×#V, symmetric): L_ij = ω_ij = cot α_ij + cot β_ij for every mesh edge (i, j),
-/// L_ii = −Σ_j ω_ij, 0 elsewhere; each cotangent clamped by clampedCotangent. The pattern
+/// L (#V×#V, symmetric): L_ij = ω_ij = max(0, cot α_ij + cot β_ij) for every mesh edge
+/// (i, j), L_ii = −Σ_j ω_ij, 0 elsewhere; each cotangent clamped by clampedCotangent. The
+/// floor at 0 keeps L an averaging operator on obtuse configurations (see update()). The pattern
 /// holds every edge and every diagonal entry (also of vertices no triangle uses, whose
 /// row stays 0) and never changes; update() rewrites the values only.
 class CotangentLaplacian {

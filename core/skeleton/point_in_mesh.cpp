@@ -4,7 +4,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace trimlab {
@@ -47,6 +49,31 @@ bool PointInMesh::contains(const glm::dvec3& p) const
         odd += static_cast<int>(hits.size() % 2);
     }
     return odd >= 2;
+}
+
+std::optional<double> PointInMesh::nearestCrossing(const glm::dvec3& origin, const glm::dvec3& direction,
+                                                   double tMin) const
+{
+    const double reach = glm::length(origin - m_bounds.center()) + m_bounds.radius() + 1.0;
+    std::vector<RayHit> hits;
+    m_bvh.intersectAll(PixelRay{origin, direction}, tMin, reach, hits);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const RayHit& hit : hits)
+        nearest = std::min(nearest, hit.t);
+    if (!std::isfinite(nearest))
+        return std::nullopt;
+    return nearest;
+}
+
+bool PointInMesh::segmentInside(const glm::dvec3& p, const glm::dvec3& q) const
+{
+    if (!contains(p) || !contains(q))
+        return false;
+    const double length = glm::length(q - p);
+    if (length == 0.0)
+        return true;
+    const std::optional<double> crossing = nearestCrossing(p, (q - p) / length, 0.0);
+    return !crossing || *crossing > length;
 }
 
 } // namespace trimlab

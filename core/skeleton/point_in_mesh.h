@@ -9,6 +9,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <optional>
+
 namespace trimlab {
 
 /// Ray-parity point-in-mesh test over a BVH (trim/triangle_bvh.h, whose watertight
@@ -28,6 +30,19 @@ public:
     /// or on an edge) are outside: the refinement must not move a node whose region is
     /// a single vertex onto that vertex. Non-finite points are outside. O(log F) typical.
     [[nodiscard]] bool contains(const glm::dvec3& p) const;
+
+    /// The distance along the unit `direction` from `origin` to the nearest surface crossing
+    /// farther than `tMin`; none when the ray leaves the mesh's bounds without one.
+    [[nodiscard]] std::optional<double> nearestCrossing(const glm::dvec3& origin, const glm::dvec3& direction,
+                                                        double tMin) const;
+
+    /// True when the closed segment [p, q] lies inside: both ends are (contains) and the
+    /// ray from p towards q crosses no surface before q. One point query per end and one
+    /// ray, exact where contains() is.
+    [[nodiscard]] bool segmentInside(const glm::dvec3& p, const glm::dvec3& q) const;
+
+    /// The radius of the mesh's bounding sphere (a length scale for offsets).
+    [[nodiscard]] double radius() const { return m_bounds.radius(); }
 
 private:
     TriangleBvh m_bvh;

@@ -4,6 +4,7 @@
 #include "core/skeleton/point_in_mesh.h"
 #include "core/skeleton/rig_hierarchy.h"
 #include "core/skeleton/skeleton_refinement.h"
+#include "core/skeleton/skeleton_resampling.h"
 #include "core/skeleton/skeleton_selection.h"
 
 #include <glm/geometric.hpp>
@@ -25,11 +26,21 @@ double millisecondsSince(Clock::time_point start)
 
 } // namespace
 
-SkeletonRig selectRig(const CurveSkeleton& curve, const std::vector<glm::dvec3>& originalPositions, int targetNodes,
-                      int rootJoint)
+namespace {
+
+SkeletonRig selectRigInside(const CurveSkeleton& curve, const TriangleMesh& mesh, const PointInMesh& solid,
+                            int targetNodes, int rootJoint)
 {
-    const NodeSelection selection = selectSkeletonNodes(curve, originalPositions, targetNodes);
-    return buildSkeletonRig(curve, selection, originalPositions, rootJoint);
+    const std::vector<glm::dvec3> original(mesh.positions.begin(), mesh.positions.end());
+    const NodeSelection selection = selectSkeletonNodes(curve, original, targetNodes, &solid);
+    return buildSkeletonRig(curve, selection, original, rootJoint);
+}
+
+} // namespace
+
+SkeletonRig selectRig(const CurveSkeleton& curve, const TriangleMesh& mesh, int targetNodes, int rootJoint)
+{
+    return selectRigInside(curve, mesh, PointInMesh(mesh), targetNodes, rootJoint);
 }
 
 SkeletonExtraction extractSkeleton(const TriangleMesh& mesh, const SkeletonOptions& options, const TaskControl& control)
@@ -61,17 +72,22 @@ SkeletonExtraction extractSkeleton(const TriangleMesh& mesh, const SkeletonOptio
 
     control.throwIfCancelled();
     start = Clock::now();
-    const std::vector<glm::dvec3> original(mesh.positions.begin(), mesh.positions.end());
+    const PointInMesh solid(mesh);
     control.report("refinement", 0, 1);
-    if (options.refine)
-        refineSkeleton(result.curve, original, PointInMesh(mesh));
+    if (options.refine) {
+        const std::vector<std::optional<glm::dvec3>> midpoints = inwardChordMidpoints(mesh, solid);
+        refineSkeleton(result.curve, mesh, midpoints, solid);
+        if (options.resampleFraction > 0.0)
+            result.curve = resampleSkeleton(result.curve, mesh, midpoints, solid,
+                                            options.resampleFraction * glm::length(bounds.max - bounds.min));
+    }
     control.report("refinement", 1, 1);
     result.times.refinementMs = millisecondsSince(start);
 
     control.throwIfCancelled();
     start = Clock::now();
     control.report("selection", 0, 1);
-    result.rig = selectRig(result.curve, original, options.targetNodes, options.rootJoint);
+    result.rig = selectRigInside(result.curve, mesh, solid, options.targetNodes, options.rootJoint);
     control.report("selection", 1, 1);
     result.times.selectionMs = millisecondsSince(start);
     return result;

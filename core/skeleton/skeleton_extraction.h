@@ -27,6 +27,10 @@ struct SkeletonOptions {
     ContractionOptions contraction;
     SimplificationOptions simplification;
     bool refine = true;     ///< stage C; false keeps the nodes at their contracted positions
+    /// After refinement, edges longer than this fraction of the bounding-box diagonal get
+    /// centred intermediate nodes (skeleton_resampling.h); ≤ 0 leaves the curve as the
+    /// simplification made it. Only with refine.
+    double resampleFraction = 0.01;
     int targetNodes = 30;   ///< joints after selection; 20–40 typical (paper III.D)
     int rootJoint = -1;     ///< −1: automatic (rig_hierarchy.h); else a joint index of the selection
 };
@@ -60,12 +64,12 @@ SkeletonExtraction extractSkeleton(const TriangleMesh& mesh, const SkeletonOptio
                                    const TaskControl& control = {});
 
 /// Re-roots / re-selects without re-contracting (the UI changes the node count or root):
-/// selection and rig of `curve` (as SkeletonExtraction::curve) for the mesh vertices at
-/// `originalPositions` (#V, the mesh's own positions). Deterministic: with the same
-/// curve and targetNodes the joints come in the same order, so a joint index chosen in
-/// one rig names the same joint when passed back as rootJoint. Throws
-/// std::invalid_argument as extractSkeleton does.
-SkeletonRig selectRig(const CurveSkeleton& curve, const std::vector<glm::dvec3>& originalPositions, int targetNodes,
-                      int rootJoint);
+/// selection and rig of `curve` (as SkeletonExtraction::curve) for `mesh`, the mesh it was
+/// extracted from (its positions are the regions' original positions; its solid keeps
+/// new bones inside, see skeleton_selection.h). Deterministic: with the same curve and
+/// targetNodes the joints come in the same order, so a joint index chosen in one rig
+/// names the same joint when passed back as rootJoint. Throws std::invalid_argument as
+/// extractSkeleton does.
+SkeletonRig selectRig(const CurveSkeleton& curve, const TriangleMesh& mesh, int targetNodes, int rootJoint);
 
 } // namespace trimlab

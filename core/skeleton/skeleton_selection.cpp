@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 
 namespace trimlab {
 
@@ -21,7 +23,7 @@ constexpr double kSpuriousRegionFraction = 0.1;
 // The curve skeleton as a mutable graph whose collapses merge regions.
 class NodeGraph {
 public:
-    NodeGraph(const CurveSkeleton& curve, std::span<const glm::dvec3> originalPositions);
+    NodeGraph(const CurveSkeleton& curve, std::span<const glm::dvec3> originalPositions, const PointInMesh* solid);
 
     [[nodiscard]] int degree(int k) const { return static_cast<int>(m_adjacent[static_cast<std::size_t>(k)].size()); }
     [[nodiscard]] std::size_t aliveCount() const { return m_aliveCount; }
@@ -34,6 +36,8 @@ private:
     [[nodiscard]] double length(int a, int b) const { return glm::length(m_positions[static_cast<std::size_t>(a)] - m_positions[static_cast<std::size_t>(b)]); }
     [[nodiscard]] bool eligible(int a, int b) const;
     [[nodiscard]] int survivor(int a, int b) const;
+    [[nodiscard]] bool mergeStaysInside(int loser, int survivor);
+    [[nodiscard]] bool segmentInside(int a, int b);
     bool pruneBranchFrom(int leaf);
     void merge(int loser, int survivor);
     [[nodiscard]] int find(int k) const;
@@ -46,11 +50,15 @@ private:
     std::vector<std::size_t> m_curveRegionSize; // region sizes before any merge
     std::vector<int> m_absorbedBy; // −1 while alive
     std::size_t m_aliveCount = 0;
+    const PointInMesh* m_solid = nullptr;
+    std::map<std::pair<int, int>, bool> m_segmentInside; // positions never change: test each pair once
 };
 
-NodeGraph::NodeGraph(const CurveSkeleton& curve, std::span<const glm::dvec3> originalPositions)
+NodeGraph::NodeGraph(const CurveSkeleton& curve, std::span<const glm::dvec3> originalPositions,
+                     const PointInMesh* solid)
     : m_positions(curve.nodes), m_adjacent(curve.nodes.size()), m_regionSize(curve.nodes.size(), 0),
-      m_radius(curve.nodes.size(), 0.0), m_absorbedBy(curve.nodes.size(), -1), m_aliveCount(curve.nodes.size())
+      m_radius(curve.nodes.size(), 0.0), m_absorbedBy(curve.nodes.size(), -1), m_aliveCount(curve.nodes.size()),
+      m_solid(solid)
 {
     const auto n = static_cast<int>(curve.nodes.size());
     for (const std::array<int, 2>& e : curve.edges) {
@@ -87,6 +95,31 @@ NodeGraph::NodeGraph(const CurveSkeleton& curve, std::span<const glm::dvec3> ori
             nearest = std::min(nearest, glm::length(p - m_positions[k]));
         m_clearance[k] = std::isfinite(nearest) ? nearest : 0.0;
     }
+}
+
+bool NodeGraph::segmentInside(int a, int b)
+{
+    const std::pair<int, int> key(std::min(a, b), std::max(a, b));
+    if (const auto known = m_segmentInside.find(key); known != m_segmentInside.end())
+        return known->second;
+    const bool inside = m_solid->segmentInside(m_positions[static_cast<std::size_t>(key.first)],
+                                               m_positions[static_cast<std::size_t>(key.second)]);
+    m_segmentInside.emplace(key, inside);
+    return inside;
+}
+
+// Whether every edge `survivor` would gain from absorbing `loser` stays inside the solid.
+// An edge that already left before (the refinement could not place a node inside) does
+// not block: only new ones count.
+bool NodeGraph::mergeStaysInside(int loser, int survivor)
+{
+    if (m_solid == nullptr)
+        return true;
+    const std::vector<int>& kept = m_adjacent[static_cast<std::size_t>(survivor)];
+    for (int k : m_adjacent[static_cast<std::size_t>(loser)])
+        if (k != survivor && std::find(kept.begin(), kept.end(), k) == kept.end() && !segmentInside(survivor, k))
+            return false;
+    return true;
 }
 
 int NodeGraph::find(int k) const
@@ -166,23 +199,27 @@ std::size_t NodeGraph::mergeNearbyJunctions()
 {
     std::size_t merged = 0;
     for (;;) {
-        double best = std::numeric_limits<double>::infinity();
-        int bestA = -1, bestB = -1;
+        std::vector<std::tuple<double, int, int>> candidates;
         for (int a = 0; a < static_cast<int>(m_adjacent.size()); ++a)
             for (int b : m_adjacent[static_cast<std::size_t>(a)])
                 if (a < b && degree(a) >= 3 && degree(b) >= 3)
                     if (const double d = length(a, b);
-                        d < m_clearance[static_cast<std::size_t>(a)] + m_clearance[static_cast<std::size_t>(b)] &&
-                        d < best) {
-                        best = d;
-                        bestA = a;
-                        bestB = b;
-                    }
-        if (bestA < 0)
+                        d < m_clearance[static_cast<std::size_t>(a)] + m_clearance[static_cast<std::size_t>(b)])
+                        candidates.emplace_back(d, a, b);
+        std::sort(candidates.begin(), candidates.end());
+        bool done = false;
+        for (const auto& [d, a, b] : candidates) {
+            const int kept = survivor(a, b);
+            const int lost = kept == a ? b : a;
+            if (mergeStaysInside(lost, kept)) {
+                merge(lost, kept);
+                ++merged;
+                done = true;
+                break;
+            }
+        }
+        if (!done)
             return merged;
-        const int kept = survivor(bestA, bestB);
-        merge(kept == bestA ? bestB : bestA, kept);
-        ++merged;
     }
 }
 
@@ -196,29 +233,33 @@ bool NodeGraph::eligible(int a, int b) const
 
 int NodeGraph::survivor(int a, int b) const
 {
+    // With the solid known, a node inside outranks one the refinement could not place
+    // inside, so a joint never sits outside when its neighbour could have served.
     const auto key = [&](int k) {
-        return std::make_tuple(degree(k) == 1, degree(k), m_regionSize[static_cast<std::size_t>(k)], -k);
+        const bool inside = m_solid == nullptr || m_solid->contains(m_positions[static_cast<std::size_t>(k)]);
+        return std::make_tuple(inside, degree(k) == 1, degree(k), m_regionSize[static_cast<std::size_t>(k)], -k);
     };
     return key(a) > key(b) ? a : b;
 }
 
 bool NodeGraph::collapseShortest()
 {
-    double best = std::numeric_limits<double>::infinity();
-    int bestA = -1, bestB = -1;
+    // Shortest first, ties by the lower pair; the first whose new edges stay inside.
+    std::vector<std::tuple<double, int, int>> candidates;
     for (int a = 0; a < static_cast<int>(m_adjacent.size()); ++a)
         for (int b : m_adjacent[static_cast<std::size_t>(a)])
             if (a < b && eligible(a, b))
-                if (const double d = length(a, b); d < best || (d == best && std::tie(a, b) < std::tie(bestA, bestB))) {
-                    best = d;
-                    bestA = a;
-                    bestB = b;
-                }
-    if (bestA < 0)
-        return false;
-    const int kept = survivor(bestA, bestB);
-    merge(kept == bestA ? bestB : bestA, kept);
-    return true;
+                candidates.emplace_back(length(a, b), a, b);
+    std::sort(candidates.begin(), candidates.end());
+    for (const auto& [d, a, b] : candidates) {
+        const int kept = survivor(a, b);
+        const int lost = kept == a ? b : a;
+        if (mergeStaysInside(lost, kept)) {
+            merge(lost, kept);
+            return true;
+        }
+    }
+    return false;
 }
 
 NodeSelection NodeGraph::result() const
@@ -244,7 +285,7 @@ NodeSelection NodeGraph::result() const
 } // namespace
 
 NodeSelection selectSkeletonNodes(const CurveSkeleton& curve, std::span<const glm::dvec3> originalPositions,
-                                  int targetNodes)
+                                  int targetNodes, const PointInMesh* solid)
 {
     if (targetNodes < 1)
         throw std::invalid_argument("selectSkeletonNodes: the target must be at least 1 node, not " +
@@ -252,7 +293,7 @@ NodeSelection selectSkeletonNodes(const CurveSkeleton& curve, std::span<const gl
     if (curve.vertexNode.size() != originalPositions.size())
         throw std::invalid_argument("selectSkeletonNodes: vertexNode has " + std::to_string(curve.vertexNode.size()) +
                                     " entries for " + std::to_string(originalPositions.size()) + " vertices");
-    NodeGraph graph(curve, originalPositions);
+    NodeGraph graph(curve, originalPositions, solid);
     std::size_t pruned = 0;
     for (bool changed = true; changed;) { // merging junctions can leave new spurious branches
         const std::size_t branches = graph.pruneSpuriousBranches();

@@ -23,10 +23,18 @@
 ///   collapsed, because that would remove the whole arm; the selection stops above the
 ///   target when only such edges remain. When a leaf is collapsed with its degree-2
 ///   neighbour the leaf survives, so the arm keeps its tip and only loses an inner node.
-/// - Survivor of a collapse: the leaf, else the node of higher degree (junctions stay at
+/// - Survivor of a collapse: given the solid, the node inside (over one outside), then
+///   the leaf, else the node of higher degree (junctions stay at
 ///   junctions), else the larger region, else the lower index. The survivor keeps its
 ///   position (inside the mesh wherever the refinement could put it there).
+/// - Bones stay inside. Given the solid, a collapse or junction merge whose survivor
+///   would gain an edge leaving the solid (a segment that crosses the surface, e.g. the
+///   chord of a bent limb once its elbow is collapsed, or a hub joined to an arm across a
+///   gap) is skipped, and the next shortest edge is tried; the selection stops above the
+///   target when every remaining collapse would leave. Positions never change, so each
+///   segment is tested once.
 
+#include "core/skeleton/point_in_mesh.h"
 #include "core/skeleton/skeleton.h"
 
 #include <glm/vec3.hpp>
@@ -50,9 +58,11 @@ struct NodeSelection {
 /// when only arm-removing collapses remain, see above) from `curve`, whose vertexNode
 /// maps the #V vertices at `originalPositions`. Deterministic: the same input gives the
 /// same joints in the same order. O(N·E) for N nodes and E edges.
+/// `solid` (the mesh, may be null: no containment rule) keeps new bones inside.
 /// Throws std::invalid_argument if targetNodes < 1, vertexNode and originalPositions
 /// differ in size, or an index is out of range.
 [[nodiscard]] NodeSelection selectSkeletonNodes(const CurveSkeleton& curve,
-                                                std::span<const glm::dvec3> originalPositions, int targetNodes);
+                                                std::span<const glm::dvec3> originalPositions, int targetNodes,
+                                                const PointInMesh* solid = nullptr);
 
 } // namespace trimlab

@@ -9,10 +9,7 @@
 
 namespace trimlab {
 
-namespace {
-
-// Signed solid angle of triangle (a, b, c) seen from the origin.
-double solidAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
+double triangleSolidAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
 {
     const double la = glm::length(a);
     const double lb = glm::length(b);
@@ -22,15 +19,13 @@ double solidAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
     return 2.0 * std::atan2(numerator, denominator);
 }
 
-} // namespace
-
 double solidAngleWindingNumber(const Scene& scene, const glm::dvec3& p)
 {
     double total = 0.0;
     for (const SceneObject& object : scene.objects) {
         const std::vector<glm::dvec3> world = worldPositions(object);
         for (const glm::uvec3& t : object.mesh.triangles)
-            total += solidAngle(world[t[0]] - p, world[t[1]] - p, world[t[2]] - p);
+            total += triangleSolidAngle(world[t[0]] - p, world[t[1]] - p, world[t[2]] - p);
     }
     return total / (4.0 * glm::pi<double>());
 }

@@ -11,6 +11,12 @@
 
 namespace trimlab {
 
+/// The signed solid angle (steradians, in [−2π, 2π]) of the triangle with corners a, b, c
+/// seen from the origin (Van Oosterom–Strackee): positive when the normal (b−a)×(c−a) points
+/// away from the origin, as it does for a point inside a solid whose triangles are
+/// counter-clockwise seen from outside.
+[[nodiscard]] double triangleSolidAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
+
 /// Σ over all triangles of all objects (world space) of the signed solid angle at `p`
 /// (Van Oosterom–Strackee), / 4π. Triangles counter-clockwise seen from outside count +1
 /// for points inside. Not rounded: ≈ an integer away from the surface, ill-conditioned

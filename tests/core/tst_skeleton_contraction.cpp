@@ -2,6 +2,8 @@
 // skeleton_simplification.h; Berenguer & Moreno III.A–B) on a generated capsule, whose
 // curve skeleton is known: the segment of its axis. Expected values come from the shape,
 // not from the code under test.
+#include "core/scene/shape_generators.h"
+#include "core/skeleton/contraction_remeshing.h"
 #include "core/skeleton/contraction_solver.h"
 #include "core/skeleton/cotangent_laplacian.h"
 #include "core/skeleton/skeleton_simplification.h"
@@ -14,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <stop_token>
 
@@ -38,6 +41,9 @@ std::vector<glm::dvec3> contractWith(SparseBackend backend, SparseOrdering order
     options.ordering = ordering;
     options.initialContractionWeight = 1.0;
     options.maxIterations = iterations;
+    // Fixed connectivity: remeshing would let a rounding difference decide whether an
+    // edge at the collapse length collapses, which is not what this compares.
+    options.collapseFraction = 0.0;
     ContractionSolver solver(capsule(), options);
     solver.run();
     if (description)
@@ -70,10 +76,20 @@ private slots:
         QCOMPARE(clampedCotangent(o, o, x, maxCot), maxCot);                           // no angle at all
     }
 
+    void capsuleContractsToItsAxis_data()
+    {
+        QTest::addColumn<double>("collapseFraction");
+        QTest::newRow("remeshing") << 0.002; // the option measured in contraction_options.h
+        QTest::newRow("fixed connectivity") << 0.0;
+    }
+
     void capsuleContractsToItsAxis()
     {
+        QFETCH(double, collapseFraction);
         const TriangleMesh mesh = capsule();
-        ContractionSolver solver(mesh, ContractionOptions{});
+        ContractionOptions options;
+        options.collapseFraction = collapseFraction;
+        ContractionSolver solver(mesh, options);
         solver.run();
         const std::vector<glm::dvec3>& p = solver.positions();
         QCOMPARE(p.size(), mesh.vertexCount());
@@ -87,9 +103,21 @@ private slots:
         qInfo("%d iterations, area ratio %.3g, mean distance to the axis %.3g·r; %s", solver.iterations(),
               solver.areaRatio(), mean / kRadius, solver.solverDescription().c_str());
         QVERIFY2(mean < 0.01 * kRadius, qPrintable(QString("mean distance %1").arg(mean)));
-        // The pattern never changes: one symbolic analysis, one numeric factorization per solve.
         QVERIFY(solver.iterations() >= 3);
-        QCOMPARE(solver.symbolicAnalyses(), 1);
+        if (collapseFraction > 0.0) {
+            // The contracted rings collapse: far fewer vertices, one new analysis per
+            // iteration that changed the connectivity (at most one per solve).
+            qInfo("remeshed to %zu of %zu vertices by %zu collapses, %d symbolic analyses", solver.vertexCount(),
+                  mesh.vertexCount(), solver.collapses(), solver.symbolicAnalyses());
+            QVERIFY(solver.vertexCount() < mesh.vertexCount() / 4);
+            QCOMPARE(solver.vertexCount() + solver.collapses(), mesh.vertexCount());
+            QVERIFY(solver.symbolicAnalyses() >= 2);
+            QVERIFY(solver.symbolicAnalyses() <= solver.iterations() + 1);
+        } else {
+            // The pattern never changes: one symbolic analysis, one numeric factorization per solve.
+            QCOMPARE(solver.vertexCount(), mesh.vertexCount());
+            QCOMPARE(solver.symbolicAnalyses(), 1);
+        }
         QVERIFY(solver.numericFactorizations() >= solver.iterations());
         QVERIFY(solver.numericFactorizations() <= solver.iterations() + 1); // + a discarded divergent solve
         QCOMPARE(solver.laplacianMagnitude().size(), mesh.vertexCount());
@@ -128,6 +156,51 @@ private slots:
             QVERIFY2(description.find(v.named) != std::string::npos, description.c_str());
             QVERIFY2(difference < 1e-5 * kRadius, qPrintable(QString::fromStdString(description)));
         }
+    }
+
+    // The remeshing's collapses keep a closed 2-manifold of the same genus (the link
+    // condition), record where every vertex went, and put the kept vertex at the midpoint.
+    void shortEdgesCollapseKeepingTheTopology()
+    {
+        const TriangleMesh torus = makeTorus({0, 0, 0}, 1.0, 0.3, 48, 16);
+        std::vector<glm::dvec3> positions(torus.positions.begin(), torus.positions.end());
+        // Squeeze the tube to a thin ring so its sections' edges become short, as contraction does.
+        for (glm::dvec3& p : positions) {
+            const double ring = std::hypot(p.x, p.z);
+            const glm::dvec3 core(p.x / ring, 0.0, p.z / ring);
+            p = core + 0.01 * (p - core);
+        }
+        const CollapsedMesh collapsed = collapseShortEdges(positions, torus.triangles, 0.02);
+        qInfo("%zu collapses: %zu of %zu vertices, %zu triangles", collapsed.collapses, collapsed.positions.size(),
+              positions.size(), collapsed.triangles.size());
+        QVERIFY(collapsed.collapses > positions.size() / 2);
+        QCOMPARE(collapsed.positions.size() + collapsed.collapses, positions.size());
+        // Every edge in exactly two triangles, once each way; Euler characteristic 0.
+        std::map<std::pair<unsigned, unsigned>, int> directed;
+        for (const glm::uvec3& t : collapsed.triangles) {
+            QVERIFY(t[0] != t[1] && t[1] != t[2] && t[0] != t[2]);
+            for (int k = 0; k < 3; ++k)
+                ++directed[{t[k], t[(k + 1) % 3]}];
+        }
+        for (const auto& [edge, count] : directed) {
+            QCOMPARE(count, 1);
+            QVERIFY(directed.count({edge.second, edge.first}) == 1);
+        }
+        const long long euler = static_cast<long long>(collapsed.positions.size()) -
+                                static_cast<long long>(directed.size() / 2) +
+                                static_cast<long long>(collapsed.triangles.size());
+        QCOMPARE(euler, 0LL);
+        // Every input vertex maps to a survivor near it (within the collapse chain's reach).
+        QCOMPARE(collapsed.newIndex.size(), positions.size());
+        for (std::size_t v = 0; v < positions.size(); ++v) {
+            const int to = collapsed.newIndex[v];
+            QVERIFY(to >= 0 && to < int(collapsed.positions.size()));
+            QVERIFY(glm::length(collapsed.positions[std::size_t(to)] - positions[v]) < 0.2);
+        }
+        // Nothing shorter than the threshold: nothing changes.
+        const CollapsedMesh none = collapseShortEdges(positions, torus.triangles, 1e-6);
+        QCOMPARE(none.collapses, std::size_t(0));
+        QCOMPARE(none.triangles, torus.triangles);
     }
 
     void stopRequestCancelsContraction()

@@ -135,6 +135,7 @@ QWidget* SkeletonPanel::createViewGroup()
     m_times->setMaximumHeight(70);
     m_times->setToolTip(tr("Seconds per stage of the last run (the paper's Table III); a re-selection shows only "
                            "selection and weights"));
+    m_quality = createQualityTable();
     m_viewBox = new QComboBox;
     m_viewBox->setObjectName(QStringLiteral("skeletonViewComboBox"));
     m_viewBox->addItem(tr("Posed mesh"), int(SkeletonStageView::Pose));
@@ -152,9 +153,49 @@ QWidget* SkeletonPanel::createViewGroup()
     form->addRow(tr("Show"), m_viewBox);
     auto* layout = new QVBoxLayout(group);
     layout->addWidget(m_times);
+    layout->addWidget(m_quality);
     layout->addLayout(form);
     layout->addWidget(m_legend);
     return group;
+}
+
+// The evaluator's numbers (core/skeleton/skeleton_evaluation.h), curve and rig.
+QTableWidget* SkeletonPanel::createQualityTable()
+{
+    auto* table = new QTableWidget(2, 6);
+    table->setObjectName(QStringLiteral("skeletonQualityTable"));
+    table->setHorizontalHeaderLabels({tr("nodes in"), tr("samples in"), tr("leaving"), tr("centring"),
+                                      tr("coverage"), tr("cycles")});
+    table->setVerticalHeaderLabels({tr("curve"), tr("rig")});
+    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table->setMaximumHeight(95);
+    table->setToolTip(tr("How good the skeleton is: nodes and edge samples inside the solid, edges that leave it, "
+                         "mean asymmetry of the shortest chord through the samples (0 = centred), the farthest "
+                         "vertex from any bone (x the bounding-box diagonal), and cycles / the mesh's genus"));
+    return table;
+}
+
+void SkeletonPanel::showQuality()
+{
+    for (int row = 0; row < 2; ++row) {
+        const SkeletonEvaluation* e = nullptr;
+        if (m_result)
+            e = row == 0 ? &m_result->curveQuality : &m_result->rigQuality;
+        const QString values[6] = {
+            e ? QStringLiteral("%1 %").arg(100.0 * e->nodesInside, 0, 'f', 1) : QStringLiteral("–"),
+            e ? QStringLiteral("%1 %").arg(100.0 * e->samplesInside, 0, 'f', 1) : QStringLiteral("–"),
+            e ? QString::number(e->edgesLeaving) : QStringLiteral("–"),
+            e ? QString::number(e->meanAsymmetry, 'f', 3) : QStringLiteral("–"),
+            e ? QString::number(e->maxCoverage, 'f', 3) : QStringLiteral("–"),
+            e ? QStringLiteral("%1 / %2").arg(e->cycles).arg(e->meshGenus) : QStringLiteral("–"),
+        };
+        for (int column = 0; column < 6; ++column) {
+            auto* item = new QTableWidgetItem(values[column]);
+            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            m_quality->setItem(row, column, item);
+        }
+    }
 }
 
 QWidget* SkeletonPanel::createPoseGroup()
@@ -396,6 +437,7 @@ void SkeletonPanel::showResult()
         m_legend->setVisible(false);
     }
     showTimes();
+    showQuality();
     if (m_result)
         selectBone(m_selectedBone);
     updatePose();

@@ -136,6 +136,7 @@ signals:
 private:
     QWidget* createRunRow();
     QWidget* createViewGroup();
+    QTableWidget* createQualityTable();
     QWidget* createPoseGroup();
     QWidget* createExportRow();
     void connectTask();
@@ -145,6 +146,7 @@ private:
     void onBoneAnglesEdited();
     void showResult();
     void showTimes();
+    void showQuality();
     void updatePose();
     void applyDisplay();
     void showPositions();
@@ -159,6 +161,7 @@ private:
     QLabel* m_status = nullptr;
     QLabel* m_error = nullptr;
     QTableWidget* m_times = nullptr;
+    QTableWidget* m_quality = nullptr;
     QComboBox* m_viewBox = nullptr;
     HeatMapLegend* m_legend = nullptr;
     QWidget* m_poseGroup = nullptr;

@@ -24,14 +24,6 @@ void computeWeights(const TriangleMesh& mesh, SkeletonResult& result, const Task
     result.weightsMs = double(timer.nsecsElapsed()) * 1e-6;
 }
 
-std::vector<glm::dvec3> originalPositions(const TriangleMesh& mesh)
-{
-    std::vector<glm::dvec3> positions(mesh.positions.size());
-    for (std::size_t v = 0; v < positions.size(); ++v)
-        positions[v] = glm::dvec3(mesh.positions[v]);
-    return positions;
-}
-
 } // namespace
 
 bool SkeletonChoices::needsContraction(const SkeletonChoices& other) const
@@ -45,9 +37,11 @@ bool SkeletonChoices::needsContraction(const SkeletonChoices& other) const
            a.maxContractionWeight != b.maxContractionWeight || a.maxAttractionWeight != b.maxAttractionWeight ||
            a.minAngleDegrees != b.minAngleDegrees || a.minAreaRatio != b.minAreaRatio ||
            a.minAreaDecrease != b.minAreaDecrease || a.ordering != b.ordering || a.backend != b.backend ||
-           a.maxIterations != b.maxIterations || s.preCollapseFraction != t.preCollapseFraction ||
+           a.maxIterations != b.maxIterations || a.collapseFraction != b.collapseFraction ||
+           s.preCollapseFraction != t.preCollapseFraction ||
            s.shapeWeight != t.shapeWeight || s.samplingWeight != t.samplingWeight ||
-           extraction.refine != other.extraction.refine;
+           extraction.refine != other.extraction.refine ||
+           extraction.resampleFraction != other.extraction.resampleFraction;
 }
 
 std::shared_ptr<const SkeletonResult> runSkeletonPipeline(const TriangleMesh& mesh, const SkeletonChoices& choices,
@@ -60,6 +54,11 @@ std::shared_ptr<const SkeletonResult> runSkeletonPipeline(const TriangleMesh& me
     result->times = extraction->times;
     result->extraction = std::move(extraction);
     computeWeights(mesh, *result, control);
+    control.report("evaluation", 0, 1);
+    const SkeletonEvaluator evaluator(mesh);
+    result->curveQuality = evaluator.evaluate(skeletonGraph(result->extraction->curve));
+    result->rigQuality = evaluator.evaluate(skeletonGraph(result->rig));
+    control.report("evaluation", 1, 1);
     return result;
 }
 
@@ -73,12 +72,16 @@ std::shared_ptr<const SkeletonResult> rerunSkeletonRig(const TriangleMesh& mesh,
     control.report("selection", 0, 1);
     QElapsedTimer timer;
     timer.start();
-    result->rig = selectRig(previous.extraction->curve, originalPositions(mesh), choices.extraction.targetNodes,
+    result->rig = selectRig(previous.extraction->curve, mesh, choices.extraction.targetNodes,
                             choices.extraction.rootJoint);
     result->times.selectionMs = double(timer.nsecsElapsed()) * 1e-6;
     control.report("selection", 1, 1);
     control.throwIfCancelled();
     computeWeights(mesh, *result, control);
+    control.report("evaluation", 0, 1);
+    result->curveQuality = previous.curveQuality;
+    result->rigQuality = SkeletonEvaluator(mesh).evaluate(skeletonGraph(result->rig));
+    control.report("evaluation", 1, 1);
     return result;
 }
 

@@ -11,6 +11,7 @@
 #include "core/util/task_control.h"
 #include "core/mesh/triangle_mesh.h"
 #include "core/skeleton/bone_heat_weights.h"
+#include "core/skeleton/skeleton_evaluation.h"
 #include "core/skeleton/skeleton_extraction.h"
 
 #include <memory>
@@ -31,6 +32,10 @@ struct SkeletonResult {
     /// in a rig-only run (they did not run).
     SkeletonStageTimes times;
     double weightsMs = 0.0;
+    /// The evaluator's numbers (skeleton_evaluation.h) for the curve skeleton and the rig
+    /// in use; a rig-only run keeps the curve's.
+    SkeletonEvaluation curveQuality;
+    SkeletonEvaluation rigQuality;
 
     [[nodiscard]] double totalMs() const
     {
@@ -38,14 +43,16 @@ struct SkeletonResult {
     }
 };
 
-/// The full pipeline on `mesh` (object space). Throws what extractSkeleton and
+/// The full pipeline on `mesh` (object space), then the evaluation of its curve and rig
+/// (stage "evaluation"). Throws what extractSkeleton and
 /// BoneHeatSolver throw (SkeletonInputError for a refused mesh, OperationCancelled).
 [[nodiscard]] std::shared_ptr<const SkeletonResult> runSkeletonPipeline(const TriangleMesh& mesh,
                                                                         const SkeletonChoices& choices,
                                                                         const TaskControl& control);
 
 /// selectRig on `previous`'s curve skeleton with the node count and root of `choices`,
-/// then new weights. Reports stages "selection" and the weights' own.
+/// then new weights and the rig's evaluation. Reports stages "selection", the weights' own
+/// and "evaluation".
 [[nodiscard]] std::shared_ptr<const SkeletonResult> rerunSkeletonRig(const TriangleMesh& mesh,
                                                                      const SkeletonResult& previous,
                                                                      const SkeletonChoices& choices,

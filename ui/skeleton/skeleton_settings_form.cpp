@@ -65,9 +65,9 @@ QWidget* SkeletonSettingsForm::createContractionGroup()
 {
     auto* group = new QGroupBox(tr("Contraction"));
     m_initialWeight = realBox("skeletonInitialWeightSpinBox", 0.0, 1000.0, 6, 0.001,
-                              tr("How strongly the first iteration pulls the surface inward (the paper's W_L⁰); 0 = the "
-                                 "paper's 10⁻³·√Ā, Ā the mean face area"));
-    m_initialWeight->setSpecialValueText(tr("paper default (10⁻³)"));
+                              tr("How strongly the first iteration pulls the surface inward (the paper's W_L⁰); 0 = "
+                                 "automatic (1: the paper's 10⁻³·√Ā spends its first ten iterations moving nothing)"));
+    m_initialWeight->setSpecialValueText(tr("automatic (1)"));
     m_growth = realBox("skeletonGrowthSpinBox", 1.1, 10.0, 2, 0.1, tr("How much stronger the inward pull gets each iteration (the paper's s_L)"));
     m_maxContraction = realBox("skeletonMaxContractionSpinBox", 1.0, 1e6, 1, 100.0, tr("The strongest inward pull, as a multiple of the first (the cap of the paper's W_L; paper: 2048)"));
     m_maxAttraction = realBox("skeletonMaxAttractionSpinBox", 1.0, 1e7, 1, 1000.0, tr("How firmly vertices that stopped shrinking hold their place at most (the cap of the paper's W_H; "

@@ -249,6 +249,15 @@ void TestSkeletonPanel::runStagesPoseAndReset()
     QCOMPARE(times->columnCount(), 6);
     QVERIFY(times->item(0, 0)->text().toDouble() > 0.0);  // contraction
     QVERIFY(times->item(0, 5)->text().toDouble() >= times->item(0, 0)->text().toDouble()); // total
+    // The evaluator's table shows the result's own numbers; a star has no cycle, and its
+    // rig keeps every bone inside.
+    auto* quality = child<QTableWidget>(panel, "skeletonQualityTable");
+    QCOMPARE(quality->rowCount(), 2);
+    QCOMPARE(quality->item(1, 0)->text(), QStringLiteral("%1 %").arg(100.0 * result->rigQuality.nodesInside, 0, 'f', 1));
+    QCOMPARE(result->rigQuality.nodeCount, int(rig.joints.size()));
+    QCOMPARE(quality->item(1, 2)->text(), QStringLiteral("0"));
+    QCOMPARE(quality->item(0, 5)->text(), QStringLiteral("0 / 0"));
+    QVERIFY(result->curveQuality.samples > 0);
     QVERIFY(panel->overlay()->isVisible());
     const std::vector<glm::vec3> rest = window->scene()->scene.objects.front().mesh.positions;
     QVERIFY(panel->shownPositions() == rest); // rest pose shown

@@ -1,0 +1,154 @@
+// TrimLab's skeleton extraction against CGAL's mean-curvature-flow skeleton (Tagliasacchi
+// et al. 2012, CGAL::extract_mean_curvature_flow_skeleton with its default parameters),
+// side by side in one run, one evaluator for both (core/skeleton/skeleton_evaluation.h).
+// Not a test: it never fails on a number and is not registered with CTest. Run by hand:
+//   build/tests/core/bench_skeleton_cgal ../shared/data/static/*.gz
+//   build/tests/core/bench_skeleton_cgal --subdivide 1 ../shared/data/static/odedstein-armadillo.obj.gz
+// Per mesh it prints the times (ours = stages A–D, CGAL = its whole extraction) and their
+// ratio, and for our curve skeleton, our selected rig and CGAL's skeleton: nodes and
+// samples inside, length outside, bones leaving the solid, both centring asymmetries, the
+// maximum and mean coverage distance, components and cycles against the genus. A last
+// table line per mesh ("verdict") says which of issue 20's acceptance checks hold.
+#include "core/mesh/loop_subdivision.h"
+#include "core/mesh/mesh_io.h"
+#include "core/skeleton/skeleton_evaluation.h"
+#include "core/skeleton/skeleton_extraction.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/extract_mean_curvature_flow_skeleton.h>
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QElapsedTimer>
+
+#include <cstdio>
+#include <exception>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+using namespace trimlab;
+
+namespace {
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using CgalSkeletonization = CGAL::Mean_curvature_flow_skeletonization<CgalMesh>;
+using CgalSkeleton = CgalSkeletonization::Skeleton;
+
+CgalMesh toCgal(const TriangleMesh& mesh)
+{
+    CgalMesh out;
+    std::vector<CgalMesh::Vertex_index> vertices;
+    for (const glm::vec3& p : mesh.positions)
+        vertices.push_back(out.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
+    for (const glm::uvec3& t : mesh.triangles)
+        if (out.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]) == CgalMesh::null_face())
+            throw std::runtime_error("CGAL's Surface_mesh refuses a face (not manifold)");
+    return out;
+}
+
+SkeletonGraph fromCgal(const CgalSkeleton& skeleton)
+{
+    SkeletonGraph graph;
+    for (auto v : CGAL::make_range(vertices(skeleton))) {
+        const Kernel::Point_3& p = skeleton[v].point;
+        graph.nodes.push_back({p.x(), p.y(), p.z()});
+    }
+    for (auto e : CGAL::make_range(edges(skeleton))) {
+        const int a = static_cast<int>(source(e, skeleton));
+        const int b = static_cast<int>(target(e, skeleton));
+        graph.edges.push_back({std::min(a, b), std::max(a, b)});
+    }
+    return graph;
+}
+
+void printRow(const char* name, double seconds, const SkeletonEvaluation& e)
+{
+    std::printf("  %-10s %8.2f s %6d %6d %7.2f%% %7.2f%% %7.2f%% %4d %6.3f %6.3f %7.4f %7.4f %3d %3d/%d\n", name, seconds,
+                e.nodeCount, e.edgeCount, 100.0 * e.nodesInside, 100.0 * e.samplesInside, 100.0 * e.lengthOutside,
+                e.edgesLeaving, e.meanAsymmetry, e.meanWallAsymmetry, e.maxCoverage, e.meanCoverage, e.components,
+                e.cycles, e.meshGenus);
+}
+
+void compare(const TriangleMesh& mesh, const SkeletonOptions& options)
+{
+    const SkeletonEvaluator evaluator(mesh);
+
+    QElapsedTimer timer;
+    timer.start();
+    const SkeletonExtraction ours = extractSkeleton(mesh, options);
+    const double oursSeconds = double(timer.nsecsElapsed()) / 1e9;
+
+    timer.restart();
+    CgalMesh cgalMesh = toCgal(mesh);
+    CgalSkeleton cgalSkeleton;
+    CGAL::extract_mean_curvature_flow_skeleton(cgalMesh, cgalSkeleton);
+    const double cgalSeconds = double(timer.nsecsElapsed()) / 1e9;
+
+    const SkeletonEvaluation curve = evaluator.evaluate(skeletonGraph(ours.curve));
+    const SkeletonEvaluation rig = evaluator.evaluate(skeletonGraph(ours.rig));
+    const SkeletonEvaluation cgal = evaluator.evaluate(fromCgal(cgalSkeleton));
+    std::printf("  %-10s %10s %6s %6s %8s %8s %8s %4s %6s %6s %7s %7s %3s %s\n", "skeleton", "time", "nodes", "edges",
+                "nodes in", "samples", "len out", "leav", "chord", "wall", "maxcov", "meancov", "cmp", "cyc/genus");
+    printRow("ours-curve", oursSeconds, curve);
+    printRow("ours-rig", oursSeconds, rig);
+    printRow("cgal-mcf", cgalSeconds, cgal);
+    std::printf("  time ours/CGAL %.2f; contraction %d iterations; %s\n", oursSeconds / cgalSeconds,
+                ours.contractionIterations, ours.solver.c_str());
+    const bool inside = curve.nodesInside >= 0.99 && curve.samplesInside >= 0.99;
+    const bool centred = curve.meanAsymmetry <= cgal.meanAsymmetry;
+    const bool covering = curve.maxCoverage <= 1.1 * cgal.maxCoverage;
+    const bool rigInside = rig.edgesLeaving == 0;
+    const bool genus = curve.cycles == curve.meshGenus;
+    const bool faster = oursSeconds <= cgalSeconds;
+    std::printf("  verdict: inside %s, centred %s, coverage %s, rig inside %s, genus %s, time %s\n",
+                inside ? "yes" : "NO", centred ? "yes" : "NO", covering ? "yes" : "NO", rigInside ? "yes" : "NO",
+                genus ? "yes" : "NO", faster ? "yes" : "NO");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    QCoreApplication app(argc, argv);
+    QCommandLineParser parser;
+    parser.setApplicationDescription("TrimLab's skeleton extraction against CGAL's mean-curvature-flow skeleton.");
+    parser.addHelpOption();
+    parser.addOption({"subdivide", "Loop-subdivide each mesh N times first.", "N", "0"});
+    parser.addOption({"target", "Joints after selection.", "N", "30"});
+    parser.addOption({"min-area-ratio", "Contraction stops below this area ratio.", "R", "1e-3"});
+    parser.addOption({"max-iterations", "Contraction solves at most.", "N", "20"});
+    parser.addOption({"collapse", "Remesh while contracting: collapse edges below this fraction of the diagonal.",
+                      "F", "0"});
+    parser.addPositionalArgument("meshes", "Closed mesh files.", "MESH...");
+    parser.process(app);
+    if (parser.positionalArguments().isEmpty())
+        parser.showHelp(2);
+    SkeletonOptions options;
+    options.targetNodes = parser.value("target").toInt();
+    options.contraction.minAreaRatio = parser.value("min-area-ratio").toDouble();
+    options.contraction.maxIterations = parser.value("max-iterations").toInt();
+    options.contraction.collapseFraction = parser.value("collapse").toDouble();
+    std::printf("bench_skeleton_cgal, %s, %u hardware threads, CGAL %s\n",
+                qPrintable(QDateTime::currentDateTime().toString(Qt::ISODate)), std::thread::hardware_concurrency(),
+                CGAL_VERSION_STR);
+    std::printf("lengths x bounding-box diagonal; chord = shortest-chord asymmetry, wall = nearest-wall asymmetry\n");
+    for (const QString& path : parser.positionalArguments()) {
+        try {
+            TriangleMesh mesh = loadMesh(path.toStdString());
+            if (const int levels = parser.value("subdivide").toInt(); levels > 0)
+                mesh = loopSubdivide(mesh, levels);
+            std::printf("%s: %zu vertices, %zu triangles\n", qPrintable(path), mesh.vertexCount(), mesh.triangleCount());
+            std::fflush(stdout);
+            compare(mesh, options);
+        } catch (const std::exception& e) {
+            std::printf("%s: %s\n", qPrintable(path), e.what());
+        }
+        std::fflush(stdout);
+    }
+    return 0;
+}
