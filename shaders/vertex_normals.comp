@@ -27,22 +27,24 @@ dvec3 position(uint v)
 
 // sin and cos of x in [0, π/2] (a little beyond is fine) in double precision: their Taylor
 // series to x^25/25! and x^24/24!, below 1e-19 there, nested (Horner) and without a loop
-// (llvmpipe notes: a shader's loop iterations are counted together).
+// (llvmpipe notes: a shader's loop iterations are counted together). The ratios of
+// consecutive terms are double constants (an unsuffixed GLSL literal is a float; 1/6 is not
+// exact in float), multiplied rather than divided by.
 dvec2 sinCos(double x)
 {
     double y = x * x;
-    double s = 1.0 - y / 506.0 * (1.0 - y / 600.0);
-    s = 1.0 - y / 342.0 * (1.0 - y / 420.0 * s);
-    s = 1.0 - y / 210.0 * (1.0 - y / 272.0 * s);
-    s = 1.0 - y / 110.0 * (1.0 - y / 156.0 * s);
-    s = 1.0 - y / 42.0 * (1.0 - y / 72.0 * s);
-    s = x * (1.0 - y / 6.0 * (1.0 - y / 20.0 * s));
-    double c = 1.0 - y / 462.0 * (1.0 - y / 552.0);
-    c = 1.0 - y / 306.0 * (1.0 - y / 380.0 * c);
-    c = 1.0 - y / 182.0 * (1.0 - y / 240.0 * c);
-    c = 1.0 - y / 90.0 * (1.0 - y / 132.0 * c);
-    c = 1.0 - y / 30.0 * (1.0 - y / 56.0 * c);
-    c = 1.0 - y / 2.0 * (1.0 - y / 12.0 * c);
+    double s = 1.0 - y * (1.0lf / 506.0lf) * (1.0 - y * (1.0lf / 600.0lf));
+    s = 1.0 - y * (1.0lf / 342.0lf) * (1.0 - y * (1.0lf / 420.0lf) * s);
+    s = 1.0 - y * (1.0lf / 210.0lf) * (1.0 - y * (1.0lf / 272.0lf) * s);
+    s = 1.0 - y * (1.0lf / 110.0lf) * (1.0 - y * (1.0lf / 156.0lf) * s);
+    s = 1.0 - y * (1.0lf / 42.0lf) * (1.0 - y * (1.0lf / 72.0lf) * s);
+    s = x * (1.0 - y * (1.0lf / 6.0lf) * (1.0 - y * (1.0lf / 20.0lf) * s));
+    double c = 1.0 - y * (1.0lf / 462.0lf) * (1.0 - y * (1.0lf / 552.0lf));
+    c = 1.0 - y * (1.0lf / 306.0lf) * (1.0 - y * (1.0lf / 380.0lf) * c);
+    c = 1.0 - y * (1.0lf / 182.0lf) * (1.0 - y * (1.0lf / 240.0lf) * c);
+    c = 1.0 - y * (1.0lf / 90.0lf) * (1.0 - y * (1.0lf / 132.0lf) * c);
+    c = 1.0 - y * (1.0lf / 30.0lf) * (1.0 - y * (1.0lf / 56.0lf) * c);
+    c = 1.0 - y * (1.0lf / 2.0lf) * (1.0 - y * (1.0lf / 12.0lf) * c);
     return dvec2(s, c);
 }
 
