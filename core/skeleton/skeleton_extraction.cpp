@@ -3,6 +3,8 @@
 #include "core/skeleton/contraction_solver.h"
 #include "core/skeleton/point_in_mesh.h"
 #include "core/skeleton/rig_hierarchy.h"
+#include "core/skeleton/leaf_extension.h"
+#include "core/skeleton/skeleton_centring.h"
 #include "core/skeleton/skeleton_refinement.h"
 #include "core/skeleton/skeleton_resampling.h"
 #include "core/skeleton/skeleton_selection.h"
@@ -80,6 +82,10 @@ SkeletonExtraction extractSkeleton(const TriangleMesh& mesh, const SkeletonOptio
         if (options.resampleFraction > 0.0)
             result.curve = resampleSkeleton(result.curve, mesh, midpoints, solid,
                                             options.resampleFraction * glm::length(bounds.max - bounds.min));
+        if (options.centre) {
+            extendLeaves(result.curve, mesh, solid);
+            centreOnNearestWallChords(result.curve, solid);
+        }
     }
     control.report("refinement", 1, 1);
     result.times.refinementMs = millisecondsSince(start);

@@ -31,6 +31,10 @@ struct SkeletonOptions {
     /// centred intermediate nodes (skeleton_resampling.h); ≤ 0 leaves the curve as the
     /// simplification made it. Only with refine.
     double resampleFraction = 0.01;
+    /// Last, the leaves reach out to their tips (leaf_extension.h) and every node moves
+    /// to the midpoint of its chord towards the nearest wall (skeleton_centring.h). Only with
+    /// refine.
+    bool centre = true;
     int targetNodes = 30;   ///< joints after selection; 20–40 typical (paper III.D)
     int rootJoint = -1;     ///< −1: automatic (rig_hierarchy.h); else a joint index of the selection
 };

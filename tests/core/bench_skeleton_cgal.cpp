@@ -122,6 +122,7 @@ int main(int argc, char** argv)
     parser.addOption({"target", "Joints after selection.", "N", "30"});
     parser.addOption({"min-area-ratio", "Contraction stops below this area ratio.", "R", "1e-3"});
     parser.addOption({"max-iterations", "Contraction solves at most.", "N", "20"});
+    parser.addOption({"growth", "s_L: W_L grows by this factor per solve.", "S", "2"});
     parser.addOption({"collapse", "Remesh while contracting: collapse edges below this fraction of the diagonal.",
                       "F", "0"});
     parser.addPositionalArgument("meshes", "Closed mesh files.", "MESH...");
@@ -132,6 +133,7 @@ int main(int argc, char** argv)
     options.targetNodes = parser.value("target").toInt();
     options.contraction.minAreaRatio = parser.value("min-area-ratio").toDouble();
     options.contraction.maxIterations = parser.value("max-iterations").toInt();
+    options.contraction.contractionGrowth = parser.value("growth").toDouble();
     options.contraction.collapseFraction = parser.value("collapse").toDouble();
     std::printf("bench_skeleton_cgal, %s, %u hardware threads, CGAL %s\n",
                 qPrintable(QDateTime::currentDateTime().toString(Qt::ISODate)), std::thread::hardware_concurrency(),

@@ -7,6 +7,9 @@
 
 #include "core/mesh/mesh_io.h"
 #include "core/mesh/mesh_validation.h"
+#include "core/skeleton/leaf_extension.h"
+#include "core/skeleton/point_in_mesh.h"
+#include "core/skeleton/skeleton_centring.h"
 #include "core/skeleton/skeleton_evaluation.h"
 #include "core/scene/scene.h"
 #include "core/scene/shape_generators.h"
@@ -239,6 +242,47 @@ private slots:
         QVERIFY(curve.samplesInside >= 0.99);
         QCOMPARE(rig.edgesLeaving, 0);
         QCOMPARE(curve.cycles, curve.meshGenus);
+    }
+
+    // A node off the axis of a capsule slides to the axis (the midpoint of the chord
+    // towards its nearest wall); one outside stays where it is.
+    void centringMovesNodesToTheAxis()
+    {
+        const double radius = 0.3;
+        const TriangleMesh mesh = axisCapsule(radius, 1.0, 8, 24, 32);
+        const PointInMesh solid(mesh);
+        CurveSkeleton curve;
+        curve.nodes = {{0.5 * radius, 0.2, 0.0}, {0.0, -0.4, -0.6 * radius}, {2.0, 0.0, 0.0}};
+        curve.edges = {{0, 1}, {1, 2}};
+        QCOMPARE(centreOnNearestWallChords(curve, solid), std::size_t(2));
+        for (int k : {0, 1}) {
+            const glm::dvec3& p = curve.nodes[std::size_t(k)];
+            QVERIFY2(std::hypot(p.x, p.z) < 0.05 * radius, qPrintable(QString::number(std::hypot(p.x, p.z))));
+        }
+        QCOMPARE(curve.nodes[2], glm::dvec3(2.0, 0.0, 0.0));
+    }
+
+    // Leaves that stop short of a capsule's caps reach out to one radius short of the
+    // tip, staying inside; the inner node stays.
+    void leavesReachTheirTips()
+    {
+        const double radius = 0.3, half = 1.0;
+        const TriangleMesh mesh = axisCapsule(radius, half, 8, 24, 32);
+        const PointInMesh solid(mesh);
+        CurveSkeleton curve;
+        curve.nodes = {{0.0, -0.5, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.5, 0.0}};
+        curve.edges = {{0, 1}, {1, 2}};
+        for (const glm::vec3& p : mesh.positions)
+            curve.vertexNode.push_back(p.y < -0.25f ? 0 : p.y > 0.25f ? 2 : 1);
+        QCOMPARE(extendLeaves(curve, mesh, solid), std::size_t(2));
+        for (int k : {0, 2}) {
+            const glm::dvec3& p = curve.nodes[std::size_t(k)];
+            qInfo("leaf %d at y = %.3f", k, p.y);
+            QVERIFY(std::abs(p.y) > half - 0.1 && std::abs(p.y) < half + radius);
+            QVERIFY(std::hypot(p.x, p.z) < 1e-9);
+            QVERIFY(solid.contains(p));
+        }
+        QCOMPARE(curve.nodes[1], glm::dvec3(0.0));
     }
 
     void torusLoopBecomesATree()

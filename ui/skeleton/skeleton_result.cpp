@@ -41,7 +41,8 @@ bool SkeletonChoices::needsContraction(const SkeletonChoices& other) const
            s.preCollapseFraction != t.preCollapseFraction ||
            s.shapeWeight != t.shapeWeight || s.samplingWeight != t.samplingWeight ||
            extraction.refine != other.extraction.refine ||
-           extraction.resampleFraction != other.extraction.resampleFraction;
+           extraction.resampleFraction != other.extraction.resampleFraction ||
+           extraction.centre != other.extraction.centre;
 }
 
 std::shared_ptr<const SkeletonResult> runSkeletonPipeline(const TriangleMesh& mesh, const SkeletonChoices& choices,

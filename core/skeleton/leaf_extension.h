@@ -1,0 +1,24 @@
+#pragma once
+/// \file
+/// Leaf extension (issue 20: coverage). Contraction shrinks every limb along its length as
+/// well as across it, and the simplification's pre-collapse merges the last sections, so a
+/// curve skeleton's leaf ends about a limb's width short of the tip: the vertices of the
+/// tip are then the farthest from any bone (measured: coverage 1.3× CGAL's on the hand).
+/// Each leaf here moves outward along its edge's direction until it is one local radius
+/// short of the farthest vertex of its region (the tip's cap), as far as the extension
+/// stays inside the solid. The local radius is the mean distance of the region's vertices
+/// from the edge's line.
+
+#include "core/mesh/triangle_mesh.h"
+#include "core/skeleton/point_in_mesh.h"
+#include "core/skeleton/skeleton.h"
+
+#include <cstddef>
+
+namespace trimlab {
+
+/// Moves the leaves (nodes of degree 1 with a non-empty region) of `curve` as described
+/// above. `mesh` holds the regions' original positions. Returns the leaves moved.
+std::size_t extendLeaves(CurveSkeleton& curve, const TriangleMesh& mesh, const PointInMesh& solid);
+
+} // namespace trimlab

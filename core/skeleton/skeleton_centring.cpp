@@ -1,0 +1,72 @@
+#include "core/skeleton/skeleton_centring.h"
+
+#include "core/util/parallel_for.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace trimlab {
+
+namespace {
+
+std::vector<glm::dvec3> halfSphere(int count)
+{
+    std::vector<glm::dvec3> directions;
+    const double golden = glm::pi<double>() * (3.0 - std::sqrt(5.0));
+    for (int i = 0; i < count; ++i) {
+        const double z = (i + 0.5) / count;
+        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+        directions.push_back({r * std::cos(golden * i), r * std::sin(golden * i), z});
+    }
+    return directions;
+}
+
+// The midpoint of the chord through p towards its nearest wall; none where a ray finds
+// no surface.
+std::optional<glm::dvec3> nearestWallChordMidpoint(const glm::dvec3& p, const PointInMesh& solid,
+                                                   const std::vector<glm::dvec3>& directions)
+{
+    double nearest = std::numeric_limits<double>::infinity();
+    std::optional<glm::dvec3> midpoint;
+    for (const glm::dvec3& d : directions) {
+        const std::optional<double> a = solid.nearestCrossing(p, d, 0.0);
+        const std::optional<double> b = solid.nearestCrossing(p, -d, 0.0);
+        if (!a || !b)
+            return std::nullopt; // p is not enclosed: leave it
+        if (std::min(*a, *b) < nearest) {
+            nearest = std::min(*a, *b);
+            midpoint = p + 0.5 * (*a - *b) * d;
+        }
+    }
+    return midpoint;
+}
+
+} // namespace
+
+std::size_t centreOnNearestWallChords(CurveSkeleton& curve, const PointInMesh& solid, const CentringOptions& options)
+{
+    const std::vector<glm::dvec3> directions = halfSphere(std::max(1, options.directions));
+    std::vector<char> moved(curve.nodes.size(), 0);
+    parallelFor(curve.nodes.size(), 0, [&](std::size_t k) {
+        glm::dvec3 p = curve.nodes[k];
+        if (!solid.contains(p))
+            return;
+        for (int round = 0; round < options.rounds; ++round) {
+            const std::optional<glm::dvec3> next = nearestWallChordMidpoint(p, solid, directions);
+            if (!next || !solid.contains(*next))
+                break;
+            p = *next;
+            moved[k] = 1;
+        }
+        curve.nodes[k] = p;
+    });
+    return static_cast<std::size_t>(std::count(moved.begin(), moved.end(), 1));
+}
+
+} // namespace trimlab

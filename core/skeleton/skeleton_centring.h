@@ -1,0 +1,33 @@
+#pragma once
+/// \file
+/// The last step of placing curve-skeleton nodes (issue 20: nodes centred): each node
+/// moves, a few times over, to the midpoint of the chord of the solid through it towards
+/// its nearest wall (among antipodal ray pairs in a fixed set of directions, the pair
+/// whose nearer hit is nearest). In a round limb that chord is the diameter through the
+/// node, so one move puts the node on the axis; in other sections the moves climb the
+/// distance to the surface towards the centre of the largest ball that fits — the medial
+/// axis. Along a limb nothing moves (the nearest wall is across it). The chord's ends are
+/// the first surface crossings from the node, so the segment between them, and its
+/// midpoint, lie inside. (The shortest chord would not do: through any point of a disc
+/// the shortest chord is the one that point bisects.) Region chord midpoints
+/// (skeleton_refinement.h) put a node near the centre of the section it absorbed; this
+/// removes the offset a one-sided or unevenly sampled region leaves.
+
+#include "core/skeleton/point_in_mesh.h"
+#include "core/skeleton/skeleton.h"
+
+#include <cstddef>
+
+namespace trimlab {
+
+struct CentringOptions {
+    int directions = 48; ///< antipodal pairs tried per node (a Fibonacci half-sphere)
+    int rounds = 3;      ///< moves per node
+};
+
+/// Moves every node of `curve` that lies inside `solid` as described above; a node
+/// outside, or where some direction finds no surface both ways, stays. Returns how many
+/// nodes moved. Parallel over nodes.
+std::size_t centreOnNearestWallChords(CurveSkeleton& curve, const PointInMesh& solid, const CentringOptions& options = {});
+
+} // namespace trimlab
