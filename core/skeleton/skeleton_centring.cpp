@@ -1,9 +1,9 @@
 #include "core/skeleton/skeleton_centring.h"
 
+#include "core/skeleton/half_sphere_directions.h"
 #include "core/util/parallel_for.h"
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/constants.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -14,18 +14,6 @@
 namespace trimlab {
 
 namespace {
-
-std::vector<glm::dvec3> halfSphere(int count)
-{
-    std::vector<glm::dvec3> directions;
-    const double golden = glm::pi<double>() * (3.0 - std::sqrt(5.0));
-    for (int i = 0; i < count; ++i) {
-        const double z = (i + 0.5) / count;
-        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-        directions.push_back({r * std::cos(golden * i), r * std::sin(golden * i), z});
-    }
-    return directions;
-}
 
 // The midpoint of the chord through p towards its nearest wall; none where a ray finds
 // no surface.
@@ -51,7 +39,7 @@ std::optional<glm::dvec3> nearestWallChordMidpoint(const glm::dvec3& p, const Po
 
 std::size_t centreOnNearestWallChords(CurveSkeleton& curve, const PointInMesh& solid, const CentringOptions& options)
 {
-    const std::vector<glm::dvec3> directions = halfSphere(std::max(1, options.directions));
+    const std::vector<glm::dvec3> directions = halfSphereDirections(std::max(1, options.directions));
     std::vector<char> moved(curve.nodes.size(), 0);
     parallelFor(curve.nodes.size(), 0, [&](std::size_t k) {
         glm::dvec3 p = curve.nodes[k];

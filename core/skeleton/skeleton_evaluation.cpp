@@ -1,11 +1,11 @@
 #include "core/skeleton/skeleton_evaluation.h"
 
 #include "core/scene/scene.h"
+#include "core/skeleton/half_sphere_directions.h"
 #include "core/util/parallel_for.h"
 #include "core/util/union_find.h"
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/constants.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -26,21 +26,6 @@ Scene meshScene(const TriangleMesh& mesh)
     Scene scene;
     scene.objects.push_back(SceneObject{"evaluated mesh", mesh, glm::dmat4(1.0)});
     return scene;
-}
-
-// Fibonacci points on the upper half-sphere: each direction stands for its antipodal pair,
-// spread evenly so the shortest chord is found within a few degrees.
-std::vector<glm::dvec3> halfSphereDirections(int count)
-{
-    std::vector<glm::dvec3> directions;
-    const double golden = glm::pi<double>() * (3.0 - std::sqrt(5.0));
-    for (int i = 0; i < count; ++i) {
-        const double z = (i + 0.5) / count;
-        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-        const double phi = golden * i;
-        directions.push_back({r * std::cos(phi), r * std::sin(phi), z});
-    }
-    return directions;
 }
 
 struct MeshTopology {
