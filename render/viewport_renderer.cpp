@@ -1,6 +1,8 @@
 #include "render/viewport_renderer.h"
 
 #include "render/frame/gpu_scene.h"
+#include "render/frame/gpu_skinning.h"
+#include "render/gl/context_reset.h"
 #include "render/gl/gl_error.h"
 
 #include <algorithm>
@@ -20,6 +22,7 @@ void ViewportRenderer::setScene(std::shared_ptr<const Scene> scene)
     m_sceneUploaded = false;
     m_lastFrame.reset();
     m_pose.clear();
+    m_skinning.reset();
     m_vertexColors.clear();
     m_chain.reset(); // a chain belongs to the previous scene's mesh
     m_level.reset();
@@ -50,6 +53,20 @@ void ViewportRenderer::showPose(const std::vector<glm::vec3>& positions)
     m_pose = positions;
     m_poseDirty = true;
     m_posedScene.reset();
+    m_skinning.reset();
+}
+
+void ViewportRenderer::showSkinnedPose(std::shared_ptr<const SkinningModel> model, std::size_t pose,
+                                       const std::vector<glm::vec3>& positions)
+{
+    if (!model || pose >= model->poseCount())
+        throw std::invalid_argument("showSkinnedPose: pose " + std::to_string(pose) + " of a model with " +
+                                    std::to_string(model ? model->poseCount() : 0) + " poses.");
+    showPose(positions);
+    if (model != m_gpuSkinningModel)
+        m_gpuSkinningFailed = false;
+    m_skinning = std::move(model);
+    m_skinnedPose = pose;
 }
 
 void ViewportRenderer::setVertexColors(std::vector<std::uint32_t> rgba8)
@@ -127,6 +144,7 @@ void ViewportRenderer::initialize(QOpenGLContext& context)
 void ViewportRenderer::release()
 {
     m_dynamic.reset(); // its GL objects go first: it holds a reference to the renderer
+    m_gpuSkinning.reset();
     m_renderer.reset();
     m_sceneUploaded = false;
     m_chainDirty = m_chain != nullptr;
@@ -188,12 +206,41 @@ void ViewportRenderer::syncGpuScene()
         m_transformsDirty = false;
     }
     if (m_poseDirty) {
-        m_renderer->gpuScene().updatePositions(0, m_pose);
+        uploadPose();
         m_poseDirty = false;
     }
     if (m_colorsDirty) {
         m_renderer->gpuScene().setVertexColors(m_vertexColors);
         m_colorsDirty = false;
+    }
+}
+
+void ViewportRenderer::uploadPose()
+{
+    m_poseOnGpu = m_skinning && !m_gpuSkinningFailed && skinPoseOnGpu();
+    if (!m_poseOnGpu)
+        m_renderer->gpuScene().updatePositions(0, m_pose);
+}
+
+// The GPU skinning of the shown model, made in this context on first use; false when it
+// cannot run (the CPU's pose is uploaded instead, and the model is not tried again). A GPU
+// reset is the frame policy's to handle.
+bool ViewportRenderer::skinPoseOnGpu()
+{
+    try {
+        if (!m_gpuSkinning || m_gpuSkinningModel != m_skinning) {
+            m_gpuSkinning.reset();
+            m_gpuSkinningModel = m_skinning;
+            m_gpuSkinning = std::make_unique<GpuSkinning>(m_renderer->gl(), *m_skinning);
+        }
+        m_gpuSkinning->skinPose(m_renderer->gpuScene(), 0, m_skinnedPose);
+        return true;
+    } catch (const GlContextLostError&) {
+        throw;
+    } catch (const std::exception&) {
+        m_gpuSkinning.reset();
+        m_gpuSkinningFailed = true;
+        return false;
     }
 }
 

@@ -18,6 +18,7 @@
 #include "render/frame_times.h"
 #include "render/trim_renderer.h"
 
+#include "core/skinning/skinning_model.h"
 #include "core/trim/dynamic_chain.h"
 
 #include <QSize>
@@ -32,6 +33,8 @@
 class QOpenGLContext;
 
 namespace trimlab::render {
+
+class GpuSkinning;
 
 /// What the last successful frame was rendered with (for tests, exports and readbacks).
 struct ViewFrame {
@@ -78,6 +81,17 @@ public:
     /// Object 0 at `positions` (#V, object space) from the next frame on. Throws
     /// std::invalid_argument on a vertex count mismatch or without a scene.
     void showPose(const std::vector<glm::vec3>& positions);
+    /// Object 0 at pose `pose` of `model` (a skinning of object 0's mesh) from the next
+    /// frame on: skinned on the GPU into the scene's buffers (frame/gpu_skinning.h: no
+    /// vertex upload, a pose-to-pose chain one step per pose in playback), or — where the
+    /// GPU path fails (a shader, memory, a model that does not fit the object), from then
+    /// on for this model — uploaded from `positions`, the CPU's skinning of that pose,
+    /// which posedScene() and the CPU still show in any case. Throws as showPose, and
+    /// std::invalid_argument for a pose beyond the model.
+    void showSkinnedPose(std::shared_ptr<const SkinningModel> model, std::size_t pose,
+                         const std::vector<glm::vec3>& positions);
+    /// Whether the pose of the last frame was skinned on the GPU (showSkinnedPose).
+    [[nodiscard]] bool poseSkinnedOnGpu() const { return m_poseOnGpu; }
     /// One RGBA8 colour per vertex of the scene (objects in order); empty: the trim
     /// palette. Throws std::invalid_argument on a count mismatch.
     void setVertexColors(std::vector<std::uint32_t> rgba8);
@@ -146,6 +160,8 @@ public:
 private:
     [[nodiscard]] FrameDemands frameDemands() const;
     void syncGpuScene();
+    void uploadPose();
+    [[nodiscard]] bool skinPoseOnGpu();
     void renderFrame(const Camera& camera, QSize size, GLuint framebuffer);
     void renderDynamicFrame(const Camera& camera, QSize size);
     void recordFrame(const Camera& camera, QSize size);
@@ -159,6 +175,12 @@ private:
     MethodParameters m_parameters;
     std::vector<glm::vec3> m_pose;              ///< object 0's positions; empty: the scene's
     std::vector<std::uint32_t> m_vertexColors; ///< empty: the trim palette
+    std::shared_ptr<const SkinningModel> m_skinning; ///< m_pose is its pose m_skinnedPose
+    std::size_t m_skinnedPose = 0;
+    std::unique_ptr<GpuSkinning> m_gpuSkinning;            ///< of m_gpuSkinningModel, this context's
+    std::shared_ptr<const SkinningModel> m_gpuSkinningModel;
+    bool m_gpuSkinningFailed = false; ///< for m_skinning: upload the CPU's poses
+    bool m_poseOnGpu = false;
     bool m_sceneUploaded = false;
     bool m_poseDirty = false;
     bool m_transformsDirty = false; ///< model matrices changed since the upload

@@ -13,6 +13,8 @@
 #include "render/viewport_renderer.h"
 
 #include "core/catalog/demo_scenes.h"
+#include "core/skinning/skinning_reconstruction.h"
+#include "core/skinning/skinning_weights.h"
 #include "core/catalog/fig8_13_history.h"
 #include "core/timeline/frame_chain.h"
 #include "core/trim/dynamic_reference_renderer.h"
@@ -56,6 +58,28 @@ std::optional<QString> frameDisagreement(ViewportRenderer& view, const QString& 
     return test::checkFrameAgainstReference(view.renderer(), testCase, reference, {});
 }
 
+// Object 0 of `scene` in two bones (x < 0, x >= 0) along a pose-to-pose DQS chain whose
+// poses turn the second bone 35° further each.
+SkinningModel twoBoneModel(const Scene& scene, std::size_t poses)
+{
+    const TriangleMesh& mesh = scene.objects.front().mesh;
+    VertexLabeling halves;
+    halves.count = 2;
+    for (const glm::vec3& p : mesh.positions)
+        halves.labels.push_back(p.x < 0.0f ? 0u : 1u);
+    SkinningModel model = identitySkinningModel(SkinningMethod::Dqs, SkinningChain::PoseToPose, poses, 0,
+                                                toDoublePositions(mesh.positions), rigidWeights(halves), mesh.triangles);
+    for (std::size_t t = 1; t < poses; ++t)
+        model.rigid[t][1] = dualQuaternionFromRigid(glm::angleAxis(glm::radians(35.0), glm::dvec3(0.0, 0.0, 1.0)),
+                                                    glm::dvec3(0.0));
+    return model;
+}
+
+std::vector<glm::vec3> floatPositions(const PosePositions& positions)
+{
+    return {positions.begin(), positions.end()};
+}
+
 int coveredPixels(const TrimImage& image)
 {
     int covered = 0;
@@ -72,6 +96,7 @@ private slots:
     void initTestCase();
     void contentGoesIntoANewContext();
     void dynamicChainGoesIntoANewContext();
+    void skinnedPosesAreSkinnedOnTheGpu();
     void outOfMemoryWalksTheChainWithNotices();
     void dynamicRulesOutOfMemoryAreRefused();
 
@@ -135,6 +160,55 @@ void TestViewportRenderer::contentGoesIntoANewContext()
     const std::optional<QString> failure =
         frameDisagreement(view, QStringLiteral("viewport_renderer_posed"), camera, TrimSettings{}, reference);
     QVERIFY2(!failure, qPrintable(failure.value_or(QString())));
+    view.release();
+}
+
+// A skinned pose is evaluated on the GPU (no vertex upload), also in a new context, and
+// trims like the exact reference of the CPU's pose; a model the GPU cannot skin for the
+// object falls back to the CPU's positions.
+void TestViewportRenderer::skinnedPosesAreSkinnedOnTheGpu()
+{
+    auto scene = std::make_shared<const Scene>(*makeDemoScene("pushed-sphere"));
+    auto model = std::make_shared<const SkinningModel>(twoBoneModel(*scene, 3));
+    const std::vector<PosePositions> cpu = reconstructPoses(*model);
+    const Camera camera = fitCamera(scene->worldBounds(), double(kSize.width()) / kSize.height());
+    ViewportRenderer view;
+    view.setScene(scene);
+    m_gl->makeCurrent();
+    view.initialize(m_gl->context());
+    const TrimImage rest = renderFrame(view, camera);
+    const auto agreesWithCpuPose = [&](const char* name) {
+        const ReferenceResult reference =
+            ReferenceRenderer(*view.posedScene()).render(camera, kSize.width(), kSize.height(), TrimSettings{});
+        return frameDisagreement(view, QString::fromLatin1(name), camera, TrimSettings{}, reference);
+    };
+
+    for (std::size_t pose : {1u, 2u}) { // playback: one chain step each
+        view.showSkinnedPose(model, pose, floatPositions(cpu[pose]));
+        const TrimImage skinned = renderFrame(view, camera);
+        QVERIFY(view.poseSkinnedOnGpu());
+        QVERIFY(differingPixels(skinned, rest) > 100);
+        const std::optional<QString> failure = agreesWithCpuPose("viewport_renderer_skinned");
+        QVERIFY2(!failure, qPrintable(failure.value_or(QString())));
+    }
+
+    view.release();
+    OffscreenGlContext second;
+    second.makeCurrent();
+    view.initialize(second.context());
+    renderFrame(view, camera);
+    QVERIFY(view.poseSkinnedOnGpu());
+    std::optional<QString> failure = agreesWithCpuPose("viewport_renderer_skinned_again");
+    QVERIFY2(!failure, qPrintable(failure.value_or(QString())));
+
+    SkinningModel mismatched = *model; // not object 0's mesh: the CPU's pose is shown
+    mismatched.triangles.pop_back();
+    view.showSkinnedPose(std::make_shared<const SkinningModel>(std::move(mismatched)), 1, floatPositions(cpu[1]));
+    renderFrame(view, camera);
+    QVERIFY(!view.poseSkinnedOnGpu());
+    failure = agreesWithCpuPose("viewport_renderer_skinned_fallback");
+    QVERIFY2(!failure, qPrintable(failure.value_or(QString())));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, view.showSkinnedPose(model, 3, floatPositions(cpu[1])));
     view.release();
 }
 

@@ -112,7 +112,7 @@ void AnimationWorkspace::showPose(int pose)
     if (!m_animation || pose < 0 || std::size_t(pose) >= m_animation->animation->poseCount())
         return;
     if (const std::optional<std::vector<glm::vec3>> skinned = m_skinning->panel()->shownPose(pose))
-        m_viewport->showPose(*skinned);
+        m_viewport->showSkinnedPose(m_skinning->panel()->shownModel(pose), std::size_t(pose), *skinned);
     else
         m_viewport->showPose(m_animation->animation->poses[std::size_t(pose)]);
     m_segmentation->setCurrentPose(pose);

@@ -428,6 +428,11 @@ std::optional<std::vector<glm::vec3>> SkinningPanel::shownPose(int pose) const
     return m_session->approximatePose(std::size_t(pose));
 }
 
+std::shared_ptr<const SkinningModel> SkinningPanel::shownModel(int pose) const
+{
+    return shownPose(pose) ? m_session->model() : nullptr;
+}
+
 QString SkinningPanel::formatERms(double eRms)
 {
     return QString::number(eRms, 'f', 4);

@@ -27,13 +27,16 @@
 /// writes the model shown — edits included — as a skinned glTF (or morph targets) on a
 /// worker and reports the E_RMS of the file against the original animation.
 ///
-/// The panel computes nothing on the GPU: the window asks it for shownPose() and
-/// displayColors() whenever displayChanged() is emitted and when the timeline moves.
+/// The panel computes nothing on the GPU: the window asks it for shownPose() (with
+/// shownModel(), which the viewport skins on the GPU where it can, the CPU's pose being the
+/// reference and the fallback) and displayColors() whenever displayChanged() is emitted and
+/// when the timeline moves.
 
 #include "ui/skinning/skinning_choices.h"
 #include "ui/skinning/skinning_result.h"
 
 #include "core/animation/animation_segmenter.h"
+#include "core/skinning/skinning_model.h"
 
 #include <QString>
 #include <QWidget>
@@ -109,6 +112,9 @@ public:
     /// The positions to show at `pose` instead of the original (the approximation), or
     /// nullopt to show the original pose.
     [[nodiscard]] std::optional<std::vector<glm::vec3>> shownPose(int pose) const;
+    /// The model whose pose shownPose() returns (edits included), or nullptr when it
+    /// returns nullopt.
+    [[nodiscard]] std::shared_ptr<const SkinningModel> shownModel(int pose) const;
     /// #V RGBA8 colors of the error heat map while it is shown, else empty.
     [[nodiscard]] const std::vector<std::uint32_t>& displayColors() const { return m_displayColors; }
 

@@ -126,6 +126,13 @@ void ViewportWidget::showPose(const std::vector<glm::vec3>& positions)
     update();
 }
 
+void ViewportWidget::showSkinnedPose(std::shared_ptr<const SkinningModel> model, std::size_t pose,
+                                     const std::vector<glm::vec3>& positions)
+{
+    m_view.showSkinnedPose(std::move(model), pose, positions);
+    update();
+}
+
 void ViewportWidget::setVertexColors(std::vector<std::uint32_t> rgba8)
 {
     m_view.setVertexColors(std::move(rgba8));

@@ -91,6 +91,14 @@ public:
     /// itself is not changed. Kept across GL context re-creation until setScene().
     /// Throws std::invalid_argument on a vertex count mismatch or without a scene.
     void showPose(const std::vector<glm::vec3>& positions);
+    /// The same for pose `pose` of a skinned approximation of object 0, `positions` being
+    /// the CPU's skinning of it: the renderer skins the pose on the GPU where it can
+    /// (render::ViewportRenderer::showSkinnedPose), else shows `positions`. Throws as
+    /// showPose, and std::invalid_argument for a pose beyond the model.
+    void showSkinnedPose(std::shared_ptr<const SkinningModel> model, std::size_t pose,
+                         const std::vector<glm::vec3>& positions);
+    /// Whether the last frame's pose was skinned on the GPU (showSkinnedPose).
+    [[nodiscard]] bool poseSkinnedOnGpu() const { return m_view.poseSkinnedOnGpu(); }
     /// Per-vertex colors (one per vertex of the scene, objects in order; RGBA8 with red in
     /// the lowest byte, as GLSL's unpackUnorm4x8 reads them) shown instead of the trim
     /// palette from the next frame on; empty: back to the trim palette. Kept until

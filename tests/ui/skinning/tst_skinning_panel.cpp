@@ -242,8 +242,8 @@ void TestSkinningPanel::fitShowsErrorChartAndLabels()
     QCOMPARE(panel->errorChart()->markerPose(), int(poses) - 1);
 }
 
-// Show ▸ Approximation puts the reconstructed pose in the viewport (checked against the
-// CPU reference of that pose); Show ▸ Error heat map colors the vertices by their error
+// Show ▸ Approximation puts the reconstructed pose in the viewport, skinned on the GPU
+// (checked against the CPU reference of the CPU's pose); Show ▸ Error heat map colors the vertices by their error
 // with a legend; Show ▸ Original goes back to the original poses and segment colors.
 void TestSkinningPanel::approximationAndHeatMapReachTheViewport()
 {
@@ -268,6 +268,7 @@ void TestSkinningPanel::approximationAndHeatMapReachTheViewport()
     QVERIFY(panel->shownPose(last) == approximate);
     if (const auto problem = frameDisagreement(*window, approximate, QStringLiteral("skinning-approximation")))
         QFAIL(qPrintable(*problem));
+    QVERIFY(window->viewport()->poseSkinnedOnGpu()); // the frame above: the GPU's skinning
 
     QVERIFY(waitForNewFrame(*window, [&] { chosen = chooseByKeys(view, QStringLiteral("Error heat map")); }));
     QVERIFY(chosen);
@@ -292,6 +293,7 @@ void TestSkinningPanel::approximationAndHeatMapReachTheViewport()
     if (const auto problem = frameDisagreement(*window, window->animation()->animation->poses[std::size_t(last)],
                                                QStringLiteral("skinning-original")))
         QFAIL(qPrintable(*problem));
+    QVERIFY(!window->viewport()->poseSkinnedOnGpu());
 }
 
 // Moving a bone at pose 1 changes poses 1 and 2, leaves pose 0 bit-identical, and equals
