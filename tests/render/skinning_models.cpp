@@ -1,6 +1,7 @@
 #include "skinning_models.h"
 
-#include "core/animation/animation_loader.h"
+#include "core/animation/sequence_files.h"
+#include "core/animation/sequence_loader.h"
 #include "core/mesh/triangle_mesh.h"
 #include "core/skinning/dual_quaternion.h"
 #include "core/skinning/skinning_fitter.h"
@@ -20,11 +21,11 @@ namespace trimlab::test {
 
 MeshAnimation selectedPoses(const std::string& source, const std::vector<std::size_t>& keep, std::size_t restPose)
 {
-    MeshAnimation all = loadAnimation(source);
-    MeshAnimation selected;
-    selected.triangles = std::move(all.triangles);
+    const std::vector<std::filesystem::path> all = sequenceFiles(source);
+    std::vector<std::filesystem::path> files;
     for (std::size_t index : keep)
-        selected.poses.push_back(std::move(all.poses.at(index)));
+        files.push_back(all.at(index));
+    MeshAnimation selected = loadMeshSequence(files);
     selected.restPose = restPose;
     requireWellFormed(selected);
     return selected;

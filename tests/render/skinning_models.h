@@ -16,9 +16,10 @@
 
 namespace trimlab::test {
 
-/// The poses `keep` (indices into the sequence `source`, a folder or pattern as
-/// loadAnimation takes it) as one animation with rest pose `restPose` (an index into
-/// `keep`). Throws what loadAnimation throws, std::out_of_range for a pose beyond it.
+/// The poses `keep` (indices into the mesh sequence `source`, a folder or pattern as
+/// sequenceFiles takes it; only those files are read) as one animation with rest pose
+/// `restPose` (an index into `keep`). Throws what loading throws, std::out_of_range for a
+/// pose beyond the sequence.
 [[nodiscard]] MeshAnimation selectedPoses(const std::string& source, const std::vector<std::size_t>& keep,
                                           std::size_t restPose);
 

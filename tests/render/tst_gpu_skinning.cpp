@@ -1,7 +1,8 @@
 // GPU skinning (render/frame/gpu_skinning.h) against the CPU's skinning_reconstruction.h:
 // the positions read back from the scene's buffer equal the CPU's poses within 1e-5 of the
 // model's bounding-box diagonal, for LBS and DQS along both chains, in playback order and
-// while scrubbing; the normals equal vertexNormals of those positions; and a GPU-skinned
+// while scrubbing, and along a 24-pose chain; the normals equal vertexNormals of those
+// positions; and a GPU-skinned
 // self-intersecting pose trims like the exact CPU reference of the CPU's pose on two
 // buffer methods. Models: four poses of the samba capture fitted by the fitter, and
 // chosen transforms (antipodal dual quaternions, turns up to 150°, eight influences).
@@ -21,6 +22,7 @@
 
 #include <algorithm>
 #include <map>
+#include <numeric>
 
 using namespace trimlab;
 using namespace trimlab::render;
@@ -120,6 +122,7 @@ private slots:
     void positionsAndNormalsMatchCpu_data();
     void positionsAndNormalsMatchCpu();
     void playbackStepsOnePosePerPose();
+    void longChainsDoNotDrift();
     void trimMatchesReference_data();
     void trimMatchesReference();
     void refusesMismatchedObjects();
@@ -220,6 +223,34 @@ void TestGpuSkinning::playbackStepsOnePosePerPose()
     QCOMPARE(skinning.lastStepCount(), 0u);
     skinning.skinPose(m_renderer->gpuScene(), 0, skinned.poseCount() - 1); // across the rest pose
     QCOMPARE(skinning.lastStepCount(), skinned.poseCount() - 1 - skinned.restPose);
+}
+
+// The first 24 poses of samba fitted pose-to-pose: 23 chain steps in playback, each pose's
+// GPU positions still within the bar of the CPU's (the chain state is double precision).
+void TestGpuSkinning::longChainsDoNotDrift()
+{
+    std::vector<std::size_t> first24(24);
+    std::iota(first24.begin(), first24.end(), std::size_t(0));
+    const MeshAnimation samba = test::selectedPoses(test::sharedDataPath("anim/samba/mesh_00??.obj.gz").string(),
+                                                    first24, 0);
+    for (SkinningMethod method : {SkinningMethod::Lbs, SkinningMethod::Dqs}) {
+        const SkinningModel skinned = test::fittedModel(samba, kBones, method, SkinningChain::PoseToPose);
+        const std::vector<PosePositions> cpu = reconstructPoses(skinned);
+        const double diagonal = 2.0 * computeBounds(poseMesh(skinned, skinned.restPositions)).radius();
+        m_renderer->setScene(sceneOf(poseMesh(skinned, skinned.restPositions)));
+        GpuSkinning skinning(m_renderer->gl(), skinned);
+        const GpuObjectGeometry object = m_renderer->gpuScene().objectGeometry(0);
+        double worst = 0.0;
+        for (std::size_t pose : chainOrder(skinned.poseCount(), skinned.restPose)) {
+            skinning.skinPose(m_renderer->gpuScene(), 0, pose);
+            const double distance = largestDistance(
+                readVec3(m_renderer->gl(), object.positions, object.baseVertex, object.vertexCount), cpu[pose]);
+            QVERIFY2(distance <= 1e-5 * diagonal, qPrintable(QString("pose %1 differs by %2").arg(pose).arg(distance)));
+            worst = std::max(worst, distance / diagonal);
+        }
+        qInfo("%s, 24 poses: worst position error %.3g of the diagonal",
+              method == SkinningMethod::Lbs ? "LBS" : "DQS", worst);
+    }
 }
 
 void TestGpuSkinning::trimMatchesReference_data()
