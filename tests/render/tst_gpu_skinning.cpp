@@ -2,10 +2,10 @@
 // the positions read back from the scene's buffer equal the CPU's poses within 1e-5 of the
 // model's bounding-box diagonal, for LBS and DQS along both chains, in playback order and
 // while scrubbing, and along a 24-pose chain; the normals equal vertexNormals of those
-// positions; and a GPU-skinned
-// self-intersecting pose trims like the exact CPU reference of the CPU's pose on two
-// buffer methods. Models: four poses of the samba capture fitted by the fitter, and
-// chosen transforms (antipodal dual quaternions, turns up to 150°, eight influences).
+// positions; and a GPU-skinned self-intersecting pose trims like the exact CPU reference
+// of the CPU's pose on two buffer methods. Models: four poses of the samba capture fitted
+// by the fitter, and chosen transforms (antipodal dual quaternions, turns up to 150°, eight
+// influences).
 #include "gl_test_context.h"
 #include "method_check.h"
 #include "skinning_models.h"
