@@ -9,6 +9,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -34,10 +35,26 @@ void checkOptions(const ContractionOptions& o)
         throw std::invalid_argument("minAngleDegrees must lie in (0, 60)");
     if (!(o.minAreaRatio >= 0.0) || !(o.minAreaDecrease >= 0.0 && o.minAreaDecrease < 1.0))
         throw std::invalid_argument("minAreaRatio must be >= 0 and minAreaDecrease in [0, 1)");
-    if (!std::isfinite(o.collapseFraction) || o.collapseFraction >= 1.0)
-        throw std::invalid_argument("collapseFraction must be finite and below 1");
+    if (!std::isfinite(o.collapseFraction) || o.collapseFraction >= 1.0 || !std::isfinite(o.inputCollapseFraction) ||
+        o.inputCollapseFraction >= 1.0)
+        throw std::invalid_argument("collapseFraction and inputCollapseFraction must be finite and below 1");
     if (o.maxIterations < 1)
         throw std::invalid_argument("maxIterations must be at least 1");
+}
+
+double medianEdgeLength(const std::vector<glm::dvec3>& positions, const std::vector<glm::uvec3>& triangles)
+{
+    std::vector<double> lengths;
+    lengths.reserve(triangles.size() * 3 / 2);
+    for (const glm::uvec3& t : triangles)
+        for (int k = 0; k < 3; ++k)
+            if (t[k] < t[(k + 1) % 3])
+                lengths.push_back(glm::length(positions[t[k]] - positions[t[(k + 1) % 3]]));
+    if (lengths.empty())
+        return 0.0;
+    auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+    std::nth_element(lengths.begin(), middle, lengths.end());
+    return *middle;
 }
 
 // Before the area has fallen by this fraction, W_L is still too small to move anything
@@ -110,11 +127,11 @@ struct ContractionSolver::State {
     // Collapses the edges that became shorter than collapseLength; merged vertices sum
     // their A_i⁰ (the area their rings had) and keep the larger W_H. Returns whether the
     // connectivity changed.
-    bool remesh()
+    bool remesh(double length)
     {
-        if (collapseLength <= 0.0)
+        if (length <= 0.0)
             return false;
-        CollapsedMesh collapsed = collapseShortEdges(positions, triangles, collapseLength);
+        CollapsedMesh collapsed = collapseShortEdges(positions, triangles, length);
         if (collapsed.collapses == 0)
             return false;
         collapses += collapsed.collapses;
@@ -241,13 +258,24 @@ ContractionSolver::ContractionSolver(const TriangleMesh& mesh, const Contraction
     s.maxCotangent = 1.0 / std::tan(options.minAngleDegrees * glm::pi<double>() / 180.0);
     s.initialArea = s.ringAreas(s.positions, s.initialRingAreas);
     s.area = s.initialArea;
+    s.attractionWeights.assign(s.positions.size(), options.initialAttractionWeight);
+    s.laplacianMagnitude.assign(s.positions.size(), 0.0);
+    // A dense mesh is first decimated to the sampling the skeleton needs (its short edges
+    // collapsed); the smaller mesh is then the one contracted, from its own areas.
+    const Bounds bounds = computeBounds(mesh);
+    const double diagonal = bounds.valid() ? glm::length(bounds.max - bounds.min) : 0.0;
+    const double inputCollapse = options.inputCollapseFraction * diagonal;
+    if (medianEdgeLength(s.positions, s.triangles) < inputCollapse && s.remesh(inputCollapse)) {
+        s.initialArea = s.ringAreas(s.positions, s.initialRingAreas);
+        s.area = s.initialArea;
+        std::fill(s.attractionWeights.begin(), s.attractionWeights.end(), options.initialAttractionWeight);
+        s.expandToInput();
+    }
     // See ContractionOptions::initialContractionWeight for why 1 and not the paper's 10⁻³·√Ā.
     s.contractionWeight = options.initialContractionWeight > 0.0 ? options.initialContractionWeight : 1.0;
 
     s.contractionWeight = std::min(s.contractionWeight, options.maxContractionWeight);
     s.contractionWeights.assign(s.positions.size(), s.contractionWeight);
-    s.attractionWeights.assign(s.positions.size(), options.initialAttractionWeight);
-    s.laplacianMagnitude.assign(s.positions.size(), 0.0);
     s.laplacian->update(s.positions, s.maxCotangent);
     if (options.ordering == SparseOrdering::Colamd)
         s.colamdSource = s.normal->stackedPattern(s.laplacian->matrix());
@@ -282,7 +310,7 @@ bool ContractionSolver::iterate()
     s.area = nextArea;
     ++s.iterations;
     s.updateWeights(areas);
-    s.remesh();
+    s.remesh(s.collapseLength);
     s.area = s.ringAreas(s.positions, areas);
     s.laplacian->update(s.positions, s.maxCotangent);
     s.expandToInput();

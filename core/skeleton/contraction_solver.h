@@ -67,7 +67,8 @@ public:
     [[nodiscard]] bool finished() const;
 
     /// #V current (contracted) positions of the INPUT vertices (vertices merged by the
-    /// remeshing share one); the input positions before the first iterate.
+    /// remeshing or the input decimation share one); before the first iterate, the input
+    /// positions after the decimation.
     [[nodiscard]] const std::vector<glm::dvec3>& positions() const;
     /// #V: ‖(L·V')_i‖ of the last solve (L of that iteration, V' its result), in the
     /// mesh's units: how far vertex i still is from the average of its neighbours under

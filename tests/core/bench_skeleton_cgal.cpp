@@ -122,6 +122,8 @@ int main(int argc, char** argv)
     parser.addOption({"target", "Joints after selection.", "N", "30"});
     parser.addOption({"min-area-ratio", "Contraction stops below this area ratio.", "R", "1e-3"});
     parser.addOption({"max-iterations", "Contraction solves at most.", "N", "20"});
+    parser.addOption({"input-collapse", "Decimate the input first: collapse edges below this fraction of the "
+                      "diagonal.", "F", "0.002"});
     parser.addOption({"growth", "s_L: W_L grows by this factor per solve.", "S", "2"});
     parser.addOption({"collapse", "Remesh while contracting: collapse edges below this fraction of the diagonal.",
                       "F", "0"});
@@ -134,6 +136,7 @@ int main(int argc, char** argv)
     options.contraction.minAreaRatio = parser.value("min-area-ratio").toDouble();
     options.contraction.maxIterations = parser.value("max-iterations").toInt();
     options.contraction.contractionGrowth = parser.value("growth").toDouble();
+    options.contraction.inputCollapseFraction = parser.value("input-collapse").toDouble();
     options.contraction.collapseFraction = parser.value("collapse").toDouble();
     std::printf("bench_skeleton_cgal, %s, %u hardware threads, CGAL %s\n",
                 qPrintable(QDateTime::currentDateTime().toString(Qt::ISODate)), std::thread::hardware_concurrency(),

@@ -38,6 +38,7 @@ bool SkeletonChoices::needsContraction(const SkeletonChoices& other) const
            a.minAngleDegrees != b.minAngleDegrees || a.minAreaRatio != b.minAreaRatio ||
            a.minAreaDecrease != b.minAreaDecrease || a.ordering != b.ordering || a.backend != b.backend ||
            a.maxIterations != b.maxIterations || a.collapseFraction != b.collapseFraction ||
+           a.inputCollapseFraction != b.inputCollapseFraction ||
            s.preCollapseFraction != t.preCollapseFraction ||
            s.shapeWeight != t.shapeWeight || s.samplingWeight != t.samplingWeight ||
            extraction.refine != other.extraction.refine ||
