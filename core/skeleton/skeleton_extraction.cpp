@@ -85,6 +85,7 @@ SkeletonExtraction extractSkeleton(const TriangleMesh& mesh, const SkeletonOptio
         if (options.centre) {
             extendLeaves(result.curve, mesh, solid);
             centreOnNearestWallChords(result.curve, solid);
+            splitEdgesLeaving(result.curve, midpoints, solid);
         }
     }
     control.report("refinement", 1, 1);

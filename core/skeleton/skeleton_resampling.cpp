@@ -89,17 +89,21 @@ void splitEdge(CurveSkeleton& curve, std::array<int, 2> edge, int depth,
     splitEdge(curve, {std::min(edge[1], node), std::max(edge[1], node)}, depth + 1, midpoints, inside, edges);
 }
 
-void splitEdgesLeaving(CurveSkeleton& curve, const std::vector<std::optional<glm::dvec3>>& midpoints,
+
+} // namespace
+
+std::size_t splitEdgesLeaving(CurveSkeleton& curve, const std::vector<std::optional<glm::dvec3>>& midpoints,
                        const PointInMesh& inside)
 {
     std::vector<std::array<int, 2>> edges;
     const std::vector<std::array<int, 2>> original = curve.edges;
+    const std::size_t nodes = curve.nodes.size();
     for (const auto& edge : original)
         splitEdge(curve, edge, 0, midpoints, inside, edges);
     curve.edges = std::move(edges);
+    std::sort(curve.edges.begin(), curve.edges.end());
+    return curve.nodes.size() - nodes;
 }
-
-} // namespace
 
 CurveSkeleton resampleSkeleton(const CurveSkeleton& curve, const TriangleMesh& mesh,
                                const std::vector<std::optional<glm::dvec3>>& midpoints, const PointInMesh& inside,

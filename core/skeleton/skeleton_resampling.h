@@ -22,6 +22,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -37,5 +38,12 @@ namespace trimlab {
 [[nodiscard]] CurveSkeleton resampleSkeleton(const CurveSkeleton& curve, const TriangleMesh& mesh,
                                              const std::vector<std::optional<glm::dvec3>>& midpoints,
                                              const PointInMesh& inside, double spacing);
+
+/// Bisects every edge of `curve` that leaves the solid, up to three times, at the inside
+/// chord midpoint nearest to the edge's middle (the last step of resampleSkeleton, also
+/// run after the nodes moved: centring can swing an edge across a bend). The new nodes
+/// absorb no vertices. Returns how many were added; edges stay sorted.
+std::size_t splitEdgesLeaving(CurveSkeleton& curve, const std::vector<std::optional<glm::dvec3>>& midpoints,
+                              const PointInMesh& inside);
 
 } // namespace trimlab
