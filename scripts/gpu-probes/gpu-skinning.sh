@@ -1,0 +1,7 @@
+# A probe for `scripts/gpu-check --probe scripts/gpu-probes/gpu-skinning.sh` (sourced there):
+# GPU skinning on a real GPU (issue 19). The test reads the skinned poses back against the
+# CPU's (render.gpu_skinning; it skips without the samba poses, which scripts/gpu-bundle
+# carries), then the bench times a pose both ways in one run — on llvmpipe the GPU path
+# was 2x slower than CPU skinning plus upload (docs/skinning.md), which a GPU should turn.
+probe tst_render_gpu_skinning
+probe bench_gpu_skinning "$TRIMLAB_SHARED_DATA_DIR/anim/samba/mesh_00??.obj.gz" 40
