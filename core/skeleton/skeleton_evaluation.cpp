@@ -156,12 +156,11 @@ std::vector<std::string> describeEvaluation(const SkeletonEvaluation& e)
 }
 
 SkeletonEvaluator::SkeletonEvaluator(const TriangleMesh& mesh, SkeletonEvaluationOptions options)
-    : m_mesh(mesh), m_options(options), m_winding(meshScene(mesh)), m_bvh(meshScene(mesh)),
+    : m_mesh(mesh), m_options(options), m_winding(meshScene(mesh)), m_solid(mesh),
       m_directions(halfSphereDirections(std::max(1, options.chordDirections)))
 {
     const Bounds bounds = computeBounds(mesh);
     m_diagonal = bounds.valid() ? glm::length(bounds.max - bounds.min) : 0.0;
-    m_reach = 2.0 * m_diagonal + 1.0;
     const MeshTopology topology = meshTopology(mesh);
     m_meshComponents = topology.components;
     m_meshGenus = topology.genus;
@@ -169,14 +168,8 @@ SkeletonEvaluator::SkeletonEvaluator(const TriangleMesh& mesh, SkeletonEvaluatio
 
 SkeletonEvaluator::Centring SkeletonEvaluator::centring(const glm::dvec3& p) const
 {
-    std::vector<RayHit> hits;
     const auto nearest = [&](const glm::dvec3& direction) {
-        hits.clear();
-        m_bvh.intersectAll(PixelRay{p, direction}, 0.0, m_reach, hits);
-        double t = std::numeric_limits<double>::infinity();
-        for (const RayHit& hit : hits)
-            t = std::min(t, hit.t);
-        return t;
+        return m_solid.nearestCrossing(p, direction, 0.0).value_or(std::numeric_limits<double>::infinity());
     };
     const auto asymmetryOf = [](double a, double b) { return a + b > 0.0 ? std::abs(a - b) / (a + b) : 1.0; };
     double shortestChord = std::numeric_limits<double>::infinity();

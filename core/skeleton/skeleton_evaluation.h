@@ -19,9 +19,9 @@
 /// Lengths are given as fractions of the mesh's bounding-box diagonal.
 
 #include "core/mesh/triangle_mesh.h"
+#include "core/skeleton/point_in_mesh.h"
 #include "core/skeleton/skeleton.h"
 #include "core/trim/fast_winding_number.h"
-#include "core/trim/triangle_bvh.h"
 
 #include <glm/vec3.hpp>
 
@@ -96,10 +96,9 @@ private:
     TriangleMesh m_mesh;
     SkeletonEvaluationOptions m_options;
     FastWindingNumber m_winding;
-    TriangleBvh m_bvh;
+    PointInMesh m_solid; // the ray pairs, as the centring step casts them
     std::vector<glm::dvec3> m_directions;
     double m_diagonal = 0.0;
-    double m_reach = 0.0;
     int m_meshComponents = 0;
     int m_meshGenus = 0;
 };
