@@ -54,7 +54,7 @@ void DynamicTrimRenderer::setChain(const DynamicChain& chain)
         m_rules.push_back(level.rule);
     m_baseRule = chain.baseRule;
     m_meshVertices = chain.levels.back().frame.scene.objects.front().mesh.positions.size();
-    m_cacheValid = false;
+    m_characterized = 0;
     if (m_shownColors.size() != m_meshVertices)
         m_shownColors.clear();
     applyShownColors();
@@ -66,6 +66,18 @@ void DynamicTrimRenderer::setShownLevel(const DynamicChainLevel& level)
         throw std::invalid_argument("set a dynamic chain before replacing its shown level.");
     m_levels.back()->upload(level.frame.scene);
     m_rules.back() = level.rule;
+    applyShownColors();
+}
+
+void DynamicTrimRenderer::appendLevel(const DynamicChainLevel& level)
+{
+    if (m_levels.empty())
+        throw std::invalid_argument("set a dynamic chain before appending a level to it.");
+    auto scene = std::make_unique<GpuScene>(m_gl);
+    scene->upload(level.frame.scene);
+    m_levels.back()->setVertexColors({}); // a characterization level draws no colors
+    m_levels.push_back(std::move(scene));
+    m_rules.push_back(level.rule);
     applyShownColors();
 }
 
@@ -107,7 +119,7 @@ void DynamicTrimRenderer::resizeState(int width, int height)
     m_stateWidth = width;
     m_stateHeight = height;
     m_bytes = kStateHeaderBytes + pixels * (2 * sizeof(GLint) + 2 * kBitsWordsPerPixel * sizeof(GLuint));
-    m_cacheValid = false;
+    m_characterized = 0;
 }
 
 // Zeroes the per-pixel counts of Algorithm 8.12 before a level's geometry pass.
@@ -122,15 +134,16 @@ void DynamicTrimRenderer::clearState(int width, int height)
     m_gl.glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
-// Levels 0 .. n−2, each in characterize mode reading the previous level's bit vectors
-// (level 0: the base mesh's static rule) and writing its own.
+// Levels m_characterized .. n−2, each in characterize mode reading the previous level's
+// bit vectors (level 0: the base mesh's static rule) and writing its own; the two bit
+// vectors alternate, so the one the last cached level wrote is read first.
 void DynamicTrimRenderer::characterizeLevels(const Camera& camera, const TrimSettings& settings, int width, int height)
 {
     TrimSettings whole = settings;
     whole.setClipSet(ClipSet{}); // a characterization covers the whole ray
     whole.trimEnabled = true;
-    int written = 0;
-    for (std::size_t level = 0; level + 1 < m_levels.size(); ++level) {
+    int written = m_characterized == 0 ? 0 : 1 - m_shownReference;
+    for (std::size_t level = m_characterized; level + 1 < m_levels.size(); ++level) {
         const int read = 1 - written;
         clearState(width, height);
         clearWords(m_gl, m_bits[written], 0, std::size_t(width) * std::size_t(height) * kBitsWordsPerPixel * sizeof(GLuint));
@@ -141,9 +154,16 @@ void DynamicTrimRenderer::characterizeLevels(const Camera& camera, const TrimSet
         m_renderer.render(*m_levels[level], mode, camera, whole, width, height);
         m_gl.glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         ++m_stats.characterizedLevels;
+        m_shownReference = written;
         written = read;
     }
-    m_shownReference = 1 - written; // the buffer the last characterization wrote
+    m_characterized = m_levels.size() - 1;
+}
+
+bool DynamicTrimRenderer::viewChanged(const Camera& camera, const TrimSettings& settings) const
+{
+    return !(camera == m_cachedCamera) || settings.rule != m_cachedBaseRule ||
+           int(m_renderer.method()) != m_cachedMethod || m_renderer.k() != m_cachedK;
 }
 
 void DynamicTrimRenderer::render(const Camera& camera, const TrimSettings& settings, int width, int height)
@@ -153,17 +173,16 @@ void DynamicTrimRenderer::render(const Camera& camera, const TrimSettings& setti
     m_stats = DynamicFrameStats{};
     m_stats.levels = int(m_levels.size());
     resizeState(width, height);
-    const int method = int(m_renderer.method());
-    if (!m_cacheValid || !(camera == m_cachedCamera) || settings.rule != m_cachedBaseRule || method != m_cachedMethod ||
-        m_renderer.k() != m_cachedK) {
+    if (viewChanged(camera, settings))
+        m_characterized = 0;
+    if (m_characterized + 1 < m_levels.size()) {
         QElapsedTimer timer;
         timer.start();
         characterizeLevels(camera, settings, width, height);
         m_stats.characterizeMilliseconds = double(timer.nsecsElapsed()) * 1e-6;
-        m_cacheValid = true;
         m_cachedCamera = camera;
         m_cachedBaseRule = settings.rule;
-        m_cachedMethod = method;
+        m_cachedMethod = int(m_renderer.method());
         m_cachedK = m_renderer.k();
     }
     QElapsedTimer timer;

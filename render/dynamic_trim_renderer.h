@@ -6,7 +6,10 @@
 /// in characterize mode, each producing the per-pixel partition characterization bit
 /// vector (256 layers) the next level takes as its reference; the last level is the shown
 /// frame. While the view and the earlier levels stay the same (a designer dragging the
-/// brush), a frame costs one pass over the reference and current geometry.
+/// brush), a frame costs one pass over the reference and current geometry. A history that
+/// grows by a frame (an animation played forward against its previous pose: appendLevel)
+/// costs one characterization pass more — the classification is carried from pose to
+/// pose as Algorithms 8.11–8.13 carry it, instead of re-running every earlier level.
 
 #include "render/gl/gl_objects.h"
 #include "render/trim_renderer.h"
@@ -40,6 +43,13 @@ public:
     /// Replaces only the shown (last) level, keeping the cached characterizations: the
     /// brush moved the current frame within the same set.
     void setShownLevel(const DynamicChainLevel& level);
+    /// The shown level becomes the reference of a new set and `level` (whose reference
+    /// frame is the shown frame) is shown: the chain is the one setChain would take with
+    /// `level` appended, and renders the same image, but the earlier characterizations
+    /// stay cached, so the next render (same view) characterizes one level. Throws
+    /// std::invalid_argument without a chain.
+    void appendLevel(const DynamicChainLevel& level);
+    [[nodiscard]] int levelCount() const { return int(m_levels.size()); }
     /// Per-vertex colors of the designed mesh (one per mesh vertex, RGBA8 as
     /// GpuScene::setVertexColors takes them) shown instead of the trim palette on the shown
     /// level, e.g. the brush's region; empty: back to the palette. Kept across
@@ -60,6 +70,7 @@ private:
     void resizeState(int width, int height);
     void clearState(int width, int height);
     void characterizeLevels(const Camera& camera, const TrimSettings& settings, int width, int height);
+    [[nodiscard]] bool viewChanged(const Camera& camera, const TrimSettings& settings) const;
     void applyShownColors();
 
     TrimRenderer& m_renderer;
@@ -74,8 +85,10 @@ private:
     int m_stateWidth = 0;
     int m_stateHeight = 0;
     std::size_t m_bytes = 0;
-    int m_shownReference = 0; ///< index into m_bits holding the shown level's reference
-    bool m_cacheValid = false;
+    int m_shownReference = 0; ///< index into m_bits holding the last characterization
+    /// Levels 0 .. m_characterized−1 are characterized for the cached view, the last of
+    /// them into m_bits[m_shownReference]; 0: nothing cached.
+    std::size_t m_characterized = 0;
     Camera m_cachedCamera;
     StaticRule m_cachedBaseRule = StaticRule::AlternatingBorder;
     int m_cachedMethod = -1;

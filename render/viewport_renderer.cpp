@@ -2,6 +2,7 @@
 
 #include "render/frame/gpu_scene.h"
 #include "render/frame/gpu_skinning.h"
+#include "render/frame/gpu_subdivision.h"
 #include "render/gl/context_reset.h"
 #include "render/gl/gl_error.h"
 
@@ -23,9 +24,12 @@ void ViewportRenderer::setScene(std::shared_ptr<const Scene> scene)
     m_lastFrame.reset();
     m_pose.clear();
     m_skinning.reset();
+    m_subdivision.reset();
     m_vertexColors.clear();
     m_chain.reset(); // a chain belongs to the previous scene's mesh
     m_level.reset();
+    m_appended.clear();
+    m_chainLastLevel.reset();
     m_policy.reset();
 }
 
@@ -54,6 +58,7 @@ void ViewportRenderer::showPose(const std::vector<glm::vec3>& positions)
     m_poseDirty = true;
     m_posedScene.reset();
     m_skinning.reset();
+    m_subdivision.reset();
 }
 
 void ViewportRenderer::showSkinnedPose(std::shared_ptr<const SkinningModel> model, std::size_t pose,
@@ -67,6 +72,21 @@ void ViewportRenderer::showSkinnedPose(std::shared_ptr<const SkinningModel> mode
         m_gpuSkinningFailed = false;
     m_skinning = std::move(model);
     m_skinnedPose = pose;
+}
+
+void ViewportRenderer::showSubdivisionPose(std::shared_ptr<const SubdivisionStencils> stencils,
+                                           std::vector<glm::dvec3> controlPoints,
+                                           const std::vector<glm::vec3>& positions)
+{
+    if (!stencils || controlPoints.size() != stencils->cageVertexCount)
+        throw std::invalid_argument("showSubdivisionPose: " + std::to_string(controlPoints.size()) +
+                                    " control points for a cage of " +
+                                    std::to_string(stencils ? stencils->cageVertexCount : 0) + ".");
+    showPose(positions);
+    if (stencils != m_gpuSubdivisionStencils)
+        m_gpuSubdivisionFailed = false;
+    m_subdivision = std::move(stencils);
+    m_controlPoints = std::move(controlPoints);
 }
 
 void ViewportRenderer::setVertexColors(std::vector<std::uint32_t> rgba8)
@@ -115,8 +135,36 @@ void ViewportRenderer::setDynamicChain(std::shared_ptr<const DynamicChain> chain
     m_chain = std::move(chain);
     m_policy.clearStop();
     m_level.reset();
+    m_appended.clear();
+    m_appendedUploaded = 0;
+    m_chainLastLevel.reset();
     m_chainDirty = m_chain != nullptr;
     m_levelDirty = false;
+}
+
+// A replaced shown level is folded into the history before the new level follows it; if
+// the replacement never reached the GPU, the whole chain goes up again (a drag followed
+// at once by an append: rare, and correct rather than clever).
+void ViewportRenderer::appendDynamicLevel(std::shared_ptr<const DynamicChainLevel> level)
+{
+    if (!m_chain || !level)
+        return;
+    if (m_level) {
+        if (m_appended.empty())
+            m_chainLastLevel = m_level;
+        else
+            m_appended.back() = m_level;
+        if (m_levelDirty)
+            m_chainDirty = true;
+        m_level.reset();
+        m_levelDirty = false;
+    }
+    m_appended.push_back(std::move(level));
+}
+
+std::size_t ViewportRenderer::dynamicLevelCount() const
+{
+    return m_chain ? m_chain->levels.size() + m_appended.size() : 0;
 }
 
 void ViewportRenderer::setDynamicShownLevel(std::shared_ptr<const DynamicChainLevel> level)
@@ -131,6 +179,10 @@ const DynamicChainLevel* ViewportRenderer::dynamicShownLevel() const
 {
     if (m_level)
         return m_level.get();
+    if (!m_appended.empty())
+        return m_appended.back().get();
+    if (m_chainLastLevel)
+        return m_chainLastLevel.get();
     return m_chain && !m_chain->levels.empty() ? &m_chain->levels.back() : nullptr;
 }
 
@@ -145,6 +197,7 @@ void ViewportRenderer::release()
 {
     m_dynamic.reset(); // its GL objects go first: it holds a reference to the renderer
     m_gpuSkinning.reset();
+    m_gpuSubdivision.reset();
     m_renderer.reset();
     m_sceneUploaded = false;
     m_chainDirty = m_chain != nullptr;
@@ -217,7 +270,8 @@ void ViewportRenderer::syncGpuScene()
 
 void ViewportRenderer::uploadPose()
 {
-    m_poseOnGpu = m_skinning && !m_gpuSkinningFailed && skinPoseOnGpu();
+    m_poseOnGpu = (m_skinning && !m_gpuSkinningFailed && skinPoseOnGpu()) ||
+                  (m_subdivision && !m_gpuSubdivisionFailed && subdividePoseOnGpu());
     if (!m_poseOnGpu)
         m_renderer->gpuScene().updatePositions(0, m_pose);
 }
@@ -240,6 +294,28 @@ bool ViewportRenderer::skinPoseOnGpu()
     } catch (const std::exception&) {
         m_gpuSkinning.reset();
         m_gpuSkinningFailed = true;
+        return false;
+    }
+}
+
+// The same for the shown subdivision surface: its GPU evaluation, made in this context on
+// first use; false (the CPU's positions are uploaded, these stencils not tried again) when
+// it cannot run.
+bool ViewportRenderer::subdividePoseOnGpu()
+{
+    try {
+        if (!m_gpuSubdivision || m_gpuSubdivisionStencils != m_subdivision) {
+            m_gpuSubdivision.reset();
+            m_gpuSubdivisionStencils = m_subdivision;
+            m_gpuSubdivision = std::make_unique<GpuSubdivision>(m_renderer->gl(), *m_subdivision);
+        }
+        m_gpuSubdivision->evaluate(m_renderer->gpuScene(), 0, m_controlPoints);
+        return true;
+    } catch (const GlContextLostError&) {
+        throw;
+    } catch (const std::exception&) {
+        m_gpuSubdivision.reset();
+        m_gpuSubdivisionFailed = true;
         return false;
     }
 }
@@ -268,9 +344,14 @@ void ViewportRenderer::renderDynamicFrame(const Camera& camera, QSize size)
     }
     if (m_chainDirty) {
         m_dynamic->setChain(*m_chain);
+        if (m_chainLastLevel)
+            m_dynamic->setShownLevel(*m_chainLastLevel);
+        m_appendedUploaded = 0;
         m_chainDirty = false;
         m_levelDirty = m_level != nullptr;
     }
+    for (; m_appendedUploaded < m_appended.size(); ++m_appendedUploaded)
+        m_dynamic->appendLevel(*m_appended[m_appendedUploaded]);
     if (m_levelDirty) {
         m_dynamic->setShownLevel(*m_level);
         m_levelDirty = false;

@@ -35,6 +35,8 @@ class QOpenGLContext;
 namespace trimlab::render {
 
 class GpuSkinning;
+class GpuSubdivision;
+struct SubdivisionStencils;
 
 /// What the last successful frame was rendered with (for tests, exports and readbacks).
 struct ViewFrame {
@@ -91,7 +93,19 @@ public:
     void showSkinnedPose(std::shared_ptr<const SkinningModel> model, std::size_t pose,
                          const std::vector<glm::vec3>& positions);
     /// Whether the pose of the last frame was skinned on the GPU (showSkinnedPose).
-    [[nodiscard]] bool poseSkinnedOnGpu() const { return m_poseOnGpu; }
+    [[nodiscard]] bool poseSkinnedOnGpu() const { return m_poseOnGpu && m_skinning; }
+    /// Object 0, the mesh of the subdivision surface `stencils` were taken from, at the
+    /// surface's evaluation at `controlPoints` (#C) from the next frame on: evaluated on
+    /// the GPU into the scene's buffers (frame/gpu_subdivision.h: only the control points
+    /// are uploaded), or — where the GPU path fails (OpenSubdiv's GL loader or kernel,
+    /// memory, stencils that do not fit the object), from then on for these stencils —
+    /// uploaded from `positions`, the CPU's evaluation, which posedScene() and the CPU still
+    /// show in any case. Throws as showPose, and std::invalid_argument for another number
+    /// of control points than the stencils take.
+    void showSubdivisionPose(std::shared_ptr<const SubdivisionStencils> stencils,
+                             std::vector<glm::dvec3> controlPoints, const std::vector<glm::vec3>& positions);
+    /// Whether the pose of the last frame was evaluated on the GPU (showSubdivisionPose).
+    [[nodiscard]] bool poseSubdividedOnGpu() const { return m_poseOnGpu && m_subdivision; }
     /// One RGBA8 colour per vertex of the scene (objects in order); empty: the trim
     /// palette. Throws std::invalid_argument on a count mismatch.
     void setVertexColors(std::vector<std::uint32_t> rgba8);
@@ -112,6 +126,13 @@ public:
     void setDynamicChain(std::shared_ptr<const DynamicChain> chain);
     /// Replaces only the chain's shown level (a drag); ignored without a chain.
     void setDynamicShownLevel(std::shared_ptr<const DynamicChainLevel> level);
+    /// The shown level becomes the reference of a new set, `level` is shown (an animation
+    /// played forward against its previous pose): the earlier characterizations stay
+    /// cached, so the frame characterizes one level instead of the whole history.
+    /// Ignored without a chain.
+    void appendDynamicLevel(std::shared_ptr<const DynamicChainLevel> level);
+    /// Levels of the chain shown, appended ones included (0 without a chain).
+    [[nodiscard]] std::size_t dynamicLevelCount() const;
     [[nodiscard]] bool rendersDynamicRules() const { return m_chain != nullptr; }
     /// The chain's shown level as last set (setDynamicShownLevel or the chain's last).
     [[nodiscard]] const DynamicChainLevel* dynamicShownLevel() const;
@@ -162,6 +183,7 @@ private:
     void syncGpuScene();
     void uploadPose();
     [[nodiscard]] bool skinPoseOnGpu();
+    [[nodiscard]] bool subdividePoseOnGpu();
     void renderFrame(const Camera& camera, QSize size, GLuint framebuffer);
     void renderDynamicFrame(const Camera& camera, QSize size);
     void recordFrame(const Camera& camera, QSize size);
@@ -180,13 +202,24 @@ private:
     std::unique_ptr<GpuSkinning> m_gpuSkinning;            ///< of m_gpuSkinningModel, this context's
     std::shared_ptr<const SkinningModel> m_gpuSkinningModel;
     bool m_gpuSkinningFailed = false; ///< for m_skinning: upload the CPU's poses
+    std::shared_ptr<const SubdivisionStencils> m_subdivision; ///< m_pose is its evaluation at m_controlPoints
+    std::vector<glm::dvec3> m_controlPoints;
+    std::unique_ptr<GpuSubdivision> m_gpuSubdivision; ///< of m_gpuSubdivisionStencils, this context's
+    std::shared_ptr<const SubdivisionStencils> m_gpuSubdivisionStencils;
+    bool m_gpuSubdivisionFailed = false; ///< for m_subdivision: upload the CPU's positions
     bool m_poseOnGpu = false;
     bool m_sceneUploaded = false;
     bool m_poseDirty = false;
     bool m_transformsDirty = false; ///< model matrices changed since the upload
     bool m_colorsDirty = false;
     std::shared_ptr<const DynamicChain> m_chain;      ///< nullptr: static rule
-    std::shared_ptr<const DynamicChainLevel> m_level; ///< replaces the chain's last level
+    std::shared_ptr<const DynamicChainLevel> m_level; ///< replaces the last level (appended ones included)
+    /// Levels after the chain's (appendDynamicLevel); the first m_appendedUploaded are on
+    /// the dynamic renderer.
+    std::vector<std::shared_ptr<const DynamicChainLevel>> m_appended;
+    std::size_t m_appendedUploaded = 0;
+    /// The chain's own last level as replaced before a level was appended.
+    std::shared_ptr<const DynamicChainLevel> m_chainLastLevel;
     bool m_chainDirty = false;
     bool m_dynamicColorsDirty = false; ///< m_vertexColors not yet on the dynamic renderer
     bool m_levelDirty = false;

@@ -18,6 +18,23 @@ std::optional<PoseReference> parsePoseReference(std::string_view name)
     return std::nullopt;
 }
 
+std::vector<std::size_t> chainPoses(std::size_t restPose, std::size_t pose, PoseReference reference)
+{
+    if (pose == restPose)
+        return {restPose};
+    if (reference == PoseReference::Rest)
+        return {restPose, pose};
+    // Poses before the rest pose are reached backwards from it, as playing backwards from
+    // the rest pose would.
+    std::vector<std::size_t> poses;
+    for (std::size_t p = restPose;; p = pose > restPose ? p + 1 : p - 1) {
+        poses.push_back(p);
+        if (p == pose)
+            break;
+    }
+    return poses;
+}
+
 std::optional<DynamicChain> animationChain(const MeshAnimation& animation, std::size_t pose, PoseReference reference,
                                            DynamicRule rule, StaticRule baseRule)
 {
@@ -28,17 +45,8 @@ std::optional<DynamicChain> animationChain(const MeshAnimation& animation, std::
     if (pose == rest)
         return std::nullopt;
     std::vector<std::vector<glm::vec3>> frames;
-    if (reference == PoseReference::Rest) {
-        frames = {animation.poses[rest], animation.poses[pose]};
-    } else {
-        // Poses before the rest pose are reached backwards from it, as playing backwards
-        // from the rest pose would.
-        for (std::size_t p = rest;; p = pose > rest ? p + 1 : p - 1) {
-            frames.push_back(animation.poses[p]);
-            if (p == pose)
-                break;
-        }
-    }
+    for (std::size_t p : chainPoses(rest, pose, reference))
+        frames.push_back(animation.poses[p]);
     const std::vector<DynamicRule> rules(frames.size() - 1, rule);
     return makeDynamicChain(animation.triangles, frames, rules, baseRule);
 }

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 namespace trimlab {
 
@@ -21,6 +22,12 @@ enum class PoseReference { Rest, Previous };
 /// "rest" / "previous", for the command line and files.
 [[nodiscard]] std::string_view poseReferenceName(PoseReference reference);
 [[nodiscard]] std::optional<PoseReference> parsePoseReference(std::string_view name);
+
+/// The poses whose positions are the frames of the chain that shows `pose` (see
+/// animationChain): {restPose, pose} against the rest pose; against the previous pose,
+/// every pose from the rest pose to `pose`, one step at a time (backwards for a pose
+/// before the rest pose). Just {restPose} when `pose` is the rest pose.
+[[nodiscard]] std::vector<std::size_t> chainPoses(std::size_t restPose, std::size_t pose, PoseReference reference);
 
 /// The chain that shows `pose` of `animation` under `rule` (every set), the rest pose
 /// classified by `baseRule`. nullopt when `pose` is the rest pose: nothing has deformed

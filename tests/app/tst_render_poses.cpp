@@ -4,16 +4,15 @@
 // fail with one line before any work.
 #include "gl_test_context.h"
 #include "ids_png.h"
+#include "meeting_balls.h"
 #include "run_trimlab.h"
 #include "test_paths.h"
 #include "trim_comparison.h"
 
-#include "plain_obj.h"
 
 #include "app/pose_frames.h"
 #include "core/animation/animation_chain.h"
 #include "core/animation/animation_loader.h"
-#include "core/scene/shape_generators.h"
 #include "core/trim/dynamic_reference_renderer.h"
 #include "core/trim/reference_renderer.h"
 
@@ -191,15 +190,8 @@ void TestRenderPoses::dynamicRulesOverTheAnimation()
     QFETCH(QString, rule);
     QFETCH(QString, reference);
     const QString folder = m_dir.filePath("balls");
-    if (!QFileInfo::exists(folder)) {
-        QVERIFY(QDir().mkpath(folder));
-        const double offsets[] = {1.4, 0.8, 0.5};
-        for (int pose = 0; pose < 3; ++pose) {
-            TriangleMesh balls = makeIcosphere(glm::dvec3(-offsets[pose], 0.0, 0.0), 1.0, 2);
-            appendMesh(balls, makeIcosphere(glm::dvec3(offsets[pose], 0.1, 0.0), 1.0, 2));
-            QVERIFY(test::writePlainObj(balls, QStringLiteral("%1/pose_%2.obj").arg(folder).arg(pose)));
-        }
-    }
+    if (!QFileInfo::exists(folder))
+        QVERIFY(test::writeMeetingBalls(folder));
     const QString tag = rule + QLatin1Char('-') + reference;
     const QString size = QStringLiteral("%1x%2").arg(kWidth).arg(kHeight);
     const Run run = runTrimlab({"render", folder, "--poses", "0:2", "--rule", "parity", "--clip", "0,0,-1,0",

@@ -113,6 +113,7 @@ private slots:
     void dynamicDiffersFromStaticWhereTheSweptRegionIsKept();
     void peelingMethodsRefuseWithAReason();
     void characterizationIsCachedWhileTheViewStays();
+    void appendedLevelsCarryTheCharacterization();
     void shownVertexColorsReplaceThePalette();
 
 private:
@@ -246,6 +247,61 @@ void TestDynamicRulesGpu::characterizationIsCachedWhileTheViewStays()
     moved.eye.x += 0.1;
     m_dynamic->render(moved, TrimSettings{}, kWidth, kHeight);
     QCOMPARE(m_dynamic->lastStats().characterizedLevels, 1);
+}
+
+void TestDynamicRulesGpu::appendedLevelsCarryTheCharacterization()
+{
+    // A history played forward one frame at a time (an animation against its previous
+    // pose): appending each frame characterizes one level per render, and every frame's
+    // image equals the one of the whole chain set at once, which agrees with the exact
+    // reference. The frames: the two sets' deformations, each split in two steps.
+    m_renderer->setMethod(FragmentMethodKind::ABufferLinkedList);
+    m_renderer->setParameters(MethodParameters{});
+    const std::vector<glm::vec3> base = m_sphere.positions;
+    const std::vector<glm::vec3> half = pushCap(base, {0.0, 1.0, 0.0}, 0.55, {0.0, -1.15, 0.0});
+    const std::vector<glm::vec3> first = firstSet(base);
+    const std::vector<glm::vec3> second = secondSet(first);
+    const std::vector<std::vector<glm::vec3>> frames{base, half, first, second};
+    const Camera camera = chainCamera();
+    for (std::size_t shown = 1; shown < frames.size(); ++shown) {
+        const std::vector<std::vector<glm::vec3>> prefix(frames.begin(), frames.begin() + std::ptrdiff_t(shown) + 1);
+        const DynamicChain whole = makeDynamicChain(m_sphere.triangles, prefix,
+                                                    std::vector<DynamicRule>(shown, DynamicRule::Confluent),
+                                                    StaticRule::AlternatingBorder);
+        if (shown == 1) {
+            m_dynamic->setChain(whole);
+        } else {
+            m_dynamic->appendLevel(whole.levels.back());
+        }
+        QCOMPARE(m_dynamic->levelCount(), int(shown));
+        m_dynamic->render(camera, TrimSettings{}, kWidth, kHeight);
+        QCOMPARE(m_dynamic->lastStats().characterizedLevels, shown == 1 ? 0 : 1);
+        const TrimImage appended = m_renderer->readTrimImage();
+
+        test::MethodCase testCase{QStringLiteral("frame %1").arg(shown), camera, TrimSettings{}, {}, kWidth, kHeight};
+        const ReferenceResult reference = DynamicReferenceRenderer(whole).render(camera, kWidth, kHeight, TrimSettings{});
+        QString summary;
+        if (const auto failure = test::checkFrameAgainstReference(*m_renderer, testCase, reference, {}, &summary))
+            QFAIL(qPrintable(*failure));
+        qInfo("appended, frame %d: %s", int(shown), qPrintable(summary));
+
+        DynamicTrimRenderer fresh(*m_renderer);
+        fresh.setChain(whole);
+        fresh.render(camera, TrimSettings{}, kWidth, kHeight);
+        QCOMPARE(fresh.lastStats().characterizedLevels, int(shown) - 1);
+        const TrimImage wholeImage = m_renderer->readTrimImage();
+        int differing = 0;
+        for (std::size_t i = 0; i < appended.pixels.size(); ++i)
+            differing += appended.pixels[i].objectId != wholeImage.pixels[i].objectId ||
+                                 appended.pixels[i].primitiveId != wholeImage.pixels[i].primitiveId
+                             ? 1
+                             : 0;
+        QCOMPARE(differing, 0);
+    }
+    // The whole chain, characterized by the fresh renderers above, left this one's cache
+    // alone: one more frame of the same view characterizes nothing.
+    m_dynamic->render(camera, TrimSettings{}, kWidth, kHeight);
+    QCOMPARE(m_dynamic->lastStats().characterizedLevels, 0);
 }
 
 void TestDynamicRulesGpu::shownVertexColorsReplaceThePalette()

@@ -22,6 +22,9 @@ const QString kMode = QStringLiteral("segmentation/mode");
 const QString kColorBySegment = QStringLiteral("segmentation/colorBySegment");
 const QString kFps = QStringLiteral("timeline/fps");
 const QString kLoop = QStringLiteral("timeline/loop");
+const QString kPoseRule = QStringLiteral("timeline/poseRule");
+const QString kPoseReference = QStringLiteral("timeline/poseReference");
+const QString kStaticPoseRule = QStringLiteral("static");
 
 constexpr std::array kModeNames{"global", "real-time", "variable"};
 
@@ -111,6 +114,22 @@ void savePlaybackChoices(QSettings& settings, const PlaybackChoices& choices)
 {
     settings.setValue(kFps, choices.fps);
     settings.setValue(kLoop, choices.loop);
+}
+
+PoseHistoryChoices loadPoseHistoryChoices(const QSettings& settings)
+{
+    const PoseHistoryChoices defaults;
+    PoseHistoryChoices choices;
+    choices.rule = parseDynamicRule(settings.value(kPoseRule).toString().toStdString()); // "static" or unknown: none
+    choices.reference =
+        parsePoseReference(settings.value(kPoseReference).toString().toStdString()).value_or(defaults.reference);
+    return choices;
+}
+
+void savePoseHistoryChoices(QSettings& settings, const PoseHistoryChoices& choices)
+{
+    settings.setValue(kPoseRule, choices.rule ? text(dynamicRuleName(*choices.rule)) : kStaticPoseRule);
+    settings.setValue(kPoseReference, text(poseReferenceName(choices.reference)));
 }
 
 } // namespace trimlab::ui

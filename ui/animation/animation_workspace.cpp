@@ -1,6 +1,7 @@
 #include "ui/animation/animation_workspace.h"
 
 #include "ui/animation/animation_settings_store.h"
+#include "ui/animation/pose_history_bar.h"
 #include "ui/animation/segmentation_panel.h"
 #include "ui/animation/timeline_panel.h"
 #include "ui/common/window_context.h"
@@ -11,12 +12,13 @@
 #include "core/animation/mesh_animation.h"
 
 #include <QDockWidget>
+#include <QVBoxLayout>
 
 namespace trimlab::ui {
 
 AnimationWorkspace::AnimationWorkspace(const WindowContext& context, ViewportWidget* viewport, QDockWidget* tabWith,
                                        QObject* parent)
-    : QObject(parent), m_context(context), m_viewport(viewport)
+    : QObject(parent), m_context(context), m_viewport(viewport), m_player(viewport)
 {
     createDocks(tabWith);
     connectParts();
@@ -25,7 +27,15 @@ AnimationWorkspace::AnimationWorkspace(const WindowContext& context, ViewportWid
 void AnimationWorkspace::createDocks(QDockWidget* tabWith)
 {
     m_timeline = new TimelinePanel;
-    m_timelineDock = m_context.addBottomDock(tr("Timeline"), QStringLiteral("timelineDock"), m_timeline);
+    m_history = new PoseHistoryBar;
+    auto* timeline = new QWidget;
+    auto* layout = new QVBoxLayout(timeline);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addWidget(m_timeline);
+    m_history->setContentsMargins(9, 0, 9, 6); // aligned with the timeline row's controls
+    layout->addWidget(m_history);
+    m_timelineDock = m_context.addBottomDock(tr("Timeline"), QStringLiteral("timelineDock"), timeline);
     m_timelineDock->hide(); // shown while an animation is open
     m_segmentation = new SegmentationPanel;
     m_segmentationDock =
@@ -39,6 +49,11 @@ void AnimationWorkspace::connectParts()
     connect(m_timeline, &TimelinePanel::poseChanged, this, &AnimationWorkspace::showPose);
     connect(m_timeline, &TimelinePanel::playbackChoicesChanged, this,
             [this, &settings] { savePlaybackChoices(settings, {m_timeline->fps(), m_timeline->loops()}); });
+    connect(m_history, &PoseHistoryBar::choicesChanged, this, [this, &settings] {
+        savePoseHistoryChoices(settings, m_history->choices());
+        applyPoseHistoryChoices();
+    });
+    connect(m_viewport, &ViewportWidget::frameRendered, this, &AnimationWorkspace::showHistoryStatus);
     connect(m_segmentation, &SegmentationPanel::displayColorsChanged, this, &AnimationWorkspace::showSegmentColors);
     connect(m_segmentation, &SegmentationPanel::choicesChanged, this,
             [this, &settings] { saveSegmentationChoices(settings, m_segmentation->choices()); });
@@ -52,6 +67,7 @@ void AnimationWorkspace::connectParts()
             &AnimationWorkspace::passSegmentationToSkinning);
     connect(m_segmentation, &SegmentationPanel::choicesChanged, this, &AnimationWorkspace::passSegmentationToSkinning);
     connect(m_skinning->panel(), &SkinningPanel::displayChanged, this, [this] {
+        m_player.invalidate(); // the approximation's poses replace the captured ones, or the reverse
         showPose(m_timeline->pose());
         showSegmentColors();
     });
@@ -64,6 +80,45 @@ void AnimationWorkspace::restoreSettings()
     m_segmentation->setChoices(loadSegmentationChoices(m_context.settings()));
     const PlaybackChoices playback = loadPlaybackChoices(m_context.settings());
     m_timeline->setPlaybackChoices(playback.fps, playback.loop);
+    m_history->setChoices(loadPoseHistoryChoices(m_context.settings()));
+    m_player.setChoices(m_history->choices(), m_baseRule);
+}
+
+void AnimationWorkspace::setBaseRule(StaticRule rule)
+{
+    if (rule == m_baseRule)
+        return;
+    m_baseRule = rule;
+    applyPoseHistoryChoices();
+}
+
+void AnimationWorkspace::applyPoseHistoryChoices()
+{
+    m_player.setChoices(m_history->choices(), m_baseRule);
+    if (m_animation)
+        showPose(m_timeline->pose());
+}
+
+// The sets of the pose shown and what the last frame characterized: the cost of the
+// history, which grows with the pose against the previous pose.
+void AnimationWorkspace::showHistoryStatus()
+{
+    if (!m_animation || !m_player.choices().rule)
+        return;
+    const std::optional<render::DynamicFrameStats>& stats = m_viewport->lastDynamicStats();
+    if (!stats) {
+        m_history->setStatus(tr("rest pose: the static rule"));
+        return;
+    }
+    const QString sets = stats->levels == 1 ? tr("1 set") : tr("%1 sets").arg(stats->levels);
+    m_history->setStatus(tr("%1, %2 characterized this frame").arg(sets).arg(stats->characterizedLevels));
+}
+
+std::vector<glm::vec3> AnimationWorkspace::shownPositions(std::size_t pose) const
+{
+    if (std::optional<std::vector<glm::vec3>> skinned = m_skinning->panel()->shownPose(int(pose)))
+        return std::move(*skinned);
+    return m_animation->animation->poses[pose];
 }
 
 void AnimationWorkspace::hideAnimationDocks()
@@ -82,6 +137,7 @@ void AnimationWorkspace::show(std::shared_ptr<const LoadedAnimation> animation)
         names << (pose < poses.poseNames.size() ? QString::fromStdString(poses.poseNames[pose])
                                                 : tr("pose %1").arg(pose));
     m_timeline->setPoses(names);
+    m_player.setAnimation(m_animation->animation, [this](std::size_t pose) { return shownPositions(pose); });
     m_segmentation->setAnimation(m_animation);
     m_skinning->panel()->setAnimation(m_animation);
     passSegmentationToSkinning();
@@ -101,6 +157,8 @@ void AnimationWorkspace::clear()
     if (!m_animation)
         return;
     m_animation.reset();
+    m_player.setAnimation(nullptr, {});
+    m_history->setStatus({});
     m_timeline->setPoses({});
     m_segmentation->setAnimation(nullptr);
     m_skinning->panel()->setAnimation(nullptr);
@@ -111,7 +169,9 @@ void AnimationWorkspace::showPose(int pose)
 {
     if (!m_animation || pose < 0 || std::size_t(pose) >= m_animation->animation->poseCount())
         return;
-    if (const std::optional<std::vector<glm::vec3>> skinned = m_skinning->panel()->shownPose(pose))
+    if (m_player.show(std::size_t(pose))) {
+        // shown under a dynamic rule
+    } else if (const std::optional<std::vector<glm::vec3>> skinned = m_skinning->panel()->shownPose(pose))
         m_viewport->showSkinnedPose(m_skinning->panel()->shownModel(pose), std::size_t(pose), *skinned);
     else
         m_viewport->showPose(m_animation->animation->poses[std::size_t(pose)]);

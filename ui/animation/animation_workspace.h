@@ -5,13 +5,16 @@
 /// viewport; the Segmentation dock (thesis chapter 3), which segments the animation and
 /// colours it by segment; and the skinning feature (skinning/skinning_workspace.h), whose
 /// bones are the segmentation shown and whose approximation or error heat map, while
-/// shown, takes the place of the original poses and the segment colours. The Timeline and
-/// Skinning docks are shown only while an animation is. Playback and segmentation choices
-/// persist in the settings.
+/// shown, takes the place of the original poses and the segment colours. The Timeline's
+/// second row (pose_history_bar.h) plays the poses — captured or approximated — under a
+/// dynamic rule when the user picks one (dynamic_pose_player.h). The Timeline and
+/// Skinning docks are shown only while an animation is. Playback, pose classification and
+/// segmentation choices persist in the settings.
 ///
 /// Opening an animation (AnimationOpener, recent animations, the dialog) is the window's:
 /// it calls show() with what was loaded.
 
+#include "ui/animation/dynamic_pose_player.h"
 #include "ui/common/loaded_animation.h"
 
 #include <QObject>
@@ -22,6 +25,7 @@ class QDockWidget;
 
 namespace trimlab::ui {
 
+class PoseHistoryBar;
 class SegmentationPanel;
 class SkinningWorkspace;
 class TimelinePanel;
@@ -36,6 +40,7 @@ public:
                        QObject* parent = nullptr);
 
     [[nodiscard]] TimelinePanel* timelinePanel() const { return m_timeline; }
+    [[nodiscard]] PoseHistoryBar* poseHistoryBar() const { return m_history; }
     [[nodiscard]] SegmentationPanel* segmentationPanel() const { return m_segmentation; }
     [[nodiscard]] SkinningWorkspace* skinning() const { return m_skinning; }
     /// SkinningWorkspace::confirmDiscardEdits at the timeline's rate.
@@ -54,11 +59,17 @@ public:
     void restoreSettings();
     /// Hides the docks that belong to a shown animation (after the window state was restored).
     void hideAnimationDocks();
+    /// The Render panel's static rule, which classifies the rest pose of a history played
+    /// under a dynamic rule.
+    void setBaseRule(StaticRule rule);
 
 private:
     void createDocks(QDockWidget* tabWith);
     void connectParts();
     void showPose(int pose);
+    void applyPoseHistoryChoices();
+    void showHistoryStatus();
+    [[nodiscard]] std::vector<glm::vec3> shownPositions(std::size_t pose) const;
     void showSegmentColors();
     void passSegmentationToSkinning();
     void showExportSegmentationDialog();
@@ -66,6 +77,9 @@ private:
     const WindowContext& m_context;
     ViewportWidget* m_viewport;
     TimelinePanel* m_timeline = nullptr;
+    PoseHistoryBar* m_history = nullptr;
+    DynamicPosePlayer m_player;
+    StaticRule m_baseRule = StaticRule::AlternatingBorder;
     QDockWidget* m_timelineDock = nullptr;
     SegmentationPanel* m_segmentation = nullptr;
     QDockWidget* m_segmentationDock = nullptr;

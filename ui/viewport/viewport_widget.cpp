@@ -100,6 +100,14 @@ void ViewportWidget::setDynamicShownLevel(std::shared_ptr<const DynamicChainLeve
     update();
 }
 
+void ViewportWidget::appendDynamicLevel(std::shared_ptr<const DynamicChainLevel> level)
+{
+    if (!m_view.rendersDynamicRules())
+        return;
+    m_view.appendDynamicLevel(std::move(level));
+    update();
+}
+
 std::optional<TrimPixel> ViewportWidget::trimPixelAt(QPointF position)
 {
     if (!m_view.lastFrame())

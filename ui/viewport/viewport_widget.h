@@ -185,6 +185,12 @@ public:
     /// Replaces only the chain's shown level (same set, new positions: a brush drag).
     /// Ignored without a chain; the next setDynamicChain() drops it.
     void setDynamicShownLevel(std::shared_ptr<const DynamicChainLevel> level);
+    /// The shown level becomes the reference of a new set and `level` is shown (an
+    /// animation played forward against its previous pose): one characterization pass
+    /// instead of the whole history's. Ignored without a chain.
+    void appendDynamicLevel(std::shared_ptr<const DynamicChainLevel> level);
+    /// Levels of the chain shown, appended ones included (0 under the static rule).
+    [[nodiscard]] std::size_t dynamicLevelCount() const { return m_view.dynamicLevelCount(); }
     [[nodiscard]] bool rendersDynamicRules() const { return m_view.rendersDynamicRules(); }
     /// The chain's shown level as last set (setDynamicShownLevel or the chain's last).
     [[nodiscard]] const DynamicChainLevel* dynamicShownLevel() const { return m_view.dynamicShownLevel(); }

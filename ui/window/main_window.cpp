@@ -472,6 +472,7 @@ void MainWindow::applyRenderChoices()
     const TrimSettings effective = m_render->apply(m_inspect->csg(), m_design->session() != nullptr);
     const RenderChoices choices = m_render->choices();
     m_design->setRenderMode(choices.dynamicRules, choices.trim.rule, effective.trimEnabled);
+    m_animation->setBaseRule(choices.trim.rule);
 }
 
 bool MainWindow::exportImage(const QString& path, QString* error)

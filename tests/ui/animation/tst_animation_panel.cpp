@@ -7,6 +7,7 @@
 #include "gl_test_context.h"
 #include "held_background_task.h"
 #include "image_artifacts.h"
+#include "meeting_balls.h"
 #include "message_box_closer.h"
 #include "named_child.h"
 #include "shown_main_window.h"
@@ -15,6 +16,7 @@
 #include "test_paths.h"
 #include "trim_comparison.h"
 
+#include "core/animation/animation_chain.h"
 #include "core/animation/animation_loader.h"
 #include "core/animation/animation_segmenter.h"
 #include "core/animation/segment_coloring.h"
@@ -24,11 +26,13 @@
 #include "ui/window/main_window.h"
 #include "ui/render_panel/render_workspace.h"
 #include "ui/animation/animation_workspace.h"
+#include "ui/animation/pose_history_bar.h"
 #include "core/mesh/mesh_io.h"
 #include "ui/render_panel/render_panel.h"
 #include "ui/animation/segment_stream.h"
 #include "ui/animation/segmentation_panel.h"
 #include "ui/animation/timeline_panel.h"
+#include "core/trim/dynamic_reference_renderer.h"
 #include "core/trim/reference_renderer.h"
 #include "core/trim/trim_shading.h"
 #include "ui/viewport/viewport_widget.h"
@@ -126,6 +130,7 @@ private slots:
     void timelineShowsEveryPoseLikeTheReference();
     void playbackAndGltfAndDrop();
     void playbackKeepsTimeOnASlowView();
+    void dynamicRuleCarriesTheClassificationFromPoseToPose();
     void brokenAnimationNamesTheFile();
     void cancelOpeningKeepsTheScene();
     void runAndHSliderFollowTheCore();
@@ -143,6 +148,8 @@ private:
     [[nodiscard]] std::unique_ptr<MainWindow> segmentedCat(const QString& settingsName, QSize viewport = kViewportSize);
     [[nodiscard]] static bool waitForNewFrame(MainWindow& window, const std::function<void()>& action);
     [[nodiscard]] static std::optional<QString> poseDisagreement(MainWindow& window, int pose);
+    [[nodiscard]] static std::optional<QString> dynamicPoseDisagreement(MainWindow& window, int pose,
+                                                                        PoseReference reference, DynamicRule rule);
 
     QTemporaryDir m_dir;
 };
@@ -196,6 +203,37 @@ std::optional<QString> TestAnimationPanel::poseDisagreement(MainWindow& window, 
     return test::posedFrameDisagreement(window, window.animation()->animation->poses[std::size_t(pose)], name);
 }
 
+// The viewport's last frame against the exact dynamic reference of the animation's chain
+// for `pose` (core/animation/animation_chain.h), the frame's camera, size and settings
+// (whose static rule classifies the rest pose).
+std::optional<QString> TestAnimationPanel::dynamicPoseDisagreement(MainWindow& window, int pose,
+                                                                   PoseReference reference, DynamicRule rule)
+{
+    const QString name = QStringLiteral("animation-dynamic-%1-pose-%2")
+                             .arg(QString::fromLatin1(poseReferenceName(reference).data()))
+                             .arg(pose);
+    const ViewportFrame frame = *window.viewport()->lastFrame();
+    const std::optional<DynamicChain> chain =
+        animationChain(*window.animation()->animation, std::size_t(pose), reference, rule, frame.settings.rule);
+    if (!chain)
+        return name + QStringLiteral(": the rest pose has no chain");
+    const int width = frame.pixelSize.width();
+    const int height = frame.pixelSize.height();
+    const ReferenceResult expected =
+        DynamicReferenceRenderer(*chain).render(frame.camera, width, height, frame.settings);
+    const TrimImage actual = window.viewport()->readTrimImage();
+    const test::TrimComparison comparison = test::compareTrimImages(actual, expected.trim, expected.diagnostics);
+    qInfo("%s: %s", qPrintable(name), qPrintable(comparison.summary()));
+    if (comparison.coveredPixels < width * height / 40)
+        return QStringLiteral("%1: only %2 pixels covered").arg(name).arg(comparison.coveredPixels);
+    if (comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05)
+        return std::nullopt;
+    const QString files = test::writeComparisonArtifacts(name, test::trimImageToPicture(actual),
+                                                         test::trimImageToPicture(expected.trim),
+                                                         comparison.disagreementMask);
+    return name + ": " + comparison.summary() + "; " + files;
+}
+
 // The folding box (three poses of a closed tube, the last one folded through itself): the
 // rest pose becomes the scene and is trimmed like a mesh; every pose the keyboard steps
 // to changes the framebuffer and agrees with the reference ray caster on that pose. The
@@ -247,6 +285,85 @@ void TestAnimationPanel::timelineShowsEveryPoseLikeTheReference()
              qPrintable(reason->text()));
     QVERIFY(!window->viewport()->lastFrame()->settings.trimEnabled);
     QCOMPARE(slider->value(), 0); // a new animation starts at its first pose
+}
+
+// Two balls that move into each other (meeting_balls.h), cut open by the Render panel's
+// first clip plane, played as a deformation history: under the confluent rule against the
+// previous pose, stepping forward appends one set per pose and characterizes only it (the
+// classification carried from pose to pose), and every pose agrees with the exact
+// dynamic reference of its whole chain; scrubbing back and jumping to the same pose
+// builds the chain again and shows the same picture. The history matters: where the
+// balls overlap, parity alone carves the lens out and the confluent rule keeps it solid.
+// Against the rest pose every pose is one set. The rest pose itself is shown by the
+// static rule.
+void TestAnimationPanel::dynamicRuleCarriesTheClassificationFromPoseToPose()
+{
+    const QString balls = m_dir.filePath(QStringLiteral("meeting-balls"));
+    QVERIFY(test::writeMeetingBalls(balls));
+    auto window = showWindow(QStringLiteral("dynamic-timeline"));
+    QVERIFY(openAndWait(*window, balls));
+    QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(child<QComboBox>(window.get(), "ruleComboBox"), Qt::Key_Home); }));
+    QCOMPARE(window->viewport()->lastFrame()->settings.rule, StaticRule::Parity);
+    QVERIFY(waitForNewFrame(*window, [&] {
+        QTest::mouseClick(child<QCheckBox>(window.get(), "clipPlaneEnabled0"), Qt::LeftButton);
+    }));
+    QVERIFY(window->viewport()->lastFrame()->settings.clipSet().anyEnabled());
+
+    auto* slider = child<QSlider>(window.get(), "poseSlider");
+    slider->setFocus();
+    QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(slider, Qt::Key_End); }));
+    const TrimImage parity = window->viewport()->readTrimImage();
+    QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(slider, Qt::Key_Home); }));
+
+    auto* rule = child<QComboBox>(window.get(), "poseRuleCombo");
+    auto* reference = child<QComboBox>(window.get(), "poseReferenceCombo");
+    QVERIFY(!reference->isEnabled()); // the static rule has no reference
+    QVERIFY(waitForNewFrame(*window, [&] { rule->setCurrentIndex(rule->findData(int(DynamicRule::Confluent))); }));
+    QVERIFY(reference->isEnabled());
+    QCOMPARE(window->animationWorkspace()->poseHistoryBar()->choices().reference, PoseReference::Previous);
+    QVERIFY(!window->viewport()->lastDynamicStats()); // pose 0, the rest pose: static
+    if (const auto problem = poseDisagreement(*window, 0))
+        QFAIL(qPrintable(*problem));
+
+    slider->setFocus();
+    for (int pose : {1, 2}) {
+        QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(slider, Qt::Key_Right); }));
+        QCOMPARE(window->animationWorkspace()->timelinePanel()->pose(), pose);
+        const render::DynamicFrameStats stats = window->viewport()->lastDynamicStats().value();
+        QCOMPARE(stats.levels, pose);
+        QCOMPARE(stats.characterizedLevels, pose - 1); // pose 2: only the set appended
+        if (const auto problem = dynamicPoseDisagreement(*window, pose, PoseReference::Previous, DynamicRule::Confluent))
+            QFAIL(qPrintable(*problem));
+    }
+    const TrimImage played = window->viewport()->readTrimImage();
+    QVERIFY(child<QLabel>(window.get(), "poseHistoryStatus")->text().contains(QStringLiteral("2 sets")));
+    const TrimImage playedMeshIds = withMeshIds(played, window->viewport()->dynamicShownLevel()->frame);
+    int differing = 0;
+    for (std::size_t i = 0; i < played.pixels.size(); ++i)
+        differing += playedMeshIds.pixels[i].primitiveId != parity.pixels[i].primitiveId ? 1 : 0;
+    qInfo("%d pixels differ from parity alone", differing);
+    QVERIFY2(differing > 100, qPrintable(QString::number(differing)));
+
+    QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(slider, Qt::Key_Home); }));
+    QVERIFY(!window->viewport()->lastDynamicStats());
+    QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(slider, Qt::Key_End); }));
+    QCOMPARE(window->viewport()->lastDynamicStats()->characterizedLevels, 1); // the whole chain, from the rest pose
+    const TrimImage jumped = window->viewport()->readTrimImage();
+    QCOMPARE(jumped.pixels.size(), played.pixels.size());
+    for (std::size_t i = 0; i < played.pixels.size(); ++i) {
+        QCOMPARE(jumped.pixels[i].objectId, played.pixels[i].objectId);
+        QCOMPARE(jumped.pixels[i].primitiveId, played.pixels[i].primitiveId);
+    }
+
+    QVERIFY(waitForNewFrame(*window, [&] { reference->setCurrentIndex(reference->findData(int(PoseReference::Rest))); }));
+    QCOMPARE(window->viewport()->lastDynamicStats()->levels, 1);
+    if (const auto problem = dynamicPoseDisagreement(*window, 2, PoseReference::Rest, DynamicRule::Confluent))
+        QFAIL(qPrintable(*problem));
+
+    QVERIFY(waitForNewFrame(*window, [&] { rule->setCurrentIndex(rule->findData(-1)); })); // static again
+    QVERIFY(!window->viewport()->lastDynamicStats());
+    if (const auto problem = poseDisagreement(*window, 2))
+        QFAIL(qPrintable(*problem));
 }
 
 // Play advances the poses on a timer and pauses again; a glTF animation opens through the
@@ -671,6 +788,8 @@ void TestAnimationPanel::choicesPersist()
         QTest::keyClick(child<QCheckBox>(panel, "colorBySegmentCheckBox"), Qt::Key_Space); // off
         typeInto(child<QSpinBox>(window.get(), "fpsSpinBox"), 30);
         QTest::keyClick(child<QCheckBox>(window.get(), "loopCheckBox"), Qt::Key_Space);
+        QTest::keyClick(child<QComboBox>(window.get(), "poseRuleCombo"), Qt::Key_End);      // constructive intersection
+        QTest::keyClick(child<QComboBox>(window.get(), "poseReferenceCombo"), Qt::Key_End); // rest pose
         window->close();
     }
     auto window = showWindow(settings);
@@ -685,6 +804,9 @@ void TestAnimationPanel::choicesPersist()
     QCOMPARE(restored.h, 1.0);
     QCOMPARE(window->animationWorkspace()->timelinePanel()->fps(), 30);
     QVERIFY(!window->animationWorkspace()->timelinePanel()->loops());
+    const PoseHistoryChoices history = window->animationWorkspace()->poseHistoryBar()->choices();
+    QCOMPARE(history.rule, std::optional<DynamicRule>(DynamicRule::ConstructiveIntersection));
+    QCOMPARE(history.reference, PoseReference::Rest);
     QCOMPARE(window->recentAnimations().value(0), QFileInfo(testAnimation("bar")).absoluteFilePath());
     QVERIFY(!window->findChild<QDockWidget*>(QStringLiteral("timelineDock"))->isVisible()); // no animation yet
 }
