@@ -162,24 +162,35 @@ RenderOutcome renderWithReference(const Scene& scene, const RenderOptions& optio
 }
 
 // `options.repeat` frames of the chain's shown level on `renderer` (configured).
-RenderOutcome renderDynamicOn(render::TrimRenderer& renderer, const QString& rendererName, const DynamicChain& chain,
+// `dynamic` holds the history rendered last; `extends` says that `chain` is that history
+// with one set more (--poses against the previous pose), which is appended so that only
+// the new set is characterized, as the viewport's timeline does.
+RenderOutcome renderDynamicOn(render::TrimRenderer& renderer, render::DynamicTrimRenderer& dynamic,
+                              const QString& rendererName, const DynamicChain& chain, bool extends,
                               const RenderOptions& options, const Camera& camera)
 {
-    render::DynamicTrimRenderer dynamic(renderer);
-    dynamic.setChain(chain);
+    if (extends)
+        dynamic.appendLevel(chain.levels.back());
+    else
+        dynamic.setChain(chain);
     render::FrameTimes times;
     double characterizeMs = 0.0;
+    int characterized = 0;
     for (int i = 0; i < options.repeat; ++i) {
         dynamic.render(camera, options.trim, options.width, options.height);
-        characterizeMs = std::max(characterizeMs, dynamic.lastStats().characterizeMilliseconds);
+        if (i == 0) {
+            characterizeMs = dynamic.lastStats().characterizeMilliseconds;
+            characterized = dynamic.lastStats().characterizedLevels;
+        }
         times.add(renderer.lastStats());
     }
     RenderOutcome outcome{renderer.readColor(), withMeshIds(renderer.readTrimImage(), chain.levels.back().frame), {}};
     outcome.statistics = gpuStatistics(renderer.lastStats(), renderer.parameters(), rendererName, times) +
-                         QStringLiteral("; dynamic rules: %1 sets, %2 ms to characterize the reference frames once, "
-                                        "%3 moved triangles in the shown set")
+                         QStringLiteral("; dynamic rules: %1 sets, %2 ms to characterize %3 of them (the others "
+                                        "cached), %4 moved triangles in the shown set")
                              .arg(chain.levels.size())
                              .arg(characterizeMs, 0, 'f', 2)
+                             .arg(characterized)
                              .arg(chain.levels.back().frame.movedTriangles);
     return outcome;
 }
@@ -189,7 +200,8 @@ RenderOutcome renderDynamicWithGpu(const DynamicChain& chain, const RenderOption
     render::OffscreenGlContext gl;
     render::TrimRenderer renderer(gl.context());
     configure(renderer, options);
-    return renderDynamicOn(renderer, gl.capabilities().renderer, chain, options, camera);
+    render::DynamicTrimRenderer dynamic(renderer);
+    return renderDynamicOn(renderer, dynamic, gl.capabilities().renderer, chain, false, options, camera);
 }
 
 RenderOutcome renderDynamicWithReference(const DynamicChain& chain, const RenderOptions& options, const Camera& camera)
@@ -426,6 +438,9 @@ int renderPoses(RenderOptions options)
     std::unique_ptr<render::TrimRenderer> renderer = gpu ? std::make_unique<render::TrimRenderer>(gl->context()) : nullptr;
     if (renderer)
         configure(*renderer, options);
+    std::unique_ptr<render::DynamicTrimRenderer> dynamic =
+        renderer ? std::make_unique<render::DynamicTrimRenderer>(*renderer) : nullptr;
+    std::size_t historyLevels = 0; // sets of the chain `dynamic` holds
     for (std::size_t i = 0; i < poses.size(); ++i) {
         const int pose = selection.first + int(i);
         const std::optional<DynamicChain> chain =
@@ -433,12 +448,21 @@ int renderPoses(RenderOptions options)
                                               options.trim.rule)
                              : std::nullopt;
         RenderOutcome outcome;
-        if (chain)
-            outcome = renderer ? renderDynamicOn(*renderer, gl->capabilities().renderer, *chain, options, camera)
+        if (chain) {
+            // Against the previous pose, the next pose after the rest pose has the history
+            // of the one before plus one set.
+            const bool extends = historyLevels > 0 && chain->levels.size() == historyLevels + 1 &&
+                                 options.poseReference == PoseReference::Previous &&
+                                 std::size_t(pose) > animation.restPose;
+            outcome = renderer ? renderDynamicOn(*renderer, *dynamic, gl->capabilities().renderer, *chain, extends,
+                                                 options, camera)
                                : renderDynamicWithReference(*chain, options, camera);
-        else
+            historyLevels = chain->levels.size();
+        } else {
+            historyLevels = 0;
             outcome = renderer ? renderOn(*renderer, gl->capabilities().renderer, poses[i].scene, options, camera)
                                : renderWithReference(poses[i].scene, options, camera);
+        }
         RenderOptions files = options;
         files.output = posePath(options.output, pose);
         files.depthOutput = posePath(options.depthOutput, pose);
