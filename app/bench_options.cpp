@@ -5,6 +5,7 @@
 #include "app/cli_messages.h"
 
 #include "app/bench_scenes.h"
+#include "app/bench_skinning.h"
 #include "ui/render_panel/render_choices.h"
 #include "app/render_options.h"
 #include "core/trim/static_rule.h"
@@ -38,7 +39,10 @@ void addBenchOptions(QCommandLineParser& parser)
                                             "--object-transform; alone unless --scenes is given.",
                                  "[SOURCE...]");
     parser.addOptions({
-        {"scenes", QStringLiteral("Comma-separated scenes. Default: %1. Also any demo:NAME or mesh file.").arg(catalogText()),
+        {"scenes",
+         QStringLiteral("Comma-separated scenes. Default: %1. Also any demo:NAME or mesh file, and the animation "
+                        "scenes %2 (a skinned pose, CPU skinning + upload against GPU skinning).")
+             .arg(catalogText(), QString::fromStdString(skinningBenchSceneNamesText())),
          "a,b"},
         {"size", "Comma-separated frame sizes. Default: 1024x768.", "WxH[,WxH]"},
         {"methods", QStringLiteral("Comma-separated methods. Default: all of %1.").arg(fragmentMethodIds().join(", ")),
@@ -105,8 +109,8 @@ std::optional<QString> parseScenes(const QString& text, BenchOptions& options)
 {
     for (const QString& item : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
         const QString name = item.trimmed();
-        const bool known = isBenchSceneName(name.toStdString()) || name.startsWith(QStringLiteral("demo:")) ||
-                           QFileInfo::exists(name);
+        const bool known = isBenchSceneName(name.toStdString()) || isSkinningBenchScene(name.toStdString()) ||
+                           name.startsWith(QStringLiteral("demo:")) || QFileInfo::exists(name);
         if (!known)
             return QStringLiteral("unknown scene '%1' in --scenes (use %2, demo:NAME or a mesh file)")
                 .arg(name, catalogText());

@@ -3,6 +3,7 @@
 #include "app/bench_json.h"
 #include "app/bench_options.h"
 #include "app/bench_runner.h"
+#include "app/bench_skinning.h"
 #include "app/bench_table.h"
 #include "app/cli_messages.h"
 #include "app/display_available.h"
@@ -75,6 +76,29 @@ bool measureScene(const QString& name, Load&& load, BenchRunner& runner, BenchRe
     return true;
 }
 
+// An animation scene (bench_skinning.h): its table is printed after the methods' table.
+bool measureSkinningScene(const QString& name, const std::filesystem::path& data, render::TrimRenderer& renderer,
+                          const BenchOptions& options, std::vector<SkinningBenchRow>& rows, BenchReport& report)
+{
+    std::string skipReason;
+    try {
+        const std::optional<MeshAnimation> animation = loadSkinningBenchAnimation(name.toStdString(), data, &skipReason);
+        if (!animation) {
+            printNote(QStringLiteral("skipping %1: %2").arg(name, QString::fromStdString(skipReason)));
+            report.skipped.push_back({name, QString::fromStdString(skipReason)});
+            return true;
+        }
+        printNote(QStringLiteral("%1: fitting 4 skinned models and timing every pose").arg(name));
+        for (SkinningBenchRow& row : measureSkinning(renderer, *animation, name, std::max(options.repeat, 1)))
+            rows.push_back(std::move(row));
+        return true;
+    } catch (const std::exception& e) {
+        printError(QStringLiteral("%1: %2").arg(name, QString::fromUtf8(e.what())));
+        report.skipped.push_back({name, QStringLiteral("could not be measured: %1").arg(QString::fromUtf8(e.what()))});
+        return false;
+    }
+}
+
 int runBench(const BenchOptions& options)
 {
     render::OffscreenGlContext gl;
@@ -87,11 +111,17 @@ int runBench(const BenchOptions& options)
                                                                        : std::filesystem::path(options.dataDirectory.toStdString());
     BenchRunner runner(renderer, options);
     bool allLoaded = true;
-    for (const QString& name : sceneNames(options))
+    std::vector<SkinningBenchRow> skinning;
+    for (const QString& name : sceneNames(options)) {
+        if (isSkinningBenchScene(name.toStdString())) {
+            allLoaded = measureSkinningScene(name, data, renderer, options, skinning, report) && allLoaded;
+            continue;
+        }
         allLoaded = measureScene(
                         name, [&](std::string* skip) { return loadBenchScene(name.toStdString(), data, skip); },
                         runner, report) &&
                     allLoaded;
+    }
     if (!options.sources.empty()) {
         QStringList sources;
         for (const std::string& source : options.sources)
@@ -103,11 +133,21 @@ int runBench(const BenchOptions& options)
         allLoaded = measureScene(sources.join(QStringLiteral(" + ")), compose, runner, report) && allLoaded;
     }
     printLine(QString());
-    for (const QString& line : benchTableLines(report))
+    if (!report.cells.empty())
+        for (const QString& line : benchTableLines(report))
+            printLine(line);
+    for (const QString& line : skinningTableLines(skinning))
         printLine(line);
     if (!options.jsonOutput.isEmpty())
         writeBenchJson(report, options.jsonOutput);
-    const QStringList failures = benchFailureLines(report);
+    QStringList failures = benchFailureLines(report);
+    for (const SkinningBenchRow& row : skinning)
+        if (!(row.largestDeviation <= kSkinningDeviationLimit))
+            failures << QStringLiteral("%1 %2 %3: GPU-skinned positions differ from the CPU's by %4 of the diagonal "
+                                       "(more than %5)")
+                            .arg(row.animation, row.method, row.chain)
+                            .arg(row.largestDeviation, 0, 'e', 2)
+                            .arg(kSkinningDeviationLimit, 0, 'e', 0);
     for (const QString& failure : failures)
         printError(failure);
     return failures.isEmpty() && allLoaded ? 0 : 1;

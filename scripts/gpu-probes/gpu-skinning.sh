@@ -4,4 +4,4 @@
 # carries), then the bench times a pose both ways in one run — on llvmpipe the GPU path
 # was 2x slower than CPU skinning plus upload (docs/skinning.md), which a GPU should turn.
 probe tst_render_gpu_skinning
-probe bench_gpu_skinning "$TRIMLAB_SHARED_DATA_DIR/anim/samba/mesh_00??.obj.gz" 40
+probe ../bin/trimlab bench --scenes skinning:samba --repeat 3 --data "$TRIMLAB_SHARED_DATA_DIR"

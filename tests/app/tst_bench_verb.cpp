@@ -3,6 +3,7 @@
 // method agrees with the CPU reference (>= 99.9 %), ratios are numbers or "n/a", and bad
 // arguments or missing shared data are reported as documented.
 #include "run_trimlab.h"
+#include "test_paths.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -53,6 +54,7 @@ private slots:
     void badArgumentsExitWithTwo_data();
     void badArgumentsExitWithTwo();
     void missingSharedDataSkipsTheScene();
+    void animationSceneTimesSkinningBothWays();
     void csgGoalSceneSkipsPeelingAndAgrees();
     void spinLocksOnlyMeasuresTheSpinLock();
     void positionalSourcesMakeOneScene();
@@ -183,6 +185,32 @@ void TestBenchVerb::missingSharedDataSkipsTheScene()
     QCOMPARE(report.value("results").toArray().size(), 0);
     QCOMPARE(report.value("skipped").toArray().first().toObject().value("scene").toString(),
              QStringLiteral("bunny-cube-50"));
+}
+
+// An animation scene: four skinned models of samba's first 40 poses, each pose timed with
+// CPU skinning + upload and with GPU skinning, and the GPU's positions read back against
+// the CPU's (a row per model; the run fails beyond 1e-5 of the diagonal). Without the
+// shared data the scene is skipped like a file scene.
+void TestBenchVerb::animationSceneTimesSkinningBothWays()
+{
+    const Run skipped = runBench({"bench", "--scenes", "skinning:samba", "--data", m_dir.filePath("no-such-folder")});
+    QVERIFY2(skipped.exitCode == 0 && skipped.err.contains(QStringLiteral("skipping skinning:samba")),
+             qPrintable(skipped.out + skipped.err));
+    if (!QFileInfo::exists(QString::fromStdString(trimlab::test::sharedDataPath("anim/samba").string())))
+        QSKIP("../shared/data/anim/samba is missing");
+    const Run run = runBench({"bench", "--scenes", "skinning:samba", "--repeat", "1"});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
+    const QRegularExpression row(QStringLiteral(
+        R"(^skinning:samba\s+9971\s+20\s+40\s+(LBS|DQS)\s+(pose-to-pose|rest-to-pose)(\s+[0-9.]+){5}\s+([0-9.e+-]+)$)"));
+    int rows = 0;
+    for (const QString& line : run.out.split(QLatin1Char('\n'))) {
+        const QRegularExpressionMatch match = row.match(line.trimmed());
+        if (!match.hasMatch())
+            continue;
+        ++rows;
+        QVERIFY2(match.captured(4).toDouble() <= 1e-5, qPrintable(line));
+    }
+    QVERIFY2(rows == 4, qPrintable(run.out));
 }
 
 // The GPU goal scene (docs/gpu-results.md): three CSG operands, 544,302 triangles, a cap.

@@ -1,10 +1,9 @@
 #pragma once
 /// \file
-/// Skinned models of shared animations for the GPU skinning test and benchmark: a few
-/// poses of an animation fitted by the existing fitter (weights from a plain
-/// nearest-seed segmentation, so no segmentation run is needed), and models with chosen
-/// transforms that stress what fits rarely produce (antipodal dual quaternions, large
-/// rotations, eight influences).
+/// Skinned models of shared animations for the GPU skinning test: a few poses of an
+/// animation (to fit with core/skinning/seed_bones.h), and models with chosen transforms
+/// that stress what fits rarely produce (antipodal dual quaternions, large rotations,
+/// eight influences).
 
 #include "core/animation/mesh_animation.h"
 #include "core/animation/vertex_graph.h"
@@ -22,15 +21,6 @@ namespace trimlab::test {
 /// pose beyond the sequence.
 [[nodiscard]] MeshAnimation selectedPoses(const std::string& source, const std::vector<std::size_t>& keep,
                                           std::size_t restPose);
-
-/// `count` seeds by farthest-point sampling from vertex 0, every vertex labelled with its
-/// nearest seed (Euclidean, in `positions`): compact segments, every label used.
-[[nodiscard]] VertexLabeling nearestSeedLabels(const std::vector<glm::vec3>& positions, std::size_t count);
-
-/// fitSkinning of `animation` with `bones` bones (nearestSeedLabels of the rest pose made
-/// smooth by segmentationWeights: at most 4 influences), by `method` along `chain`.
-[[nodiscard]] SkinningModel fittedModel(const MeshAnimation& animation, std::size_t bones, SkinningMethod method,
-                                        SkinningChain chain);
 
 /// A model on the rest pose of `animation` with `poseCount` poses of random transforms
 /// (seeded by `seed`) for `bones` bones placed at nearest-seed centres, each vertex

@@ -14,6 +14,7 @@
 #include "render/frame/gpu_scene.h"
 #include "render/frame/gpu_skinning.h"
 
+#include "core/skinning/seed_bones.h"
 #include "core/skinning/skinning_reconstruction.h"
 
 #include <QtTest>
@@ -150,7 +151,7 @@ const SkinningModel& TestGpuSkinning::model(const ModelCase& c)
 {
     auto it = m_models.find(c.name);
     if (it == m_models.end()) {
-        SkinningModel made = c.fitted ? test::fittedModel(m_samba, kBones, c.method, c.chain)
+        SkinningModel made = c.fitted ? seedBoneModel(m_samba, kBones, c.method, c.chain)
                                       : test::chosenTransformModel(m_samba, kBones, c.influences, c.method, c.chain,
                                                                    5, 19u + unsigned(c.influences));
         it = m_models.emplace(c.name, std::move(made)).first;
@@ -234,7 +235,7 @@ void TestGpuSkinning::longChainsDoNotDrift()
     const MeshAnimation samba = test::selectedPoses(test::sharedDataPath("anim/samba/mesh_00??.obj.gz").string(),
                                                     first24, 0);
     for (SkinningMethod method : {SkinningMethod::Lbs, SkinningMethod::Dqs}) {
-        const SkinningModel skinned = test::fittedModel(samba, kBones, method, SkinningChain::PoseToPose);
+        const SkinningModel skinned = seedBoneModel(samba, kBones, method, SkinningChain::PoseToPose);
         const std::vector<PosePositions> cpu = reconstructPoses(skinned);
         const double diagonal = 2.0 * computeBounds(poseMesh(skinned, skinned.restPositions)).radius();
         m_renderer->setScene(sceneOf(poseMesh(skinned, skinned.restPositions)));
