@@ -169,6 +169,7 @@ std::optional<MeshAnimation> loadSkinningBenchAnimation(const std::string& name,
         animation.poses.resize(scene->poses);
         animation.poseNames.resize(std::min(animation.poseNames.size(), scene->poses));
         animation.poseTimes.resize(std::min(animation.poseTimes.size(), scene->poses));
+        animation.skin.reset();
     }
     return animation;
 }

@@ -11,8 +11,10 @@
 #include "core/mesh/reader_support.h"
 #include "core/util/memory_budget.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace trimlab {
 
@@ -66,6 +68,48 @@ std::string readFileBytes(const std::filesystem::path& path, const std::string& 
     return bytes;
 }
 
+// The skin of `geometry` when one skin poses every vertex and nothing else moves them:
+// no morph targets, every primitive skinned by the same skin, every vertex weighted.
+// Joint matrices come per pose later.
+std::optional<AnimationSkin> singleSkin(const GltfAnimatedGeometry& geometry)
+{
+    if (geometry.primitives.empty())
+        return std::nullopt;
+    const int skinIndex = geometry.primitives.front().skin;
+    std::size_t influences = 0;
+    for (const GltfPrimitiveInstance& prim : geometry.primitives) {
+        if (prim.skin < 0 || prim.skin != skinIndex || !prim.targets.empty())
+            return std::nullopt;
+        influences = std::max(influences, prim.influences);
+    }
+    AnimationSkin skin;
+    skin.jointCount = geometry.skins[std::size_t(skinIndex)].joints.size();
+    skin.influences = influences;
+    for (const GltfPrimitiveInstance& prim : geometry.primitives)
+        for (std::size_t v = 0; v < prim.base.size(); ++v) {
+            skin.bindPositions.push_back(prim.base[v]);
+            double total = 0.0;
+            for (std::size_t i = 0; i < prim.influences; ++i)
+                total += prim.weights[v * prim.influences + i];
+            if (!(total > 0.0))
+                return std::nullopt; // the loader poses it by its node instead
+            for (std::size_t i = 0; i < influences; ++i) {
+                const bool present = i < prim.influences;
+                skin.joints.push_back(present ? prim.joints[v * prim.influences + i] : 0u);
+                skin.weights.push_back(present ? prim.weights[v * prim.influences + i] / total : 0.0);
+            }
+        }
+    return skin;
+}
+
+std::vector<glm::dmat4> jointMatrices(const GltfSkin& skin, const std::vector<glm::dmat4>& world)
+{
+    std::vector<glm::dmat4> matrices;
+    for (std::size_t j = 0; j < skin.joints.size(); ++j)
+        matrices.push_back(world[skin.joints[j]] * skin.inverseBind[j]);
+    return matrices;
+}
+
 } // namespace
 
 MeshAnimation readGltfAnimation(std::string_view bytes, const std::string& displayName,
@@ -85,17 +129,25 @@ MeshAnimation readGltfAnimation(std::string_view bytes, const std::string& displ
                   displayName + ": " + std::to_string(times.size()) + " poses of " +
                       std::to_string(geometry.vertexCount) + " vertices",
                   "sample the clip at a lower rate (--fps)");
+    std::optional<AnimationSkin> skin = singleSkin(geometry);
     for (std::size_t i = 0; i < times.size(); ++i) {
         control.throwIfCancelled();
         std::vector<NodeTransform> nodes = fileNodes;
         clip.apply(times[i], nodes);
+        const std::vector<glm::dmat4> world = worldMatrices(nodes, parents);
         animation.poseNames.push_back(poseName(clip.name, times[i]));
-        animation.poses.push_back(toFloatPositions(geometry.pose(nodes, worldMatrices(nodes, parents)), displayName,
-                                                   animation.poseNames.back()));
+        animation.poses.push_back(toFloatPositions(geometry.pose(nodes, world), displayName, animation.poseNames.back()));
         animation.poseTimes.push_back(times[i]);
+        if (skin)
+            skin->jointMatrices.push_back(
+                jointMatrices(geometry.skins[std::size_t(geometry.primitives.front().skin)], world));
         control.report("load", i + 1, times.size());
     }
-    return weldAcrossPoses(animation);
+    std::vector<std::size_t> kept;
+    MeshAnimation welded = weldAcrossPoses(animation, &kept);
+    if (skin)
+        welded.skin = std::make_shared<const AnimationSkin>(keepSkinVertices(*skin, kept));
+    return welded;
 }
 
 MeshAnimation loadGltfAnimation(const std::filesystem::path& path, const GltfAnimationOptions& options,

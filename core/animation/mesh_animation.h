@@ -4,11 +4,13 @@
 /// of one mesh with constant connectivity): the shared triangles, one position array per
 /// pose, and which pose is the rest pose.
 
+#include "core/animation/animation_skin.h"
 #include "core/mesh/triangle_mesh.h"
 
 #include <glm/vec3.hpp>
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,10 @@ struct MeshAnimation {
     std::vector<std::string> poseNames;
     std::vector<double> poseTimes;
     std::size_t restPose = 0;
+    /// The glTF skin that posed the poses (animation_skin.h), or nullptr: file sequences,
+    /// morphs, several skins. Its jointMatrices has one entry per pose as loaded; code
+    /// that drops or reorders poses resets it, and users check the counts.
+    std::shared_ptr<const AnimationSkin> skin;
 
     [[nodiscard]] std::size_t poseCount() const { return poses.size(); }
     [[nodiscard]] std::size_t vertexCount() const { return poses.empty() ? 0 : poses.front().size(); }

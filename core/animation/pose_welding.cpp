@@ -45,7 +45,7 @@ void refineByPose(const std::vector<glm::vec3>& positions, std::vector<std::uint
 
 } // namespace
 
-MeshAnimation weldAcrossPoses(const MeshAnimation& animation)
+MeshAnimation weldAcrossPoses(const MeshAnimation& animation, std::vector<std::size_t>* kept)
 {
     const std::size_t count = animation.vertexCount();
     std::vector<std::uint32_t> group(count, 0);
@@ -74,6 +74,8 @@ MeshAnimation weldAcrossPoses(const MeshAnimation& animation)
         for (const std::size_t v : representatives)
             welded.poses.back().push_back(pose[v]);
     }
+    if (kept)
+        *kept = std::move(representatives);
     return welded;
 }
 

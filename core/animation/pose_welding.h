@@ -12,6 +12,7 @@ namespace trimlab {
 /// kept. Vertices that coincide in some poses but not in others stay apart, so a seam
 /// that opens during the animation is not hidden. Triangles are kept, degenerate ones
 /// included. O(#P·#V) expected time.
-[[nodiscard]] MeshAnimation weldAcrossPoses(const MeshAnimation& animation);
+/// `kept`, when given, receives for each vertex of the result the input vertex it is.
+[[nodiscard]] MeshAnimation weldAcrossPoses(const MeshAnimation& animation, std::vector<std::size_t>* kept = nullptr);
 
 } // namespace trimlab

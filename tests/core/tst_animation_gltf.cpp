@@ -5,10 +5,14 @@
 #include "core/animation/gltf_animation.h"
 #include "core/animation/gltf_keyframes.h"
 #include "core/mesh/mesh_load_error.h"
+#include "core/skinning/file_skin_model.h"
+#include "core/skinning/skinning_reconstruction.h"
 
 #include "test_paths.h"
 
 #include <QtTest>
+
+#include <glm/geometric.hpp>
 
 #include <cmath>
 
@@ -42,6 +46,7 @@ private slots:
     void stepInterpolation();
     void skinnedAtKeyframes();
     void skinnedHalfway();
+    void skinnedFileKeepsItsSkin();
     void cubicSplineInterpolation();
     void errors();
 };
@@ -116,6 +121,38 @@ void TestAnimationGltf::skinnedHalfway()
     QCOMPARE(a.poseCount(), std::size_t(3));
     const float s = float(std::sqrt(0.5));
     QVERIFY2(near(a.poses[1][2], {1 + s, s, 0}), qPrintable(text(a.poses[1][2])));
+}
+
+// The skin that posed skinned_bar.gltf stays beside the poses (at 4 fps, 5 poses), and as
+// a rest-to-pose LBS model (the GPU skinning's input) it gives the sampled poses back;
+// files without a skin, and an animation whose poses were dropped, have none.
+void TestAnimationGltf::skinnedFileKeepsItsSkin()
+{
+    GltfAnimationOptions options;
+    options.fps = 4.0;
+    MeshAnimation a = loadGltfAnimation(animationFile("skinned_bar.gltf"), options);
+    QVERIFY(a.skin);
+    QCOMPARE(a.skin->jointCount, std::size_t(2));
+    QCOMPARE(a.skin->bindPositions.size(), a.vertexCount());
+    QCOMPARE(a.skin->jointMatrices.size(), a.poseCount());
+    const std::optional<SkinningModel> model = fileSkinningModel(a);
+    QVERIFY(model);
+    QVERIFY(restPoseMoves(*model) || model->affine[a.restPose] == std::vector<Affine3>(2));
+    const std::vector<PosePositions> skinned = reconstructPoses(*model);
+    QCOMPARE(skinned.size(), a.poseCount());
+    double largest = 0.0;
+    double motion = 0.0; // non-vacuous: the bar bends
+    for (std::size_t t = 0; t < a.poseCount(); ++t)
+        for (std::size_t v = 0; v < a.vertexCount(); ++v) {
+            largest = std::max(largest, glm::length(skinned[t][v] - glm::dvec3(a.poses[t][v])));
+            motion = std::max(motion, glm::length(glm::dvec3(a.poses[t][v] - a.poses[0][v])));
+        }
+    QVERIFY2(largest < 1e-6, qPrintable(QString::number(largest)));
+    QVERIFY(motion > 1.0);
+
+    a.poses.pop_back();
+    QVERIFY(!fileSkinningModel(a));
+    QVERIFY(!loadGltfAnimation(animationFile("morph_square.gltf")).skin);
 }
 
 // Hermite on [0, 2] with v0 = 0, out-tangent 1, v1 = 1, in-tangent 0, at s = ½:

@@ -171,10 +171,16 @@ void AnimationWorkspace::showPose(int pose)
         return;
     if (m_player.show(std::size_t(pose))) {
         // shown under a dynamic rule
-    } else if (const std::optional<std::vector<glm::vec3>> skinned = m_skinning->panel()->shownPose(pose))
+    } else if (const std::optional<std::vector<glm::vec3>> skinned = m_skinning->panel()->shownPose(pose)) {
         m_viewport->showSkinnedPose(m_skinning->panel()->shownModel(pose), std::size_t(pose), *skinned);
-    else
+    } else if (m_animation->fileSkin) {
+        // A skinned glTF file plays on the GPU from its own skin; the sampled pose is the
+        // CPU's answer (the still, the fallback).
+        m_viewport->showSkinnedPose(m_animation->fileSkin, std::size_t(pose),
+                                    m_animation->animation->poses[std::size_t(pose)]);
+    } else {
         m_viewport->showPose(m_animation->animation->poses[std::size_t(pose)]);
+    }
     m_segmentation->setCurrentPose(pose);
     m_skinning->panel()->setCurrentPose(pose);
 }

@@ -2,6 +2,7 @@
 
 #include "core/animation/animation_loader.h"
 #include "core/mesh/mesh_validation.h"
+#include "core/skinning/file_skin_model.h"
 
 #include <chrono>
 #include <filesystem>
@@ -49,6 +50,8 @@ LoadedAnimation loadAnimationForDisplay(const std::string& source, const TaskCon
     loaded.loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     loaded.restScene = restSceneOf(*animation, source);
     loaded.bounds = poseBounds(*animation);
+    if (std::optional<SkinningModel> skin = fileSkinningModel(*animation))
+        loaded.fileSkin = std::make_shared<const SkinningModel>(std::move(*skin));
     loaded.animation = std::move(animation);
     return loaded;
 }

@@ -6,6 +6,7 @@
 /// mesh), and the bounds of every pose (so no pose leaves the camera's depth range).
 
 #include "core/animation/mesh_animation.h"
+#include "core/skinning/skinning_model.h"
 #include "core/util/task_control.h"
 #include "core/catalog/scene_source.h"
 
@@ -20,6 +21,10 @@ struct LoadedAnimation {
     /// file name, one object named like it.
     std::shared_ptr<const LoadedScene> restScene;
     Bounds bounds;        ///< of every position of every pose
+    /// The skin a glTF file was posed with, as the GPU skinning path plays it
+    /// (core/skinning/file_skin_model.h); nullptr for sequences, morphs and files whose
+    /// skin the GPU path cannot blend (the viewport then uploads each sampled pose).
+    std::shared_ptr<const SkinningModel> fileSkin;
     double loadMs = 0.0; ///< wall-clock time of loadAnimation (for the export's times)
 };
 

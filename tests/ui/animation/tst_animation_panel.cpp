@@ -131,6 +131,7 @@ private slots:
     void playbackAndGltfAndDrop();
     void playbackKeepsTimeOnASlowView();
     void dynamicRuleCarriesTheClassificationFromPoseToPose();
+    void skinnedGltfPlaysOnTheGpu();
     void brokenAnimationNamesTheFile();
     void cancelOpeningKeepsTheScene();
     void runAndHSliderFollowTheCore();
@@ -363,6 +364,27 @@ void TestAnimationPanel::dynamicRuleCarriesTheClassificationFromPoseToPose()
     QVERIFY(waitForNewFrame(*window, [&] { rule->setCurrentIndex(rule->findData(-1)); })); // static again
     QVERIFY(!window->viewport()->lastDynamicStats());
     if (const auto problem = poseDisagreement(*window, 2))
+        QFAIL(qPrintable(*problem));
+}
+
+// A skinned glTF file plays from its own skin on the GPU (core/skinning/file_skin_model.h
+// into the viewport's GPU skinning): every pose's frame is skinned on the GPU and agrees
+// with the reference ray caster on the pose the loader sampled on the CPU.
+void TestAnimationPanel::skinnedGltfPlaysOnTheGpu()
+{
+    auto window = showWindow(QStringLiteral("skinned-gltf"));
+    QVERIFY(openAndWait(*window, testAnimation("skinned_bar.gltf")));
+    QVERIFY(window->animation()->fileSkin);
+    auto* slider = child<QSlider>(window.get(), "poseSlider");
+    slider->setFocus();
+    QCOMPARE(slider->maximum(), 1);
+    QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(slider, Qt::Key_End); }));
+    QVERIFY(window->viewport()->poseSkinnedOnGpu());
+    if (const auto problem = poseDisagreement(*window, 1))
+        QFAIL(qPrintable(*problem));
+    QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(slider, Qt::Key_Home); }));
+    QVERIFY(window->viewport()->poseSkinnedOnGpu());
+    if (const auto problem = poseDisagreement(*window, 0))
         QFAIL(qPrintable(*problem));
 }
 
