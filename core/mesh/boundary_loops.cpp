@@ -48,8 +48,8 @@ std::vector<Side> holeHalfEdges(std::span<const glm::uvec3> triangles)
 /// The first unused half-edge leaving `vertex`, or hole.size().
 std::size_t unusedFrom(const std::vector<Side>& hole, const std::vector<bool>& used, std::uint32_t vertex)
 {
-    auto it = std::lower_bound(hole.begin(), hole.end(), vertex,
-                               [](const Side& s, std::uint32_t v) { return s.from < v; });
+    auto it =
+        std::lower_bound(hole.begin(), hole.end(), vertex, [](const Side& s, std::uint32_t v) { return s.from < v; });
     for (; it != hole.end() && it->from == vertex; ++it)
         if (!used[std::size_t(it - hole.begin())])
             return std::size_t(it - hole.begin());

@@ -24,8 +24,8 @@ HoleFans holeFans(std::span<const glm::uvec3> triangles, std::size_t vertexCount
 std::vector<glm::vec3> withHoleCentres(const HoleFans& fans, const std::vector<glm::vec3>& positions)
 {
     if (positions.size() != fans.firstCentre)
-        throw std::invalid_argument("the fans close a mesh of " + std::to_string(fans.firstCentre) +
-                                    " vertices, not " + std::to_string(positions.size()));
+        throw std::invalid_argument("the fans close a mesh of " + std::to_string(fans.firstCentre) + " vertices, not " +
+                                    std::to_string(positions.size()));
     std::vector<glm::vec3> closed = positions;
     for (const std::vector<std::uint32_t>& loop : fans.loops) {
         glm::dvec3 sum(0.0);
