@@ -218,6 +218,11 @@ std::vector<std::uint32_t> EditableSurface::tiedPoints(std::uint32_t c) const
     return tiedControlPoints(m_definition, c);
 }
 
+const SubdivisionSurface* EditableSurface::subdivision() const
+{
+    return m_evaluator->subdivision ? &*m_evaluator->subdivision : nullptr;
+}
+
 glm::dvec3 EditableSurface::controlPointNormal(std::uint32_t c) const
 {
     const std::vector<glm::vec3>& normals = this->normals();

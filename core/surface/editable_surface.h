@@ -82,6 +82,10 @@ public:
     [[nodiscard]] std::vector<std::uint32_t> support(std::uint32_t c) const;
     /// tiedControlPoints(definition(), c).
     [[nodiscard]] std::vector<std::uint32_t> tiedPoints(std::uint32_t c) const;
+    /// The evaluator of a subdivision definition, at the current control points (its
+    /// stencils, e.g. for the GPU evaluation of render/frame/gpu_subdivision.h); nullptr
+    /// for NURBS.
+    [[nodiscard]] const SubdivisionSurface* subdivision() const;
 
     /// The direction "move along normal" uses for control point `c` at the current
     /// control points: the normalised sum of the unit normals of its support vertices

@@ -6,6 +6,7 @@
 // of the CPU's pose on two buffer methods. Models: four poses of the samba capture fitted
 // by the fitter, and chosen transforms (antipodal dual quaternions, turns up to 150°, eight
 // influences).
+#include "buffer_readback.h"
 #include "gl_test_context.h"
 #include "method_check.h"
 #include "skinning_models.h"
@@ -71,30 +72,8 @@ std::vector<std::size_t> visitOrder(const SkinningModel& model)
     return order;
 }
 
-std::vector<glm::vec3> readVec3(GlFunctions& gl, GLuint buffer, std::size_t first, std::size_t count)
-{
-    std::vector<glm::vec3> values(count);
-    gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-    gl.glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, GLintptr(first * sizeof(glm::vec3)),
-                          GLsizeiptr(count * sizeof(glm::vec3)), values.data());
-    return values;
-}
-
-double largestDistance(const std::vector<glm::vec3>& gpu, const PosePositions& cpu)
-{
-    double largest = 0.0;
-    for (std::size_t v = 0; v < gpu.size(); ++v)
-        largest = std::max(largest, glm::length(glm::dvec3(gpu[v]) - cpu[v]));
-    return largest;
-}
-
-double largestDistance(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b)
-{
-    double largest = 0.0;
-    for (std::size_t v = 0; v < a.size(); ++v)
-        largest = std::max(largest, glm::length(glm::dvec3(a[v]) - glm::dvec3(b[v])));
-    return largest;
-}
+using test::largestDistance;
+using test::readVec3;
 
 TriangleMesh poseMesh(const SkinningModel& model, const PosePositions& pose)
 {

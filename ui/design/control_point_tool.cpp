@@ -157,6 +157,7 @@ bool ControlPointTool::startDrag(std::uint32_t grabbed, QPointF position, bool a
     // (the preview moves the surface's points, which must not compound the drag).
     m_start = translateControlPoints(*m_session->surface(), m_selection, glm::dvec3(0.0));
     m_preview = std::make_unique<ControlPreview>(*m_session->surface(), history.currentPositions());
+    updateGpuStencils();
     m_dragging = true;
     m_dragMoved = false;
     m_targets.clear();
@@ -211,9 +212,28 @@ void ControlPointTool::showPreviewPositions(const std::vector<glm::vec3>& positi
             makeDynamicFrameScene(m_session->timeline().base().triangles, m_dragReference, positions,
                                   m_session->modelMatrix()),
             m_dragRule}));
+    } else if (m_gpuStencils) {
+        m_viewport->showSubdivisionPose(m_gpuStencils, m_session->surface()->controlPoints(), positions);
     } else {
         m_viewport->showPose(positions);
     }
+}
+
+// Stencils are copied once per surface: a drag of the same surface reuses them, and the
+// viewport keeps the GPU objects made from them.
+void ControlPointTool::updateGpuStencils()
+{
+    const EditableSurface& surface = *m_session->surface();
+    if (!surface.subdivision()) {
+        m_gpuStencils.reset();
+        m_gpuStencilsOf.reset();
+        return;
+    }
+    const SubdivisionDefinition& definition = surface.definition().subdivision();
+    if (m_gpuStencils && m_gpuStencilsOf && *m_gpuStencilsOf == definition)
+        return;
+    m_gpuStencils = std::make_shared<const render::SubdivisionStencils>(render::subdivisionStencils(*surface.subdivision()));
+    m_gpuStencilsOf = definition;
 }
 
 void ControlPointTool::released(QMouseEvent& event)

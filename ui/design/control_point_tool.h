@@ -12,7 +12,9 @@
 ///   twins, poles) move with them;
 /// - while dragging, the surface is re-evaluated and shown live (the viewport's pose, or
 ///   its dynamic shown level under the dynamic rules, as the brush's drag does), the net
-///   follows; the release records ONE undoable frame (AppendFrameCommand with
+///   follows; a subdivision surface's pose is evaluated by the viewport on the GPU from the
+///   control points where it can (render/frame/gpu_subdivision.h), the CPU's evaluation
+///   staying what the still, the exports and the recorded frame use; the release records ONE undoable frame (AppendFrameCommand with
 ///   controlEditFrame), a click without movement records nothing;
 /// - Ctrl + left drag from empty space draws a box; the points inside it join the
 ///   selection on release (box selection);
@@ -23,6 +25,9 @@
 #include "core/design/brush_drag.h"
 #include "ui/viewport/viewport_tool.h"
 
+#include "render/frame/subdivision_stencils.h"
+
+#include "core/surface/surface_definition.h"
 #include "core/timeline/control_edit.h"
 #include "core/trim/dynamic_rule.h"
 
@@ -95,6 +100,7 @@ private:
     [[nodiscard]] std::vector<ControlPointTarget> targetsFor(QPointF position) const;
     void preview(const std::vector<ControlPointTarget>& targets);
     void showPreviewPositions(const std::vector<glm::vec3>& positions);
+    void updateGpuStencils();
     void commit(const std::vector<ControlPointTarget>& targets);
     void cancelDrag();
     void selectInBox(const QRectF& box);
@@ -123,6 +129,10 @@ private:
     std::vector<glm::vec3> m_dragReference;    ///< dynamic: the current set's reference positions
     DynamicRule m_dragRule = DynamicRule::Confluent;
     double m_lastUpdateMs = 0.0;
+    /// The session's subdivision surface's stencils for the viewport's GPU evaluation, and
+    /// the definition they were taken from (nullptr: NURBS, or no surface yet).
+    std::shared_ptr<const render::SubdivisionStencils> m_gpuStencils;
+    std::optional<SubdivisionDefinition> m_gpuStencilsOf;
 };
 
 } // namespace trimlab::ui

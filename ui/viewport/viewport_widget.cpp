@@ -134,6 +134,14 @@ void ViewportWidget::showPose(const std::vector<glm::vec3>& positions)
     update();
 }
 
+void ViewportWidget::showSubdivisionPose(std::shared_ptr<const render::SubdivisionStencils> stencils,
+                                         std::vector<glm::dvec3> controlPoints,
+                                         const std::vector<glm::vec3>& positions)
+{
+    m_view.showSubdivisionPose(std::move(stencils), std::move(controlPoints), positions);
+    update();
+}
+
 void ViewportWidget::showSkinnedPose(std::shared_ptr<const SkinningModel> model, std::size_t pose,
                                      const std::vector<glm::vec3>& positions)
 {

@@ -99,6 +99,14 @@ public:
                          const std::vector<glm::vec3>& positions);
     /// Whether the last frame's pose was skinned on the GPU (showSkinnedPose).
     [[nodiscard]] bool poseSkinnedOnGpu() const { return m_view.poseSkinnedOnGpu(); }
+    /// The same for a subdivision surface at `controlPoints`, `positions` being the CPU's
+    /// evaluation of them: the renderer evaluates the surface on the GPU where it can
+    /// (render::ViewportRenderer::showSubdivisionPose), else shows `positions`. Throws as
+    /// showPose, and std::invalid_argument for a control point count the stencils do not take.
+    void showSubdivisionPose(std::shared_ptr<const render::SubdivisionStencils> stencils,
+                             std::vector<glm::dvec3> controlPoints, const std::vector<glm::vec3>& positions);
+    /// Whether the last frame's pose was evaluated on the GPU (showSubdivisionPose).
+    [[nodiscard]] bool poseSubdividedOnGpu() const { return m_view.poseSubdividedOnGpu(); }
     /// Per-vertex colors (one per vertex of the scene, objects in order; RGBA8 with red in
     /// the lowest byte, as GLSL's unpackUnorm4x8 reads them) shown instead of the trim
     /// palette from the next frame on; empty: back to the trim palette. Kept until

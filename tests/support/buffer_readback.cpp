@@ -1,0 +1,34 @@
+#include "buffer_readback.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+
+namespace trimlab::test {
+
+std::vector<glm::vec3> readVec3(render::GlFunctions& gl, GLuint buffer, std::size_t first, std::size_t count)
+{
+    std::vector<glm::vec3> values(count);
+    gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+    gl.glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, GLintptr(first * sizeof(glm::vec3)),
+                          GLsizeiptr(count * sizeof(glm::vec3)), values.data());
+    return values;
+}
+
+double largestDistance(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b)
+{
+    double largest = 0.0;
+    for (std::size_t v = 0; v < a.size(); ++v)
+        largest = std::max(largest, glm::length(glm::dvec3(a[v]) - glm::dvec3(b[v])));
+    return largest;
+}
+
+double largestDistance(const std::vector<glm::vec3>& a, const std::vector<glm::dvec3>& b)
+{
+    double largest = 0.0;
+    for (std::size_t v = 0; v < a.size(); ++v)
+        largest = std::max(largest, glm::length(glm::dvec3(a[v]) - b[v]));
+    return largest;
+}
+
+} // namespace trimlab::test
