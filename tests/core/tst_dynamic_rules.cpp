@@ -4,6 +4,8 @@
 #include "core/trim/dynamic_chain.h"
 #include "core/trim/dynamic_frame_scene.h"
 #include "core/trim/dynamic_reference_renderer.h"
+#include "core/trim/dynamic_reference_sequence.h"
+#include "core/scene/shape_generators.h"
 #include "core/trim/dynamic_rule.h"
 #include "core/trim/dynamic_walk.h"
 #include "core/trim/reference_renderer.h"
@@ -56,6 +58,7 @@ private slots:
     void unchangedFrameMatchesTheStaticRule();
     void frameSceneSplitsMovedTriangles();
     void trimmedOffPartsAreFound();
+    void carriedSequenceEqualsTheWholeChain();
 };
 
 void TestDynamicRules::ruleTable_data()
@@ -262,4 +265,64 @@ void TestDynamicRules::trimmedOffPartsAreFound()
 }
 
 QTEST_APPLESS_MAIN(TestDynamicRules)
+// Two balls moving into each other over four poses, against the previous pose under the
+// confluent rule, parity on the first pose, cut open through the centres: the sequence that
+// carries each pixel's characterization from level to level gives, at every pose, exactly
+// the image of DynamicReferenceRenderer over the whole chain. The history matters: from
+// the third pose on, a chain of the last step alone (the previous pose classified by
+// parity) gives another image.
+void TestDynamicRules::carriedSequenceEqualsTheWholeChain()
+{
+    const double offsets[] = {1.4, 1.0, 0.7, 0.45};
+    std::vector<std::vector<glm::vec3>> frames;
+    std::vector<glm::uvec3> triangles;
+    for (double offset : offsets) {
+        TriangleMesh balls = makeIcosphere(glm::dvec3(-offset, 0.0, 0.0), 1.0, 2);
+        appendMesh(balls, makeIcosphere(glm::dvec3(offset, 0.1, 0.0), 1.0, 2));
+        frames.push_back(balls.positions);
+        triangles = balls.triangles;
+    }
+    constexpr int kWidth = 96;
+    constexpr int kHeight = 64;
+    Bounds bounds;
+    for (const auto& frame : frames)
+        for (const glm::vec3& p : frame)
+            bounds.extend(glm::dvec3(p));
+    const Camera camera = withDepthRange(fitCamera(bounds, double(kWidth) / kHeight), bounds);
+    TrimSettings settings;
+    settings.rule = StaticRule::Parity;
+    settings.clip = ClipPlane{true, {0.0, 0.0, -1.0}, 0.0};
+
+    DynamicReferenceSequence sequence(camera, kWidth, kHeight, StaticRule::Parity, 2);
+    int historyDifferences = 0;
+    for (std::size_t pose = 1; pose < frames.size(); ++pose) {
+        const std::vector<std::vector<glm::vec3>> prefix(frames.begin(), frames.begin() + std::ptrdiff_t(pose) + 1);
+        const DynamicChain whole = makeDynamicChain(triangles, prefix,
+                                                    std::vector<DynamicRule>(pose, DynamicRule::Confluent),
+                                                    StaticRule::Parity);
+        const ReferenceResult carried = sequence.renderNext(whole.levels.back(), settings);
+        const ReferenceResult expected = DynamicReferenceRenderer(whole).render(camera, kWidth, kHeight, settings, 2);
+        int covered = 0;
+        for (std::size_t i = 0; i < expected.trim.pixels.size(); ++i) {
+            const TrimPixel& a = carried.trim.pixels[i];
+            const TrimPixel& b = expected.trim.pixels[i];
+            QVERIFY2(a.objectId == b.objectId && a.primitiveId == b.primitiveId && a.viewDepth == b.viewDepth &&
+                         a.windingAtStart == b.windingAtStart && a.unresolved == b.unresolved,
+                     qPrintable(QStringLiteral("pose %1, pixel %2").arg(pose).arg(i)));
+            covered += b.covered() ? 1 : 0;
+        }
+        QVERIFY2(covered > kWidth * kHeight / 20, qPrintable(QString::number(covered)));
+        const DynamicChain lastStep = makeDynamicChain(triangles, {frames[pose - 1], frames[pose]},
+                                                       {DynamicRule::Confluent}, StaticRule::Parity);
+        const ReferenceResult alone = DynamicReferenceRenderer(lastStep).render(camera, kWidth, kHeight, settings, 2);
+        for (std::size_t i = 0; i < expected.trim.pixels.size(); ++i)
+            historyDifferences += alone.trim.pixels[i].primitiveId != expected.trim.pixels[i].primitiveId ||
+                                          alone.trim.pixels[i].objectId != expected.trim.pixels[i].objectId
+                                      ? 1
+                                      : 0;
+    }
+    QCOMPARE(sequence.levelsSeen(), frames.size() - 1);
+    QVERIFY2(historyDifferences > 20, qPrintable(QString::number(historyDifferences)));
+}
+
 #include "tst_dynamic_rules.moc"
