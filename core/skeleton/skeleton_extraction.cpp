@@ -7,6 +7,7 @@
 #include "core/skeleton/skeleton_centring.h"
 #include "core/skeleton/skeleton_refinement.h"
 #include "core/skeleton/skeleton_resampling.h"
+#include "core/skeleton/skeleton_rerouting.h"
 #include "core/skeleton/skeleton_selection.h"
 
 #include <glm/geometric.hpp>
@@ -86,6 +87,7 @@ SkeletonExtraction extractSkeleton(const TriangleMesh& mesh, const SkeletonOptio
             extendLeaves(result.curve, mesh, solid);
             centreOnNearestWallChords(result.curve, solid);
             splitEdgesLeaving(result.curve, midpoints, solid);
+            rerouteLeavingEdges(result.curve, mesh, midpoints, solid);
         }
     }
     control.report("refinement", 1, 1);

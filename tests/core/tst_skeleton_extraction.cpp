@@ -9,6 +9,8 @@
 #include "core/mesh/mesh_validation.h"
 #include "core/skeleton/leaf_extension.h"
 #include "core/skeleton/point_in_mesh.h"
+#include "core/skeleton/skeleton_refinement.h"
+#include "core/skeleton/skeleton_rerouting.h"
 #include "core/skeleton/skeleton_centring.h"
 #include "core/skeleton/skeleton_evaluation.h"
 #include "core/scene/scene.h"
@@ -228,6 +230,10 @@ private slots:
         QTest::addColumn<QString>("file");
         QTest::newRow("knight") << QStringLiteral("static/libigl-decimated-knight.off.gz");
         QTest::newRow("spot") << QStringLiteral("static/odedstein-spot_low_resolution.obj.gz");
+        // Flippers and legs that touch the body or each other: curve edges across the gap
+        // (5 and 3 rig bones left these solids before rerouting).
+        QTest::newRow("penguin") << QStringLiteral("static/odedstein-penguin.obj.gz");
+        QTest::newRow("scorpion") << QStringLiteral("static/odedstein-scorpion_low_resolution.obj.gz");
     }
 
     void sharedMeshesKeepTheirSkeletonInside()
@@ -283,6 +289,45 @@ private slots:
             QVERIFY(solid.contains(p));
         }
         QCOMPARE(curve.nodes[1], glm::dvec3(0.0));
+    }
+
+    // An edge across the hole of a torus (its ends inside the ring, on opposite sides)
+    // cannot be bisected inside: it is replaced by a path around the ring, every segment
+    // inside, that starts and ends at the edge's nodes. An edge already inside is kept.
+    void leavingEdgeIsReroutedAroundTheGap()
+    {
+        const TriangleMesh torus = makeTorus(glm::dvec3(0.0), 1.0, 0.3, 48, 16);
+        const PointInMesh solid(torus);
+        CurveSkeleton curve;
+        curve.nodes = {{1.0, 0.0, 0.0}, {-1.0, 0.0, 0.0}, {-0.5, 0.0, std::sqrt(0.75)}};
+        curve.edges = {{0, 1}, {0, 2}};
+        curve.vertexNode.assign(torus.vertexCount(), 0);
+        QVERIFY(!solid.segmentInside(curve.nodes[0], curve.nodes[1]));
+        QVERIFY(!solid.segmentInside(curve.nodes[0], curve.nodes[2])); // the chord of a third of the ring too
+        const ReroutingResult result =
+            rerouteLeavingEdges(curve, torus, inwardChordMidpoints(torus, solid), solid);
+        QCOMPARE(result.rerouted, std::size_t(2));
+        QCOMPARE(result.kept, std::size_t(0));
+        QCOMPARE(curve.nodes.size(), std::size_t(3) + result.nodesAdded);
+        for (const auto& [a, b] : curve.edges) {
+            QVERIFY(a < b);
+            QVERIFY2(solid.segmentInside(curve.nodes[std::size_t(a)], curve.nodes[std::size_t(b)]),
+                     qPrintable(QStringLiteral("edge %1-%2 leaves").arg(a).arg(b)));
+        }
+        // A path from node 0 to node 1 and one to node 2: every added node has degree 2.
+        std::vector<int> degree(curve.nodes.size(), 0);
+        for (const auto& [a, b] : curve.edges) {
+            ++degree[std::size_t(a)];
+            ++degree[std::size_t(b)];
+        }
+        QCOMPARE(degree[0], 2);
+        QCOMPARE(degree[1], 1);
+        QCOMPARE(degree[2], 1);
+        for (std::size_t k = 3; k < curve.nodes.size(); ++k)
+            QCOMPARE(degree[k], 2);
+        const std::size_t edges = curve.edges.size();
+        QCOMPARE(rerouteLeavingEdges(curve, torus, inwardChordMidpoints(torus, solid), solid).rerouted, std::size_t(0));
+        QCOMPARE(curve.edges.size(), edges);
     }
 
     void torusLoopBecomesATree()
