@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -41,9 +42,14 @@ std::size_t centreOnNearestWallChords(CurveSkeleton& curve, const PointInMesh& s
 {
     const std::vector<glm::dvec3> directions = halfSphereDirections(std::max(1, options.directions));
     std::vector<char> moved(curve.nodes.size(), 0);
+    std::vector<int> degree(curve.nodes.size(), 0);
+    for (const std::array<int, 2>& edge : curve.edges) {
+        ++degree[static_cast<std::size_t>(edge[0])];
+        ++degree[static_cast<std::size_t>(edge[1])];
+    }
     parallelFor(curve.nodes.size(), 0, [&](std::size_t k) {
         glm::dvec3 p = curve.nodes[k];
-        if (!solid.contains(p))
+        if (!solid.contains(p) || (options.keepLeaves && degree[k] == 1))
             return;
         for (int round = 0; round < options.rounds; ++round) {
             const std::optional<glm::dvec3> next = nearestWallChordMidpoint(p, solid, directions);

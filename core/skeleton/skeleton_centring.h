@@ -23,6 +23,10 @@ namespace trimlab {
 struct CentringOptions {
     int directions = 48; ///< antipodal pairs tried per node (a Fibonacci half-sphere)
     int rounds = 3;      ///< moves per node
+    /// Leaves stay where leaf_extension.h put them: near a tip the nearest wall is the tip
+    /// itself, and each move would pull the leaf back along its limb (more rounds, shorter
+    /// limbs: the fish's fins lost a third of their coverage).
+    bool keepLeaves = true;
 };
 
 /// Moves every node of `curve` that lies inside `solid` as described above; a node

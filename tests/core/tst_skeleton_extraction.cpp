@@ -251,21 +251,30 @@ private slots:
     }
 
     // A node off the axis of a capsule slides to the axis (the midpoint of the chord
-    // towards its nearest wall); one outside stays where it is.
+    // towards its nearest wall); one outside stays where it is, and so does a leaf unless
+    // asked (leaf_extension.h placed it).
     void centringMovesNodesToTheAxis()
     {
         const double radius = 0.3;
         const TriangleMesh mesh = axisCapsule(radius, 1.0, 8, 24, 32);
         const PointInMesh solid(mesh);
-        CurveSkeleton curve;
-        curve.nodes = {{0.5 * radius, 0.2, 0.0}, {0.0, -0.4, -0.6 * radius}, {2.0, 0.0, 0.0}};
-        curve.edges = {{0, 1}, {1, 2}};
-        QCOMPARE(centreOnNearestWallChords(curve, solid), std::size_t(2));
-        for (int k : {0, 1}) {
-            const glm::dvec3& p = curve.nodes[std::size_t(k)];
-            QVERIFY2(std::hypot(p.x, p.z) < 0.05 * radius, qPrintable(QString::number(std::hypot(p.x, p.z))));
+        const glm::dvec3 leaf(0.5 * radius, 0.2, 0.0);
+        for (bool keepLeaves : {true, false}) {
+            CurveSkeleton curve;
+            curve.nodes = {leaf, {0.0, -0.4, -0.6 * radius}, {2.0, 0.0, 0.0}};
+            curve.edges = {{0, 1}, {1, 2}};
+            CentringOptions options;
+            options.keepLeaves = keepLeaves;
+            QCOMPARE(centreOnNearestWallChords(curve, solid, options), std::size_t(keepLeaves ? 1 : 2));
+            for (int k : {0, 1}) {
+                const glm::dvec3& p = curve.nodes[std::size_t(k)];
+                if (k == 0 && keepLeaves)
+                    QCOMPARE(p, leaf);
+                else
+                    QVERIFY2(std::hypot(p.x, p.z) < 0.05 * radius, qPrintable(QString::number(std::hypot(p.x, p.z))));
+            }
+            QCOMPARE(curve.nodes[2], glm::dvec3(2.0, 0.0, 0.0));
         }
-        QCOMPARE(curve.nodes[2], glm::dvec3(2.0, 0.0, 0.0));
     }
 
     // Leaves that stop short of a capsule's caps reach out to one radius short of the
