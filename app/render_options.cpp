@@ -96,6 +96,9 @@ void addRenderOptions(QCommandLineParser& parser)
                          "alone.", "name"},
         {"reference", "With --dynamic-rule: rest (each pose against the rest pose) or previous (the classification "
                       "carries from pose to pose, from the rest pose on). Default: rest.", "name"},
+        {"sets", "With --pose/--poses, instead of --dynamic-rule: the poses after the rest pose as sets of "
+                 "consecutive poses, each from its first pose to the next set's, with its own dynamic rule, e.g. "
+                 "1:confluent,40:additive; a set's reference is the pose before its first.", "A:rule,..."},
     });
     parser.addHelpOption();
 }
@@ -183,9 +186,9 @@ std::optional<QString> parsePoseOptions(const QCommandLineParser& parser, Render
     if (auto e = parsePoseSelection(parser.value("pose"), parser.value("poses"), options.poses))
         return e;
     if (!options.poses) {
-        if (parser.isSet("dynamic-rule") || parser.isSet("reference"))
-            return QStringLiteral("--dynamic-rule and --reference classify the poses of an animation: give --pose N "
-                                  "or --poses A:B");
+        if (parser.isSet("dynamic-rule") || parser.isSet("reference") || parser.isSet("sets"))
+            return QStringLiteral("--dynamic-rule, --reference and --sets classify the poses of an animation: give "
+                                  "--pose N or --poses A:B");
         return std::nullopt;
     }
     if (parser.isSet("dynamic-rule")) {
@@ -202,6 +205,15 @@ std::optional<QString> parsePoseOptions(const QCommandLineParser& parser, Render
         if (!options.poseRule)
             return QStringLiteral("--reference is the reference of --dynamic-rule; give a dynamic rule too");
         options.poseReference = *reference;
+    }
+    if (parser.isSet("sets")) {
+        if (options.poseRule)
+            return QStringLiteral("--sets gives every set its rule; leave out --dynamic-rule and --reference");
+        std::string error;
+        options.poseSets = parsePoseSets(parser.value("sets").toStdString(), error);
+        if (!options.poseSets)
+            return QStringLiteral("--sets: %1").arg(QString::fromStdString(error));
+        options.poseRule = options.poseSets->front().rule;
     }
     const TrimSettings& trim = options.trim;
     if (options.poseRule && (trim.cap.enabled || trim.highlight.any() || trim.xray() || !trim.trimEnabled))

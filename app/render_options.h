@@ -4,6 +4,7 @@
 /// bad arguments fail fast with one line.
 
 #include "app/pose_frames.h"
+#include "core/animation/pose_sets.h"
 #include "app/scene_composition.h"
 #include "core/animation/animation_chain.h"
 #include "render/mfr/fragment_method.h"
@@ -64,6 +65,10 @@ struct RenderOptions {
     /// by --rule); unset: --rule applies to each pose alone.
     std::optional<DynamicRule> poseRule;
     PoseReference poseReference = PoseReference::Rest;
+    /// --sets A:rule,B:rule with --pose/--poses: the poses after the rest pose grouped into
+    /// sets of consecutive poses, each with its rule (core/animation/pose_sets.h); poseRule
+    /// then holds the first set's rule, so that every check of a dynamic rule applies.
+    std::optional<std::vector<PoseSet>> poseSets;
 
     /// The source is a design: a stroke script was given, or the one source is a project or
     /// a demo with a history.

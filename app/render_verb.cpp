@@ -11,6 +11,7 @@
 #include "render/gl/offscreen_gl_context.h"
 #include "core/animation/animation_chain.h"
 #include "core/animation/animation_loader.h"
+#include "core/animation/pose_sets.h"
 #include "core/catalog/scene_source.h"
 #include "core/mesh/mesh_validation.h"
 #include "core/timeline/frame_chain.h"
@@ -162,15 +163,20 @@ RenderOutcome renderWithReference(const Scene& scene, const RenderOptions& optio
 }
 
 // `options.repeat` frames of the chain's shown level on `renderer` (configured).
-// `dynamic` holds the history rendered last; `extends` says that `chain` is that history
-// with one set more (--poses against the previous pose), which is appended so that only
-// the new set is characterized, as the viewport's timeline does.
+// How `chain` follows the history `dynamic` rendered last (--poses, consecutive poses):
+// one set more, which is appended so that only the new set is characterized as the
+// viewport's timeline does; the same sets with another frame shown, which keeps every
+// characterization; or a new history.
+enum class HistoryStep { New, Append, ReplaceShown };
+
 RenderOutcome renderDynamicOn(render::TrimRenderer& renderer, render::DynamicTrimRenderer& dynamic,
-                              const QString& rendererName, const DynamicChain& chain, bool extends,
+                              const QString& rendererName, const DynamicChain& chain, HistoryStep step,
                               const RenderOptions& options, const Camera& camera)
 {
-    if (extends)
+    if (step == HistoryStep::Append)
         dynamic.appendLevel(chain.levels.back());
+    else if (step == HistoryStep::ReplaceShown)
+        dynamic.setShownLevel(chain.levels.back());
     else
         dynamic.setChain(chain);
     render::FrameTimes times;
@@ -201,7 +207,7 @@ RenderOutcome renderDynamicWithGpu(const DynamicChain& chain, const RenderOption
     render::TrimRenderer renderer(gl.context());
     configure(renderer, options);
     render::DynamicTrimRenderer dynamic(renderer);
-    return renderDynamicOn(renderer, dynamic, gl.capabilities().renderer, chain, false, options, camera);
+    return renderDynamicOn(renderer, dynamic, gl.capabilities().renderer, chain, HistoryStep::New, options, camera);
 }
 
 RenderOutcome renderDynamicWithReference(const DynamicChain& chain, const RenderOptions& options, const Camera& camera)
@@ -393,6 +399,17 @@ QString poseClassificationText(const RenderOptions& options, const MeshAnimation
     if (!options.poseRule)
         return settingsText(options.trim);
     const QString base = QString::fromStdString(ruleName(options.trim.rule));
+    if (options.poseSets && std::size_t(pose) > animation.restPose) {
+        const std::vector<PoseSet>& sets = *options.poseSets;
+        const std::size_t set = setOfPose(sets, std::size_t(pose));
+        return QStringLiteral("%1 against pose %2 (set %3 of %4 in %5; %6 on the rest pose %7)")
+            .arg(QString::fromLatin1(dynamicRuleName(sets[set].rule).data()))
+            .arg(sets[set].firstPose - 1)
+            .arg(set + 1)
+            .arg(sets.size())
+            .arg(QString::fromStdString(poseSetsText(sets)), base)
+            .arg(animation.restPose);
+    }
     if (std::size_t(pose) == animation.restPose)
         return QStringLiteral("%1 (the rest pose: the base rule of %2)")
             .arg(base, QString::fromLatin1(dynamicRuleName(*options.poseRule).data()));
@@ -422,6 +439,20 @@ int renderPoses(RenderOptions options)
     const std::string name = std::filesystem::path(source).filename().string();
     std::vector<LoadedScene> poses;
     Bounds bounds;
+    if (options.poseSets) {
+        try {
+            requireValidPoseSets(*options.poseSets, animation.restPose, animation.poseCount());
+        } catch (const std::invalid_argument& e) {
+            printError(QStringLiteral("--sets for %1: %2").arg(QString::fromStdString(source), QString::fromUtf8(e.what())));
+            return 2;
+        }
+        if (std::size_t(selection.first) < animation.restPose) {
+            printError(QStringLiteral("--sets cover the poses after the rest pose %1; pose %2 comes before it")
+                           .arg(animation.restPose)
+                           .arg(selection.first));
+            return 2;
+        }
+    }
     options.ruleGiven = options.ruleGiven || options.poseRule.has_value(); // a dynamic rule cannot render untrimmed
     for (int pose = selection.first; pose <= selection.last; ++pose) {
         poses.push_back(poseScene(animation, pose, name));
@@ -444,17 +475,22 @@ int renderPoses(RenderOptions options)
     for (std::size_t i = 0; i < poses.size(); ++i) {
         const int pose = selection.first + int(i);
         const std::optional<DynamicChain> chain =
-            options.poseRule ? animationChain(animation, std::size_t(pose), options.poseReference, *options.poseRule,
-                                              options.trim.rule)
-                             : std::nullopt;
+            options.poseSets   ? poseSetChain(animation, std::size_t(pose), *options.poseSets, options.trim.rule)
+            : options.poseRule ? animationChain(animation, std::size_t(pose), options.poseReference, *options.poseRule,
+                                                options.trim.rule)
+                               : std::nullopt;
         RenderOutcome outcome;
         if (chain) {
-            // Against the previous pose, the next pose after the rest pose has the history
-            // of the one before plus one set.
-            const bool extends = historyLevels > 0 && chain->levels.size() == historyLevels + 1 &&
-                                 options.poseReference == PoseReference::Previous &&
-                                 std::size_t(pose) > animation.restPose;
-            outcome = renderer ? renderDynamicOn(*renderer, *dynamic, gl->capabilities().renderer, *chain, extends,
+            // After the rest pose, the next pose has the history of the one before plus a
+            // set (a new set begins), or the same sets with another shown frame.
+            HistoryStep step = HistoryStep::New;
+            if (historyLevels > 0 && std::size_t(pose) > animation.restPose) {
+                if (chain->levels.size() == historyLevels + 1)
+                    step = HistoryStep::Append;
+                else if (chain->levels.size() == historyLevels)
+                    step = HistoryStep::ReplaceShown;
+            }
+            outcome = renderer ? renderDynamicOn(*renderer, *dynamic, gl->capabilities().renderer, *chain, step,
                                                  options, camera)
                                : renderDynamicWithReference(*chain, options, camera);
             historyLevels = chain->levels.size();

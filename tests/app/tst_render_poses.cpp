@@ -13,6 +13,7 @@
 #include "app/pose_frames.h"
 #include "core/animation/animation_chain.h"
 #include "core/animation/animation_loader.h"
+#include "core/animation/pose_sets.h"
 #include "core/trim/dynamic_reference_renderer.h"
 #include "core/trim/reference_renderer.h"
 
@@ -35,6 +36,28 @@ QString animation(const char* relative)
 
 } // namespace
 
+namespace {
+
+// The camera `trimlab render --poses` fits to every pose of `animation` at kWidth × kHeight.
+Camera camerasOfAllPoses(const MeshAnimation& animation)
+{
+    Bounds together;
+    for (std::size_t p = 0; p < animation.poseCount(); ++p)
+        together.extend(computeBounds(animation.poseMesh(p)));
+    return fitCamera(together, double(kWidth) / kHeight);
+}
+
+// --rule parity --clip 0,0,-1,0: the two balls cut open through their centres.
+TrimSettings parityCutOpen()
+{
+    TrimSettings settings;
+    settings.rule = StaticRule::Parity;
+    settings.clip = ClipPlane{true, {0.0, 0.0, -1.0}, 0.0};
+    return settings;
+}
+
+} // namespace
+
 class TestRenderPoses : public QObject {
     Q_OBJECT
 private slots:
@@ -45,6 +68,7 @@ private slots:
     void onePoseOnTheReferenceBackend();
     void dynamicRulesOverTheAnimation_data();
     void dynamicRulesOverTheAnimation();
+    void poseSetsOverTheAnimation();
 
 private:
     QTemporaryDir m_dir;
@@ -92,6 +116,16 @@ void TestRenderPoses::badSelectionsFailFast_data()
     QTest::newRow("pose beyond the last") << QStringList{"render", box, "--pose", "3", "-o", "f.png", "--backend",
                                                          "reference"}
                                           << "has 3 poses (0 to 2); pose 3 does not exist" << 2;
+    QTest::newRow("sets not after the rest pose")
+        << QStringList{"render", box, "--poses", "0:2", "--sets", "2:confluent", "-o", "f_%d.png", "--backend", "reference"}
+        << "the first set must start right after the rest pose 0, at pose 1, not 2" << 2;
+    QTest::newRow("sets with a dynamic rule")
+        << QStringList{"render", box, "--poses", "0:2", "--sets", "1:confluent", "--dynamic-rule", "additive", "-o",
+                       "f_%d.png"}
+        << "leave out --dynamic-rule" << 2;
+    QTest::newRow("sets with a bad rule")
+        << QStringList{"render", box, "--poses", "0:2", "--sets", "1:union", "-o", "f_%d.png"}
+        << "--sets: unknown rule 'union'" << 2;
     QTest::newRow("poses of different sizes")
         << QStringList{"render", animation("mismatched_vertices/mesh_%04d.obj"), "--pose", "0", "-o", "f.png",
                        "--backend", "reference"}
@@ -215,13 +249,8 @@ void TestRenderPoses::dynamicRulesOverTheAnimation()
     QVERIFY2(still.exitCode == 0, qPrintable(still.err));
 
     const MeshAnimation balls = loadAnimation(folder.toStdString());
-    Bounds together;
-    for (std::size_t p = 0; p < balls.poseCount(); ++p)
-        together.extend(computeBounds(balls.poseMesh(p)));
-    const Camera camera = fitCamera(together, double(kWidth) / kHeight);
-    TrimSettings settings;
-    settings.rule = StaticRule::Parity;
-    settings.clip = ClipPlane{true, {0.0, 0.0, -1.0}, 0.0};
+    const Camera camera = camerasOfAllPoses(balls);
+    const TrimSettings settings = parityCutOpen();
     for (std::size_t pose = 1; pose < 3; ++pose) {
         const DynamicChain chain = animationChain(balls, pose, *parsePoseReference(reference.toStdString()),
                                                   *parseDynamicRule(rule.toStdString()), StaticRule::Parity)
@@ -243,6 +272,58 @@ void TestRenderPoses::dynamicRulesOverTheAnimation()
     for (std::size_t p = 0; p < dynamicLast.pixels.size(); ++p)
         differing += dynamicLast.pixels[p].primitiveId != staticLast.pixels[p].primitiveId ? 1 : 0;
     qInfo("%d pixels differ from parity alone", differing);
+    QVERIFY2(differing > 100, qPrintable(QString::number(differing)));
+}
+
+// The two balls as two sets with their own rules: pose 1 alone under the additive rule
+// (against the rest pose), pose 2 a set of its own under the subtractive rule against
+// pose 1. Each pose agrees with the exact reference of its chain; pose 2 appends its set
+// to pose 1's history (one characterization), and the subtractive second set gives
+// another picture than the additive rule over both poses.
+void TestRenderPoses::poseSetsOverTheAnimation()
+{
+    TRIMLAB_SKIP_WITHOUT_GL();
+    const QString folder = m_dir.filePath("balls");
+    if (!QFileInfo::exists(folder))
+        QVERIFY(test::writeMeetingBalls(folder));
+    const QString size = QStringLiteral("%1x%2").arg(kWidth).arg(kHeight);
+    const Run run = runTrimlab({"render", folder, "--poses", "0:2", "--rule", "parity", "--clip", "0,0,-1,0", "--sets",
+                                "1:additive,2:subtractive", "--method", "abuffer-linked-list", "--size", size, "--ids",
+                                m_dir.filePath("sets-ids_%d.png"), "-o", m_dir.filePath("sets_%d.png")});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains(QStringLiteral("subtractive against pose 1 (set 2 of 2 in 1:additive,2:subtractive; "
+                                             "parity on the rest pose 0)")),
+             qPrintable(run.out));
+    QVERIFY2(QRegularExpression(QStringLiteral("pose 2 of 2: .*dynamic rules: 2 sets, [0-9.]+ ms to characterize 1 of them"))
+                 .match(run.out)
+                 .hasMatch(),
+             qPrintable(run.out));
+    const MeshAnimation balls = loadAnimation(folder.toStdString());
+    const Camera camera = camerasOfAllPoses(balls);
+    const TrimSettings settings = parityCutOpen();
+    const std::vector<PoseSet> sets{{1, DynamicRule::ConstructiveAdditive}, {2, DynamicRule::ConstructiveSubtractive}};
+    for (std::size_t pose = 1; pose < 3; ++pose) {
+        const DynamicChain chain = poseSetChain(balls, pose, sets, StaticRule::Parity).value();
+        QCOMPARE(chain.levels.size(), pose);
+        const ReferenceResult expected = DynamicReferenceRenderer(chain).render(camera, kWidth, kHeight, settings);
+        const TrimImage fromFile =
+            test::decodeIdsPng(QImage(m_dir.filePath(QStringLiteral("sets-ids_%1.png").arg(pose))));
+        const test::TrimComparison comparison = test::compareTrimImages(
+            fromFile, test::idsOnly(withMeshIds(expected.trim, chain.levels.back().frame)), expected.diagnostics);
+        qInfo("pose %zu: %s", pose, qPrintable(comparison.summary()));
+        QVERIFY(comparison.coveredPixels > 200);
+        QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05,
+                 qPrintable(comparison.summary()));
+    }
+    // The second set's rule shows: not the picture of the additive rule over both poses.
+    const DynamicChain additive =
+        animationChain(balls, 2, PoseReference::Previous, DynamicRule::ConstructiveAdditive, StaticRule::Parity).value();
+    const TrimImage additiveIds = withMeshIds(
+        DynamicReferenceRenderer(additive).render(camera, kWidth, kHeight, settings).trim, additive.levels.back().frame);
+    const TrimImage setsIds = test::decodeIdsPng(QImage(m_dir.filePath("sets-ids_2.png")));
+    int differing = 0;
+    for (std::size_t p = 0; p < setsIds.pixels.size(); ++p)
+        differing += setsIds.pixels[p].primitiveId != additiveIds.pixels[p].primitiveId ? 1 : 0;
     QVERIFY2(differing > 100, qPrintable(QString::number(differing)));
 }
 
