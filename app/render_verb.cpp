@@ -163,10 +163,11 @@ RenderOutcome renderWithReference(const Scene& scene, const RenderOptions& optio
 }
 
 // `options.repeat` frames of the chain's shown level on `renderer` (configured).
-// How `chain` follows the history `dynamic` rendered last (--poses, consecutive poses):
+// How the pose follows the history `dynamic` rendered last (--poses, consecutive poses):
 // one set more, which is appended so that only the new set is characterized as the
 // viewport's timeline does; the same sets with another frame shown, which keeps every
-// characterization; or a new history.
+// characterization; or a new history. For Append and ReplaceShown `chain` holds only the
+// pose's own level, the one that changes.
 enum class HistoryStep { New, Append, ReplaceShown };
 
 RenderOutcome renderDynamicOn(render::TrimRenderer& renderer, render::DynamicTrimRenderer& dynamic,
@@ -194,7 +195,7 @@ RenderOutcome renderDynamicOn(render::TrimRenderer& renderer, render::DynamicTri
     outcome.statistics = gpuStatistics(renderer.lastStats(), renderer.parameters(), rendererName, times) +
                          QStringLiteral("; dynamic rules: %1 sets, %2 ms to characterize %3 of them (the others "
                                         "cached), %4 moved triangles in the shown set")
-                             .arg(chain.levels.size())
+                             .arg(dynamic.levelCount())
                              .arg(characterizeMs, 0, 'f', 2)
                              .arg(characterized)
                              .arg(chain.levels.back().frame.movedTriangles);
@@ -471,29 +472,37 @@ int renderPoses(RenderOptions options)
         configure(*renderer, options);
     std::unique_ptr<render::DynamicTrimRenderer> dynamic =
         renderer ? std::make_unique<render::DynamicTrimRenderer>(*renderer) : nullptr;
+    // The poses after the rest pose as sets (--sets, or the reference's sets): a pose that
+    // follows the one rendered before needs only its own level when the GPU keeps the rest.
+    const std::vector<PoseSet> sets =
+        options.poseSets   ? *options.poseSets
+        : options.poseRule ? referenceSets(animation.restPose, animation.poseCount(), options.poseReference,
+                                           *options.poseRule)
+                           : std::vector<PoseSet>{};
     std::size_t historyLevels = 0; // sets of the chain `dynamic` holds
     for (std::size_t i = 0; i < poses.size(); ++i) {
         const int pose = selection.first + int(i);
-        const std::optional<DynamicChain> chain =
-            options.poseSets   ? poseSetChain(animation, std::size_t(pose), *options.poseSets, options.trim.rule)
-            : options.poseRule ? animationChain(animation, std::size_t(pose), options.poseReference, *options.poseRule,
-                                                options.trim.rule)
-                               : std::nullopt;
         RenderOutcome outcome;
-        if (chain) {
+        if (options.poseRule && std::size_t(pose) != animation.restPose) {
             // After the rest pose, the next pose has the history of the one before plus a
             // set (a new set begins), or the same sets with another shown frame.
             HistoryStep step = HistoryStep::New;
-            if (historyLevels > 0 && std::size_t(pose) > animation.restPose) {
-                if (chain->levels.size() == historyLevels + 1)
-                    step = HistoryStep::Append;
-                else if (chain->levels.size() == historyLevels)
-                    step = HistoryStep::ReplaceShown;
+            if (renderer && historyLevels > 0 && std::size_t(pose) > animation.restPose) {
+                const std::size_t levels = setOfPose(sets, std::size_t(pose)) + 1;
+                step = levels == historyLevels + 1 ? HistoryStep::Append
+                       : levels == historyLevels   ? HistoryStep::ReplaceShown
+                                                   : HistoryStep::New;
             }
-            outcome = renderer ? renderDynamicOn(*renderer, *dynamic, gl->capabilities().renderer, *chain, step,
+            const DynamicChain chain =
+                step != HistoryStep::New
+                    ? DynamicChain{options.trim.rule, {poseSetShownLevel(animation, std::size_t(pose), sets)}}
+                : options.poseSets ? *poseSetChain(animation, std::size_t(pose), sets, options.trim.rule)
+                                   : *animationChain(animation, std::size_t(pose), options.poseReference,
+                                                     *options.poseRule, options.trim.rule);
+            outcome = renderer ? renderDynamicOn(*renderer, *dynamic, gl->capabilities().renderer, chain, step,
                                                  options, camera)
-                               : renderDynamicWithReference(*chain, options, camera);
-            historyLevels = chain->levels.size();
+                               : renderDynamicWithReference(chain, options, camera);
+            historyLevels = renderer ? std::size_t(dynamic->levelCount()) : 0;
         } else {
             historyLevels = 0;
             outcome = renderer ? renderOn(*renderer, gl->capabilities().renderer, poses[i].scene, options, camera)

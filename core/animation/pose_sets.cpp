@@ -74,6 +74,25 @@ std::size_t setOfPose(const std::vector<PoseSet>& sets, std::size_t pose)
     return index;
 }
 
+std::vector<PoseSet> referenceSets(std::size_t restPose, std::size_t poseCount, PoseReference reference,
+                                   DynamicRule rule)
+{
+    std::vector<PoseSet> sets;
+    for (std::size_t first = restPose + 1; first < poseCount; ++first) {
+        sets.push_back({first, rule});
+        if (reference == PoseReference::Rest)
+            break;
+    }
+    return sets;
+}
+
+DynamicChainLevel poseSetShownLevel(const MeshAnimation& animation, std::size_t pose, const std::vector<PoseSet>& sets)
+{
+    const PoseSet& set = sets[setOfPose(sets, pose)];
+    return {makeDynamicFrameScene(animation.triangles, animation.poses[set.firstPose - 1], animation.poses[pose]),
+            set.rule};
+}
+
 std::optional<DynamicChain> poseSetChain(const MeshAnimation& animation, std::size_t pose,
                                          const std::vector<PoseSet>& sets, StaticRule baseRule)
 {

@@ -8,6 +8,7 @@
 /// extremes: against the rest pose the whole animation is one set; against the previous
 /// pose every pose is a set of its own. Sets cover the poses after the rest pose.
 
+#include "core/animation/animation_chain.h"
 #include "core/animation/mesh_animation.h"
 #include "core/trim/dynamic_chain.h"
 
@@ -37,6 +38,17 @@ void requireValidPoseSets(const std::vector<PoseSet>& sets, std::size_t restPose
 
 /// The index of the set that holds `pose` (> restPose); sets as requireValidPoseSets wants.
 [[nodiscard]] std::size_t setOfPose(const std::vector<PoseSet>& sets, std::size_t pose);
+
+/// The sets `reference` makes of the poses after `restPose` under `rule`: one set from
+/// restPose + 1 (rest), or one per pose (previous). Empty when the rest pose is the last.
+[[nodiscard]] std::vector<PoseSet> referenceSets(std::size_t restPose, std::size_t poseCount, PoseReference reference,
+                                                 DynamicRule rule);
+
+/// The last level of poseSetChain's chain for `pose` (> restPose; sets as
+/// requireValidPoseSets wants): the pose against its set's reference, under its set's
+/// rule. What a renderer that keeps the earlier levels needs for the next pose.
+[[nodiscard]] DynamicChainLevel poseSetShownLevel(const MeshAnimation& animation, std::size_t pose,
+                                                  const std::vector<PoseSet>& sets);
 
 /// The chain that shows `pose`: frames the rest pose, the reference of every set up to
 /// the pose's, and the pose; each level with its set's rule; the rest pose classified by

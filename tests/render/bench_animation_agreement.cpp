@@ -190,9 +190,9 @@ bool measureAnimation(const std::string& source, const Options& options, QOpenGL
             ReferenceResult reference;
             if (mode.rule) {
                 // With --step > 1 a set spans several poses: its reference is the last pose shown.
-                level = makeDynamicChain(animation.triangles, {animation.poses[previous], animation.poses[pose]},
-                                         {*mode.rule}, settings.rule)
-                            .levels.back();
+                level = DynamicChainLevel{
+                    makeDynamicFrameScene(animation.triangles, animation.poses[previous], animation.poses[pose]),
+                    *mode.rule};
                 reference = sequence.renderNext(*level, settings);
             } else {
                 reference = ReferenceRenderer(poseScene(animation, pose)).render(camera, options.width, options.height,

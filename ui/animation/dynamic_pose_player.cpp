@@ -3,6 +3,7 @@
 #include "ui/viewport/viewport_widget.h"
 
 #include "core/trim/dynamic_chain.h"
+#include "core/trim/dynamic_frame_scene.h"
 
 namespace trimlab::ui {
 
@@ -67,9 +68,8 @@ void DynamicPosePlayer::appendSteps(std::size_t pose)
     std::vector<glm::vec3> previous = m_positions(shown);
     for (std::size_t p = forward ? shown + 1 : shown - 1;; p = forward ? p + 1 : p - 1) {
         std::vector<glm::vec3> current = m_positions(p);
-        const DynamicChain step =
-            makeDynamicChain(m_animation->triangles, {previous, current}, {*m_choices.rule}, m_baseRule);
-        m_viewport->appendDynamicLevel(std::make_shared<const DynamicChainLevel>(step.levels.back()));
+        m_viewport->appendDynamicLevel(std::make_shared<const DynamicChainLevel>(
+            DynamicChainLevel{makeDynamicFrameScene(m_animation->triangles, previous, current), *m_choices.rule}));
         if (p == pose)
             break;
         previous = std::move(current);
