@@ -62,15 +62,6 @@ PosePositions cpuStep(const SkinningModel& model, std::size_t pose, const PosePo
     return positions;
 }
 
-std::vector<glm::vec3> readPositions(render::GlFunctions& gl, const render::GpuObjectGeometry& object)
-{
-    std::vector<glm::vec3> values(object.vertexCount);
-    gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, object.positions);
-    gl.glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, GLintptr(object.baseVertex * sizeof(glm::vec3)),
-                          GLsizeiptr(values.size() * sizeof(glm::vec3)), values.data());
-    return values;
-}
-
 double largestDistance(const std::vector<glm::vec3>& gpu, const PosePositions& cpu)
 {
     double largest = 0.0;
@@ -89,7 +80,6 @@ SkinningBenchRow timeModel(render::TrimRenderer& renderer, const SkinningModel& 
     renderer.setScene(scene);
     render::GlFunctions& gl = renderer.gl();
     render::GpuScene& gpuScene = renderer.gpuScene();
-    const render::GpuObjectGeometry object = gpuScene.objectGeometry(0);
     const std::vector<std::size_t> order = chainOrder(model.poseCount(), model.restPose);
     render::GpuSkinning skinning(gl, model);
 
@@ -99,7 +89,7 @@ SkinningBenchRow timeModel(render::TrimRenderer& renderer, const SkinningModel& 
     for (std::size_t t : order) {
         poses[t] = cpuStep(model, t, poses[model.previousPose(t)]);
         skinning.skinPose(gpuScene, 0, t);
-        row.largestDeviation = std::max(row.largestDeviation, largestDistance(readPositions(gl, object), poses[t]));
+        row.largestDeviation = std::max(row.largestDeviation, largestDistance(gpuScene.readPositions(0), poses[t]));
     }
     row.largestDeviation /= std::max(diagonal, 1e-300);
 

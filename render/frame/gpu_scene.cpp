@@ -118,6 +118,31 @@ GpuObjectGeometry GpuScene::objectGeometry(std::size_t objectIndex) const
             object.triangles.size()};
 }
 
+namespace {
+
+std::vector<glm::vec3> readVec3s(GlFunctions& gl, GLuint buffer, std::size_t first, std::size_t count)
+{
+    std::vector<glm::vec3> values(count);
+    gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+    gl.glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, GLintptr(first * sizeof(glm::vec3)),
+                          GLsizeiptr(count * sizeof(glm::vec3)), values.data());
+    return values;
+}
+
+} // namespace
+
+std::vector<glm::vec3> GpuScene::readPositions(std::size_t objectIndex) const
+{
+    const GpuObjectGeometry object = objectGeometry(objectIndex);
+    return readVec3s(m_gl, object.positions, object.baseVertex, object.vertexCount);
+}
+
+std::vector<glm::vec3> GpuScene::readNormals(std::size_t objectIndex) const
+{
+    const GpuObjectGeometry object = objectGeometry(objectIndex);
+    return readVec3s(m_gl, object.normals, object.baseVertex, object.vertexCount);
+}
+
 void GpuScene::setModelMatrix(std::size_t objectIndex, const glm::dmat4& model)
 {
     if (objectIndex >= m_objects.size())

@@ -46,6 +46,13 @@ public:
     /// index beyond the uploaded objects.
     [[nodiscard]] GpuObjectGeometry objectGeometry(std::size_t objectIndex) const;
 
+    /// Object `objectIndex`'s positions or normals as the GPU holds them now, read back
+    /// (object space; waits for the passes that wrote them): what a GPU evaluation is
+    /// compared with the CPU's by (render.gpu_skinning, render.gpu_subdivision, the
+    /// skinning bench). Throws as objectGeometry.
+    [[nodiscard]] std::vector<glm::vec3> readPositions(std::size_t objectIndex) const;
+    [[nodiscard]] std::vector<glm::vec3> readNormals(std::size_t objectIndex) const;
+
     /// Replaces the model matrix of object `objectIndex` (e.g. the Scene panel moved it)
     /// without re-uploading any geometry; takes effect with the next setView(). The matrix
     /// must be orientation preserving (SceneObject's rule). Throws std::invalid_argument

@@ -73,7 +73,6 @@ std::vector<std::size_t> visitOrder(const SkinningModel& model)
 }
 
 using test::largestDistance;
-using test::readVec3;
 
 TriangleMesh poseMesh(const SkinningModel& model, const PosePositions& pose)
 {
@@ -156,22 +155,19 @@ void TestGpuSkinning::positionsAndNormalsMatchCpu()
     m_renderer->setScene(sceneOf(poseMesh(skinned, skinned.restPositions)));
     GpuScene& scene = m_renderer->gpuScene();
     GpuSkinning skinning(m_renderer->gl(), skinned);
-    const GpuObjectGeometry object = scene.objectGeometry(0);
     double worstPosition = 0.0;
     double worstNormal = 0.0;
     double largestMotion = 0.0; // non-vacuous: the poses move
     for (std::size_t pose : visitOrder(skinned)) {
         skinning.skinPose(scene, 0, pose);
-        const std::vector<glm::vec3> positions = readVec3(m_renderer->gl(), object.positions, object.baseVertex,
-                                                          object.vertexCount);
+        const std::vector<glm::vec3> positions = scene.readPositions(0);
         const double distance = largestDistance(positions, cpu[pose]);
         QVERIFY2(distance <= 1e-5 * diagonal,
                  qPrintable(QString("pose %1: GPU positions differ from the CPU's by %2 (diagonal %3)")
                                 .arg(pose)
                                 .arg(distance)
                                 .arg(diagonal)));
-        const std::vector<glm::vec3> normals = readVec3(m_renderer->gl(), object.normals, object.baseVertex,
-                                                        object.vertexCount);
+        const std::vector<glm::vec3> normals = scene.readNormals(0);
         const std::vector<glm::vec3> expected = vertexNormals(TriangleMesh{positions, skinned.triangles});
         const double normalError = largestDistance(normals, expected);
         // The GPU's angles are double-precision too (vertex_normals.comp), so the normals
@@ -219,12 +215,11 @@ void TestGpuSkinning::longChainsDoNotDrift()
         const double diagonal = 2.0 * computeBounds(poseMesh(skinned, skinned.restPositions)).radius();
         m_renderer->setScene(sceneOf(poseMesh(skinned, skinned.restPositions)));
         GpuSkinning skinning(m_renderer->gl(), skinned);
-        const GpuObjectGeometry object = m_renderer->gpuScene().objectGeometry(0);
-        double worst = 0.0;
+            double worst = 0.0;
         for (std::size_t pose : chainOrder(skinned.poseCount(), skinned.restPose)) {
             skinning.skinPose(m_renderer->gpuScene(), 0, pose);
             const double distance = largestDistance(
-                readVec3(m_renderer->gl(), object.positions, object.baseVertex, object.vertexCount), cpu[pose]);
+                m_renderer->gpuScene().readPositions(0), cpu[pose]);
             QVERIFY2(distance <= 1e-5 * diagonal, qPrintable(QString("pose %1 differs by %2").arg(pose).arg(distance)));
             worst = std::max(worst, distance / diagonal);
         }

@@ -69,7 +69,6 @@ std::vector<SurfaceCase> surfaceCases()
 }
 
 using test::largestDistance;
-using test::readVec3;
 
 /// Pixels whose shown primitive or facing differ.
 int differingPixels(const TrimImage& a, const TrimImage& b)
@@ -140,9 +139,8 @@ void TestGpuSubdivision::initTestCase()
 
 double TestGpuSubdivision::compareWithCpu(const SubdivisionSurface& surface, const QString& when)
 {
-    const GpuObjectGeometry object = m_renderer->gpuScene().objectGeometry(0);
     const std::vector<glm::vec3> positions =
-        readVec3(m_renderer->gl(), object.positions, object.baseVertex, object.vertexCount);
+        m_renderer->gpuScene().readPositions(0);
     const double diagonal = diagonalOf(surface);
     const double distance = largestDistance(positions, surface.positions());
     if (distance > 1e-5 * diagonal)
@@ -152,7 +150,7 @@ double TestGpuSubdivision::compareWithCpu(const SubdivisionSurface& surface, con
                                     .arg(diagonal)),
                      __FILE__, __LINE__);
     const std::vector<glm::vec3> normals =
-        readVec3(m_renderer->gl(), object.normals, object.baseVertex, object.vertexCount);
+        m_renderer->gpuScene().readNormals(0);
     const double normalError =
         largestDistance(normals, vertexNormals(TriangleMesh{positions, surface.mesh().triangles}));
     if (normalError > 1e-6)

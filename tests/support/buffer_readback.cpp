@@ -6,15 +6,6 @@
 
 namespace trimlab::test {
 
-std::vector<glm::vec3> readVec3(render::GlFunctions& gl, GLuint buffer, std::size_t first, std::size_t count)
-{
-    std::vector<glm::vec3> values(count);
-    gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-    gl.glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, GLintptr(first * sizeof(glm::vec3)),
-                          GLsizeiptr(count * sizeof(glm::vec3)), values.data());
-    return values;
-}
-
 double largestDistance(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b)
 {
     double largest = 0.0;
