@@ -225,14 +225,21 @@ bool blendMatrix(const GltfPrimitiveInstance& prim, std::size_t v, const std::ve
 
 } // namespace
 
+std::vector<glm::dmat4> jointMatrices(const GltfSkin& skin, const std::vector<glm::dmat4>& world)
+{
+    std::vector<glm::dmat4> matrices;
+    matrices.reserve(skin.joints.size());
+    for (std::size_t j = 0; j < skin.joints.size(); ++j)
+        matrices.push_back(world[skin.joints[j]] * skin.inverseBind[j]);
+    return matrices;
+}
+
 std::vector<glm::dvec3> GltfAnimatedGeometry::pose(const std::vector<NodeTransform>& nodes,
                                                    const std::vector<glm::dmat4>& world) const
 {
-    std::vector<std::vector<glm::dmat4>> jointMatrices(skins.size());
-    for (std::size_t s = 0; s < skins.size(); ++s) {
-        for (std::size_t j = 0; j < skins[s].joints.size(); ++j)
-            jointMatrices[s].push_back(world[skins[s].joints[j]] * skins[s].inverseBind[j]);
-    }
+    std::vector<std::vector<glm::dmat4>> skinMatrices;
+    for (const GltfSkin& skin : skins)
+        skinMatrices.push_back(jointMatrices(skin, world));
     std::vector<glm::dvec3> positions;
     positions.reserve(vertexCount);
     for (const GltfPrimitiveInstance& prim : primitives) {
@@ -242,7 +249,7 @@ std::vector<glm::dvec3> GltfAnimatedGeometry::pose(const std::vector<NodeTransfo
             for (std::size_t t = 0; t < prim.targets.size() && t < weights.size(); ++t)
                 p += weights[t] * prim.targets[t][v];
             glm::dmat4 m = world[prim.node];
-            if (prim.skin >= 0 && !blendMatrix(prim, v, jointMatrices[std::size_t(prim.skin)], m))
+            if (prim.skin >= 0 && !blendMatrix(prim, v, skinMatrices[std::size_t(prim.skin)], m))
                 m = world[prim.node];
             positions.emplace_back(m * glm::dvec4(p, 1.0));
         }

@@ -27,6 +27,10 @@ struct GltfSkin {
     std::vector<glm::dmat4> inverseBind;
 };
 
+/// The joint matrices of `skin` for nodes whose world matrices are `world`:
+/// world(joint j) · inverseBind_j, one per joint (glTF 2.0 §3.7.3).
+[[nodiscard]] std::vector<glm::dmat4> jointMatrices(const GltfSkin& skin, const std::vector<glm::dmat4>& world);
+
 /// One triangle primitive of one mesh node.
 /// - `base`: #v POSITION values (mesh space).
 /// - `targets`: per morph target #v POSITION displacements (zeros when absent).

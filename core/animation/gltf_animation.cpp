@@ -102,14 +102,6 @@ std::optional<AnimationSkin> singleSkin(const GltfAnimatedGeometry& geometry)
     return skin;
 }
 
-std::vector<glm::dmat4> jointMatrices(const GltfSkin& skin, const std::vector<glm::dmat4>& world)
-{
-    std::vector<glm::dmat4> matrices;
-    for (std::size_t j = 0; j < skin.joints.size(); ++j)
-        matrices.push_back(world[skin.joints[j]] * skin.inverseBind[j]);
-    return matrices;
-}
-
 } // namespace
 
 MeshAnimation readGltfAnimation(std::string_view bytes, const std::string& displayName,
