@@ -1,6 +1,9 @@
 #include "render/gl/offscreen_gl_context.h"
 
+#include "render/gl/gl_debug_log.h"
 #include "render/gl/gl_error.h"
+
+#include <QOpenGLDebugLogger>
 
 #include <QGuiApplication>
 
@@ -17,7 +20,7 @@ QSurfaceFormat OffscreenGlContext::requestedFormat()
     // Ask to be told about GPU resets (gl/context_reset.h); where the platform ignores
     // the request (Qt 6.4 on GLX) the context is the same as without it.
     format.setOption(QSurfaceFormat::ResetNotification);
-    return format;
+    return withDebugRequest(format);
 }
 
 OffscreenGlContext::OffscreenGlContext()
@@ -35,6 +38,7 @@ OffscreenGlContext::OffscreenGlContext()
     m_surface->create();
     if (!m_surface->isValid() || !m_context->makeCurrent(m_surface.get()))
         throw GlUnavailableError("Could not make the offscreen OpenGL context current (is an X display available?).");
+    m_debugLog = startGlDebugLog(*m_context);
     m_capabilities = queryCapabilities(*m_context);
     if (const auto missing = missingRequirements(m_capabilities))
         throw GlUnavailableError(missing->toStdString());
@@ -42,8 +46,13 @@ OffscreenGlContext::OffscreenGlContext()
 
 OffscreenGlContext::~OffscreenGlContext()
 {
-    if (m_context)
+    if (m_context) {
+        if (m_debugLog) {
+            makeCurrent(); // the logger goes while its context is current
+            m_debugLog.reset();
+        }
         m_context->doneCurrent();
+    }
 }
 
 void OffscreenGlContext::makeCurrent()

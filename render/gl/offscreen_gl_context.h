@@ -10,6 +10,8 @@
 
 #include <memory>
 
+class QOpenGLDebugLogger;
+
 namespace trimlab::render {
 
 class OffscreenGlContext {
@@ -32,6 +34,7 @@ private:
     std::unique_ptr<QOffscreenSurface> m_surface;
     std::unique_ptr<QOpenGLContext> m_context;
     GlCapabilities m_capabilities;
+    std::unique_ptr<QOpenGLDebugLogger> m_debugLog; ///< with TRIMLAB_GL_DEBUG only (gl_debug_log.h)
 };
 
 } // namespace trimlab::render

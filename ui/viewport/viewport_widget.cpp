@@ -348,6 +348,7 @@ void ViewportWidget::initializeGL()
 {
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseGl, Qt::UniqueConnection);
     ++m_contextsInitialized;
+    m_debugLog = render::startGlDebugLog(*context()); // TRIMLAB_GL_DEBUG only
     try {
         m_view.initialize(*context());
         setError({});
@@ -360,10 +361,12 @@ void ViewportWidget::initializeGL()
 
 void ViewportWidget::releaseGl()
 {
-    if (!m_view.hasRenderer())
+    if (!m_view.hasRenderer() && !m_debugLog)
         return;
     makeCurrent();
-    m_view.release();
+    if (m_view.hasRenderer())
+        m_view.release();
+    m_debugLog.reset();
     doneCurrent();
 }
 

@@ -39,11 +39,13 @@
 #include "ui/viewport/memory_estimate.h"
 #include "ui/viewport/viewport_tool.h"
 
+#include "render/gl/gl_debug_log.h"
 #include "render/viewport_renderer.h"
 
 #include "core/view/orbit_controller.h"
 
 #include <QImage>
+#include <QOpenGLDebugLogger>
 #include <QOpenGLWidget>
 #include <QPointF>
 
@@ -298,6 +300,7 @@ private:
     ViewportTool* m_tool = nullptr;
     TrimImage m_trimCache; ///< the last frame's trim image once read (empty: not read)
     int m_contextsInitialized = 0; ///< initializeGL() calls
+    std::unique_ptr<QOpenGLDebugLogger> m_debugLog; ///< with TRIMLAB_GL_DEBUG only (render/gl/gl_debug_log.h)
     CpuStillRender* m_cpuStill = nullptr;
     Drag m_drag = Drag::None;
     QPointF m_lastMouse;
