@@ -5,6 +5,8 @@
 
 #include <QRegularExpression>
 
+#include <algorithm>
+
 namespace trimlab::render {
 
 const std::vector<ProgramDescription>& programCatalog()
@@ -135,6 +137,14 @@ ShaderLibrary::ShaderLibrary(GlFunctions& gl) : m_gl(gl) {}
 
 ShaderLibrary::~ShaderLibrary()
 {
+    // A deleted program that is still current lives on, flagged, until another is made
+    // current; whoever saved and restores "the current program" (OpenSubdiv's evaluator
+    // does) would then bind a dead name: GL_INVALID_VALUE, and on a driver that reuses
+    // names (NVIDIA) possibly another object's program. So none of ours stays current.
+    GLint current = 0;
+    m_gl.glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    if (std::find(m_programs.cbegin(), m_programs.cend(), GLuint(current)) != m_programs.cend())
+        m_gl.glUseProgram(0);
     for (GLuint program : std::as_const(m_programs))
         m_gl.glDeleteProgram(program);
 }

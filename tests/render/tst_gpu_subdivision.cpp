@@ -120,6 +120,8 @@ private slots:
     void trimMatchesReference_data();
     void trimMatchesReference();
     void viewportEvaluatesEditsOnTheGpu();
+    void viewportFallsBackToTheCpusPositions();
+    void viewportEvaluatesAgainInTheSameContext();
     void refusesMismatches();
 
 private:
@@ -139,8 +141,7 @@ void TestGpuSubdivision::initTestCase()
 
 double TestGpuSubdivision::compareWithCpu(const SubdivisionSurface& surface, const QString& when)
 {
-    const std::vector<glm::vec3> positions =
-        m_renderer->gpuScene().readPositions(0);
+    const std::vector<glm::vec3> positions = m_renderer->gpuScene().readPositions(0);
     const double diagonal = diagonalOf(surface);
     const double distance = largestDistance(positions, surface.positions());
     if (distance > 1e-5 * diagonal)
@@ -149,8 +150,7 @@ double TestGpuSubdivision::compareWithCpu(const SubdivisionSurface& surface, con
                                     .arg(distance)
                                     .arg(diagonal)),
                      __FILE__, __LINE__);
-    const std::vector<glm::vec3> normals =
-        m_renderer->gpuScene().readNormals(0);
+    const std::vector<glm::vec3> normals = m_renderer->gpuScene().readNormals(0);
     const double normalError =
         largestDistance(normals, vertexNormals(TriangleMesh{positions, surface.mesh().triangles}));
     if (normalError > 1e-6)
@@ -241,36 +241,81 @@ void TestGpuSubdivision::trimMatchesReference()
     QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
 }
 
+namespace {
+
+// The T shape at limit level 2 with control point 7 pulled out through the body: the
+// scene of the cage as built, its stencils, the edited control points and the CPU's
+// positions of the edit, and a camera on the whole.
+struct ViewportEdit {
+    static constexpr QSize kSize{128, 96};
+    SubdivisionCage cage = tShapeCage();
+    std::shared_ptr<const Scene> scene;
+    std::shared_ptr<const SubdivisionStencils> stencils;
+    std::vector<glm::dvec3> edited;
+    Camera camera;
+    std::vector<glm::vec3> cpu;
+
+    ViewportEdit()
+    {
+        SubdivisionSurface surface(cage, {2, SubdivisionMode::Limit});
+        scene = std::make_shared<const Scene>(sceneOf(surface.mesh()));
+        stencils = std::make_shared<const SubdivisionStencils>(subdivisionStencils(surface));
+        edited = cage.positions;
+        edited[7] += glm::dvec3(0.0, 0.0, 2.5);
+        const std::uint32_t moved[] = {7};
+        surface.update(edited, moved);
+        camera = withDepthRange(fitCamera(scene->worldBounds(), 128.0 / 96.0), scene->worldBounds());
+        cpu = floatPositions(surface.positions());
+    }
+};
+
+// The viewport's frame against the reference of its posed scene; the failure also says how
+// far the positions on the GPU lie from the CPU's (wrong geometry or a wrong draw).
+std::optional<QString> viewportAgrees(ViewportRenderer& view, const Camera& camera, QSize size, const QString& name,
+                                      const std::vector<glm::vec3>& cpuPositions)
+{
+    if (!view.render(camera, size, 0, [](const std::string&) {}))
+        return QString("no GPU frame");
+    const ReferenceResult expected =
+        ReferenceRenderer(*view.posedScene()).render(camera, size.width(), size.height(), TrimSettings{});
+    const test::MethodCase testCase{name, camera, TrimSettings{}, view.methodParameters(), size.width(), size.height()};
+    std::optional<QString> failure = test::checkFrameAgainstReference(view.renderer(), testCase, expected, {});
+    if (failure) {
+        const double off = largestDistance(view.renderer().gpuScene().readPositions(0), cpuPositions);
+        GlFunctions& gl = view.renderer().gl();
+        GLint viewport[4] = {};
+        gl.glGetIntegerv(GL_VIEWPORT, viewport);
+        *failure += QString(" (GPU positions %1 from the CPU's; after the frame: GL error 0x%2, rasterizer discard %3, "
+                            "scissor %4, depth test %5, cull %6, viewport %7x%8)")
+                        .arg(off)
+                        .arg(gl.glGetError(), 0, 16)
+                        .arg(gl.glIsEnabled(GL_RASTERIZER_DISCARD))
+                        .arg(gl.glIsEnabled(GL_SCISSOR_TEST))
+                        .arg(gl.glIsEnabled(GL_DEPTH_TEST))
+                        .arg(gl.glIsEnabled(GL_CULL_FACE))
+                        .arg(viewport[2])
+                        .arg(viewport[3]);
+    }
+    return failure;
+}
+
+} // namespace
+
 // The viewport's path of a control-point drag: the CPU's positions and the control points
 // handed over together; the frame agrees with the reference of the CPU's positions, in a
 // new context too; stencils of another surface fall back to the CPU's positions.
 void TestGpuSubdivision::viewportEvaluatesEditsOnTheGpu()
 {
-    constexpr QSize kSize(128, 96);
-    const SubdivisionCage cage = tShapeCage();
-    SubdivisionSurface surface(cage, {2, SubdivisionMode::Limit});
-    auto scene = std::make_shared<const Scene>(sceneOf(surface.mesh()));
-    auto stencils = std::make_shared<const SubdivisionStencils>(subdivisionStencils(surface));
-    std::vector<glm::dvec3> edited = cage.positions;
-    edited[7] += glm::dvec3(0.0, 0.0, 2.5);
-    const std::uint32_t moved[] = {7};
-    surface.update(edited, moved);
-    const Camera camera = withDepthRange(fitCamera(scene->worldBounds(), 128.0 / 96.0), scene->worldBounds());
+    constexpr QSize kSize = ViewportEdit::kSize;
+    const ViewportEdit edit;
+    const auto& [cage, scene, stencils, edited, camera, cpu] = edit;
 
     ViewportRenderer view;
     view.setScene(scene);
-    const auto agrees = [&](const QString& name) {
-        if (!view.render(camera, kSize, 0, [](const std::string&) {}))
-            return std::optional<QString>("no GPU frame");
-        const ReferenceResult expected =
-            ReferenceRenderer(*view.posedScene()).render(camera, kSize.width(), kSize.height(), TrimSettings{});
-        const test::MethodCase testCase{name,          camera,        TrimSettings{}, view.methodParameters(),
-                                        kSize.width(), kSize.height()};
-        return test::checkFrameAgainstReference(view.renderer(), testCase, expected, {});
-    };
+    const auto agrees = [&](const QString& name) { return viewportAgrees(view, camera, kSize, name, cpu); };
     m_context->makeCurrent();
     view.initialize(m_context->context());
-    view.showSubdivisionPose(stencils, edited, floatPositions(surface.positions()));
+    view.showSubdivisionPose(stencils, edited, cpu);
     std::optional<QString> failure = agrees("viewport_gpu_subdivision");
     QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
     QVERIFY(view.poseSubdividedOnGpu());
@@ -290,14 +335,54 @@ void TestGpuSubdivision::viewportEvaluatesEditsOnTheGpu()
 
     // Stencils of the same cage at another level: the GPU path fails, the CPU's positions show.
     SubdivisionSurface other(cage, {1, SubdivisionMode::Limit});
-    view.showSubdivisionPose(std::make_shared<const SubdivisionStencils>(subdivisionStencils(other)), edited,
-                             floatPositions(surface.positions()));
+    view.showSubdivisionPose(std::make_shared<const SubdivisionStencils>(subdivisionStencils(other)), edited, cpu);
     failure = agrees("viewport_gpu_subdivision_fallback");
     QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
     QVERIFY(!view.poseSubdividedOnGpu());
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, view.showSubdivisionPose(stencils, {glm::dvec3(0.0)},
-                                                                             floatPositions(surface.positions())));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, view.showSubdivisionPose(stencils, {glm::dvec3(0.0)}, cpu));
     view.release();
+}
+
+// Stencils that do not fit the shown surface, in a renderer that never evaluated on the
+// GPU: the CPU's positions show.
+void TestGpuSubdivision::viewportFallsBackToTheCpusPositions()
+{
+    constexpr QSize kSize = ViewportEdit::kSize;
+    const ViewportEdit edit;
+    const auto& [cage, scene, stencils, edited, camera, cpu] = edit;
+
+    ViewportRenderer view;
+    view.setScene(scene);
+    m_context->makeCurrent();
+    view.initialize(m_context->context());
+    SubdivisionSurface other(cage, {1, SubdivisionMode::Limit});
+    view.showSubdivisionPose(std::make_shared<const SubdivisionStencils>(subdivisionStencils(other)), edited, cpu);
+    const std::optional<QString> failure = viewportAgrees(view, camera, kSize, "viewport_fallback_alone", cpu);
+    QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
+    QVERIFY(!view.poseSubdividedOnGpu());
+    view.release();
+}
+
+// A viewport renderer released and made again in the same context evaluates on the GPU
+// again (names of the first renderer's objects are free to be reused by then).
+void TestGpuSubdivision::viewportEvaluatesAgainInTheSameContext()
+{
+    constexpr QSize kSize = ViewportEdit::kSize;
+    const ViewportEdit edit;
+    const auto& [cage, scene, stencils, edited, camera, cpu] = edit;
+
+    ViewportRenderer view;
+    view.setScene(scene);
+    m_context->makeCurrent();
+    for (int round = 0; round < 2; ++round) {
+        view.initialize(m_context->context());
+        view.showSubdivisionPose(stencils, edited, cpu);
+        const std::optional<QString> failure =
+            viewportAgrees(view, camera, kSize, QString("viewport_same_context_%1").arg(round), cpu);
+        QVERIFY2(!failure, failure ? qPrintable(QString("round %1: %2").arg(round).arg(*failure)) : "");
+        QVERIFY(view.poseSubdividedOnGpu());
+        view.release();
+    }
 }
 
 void TestGpuSubdivision::refusesMismatches()

@@ -22,6 +22,7 @@ private slots:
     void everyShaderFileIsUsed();
     void glslangValidatorAcceptsAssembledSources();
     void missingDefineReportsNumberedSource();
+    void noDeletedProgramStaysCurrent();
 
 private:
     std::unique_ptr<OffscreenGlContext> m_context;
@@ -134,6 +135,36 @@ void TestShaderLibrary::missingDefineReportsNumberedSource()
         QVERIFY2(message.contains(">>"), qPrintable(message));
         QVERIFY2(message.contains("[kplus_resolve.frag:"), qPrintable(message));
     }
+}
+
+// A library that goes while one of its programs is current leaves none current: code that
+// saves and restores the current program (OpenSubdiv's evaluator) would otherwise restore
+// a deleted name (GL_INVALID_VALUE; with a driver that reuses names, a stranger's program).
+// Another library's current program is left alone.
+void TestShaderLibrary::noDeletedProgramStaysCurrent()
+{
+    GlFunctions& gl = currentGlFunctions();
+    const auto currentProgram = [&gl] {
+        GLint current = -1;
+        gl.glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+        return current;
+    };
+    ShaderLibrary kept(gl);
+    const GLuint keptProgram = kept.program(QStringLiteral("vertex_normals"));
+    {
+        ShaderLibrary going(gl);
+        gl.glUseProgram(going.program(QStringLiteral("vertex_normals")));
+        QVERIFY(currentProgram() != 0);
+    }
+    QCOMPARE(currentProgram(), 0);
+    {
+        ShaderLibrary going(gl);
+        (void)going.program(QStringLiteral("vertex_normals"));
+        gl.glUseProgram(keptProgram);
+    }
+    QCOMPARE(currentProgram(), GLint(keptProgram));
+    gl.glUseProgram(0);
+    QCOMPARE(gl.glGetError(), GLenum(GL_NO_ERROR));
 }
 
 QTEST_MAIN(TestShaderLibrary)

@@ -1,0 +1,16 @@
+# A probe for `scripts/gpu-check --probe scripts/gpu-probes/subdivision-fallback.sh`:
+# render.gpu_subdivision failed on an NVIDIA H200 on 2026-11-27 (0 fragments stored in a
+# viewport frame after earlier renderers of the same context had gone, positions right).
+# With the driver's debug messages (TRIMLAB_GL_DEBUG, render/gl/gl_debug_log.h): the whole
+# binary three times, the shader library's current-program check, and the
+# render.buffer_methods rows that fail now and then with a fresh renderer.
+export TRIMLAB_GL_DEBUG=1
+probe tst_render_gpu_subdivision
+probe tst_render_gpu_subdivision
+probe tst_render_gpu_subdivision
+probe tst_render_shader_library noDeletedProgramStaysCurrent
+probe tst_render_buffer_methods countedMethodsMatchTheReferenceWithoutSilhouettes \
+  listsLongerThanTheRegisterArrayStayExact listsBeyondTheLoopBudgetAreUnresolved
+unset TRIMLAB_GL_DEBUG
+probe tst_render_gpu_subdivision
+keep '*viewport*'
