@@ -7,7 +7,11 @@
 //   positions of the whole object, CPU normals, upload), and
 // - on the GPU: GpuSubdivision::evaluate (the control points uploaded, OpenSubdiv's stencil
 //   kernel over every output vertex, the normal pass),
-// each followed by glFinish, so both include the GPU's work. Not a test: times only.
+// each followed by glFinish, so both include the GPU's work. Then the CPU path alone, as a
+// viewport without the GPU evaluator runs it (no GPU write to the positions between two
+// uploads), with the CPU normals timed apart: on an NVIDIA H200 an upload that follows a GPU
+// evaluation of the same buffer took 154 ms for 131,072 vertices, which a drag without the
+// GPU path should not pay. Not a test: times only.
 //
 //   xvfb-run -a ./build/tests/render/bench_gpu_subdivision [LEVEL [EDITS]]   (default 5 21)
 #include "render/frame/gpu_scene.h"
@@ -16,6 +20,7 @@
 #include "render/gl/offscreen_gl_context.h"
 #include "render/trim_renderer.h"
 
+#include "core/mesh/triangle_mesh.h"
 #include "core/surface/subdivision_cages.h"
 #include "core/surface/subdivision_surface.h"
 
@@ -81,6 +86,36 @@ EditTimes timeEdits(render::TrimRenderer& renderer, SubdivisionSurface& surface,
     return times;
 }
 
+struct CpuPathTimes {
+    std::vector<double> normals; // vertexNormals of the new positions (part of the upload)
+    std::vector<double> upload;  // GpuScene::updatePositions + glFinish
+};
+
+CpuPathTimes timeCpuPathAlone(render::TrimRenderer& renderer, SubdivisionSurface& surface, const SubdivisionCage& cage,
+                              int edits)
+{
+    render::GpuScene& scene = renderer.gpuScene();
+    std::vector<glm::dvec3> points = cage.positions;
+    CpuPathTimes times;
+    for (int e = 0; e <= edits; ++e) {
+        const std::uint32_t moved = std::uint32_t(e) % std::uint32_t(points.size());
+        points[moved] +=
+            (e / int(points.size())) % 2 == 0 ? glm::dvec3(0.05, 0.08, -0.03) : glm::dvec3(-0.05, -0.08, 0.03);
+        surface.update(points, std::span(&moved, 1));
+        auto start = std::chrono::steady_clock::now();
+        const std::vector<glm::vec3> normals = vertexNormals(surface.mesh());
+        const double normalTime = millisecondsSince(start);
+        start = std::chrono::steady_clock::now();
+        scene.updatePositions(0, surface.mesh().positions);
+        renderer.gl().glFinish();
+        if (e == 0 || normals.empty())
+            continue;
+        times.upload.push_back(millisecondsSince(start));
+        times.normals.push_back(normalTime);
+    }
+    return times;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -108,5 +143,10 @@ int main(int argc, char** argv)
     const double gpu = median(times.gpu);
     std::printf("ms per edit, median of %d: CPU stencils %.3f + upload %.3f = %.3f | GPU %.3f | CPU/GPU %.2f\n", edits,
                 median(times.cpuStencils), median(times.cpuUpload), cpu, gpu, gpu > 0.0 ? cpu / gpu : 0.0);
+    const CpuPathTimes alone = timeCpuPathAlone(renderer, surface, cage, edits);
+    std::printf("CPU path alone, median of %d: upload %.3f ms (of which CPU normals %.3f) | upload after a GPU "
+                "evaluation / alone %.2f\n",
+                edits, median(alone.upload), median(alone.normals),
+                median(alone.upload) > 0.0 ? median(times.cpuUpload) / median(alone.upload) : 0.0);
     return 0;
 }
