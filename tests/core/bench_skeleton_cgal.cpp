@@ -13,18 +13,25 @@
 #include "core/mesh/mesh_io.h"
 #include "core/skeleton/skeleton_evaluation.h"
 #include "core/skeleton/skeleton_extraction.h"
+#include "core/skeleton/skeleton_simplification.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/extract_mean_curvature_flow_skeleton.h>
+
+#include <glm/geometric.hpp>
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QElapsedTimer>
 
+#include <algorithm>
+#include <array>
+#include <cstddef>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -68,10 +75,76 @@ SkeletonGraph fromCgal(const CgalSkeleton& skeleton)
 
 void printRow(const char* name, double seconds, const SkeletonEvaluation& e)
 {
-    std::printf("  %-10s %8.2f s %6d %6d %7.2f%% %7.2f%% %7.2f%% %4d %6.3f %6.3f %7.4f %7.4f %3d %3d/%d\n", name, seconds,
-                e.nodeCount, e.edgeCount, 100.0 * e.nodesInside, 100.0 * e.samplesInside, 100.0 * e.lengthOutside,
-                e.edgesLeaving, e.meanAsymmetry, e.meanWallAsymmetry, e.maxCoverage, e.meanCoverage, e.components,
-                e.cycles, e.meshGenus);
+    std::printf("  %-10s %8.2f s %6d %6d %7.2f%% %7.2f%% %7.2f%% %4d %6.3f %6.3f %7.4f %7.4f %3d %3d/%d\n", name,
+                seconds, e.nodeCount, e.edgeCount, 100.0 * e.nodesInside, 100.0 * e.samplesInside,
+                100.0 * e.lengthOutside, e.edgesLeaving, e.meanAsymmetry, e.meanWallAsymmetry, e.maxCoverage,
+                e.meanCoverage, e.components, e.cycles, e.meshGenus);
+}
+
+double distanceToSegment(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b)
+{
+    const glm::dvec3 ab = b - a;
+    const double length2 = glm::dot(ab, ab);
+    const double t = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + t * ab));
+}
+
+std::vector<int> nodeDegrees(std::size_t nodeCount, const std::vector<std::array<int, 2>>& edges)
+{
+    std::vector<int> degree(nodeCount, 0);
+    for (const auto& e : edges) {
+        ++degree[std::size_t(e[0])];
+        ++degree[std::size_t(e[1])];
+    }
+    return degree;
+}
+
+std::ptrdiff_t leafCount(std::size_t nodeCount, const std::vector<std::array<int, 2>>& edges)
+{
+    const std::vector<int> degree = nodeDegrees(nodeCount, edges);
+    return std::count(degree.begin(), degree.end(), 1);
+}
+
+// Where our curve skeleton covers the mesh worst: the vertex farthest from every edge (its
+// place in the bounding box), the node that absorbed it and that node's degree (1: a leaf
+// stops short of its tip; more: a part no branch reaches, like a fin or a lost leg).
+void printWorstCovered(const TriangleMesh& mesh, const CurveSkeleton& curve)
+{
+    double worst = -1.0;
+    std::size_t worstVertex = 0;
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const auto& e : curve.edges)
+            nearest = std::min(nearest, distanceToSegment(glm::dvec3(mesh.positions[v]), curve.nodes[std::size_t(e[0])],
+                                                          curve.nodes[std::size_t(e[1])]));
+        if (nearest > worst) {
+            worst = nearest;
+            worstVertex = v;
+        }
+    }
+    const Bounds bounds = computeBounds(mesh);
+    const glm::dvec3 at = (glm::dvec3(mesh.positions[worstVertex]) - glm::dvec3(bounds.min)) /
+                          glm::max(glm::dvec3(bounds.max - bounds.min), glm::dvec3(1e-12));
+    const std::vector<int> degree = nodeDegrees(curve.nodes.size(), curve.edges);
+    const int node = worstVertex < curve.vertexNode.size() ? curve.vertexNode[worstVertex] : -1;
+    std::printf("  ours worst covered: vertex %zu at %.4f x diagonal, at (%.2f, %.2f, %.2f) of the box, absorbed by "
+                "node %d of degree %d\n",
+                worstVertex, worst / glm::length(bounds.max - bounds.min), at.x, at.y, at.z, node,
+                node >= 0 ? degree[std::size_t(node)] : -1);
+}
+
+// Leaves of our curve, of the simplification's output before refinement (a leaf missing
+// there was lost by the contraction or the simplification) and of CGAL's skeleton.
+void printLeaves(const TriangleMesh& mesh, const SkeletonOptions& options, const SkeletonExtraction& ours,
+                 const SkeletonGraph& cgal)
+{
+    const Bounds bounds = computeBounds(mesh);
+    const CurveSkeleton simplified = simplifyContractedMesh(
+        ours.contracted, mesh.triangles,
+        options.simplification.preCollapseFraction * glm::length(bounds.max - bounds.min), options.simplification);
+    std::printf("  leaves: ours %td (straight after the simplification %td), CGAL %td\n",
+                leafCount(ours.curve.nodes.size(), ours.curve.edges),
+                leafCount(simplified.nodes.size(), simplified.edges), leafCount(cgal.nodes.size(), cgal.edges));
 }
 
 void compare(const TriangleMesh& mesh, const SkeletonOptions& options)
@@ -91,12 +164,15 @@ void compare(const TriangleMesh& mesh, const SkeletonOptions& options)
 
     const SkeletonEvaluation curve = evaluator.evaluate(skeletonGraph(ours.curve));
     const SkeletonEvaluation rig = evaluator.evaluate(skeletonGraph(ours.rig));
-    const SkeletonEvaluation cgal = evaluator.evaluate(fromCgal(cgalSkeleton));
+    const SkeletonGraph cgalGraph = fromCgal(cgalSkeleton);
+    const SkeletonEvaluation cgal = evaluator.evaluate(cgalGraph);
     std::printf("  %-10s %10s %6s %6s %8s %8s %8s %4s %6s %6s %7s %7s %3s %s\n", "skeleton", "time", "nodes", "edges",
                 "nodes in", "samples", "len out", "leav", "chord", "wall", "maxcov", "meancov", "cmp", "cyc/genus");
     printRow("ours-curve", oursSeconds, curve);
     printRow("ours-rig", oursSeconds, rig);
     printRow("cgal-mcf", cgalSeconds, cgal);
+    printWorstCovered(mesh, ours.curve);
+    printLeaves(mesh, options, ours, cgalGraph);
     std::printf("  time ours/CGAL %.2f; contraction %d iterations; %s\n", oursSeconds / cgalSeconds,
                 ours.contractionIterations, ours.solver.c_str());
     const bool inside = curve.nodesInside >= 0.99 && curve.samplesInside >= 0.99;
@@ -122,11 +198,15 @@ int main(int argc, char** argv)
     parser.addOption({"target", "Joints after selection.", "N", "30"});
     parser.addOption({"min-area-ratio", "Contraction stops below this area ratio.", "R", "1e-3"});
     parser.addOption({"max-iterations", "Contraction solves at most.", "N", "20"});
-    parser.addOption({"input-collapse", "Decimate the input first: collapse edges below this fraction of the "
-                      "diagonal.", "F", "0.002"});
+    parser.addOption({"input-collapse",
+                      "Decimate the input first: collapse edges below this fraction of the "
+                      "diagonal.",
+                      "F", "0.002"});
     parser.addOption({"growth", "s_L: W_L grows by this factor per solve.", "S", "2"});
-    parser.addOption({"collapse", "Remesh while contracting: collapse edges below this fraction of the diagonal.",
-                      "F", "0"});
+    parser.addOption({"initial-wl", "W_L0, the initial contraction weight (<= 0: 1).", "W", "0"});
+    parser.addOption({"initial-wh", "W_H0, the initial attraction weight.", "W", "1"});
+    parser.addOption(
+        {"collapse", "Remesh while contracting: collapse edges below this fraction of the diagonal.", "F", "0"});
     parser.addPositionalArgument("meshes", "Closed mesh files.", "MESH...");
     parser.process(app);
     if (parser.positionalArguments().isEmpty())
@@ -136,6 +216,8 @@ int main(int argc, char** argv)
     options.contraction.minAreaRatio = parser.value("min-area-ratio").toDouble();
     options.contraction.maxIterations = parser.value("max-iterations").toInt();
     options.contraction.contractionGrowth = parser.value("growth").toDouble();
+    options.contraction.initialContractionWeight = parser.value("initial-wl").toDouble();
+    options.contraction.initialAttractionWeight = parser.value("initial-wh").toDouble();
     options.contraction.inputCollapseFraction = parser.value("input-collapse").toDouble();
     options.contraction.collapseFraction = parser.value("collapse").toDouble();
     std::printf("bench_skeleton_cgal, %s, %u hardware threads, CGAL %s\n",
@@ -147,7 +229,8 @@ int main(int argc, char** argv)
             TriangleMesh mesh = loadMesh(path.toStdString());
             if (const int levels = parser.value("subdivide").toInt(); levels > 0)
                 mesh = loopSubdivide(mesh, levels);
-            std::printf("%s: %zu vertices, %zu triangles\n", qPrintable(path), mesh.vertexCount(), mesh.triangleCount());
+            std::printf("%s: %zu vertices, %zu triangles\n", qPrintable(path), mesh.vertexCount(),
+                        mesh.triangleCount());
             std::fflush(stdout);
             compare(mesh, options);
         } catch (const std::exception& e) {
