@@ -40,6 +40,8 @@ void checkOptions(const ContractionOptions& o)
         throw std::invalid_argument("collapseFraction and inputCollapseFraction must be finite and below 1");
     if (o.maxIterations < 1)
         throw std::invalid_argument("maxIterations must be at least 1");
+    if (!std::isfinite(o.medialWeight) || o.medialWeight < 0.0)
+        throw std::invalid_argument("medialWeight must be finite and >= 0");
 }
 
 double medianEdgeLength(const std::vector<glm::dvec3>& positions, const std::vector<glm::uvec3>& triangles)
@@ -82,6 +84,11 @@ struct ContractionSolver::State {
     double contractionWeight = 0.0;
     std::vector<double> contractionWeights; // W_L as the diagonal matrix of eq. (2)
     std::vector<double> attractionWeights;  // W_H
+    // Medial attraction (ContractionOptions::medialWeight): per input vertex its medial
+    // point or none; per current vertex the mean of its group's, and whether it has one.
+    std::vector<std::optional<glm::dvec3>> inputMedial;
+    std::vector<glm::dvec3> medialTargets;
+    std::vector<char> hasMedial;
     std::vector<double> initialRingAreas;   // A_i⁰
     double initialArea = 0.0;
     double area = 0.0;
@@ -114,6 +121,28 @@ struct ContractionSolver::State {
         laplacian = std::make_unique<CotangentLaplacian>(positions.size(), triangles);
         normal = std::make_unique<NormalEquations>(laplacian->matrix());
         analyzed = false;
+    }
+
+    // The medial target of each current vertex: the mean of the medial points of the input
+    // vertices it holds (after remeshing a vertex holds several).
+    void refreshMedial()
+    {
+        if (inputMedial.empty())
+            return;
+        medialTargets.assign(positions.size(), glm::dvec3(0.0));
+        std::vector<int> count(positions.size(), 0);
+        for (std::size_t v = 0; v < groupOf.size(); ++v)
+            if (inputMedial[v]) {
+                const auto g = static_cast<std::size_t>(groupOf[v]);
+                medialTargets[g] += *inputMedial[v];
+                ++count[g];
+            }
+        hasMedial.assign(positions.size(), 0);
+        for (std::size_t g = 0; g < positions.size(); ++g)
+            if (count[g] > 0) {
+                medialTargets[g] /= double(count[g]);
+                hasMedial[g] = 1;
+            }
     }
 
     void expandToInput()
@@ -232,8 +261,23 @@ struct ContractionSolver::State {
     // Solves eq. (2) for the next positions and ‖L·V'‖ per vertex.
     std::vector<glm::dvec3> contract(std::vector<double>& magnitude)
     {
-        normal->update(laplacian->matrix(), contractionWeights, attractionWeights);
-        const Eigen::MatrixX3d x = solve(NormalEquations::rightHandSide(positions, attractionWeights));
+        Eigen::MatrixX3d x;
+        if (medialTargets.empty()) {
+            normal->update(laplacian->matrix(), contractionWeights, attractionWeights);
+            x = solve(NormalEquations::rightHandSide(positions, attractionWeights));
+        } else {
+            // W_H·(V' − V) and μ·W_H·(V' − M) folded into one row (ContractionOptions::medialWeight).
+            const double mu2 = options.medialWeight * options.medialWeight;
+            std::vector<double> weights(attractionWeights);
+            std::vector<glm::dvec3> targets(positions);
+            for (std::size_t i = 0; i < positions.size(); ++i)
+                if (hasMedial[i]) {
+                    weights[i] *= std::sqrt(1.0 + mu2);
+                    targets[i] = (positions[i] + mu2 * medialTargets[i]) / (1.0 + mu2);
+                }
+            normal->update(laplacian->matrix(), contractionWeights, weights);
+            x = solve(NormalEquations::rightHandSide(targets, weights));
+        }
         const Eigen::MatrixX3d lx = laplacian->matrix() * x;
         std::vector<glm::dvec3> next(positions.size());
         magnitude.resize(positions.size());
@@ -246,13 +290,19 @@ struct ContractionSolver::State {
     }
 };
 
-ContractionSolver::ContractionSolver(const TriangleMesh& mesh, const ContractionOptions& options)
+ContractionSolver::ContractionSolver(const TriangleMesh& mesh, const ContractionOptions& options,
+                                     std::span<const std::optional<glm::dvec3>> medial)
 {
     if (mesh.triangles.empty())
         throw std::invalid_argument("contraction needs a mesh with triangles");
     checkOptions(options);
+    if (!medial.empty() && medial.size() != mesh.vertexCount())
+        throw std::invalid_argument("contraction: " + std::to_string(medial.size()) + " medial points for " +
+                                    std::to_string(mesh.vertexCount()) + " vertices");
     m = std::make_unique<State>(mesh, options);
     State& s = *m;
+    if (options.medialWeight > 0.0 && !medial.empty())
+        s.inputMedial.assign(medial.begin(), medial.end());
     // Angles clamped to [θmin, 180° − θmin], i.e. |cot| ≤ cot θmin (cot 1° ≈ 57.3): the
     // cotangents stay finite as triangles collapse (paper III.A, detail 1).
     s.maxCotangent = 1.0 / std::tan(options.minAngleDegrees * glm::pi<double>() / 180.0);
@@ -271,6 +321,7 @@ ContractionSolver::ContractionSolver(const TriangleMesh& mesh, const Contraction
         std::fill(s.attractionWeights.begin(), s.attractionWeights.end(), options.initialAttractionWeight);
         s.expandToInput();
     }
+    s.refreshMedial();
     // See ContractionOptions::initialContractionWeight for why 1 and not the paper's 10⁻³·√Ā.
     s.contractionWeight = options.initialContractionWeight > 0.0 ? options.initialContractionWeight : 1.0;
 
@@ -310,7 +361,8 @@ bool ContractionSolver::iterate()
     s.area = nextArea;
     ++s.iterations;
     s.updateWeights(areas);
-    s.remesh(s.collapseLength);
+    if (s.remesh(s.collapseLength))
+        s.refreshMedial();
     s.area = s.ringAreas(s.positions, areas);
     s.laplacian->update(s.positions, s.maxCotangent);
     s.expandToInput();

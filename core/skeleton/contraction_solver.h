@@ -30,6 +30,8 @@
 #include <glm/vec3.hpp>
 
 #include <memory>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -43,8 +45,11 @@ public:
     /// positions, no repeated index in a face). Solves nothing yet.
     /// Throws std::invalid_argument for an empty mesh or options out of range
     /// (non-positive W_H⁰, s_L < 1, non-positive caps, minAngleDegrees outside (0, 60),
-    /// maxIterations < 1).
-    ContractionSolver(const TriangleMesh& mesh, const ContractionOptions& options);
+    /// maxIterations < 1, negative medialWeight, medial points not one per vertex).
+    /// `medial`: per mesh vertex its medial point or none (options.medialWeight; empty:
+    /// no medial attraction).
+    ContractionSolver(const TriangleMesh& mesh, const ContractionOptions& options,
+                      std::span<const std::optional<glm::dvec3>> medial = {});
     ~ContractionSolver();
     ContractionSolver(const ContractionSolver&) = delete;
     ContractionSolver& operator=(const ContractionSolver&) = delete;

@@ -205,6 +205,8 @@ int main(int argc, char** argv)
     parser.addOption({"growth", "s_L: W_L grows by this factor per solve.", "S", "2"});
     parser.addOption({"initial-wl", "W_L0, the initial contraction weight (<= 0: 1).", "W", "0"});
     parser.addOption({"initial-wh", "W_H0, the initial attraction weight.", "W", "1"});
+    parser.addOption({"medial", "mu, the medial attraction (0: off; default the library's).", "M",
+                      QString::number(ContractionOptions{}.medialWeight)});
     parser.addOption(
         {"collapse", "Remesh while contracting: collapse edges below this fraction of the diagonal.", "F", "0"});
     parser.addPositionalArgument("meshes", "Closed mesh files.", "MESH...");
@@ -218,6 +220,7 @@ int main(int argc, char** argv)
     options.contraction.contractionGrowth = parser.value("growth").toDouble();
     options.contraction.initialContractionWeight = parser.value("initial-wl").toDouble();
     options.contraction.initialAttractionWeight = parser.value("initial-wh").toDouble();
+    options.contraction.medialWeight = parser.value("medial").toDouble();
     options.contraction.inputCollapseFraction = parser.value("input-collapse").toDouble();
     options.contraction.collapseFraction = parser.value("collapse").toDouble();
     std::printf("bench_skeleton_cgal, %s, %u hardware threads, CGAL %s\n",

@@ -6,6 +6,9 @@
 #include "core/skeleton/contraction_remeshing.h"
 #include "core/skeleton/contraction_solver.h"
 #include "core/skeleton/cotangent_laplacian.h"
+#include "core/skeleton/medial_targets.h"
+#include "core/skeleton/point_in_mesh.h"
+#include "core/skeleton/skeleton_refinement.h"
 #include "core/skeleton/skeleton_simplification.h"
 #include "core/skeleton/sparse_cholesky.h"
 
@@ -123,6 +126,64 @@ private slots:
         QCOMPARE(solver.laplacianMagnitude().size(), mesh.vertexCount());
         for (double m : solver.laplacianMagnitude())
             QVERIFY(std::isfinite(m) && m >= 0.0);
+    }
+
+    // The medial points (medial_targets.h): on the tube each vertex keeps its chord
+    // midpoint, which lies on the axis; at the caps' apexes the chord runs along the axis
+    // (half a capsule long) and is dropped, so the medial attraction cannot pull the tips
+    // back along the limb. With the attraction on, the contraction still reaches the axis
+    // and the contracted axis is no shorter than without it.
+    void medialTargetsSkipTheCapsOfLimbs()
+    {
+        const TriangleMesh mesh = capsule();
+        const PointInMesh solid(mesh);
+        const std::vector<std::optional<glm::dvec3>> midpoints = inwardChordMidpoints(mesh, solid);
+        const std::vector<std::optional<glm::dvec3>> targets = medialTargets(mesh, midpoints);
+        QCOMPARE(targets.size(), mesh.vertexCount());
+        int side = 0, sideKept = 0, apex = 0, apexKept = 0;
+        for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+            const double y = std::abs(double(mesh.positions[v].y));
+            if (y < kHalfLength - 0.1) {
+                ++side;
+                if (targets[v]) {
+                    ++sideKept;
+                    const double off = axisDistance(*targets[v]);
+                    QVERIFY2(off < 0.05 * kRadius, qPrintable(QString("vertex %1: target %2 off the axis").arg(v).arg(off)));
+                }
+            } else if (y > kHalfLength + 0.9 * kRadius) {
+                ++apex;
+                apexKept += targets[v] ? 1 : 0;
+            }
+        }
+        qInfo("tube: %d of %d vertices keep a medial point; cap apexes: %d of %d", sideKept, side, apexKept, apex);
+        QVERIFY(side > 100 && apex > 4);
+        QCOMPARE(sideKept, side);
+        QCOMPARE(apexKept, 0);
+
+        ContractionOptions options;
+        options.medialWeight = 0.0;
+        ContractionSolver plain(mesh, options);
+        plain.run();
+        options.medialWeight = 0.5;
+        ContractionSolver medial(mesh, options, targets);
+        medial.run();
+        const auto extent = [](const std::vector<glm::dvec3>& p) {
+            double reach = 0.0, axis = 0.0;
+            for (const glm::dvec3& q : p) {
+                reach = std::max(reach, std::abs(q.y));
+                axis += axisDistance(q);
+            }
+            return std::pair(reach, axis / double(p.size()));
+        };
+        const auto [plainReach, plainAxis] = extent(plain.positions());
+        const auto [medialReach, medialAxis] = extent(medial.positions());
+        qInfo("contracted half-length: %.3f without the medial attraction, %.3f with it (mean distance to the axis "
+              "%.3g·r, %.3g·r)",
+              plainReach, medialReach, plainAxis / kRadius, medialAxis / kRadius);
+        QVERIFY(medialAxis < 0.01 * kRadius);
+        QVERIFY(medialReach >= plainReach - 1e-6);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 ContractionSolver(mesh, options, std::span(targets).first(targets.size() - 1)));
     }
 
     void orderingsAndBackendsAgree()
