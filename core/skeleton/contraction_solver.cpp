@@ -85,10 +85,9 @@ struct ContractionSolver::State {
     std::vector<double> contractionWeights; // W_L as the diagonal matrix of eq. (2)
     std::vector<double> attractionWeights;  // W_H
     // Medial attraction (ContractionOptions::medialWeight): per input vertex its medial
-    // point or none; per current vertex the mean of its group's, and whether it has one.
+    // point or none; per current vertex the mean of its group's, or none.
     std::vector<std::optional<glm::dvec3>> inputMedial;
-    std::vector<glm::dvec3> medialTargets;
-    std::vector<char> hasMedial;
+    std::vector<std::optional<glm::dvec3>> medialTargets;
     std::vector<double> initialRingAreas;   // A_i⁰
     double initialArea = 0.0;
     double area = 0.0;
@@ -129,20 +128,18 @@ struct ContractionSolver::State {
     {
         if (inputMedial.empty())
             return;
-        medialTargets.assign(positions.size(), glm::dvec3(0.0));
+        std::vector<glm::dvec3> sum(positions.size(), glm::dvec3(0.0));
         std::vector<int> count(positions.size(), 0);
         for (std::size_t v = 0; v < groupOf.size(); ++v)
             if (inputMedial[v]) {
                 const auto g = static_cast<std::size_t>(groupOf[v]);
-                medialTargets[g] += *inputMedial[v];
+                sum[g] += *inputMedial[v];
                 ++count[g];
             }
-        hasMedial.assign(positions.size(), 0);
+        medialTargets.assign(positions.size(), std::nullopt);
         for (std::size_t g = 0; g < positions.size(); ++g)
-            if (count[g] > 0) {
-                medialTargets[g] /= double(count[g]);
-                hasMedial[g] = 1;
-            }
+            if (count[g] > 0)
+                medialTargets[g] = sum[g] / double(count[g]);
     }
 
     void expandToInput()
@@ -271,9 +268,9 @@ struct ContractionSolver::State {
             std::vector<double> weights(attractionWeights);
             std::vector<glm::dvec3> targets(positions);
             for (std::size_t i = 0; i < positions.size(); ++i)
-                if (hasMedial[i]) {
+                if (medialTargets[i]) {
                     weights[i] *= std::sqrt(1.0 + mu2);
-                    targets[i] = (positions[i] + mu2 * medialTargets[i]) / (1.0 + mu2);
+                    targets[i] = (positions[i] + mu2 * *medialTargets[i]) / (1.0 + mu2);
                 }
             normal->update(laplacian->matrix(), contractionWeights, weights);
             x = solve(NormalEquations::rightHandSide(targets, weights));

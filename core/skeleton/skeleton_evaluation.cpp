@@ -283,9 +283,12 @@ SkeletonEvaluation SkeletonEvaluator::evaluate(const SkeletonGraph& skeleton) co
             }
         });
         double sum = 0.0;
-        for (double c : coverage) {
-            result.maxCoverage = std::max(result.maxCoverage, c / unit);
-            sum += c / unit;
+        for (std::size_t v = 0; v < vertexCount; ++v) {
+            if (coverage[v] / unit > result.maxCoverage) {
+                result.maxCoverage = coverage[v] / unit;
+                result.worstCoveredVertex = v;
+            }
+            sum += coverage[v] / unit;
         }
         result.meanCoverage = vertexCount > 0 ? sum / static_cast<double>(vertexCount) : 0.0;
     }

@@ -26,6 +26,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,7 @@ struct SkeletonEvaluation {
     double meanWallAsymmetry = 0.0; ///< nearest-wall pair, mean over the same points
     double maxCoverage = 0.0;     ///< max over vertices of the distance to the nearest edge, × diagonal
     double meanCoverage = 0.0;    ///< its mean
+    std::size_t worstCoveredVertex = 0; ///< a vertex at maxCoverage
     int components = 0;           ///< of the graph (isolated nodes count)
     int cycles = 0;               ///< edges − nodes + components
     int meshComponents = 0;

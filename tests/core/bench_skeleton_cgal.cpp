@@ -31,7 +31,6 @@
 #include <cstddef>
 #include <cstdio>
 #include <exception>
-#include <limits>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -81,14 +80,6 @@ void printRow(const char* name, double seconds, const SkeletonEvaluation& e)
                 e.meanCoverage, e.components, e.cycles, e.meshGenus);
 }
 
-double distanceToSegment(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b)
-{
-    const glm::dvec3 ab = b - a;
-    const double length2 = glm::dot(ab, ab);
-    const double t = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + t * ab));
-}
-
 std::vector<int> nodeDegrees(std::size_t nodeCount, const std::vector<std::array<int, 2>>& edges)
 {
     std::vector<int> degree(nodeCount, 0);
@@ -105,23 +96,12 @@ std::ptrdiff_t leafCount(std::size_t nodeCount, const std::vector<std::array<int
     return std::count(degree.begin(), degree.end(), 1);
 }
 
-// Where our curve skeleton covers the mesh worst: the vertex farthest from every edge (its
-// place in the bounding box), the node that absorbed it and that node's degree (1: a leaf
-// stops short of its tip; more: a part no branch reaches, like a fin or a lost leg).
-void printWorstCovered(const TriangleMesh& mesh, const CurveSkeleton& curve)
+// Where our curve skeleton covers the mesh worst (the evaluator's worst vertex): its place
+// in the bounding box, the node that absorbed it and that node's degree (1: a leaf stops
+// short of its tip; more: a part no branch reaches, like a fin or a lost leg).
+void printWorstCovered(const TriangleMesh& mesh, const CurveSkeleton& curve, const SkeletonEvaluation& evaluation)
 {
-    double worst = -1.0;
-    std::size_t worstVertex = 0;
-    for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
-        double nearest = std::numeric_limits<double>::infinity();
-        for (const auto& e : curve.edges)
-            nearest = std::min(nearest, distanceToSegment(glm::dvec3(mesh.positions[v]), curve.nodes[std::size_t(e[0])],
-                                                          curve.nodes[std::size_t(e[1])]));
-        if (nearest > worst) {
-            worst = nearest;
-            worstVertex = v;
-        }
-    }
+    const std::size_t worstVertex = evaluation.worstCoveredVertex;
     const Bounds bounds = computeBounds(mesh);
     const glm::dvec3 at = (glm::dvec3(mesh.positions[worstVertex]) - glm::dvec3(bounds.min)) /
                           glm::max(glm::dvec3(bounds.max - bounds.min), glm::dvec3(1e-12));
@@ -129,7 +109,7 @@ void printWorstCovered(const TriangleMesh& mesh, const CurveSkeleton& curve)
     const int node = worstVertex < curve.vertexNode.size() ? curve.vertexNode[worstVertex] : -1;
     std::printf("  ours worst covered: vertex %zu at %.4f x diagonal, at (%.2f, %.2f, %.2f) of the box, absorbed by "
                 "node %d of degree %d\n",
-                worstVertex, worst / glm::length(bounds.max - bounds.min), at.x, at.y, at.z, node,
+                worstVertex, evaluation.maxCoverage, at.x, at.y, at.z, node,
                 node >= 0 ? degree[std::size_t(node)] : -1);
 }
 
@@ -171,7 +151,7 @@ void compare(const TriangleMesh& mesh, const SkeletonOptions& options)
     printRow("ours-curve", oursSeconds, curve);
     printRow("ours-rig", oursSeconds, rig);
     printRow("cgal-mcf", cgalSeconds, cgal);
-    printWorstCovered(mesh, ours.curve);
+    printWorstCovered(mesh, ours.curve, curve);
     printLeaves(mesh, options, ours, cgalGraph);
     std::printf("  time ours/CGAL %.2f; contraction %d iterations; %s\n", oursSeconds / cgalSeconds,
                 ours.contractionIterations, ours.solver.c_str());

@@ -53,7 +53,16 @@ struct EditTimes {
     std::vector<double> gpu;
 };
 
-// Edit e moves control point e mod #C out and, on the next round, back: CPU and GPU take
+// Edit e: control point e mod #C moves out and, on the next round, back. Returns it.
+std::uint32_t applyEdit(std::vector<glm::dvec3>& points, int e)
+{
+    const std::uint32_t moved = std::uint32_t(e) % std::uint32_t(points.size());
+    points[moved] +=
+        (e / int(points.size())) % 2 == 0 ? glm::dvec3(0.05, 0.08, -0.03) : glm::dvec3(-0.05, -0.08, 0.03);
+    return moved;
+}
+
+// Edits as applyEdit makes them: CPU and GPU take
 // turns edit by edit, so a busy machine slows both alike. The first edit (shader JIT) is
 // not counted.
 EditTimes timeEdits(render::TrimRenderer& renderer, SubdivisionSurface& surface, const SubdivisionCage& cage, int edits)
@@ -63,9 +72,7 @@ EditTimes timeEdits(render::TrimRenderer& renderer, SubdivisionSurface& surface,
     std::vector<glm::dvec3> points = cage.positions;
     EditTimes times;
     for (int e = 0; e <= edits; ++e) {
-        const std::uint32_t moved = std::uint32_t(e) % std::uint32_t(points.size());
-        points[moved] +=
-            (e / int(points.size())) % 2 == 0 ? glm::dvec3(0.05, 0.08, -0.03) : glm::dvec3(-0.05, -0.08, 0.03);
+        const std::uint32_t moved = applyEdit(points, e);
         auto start = std::chrono::steady_clock::now();
         surface.update(points, std::span(&moved, 1));
         const double stencils = millisecondsSince(start);
@@ -98,9 +105,7 @@ CpuPathTimes timeCpuPathAlone(render::TrimRenderer& renderer, SubdivisionSurface
     std::vector<glm::dvec3> points = cage.positions;
     CpuPathTimes times;
     for (int e = 0; e <= edits; ++e) {
-        const std::uint32_t moved = std::uint32_t(e) % std::uint32_t(points.size());
-        points[moved] +=
-            (e / int(points.size())) % 2 == 0 ? glm::dvec3(0.05, 0.08, -0.03) : glm::dvec3(-0.05, -0.08, 0.03);
+        const std::uint32_t moved = applyEdit(points, e);
         surface.update(points, std::span(&moved, 1));
         auto start = std::chrono::steady_clock::now();
         const std::vector<glm::vec3> normals = vertexNormals(surface.mesh());

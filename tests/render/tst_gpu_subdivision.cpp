@@ -251,6 +251,7 @@ struct ViewportEdit {
     SubdivisionCage cage = tShapeCage();
     std::shared_ptr<const Scene> scene;
     std::shared_ptr<const SubdivisionStencils> stencils;
+    std::shared_ptr<const SubdivisionStencils> otherLevel; ///< the same cage at level 1: does not fit
     std::vector<glm::dvec3> edited;
     Camera camera;
     std::vector<glm::vec3> cpu;
@@ -260,6 +261,8 @@ struct ViewportEdit {
         SubdivisionSurface surface(cage, {2, SubdivisionMode::Limit});
         scene = std::make_shared<const Scene>(sceneOf(surface.mesh()));
         stencils = std::make_shared<const SubdivisionStencils>(subdivisionStencils(surface));
+        otherLevel = std::make_shared<const SubdivisionStencils>(
+            subdivisionStencils(SubdivisionSurface(cage, {1, SubdivisionMode::Limit})));
         edited = cage.positions;
         edited[7] += glm::dvec3(0.0, 0.0, 2.5);
         const std::uint32_t moved[] = {7};
@@ -308,7 +311,7 @@ void TestGpuSubdivision::viewportEvaluatesEditsOnTheGpu()
 {
     constexpr QSize kSize = ViewportEdit::kSize;
     const ViewportEdit edit;
-    const auto& [cage, scene, stencils, edited, camera, cpu] = edit;
+    const auto& [cage, scene, stencils, otherLevel, edited, camera, cpu] = edit;
 
     ViewportRenderer view;
     view.setScene(scene);
@@ -334,8 +337,7 @@ void TestGpuSubdivision::viewportEvaluatesEditsOnTheGpu()
     view.initialize(m_context->context());
 
     // Stencils of the same cage at another level: the GPU path fails, the CPU's positions show.
-    SubdivisionSurface other(cage, {1, SubdivisionMode::Limit});
-    view.showSubdivisionPose(std::make_shared<const SubdivisionStencils>(subdivisionStencils(other)), edited, cpu);
+    view.showSubdivisionPose(otherLevel, edited, cpu);
     failure = agrees("viewport_gpu_subdivision_fallback");
     QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
     QVERIFY(!view.poseSubdividedOnGpu());
@@ -349,14 +351,13 @@ void TestGpuSubdivision::viewportFallsBackToTheCpusPositions()
 {
     constexpr QSize kSize = ViewportEdit::kSize;
     const ViewportEdit edit;
-    const auto& [cage, scene, stencils, edited, camera, cpu] = edit;
+    const auto& [cage, scene, stencils, otherLevel, edited, camera, cpu] = edit;
 
     ViewportRenderer view;
     view.setScene(scene);
     m_context->makeCurrent();
     view.initialize(m_context->context());
-    SubdivisionSurface other(cage, {1, SubdivisionMode::Limit});
-    view.showSubdivisionPose(std::make_shared<const SubdivisionStencils>(subdivisionStencils(other)), edited, cpu);
+    view.showSubdivisionPose(otherLevel, edited, cpu);
     const std::optional<QString> failure = viewportAgrees(view, camera, kSize, "viewport_fallback_alone", cpu);
     QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
     QVERIFY(!view.poseSubdividedOnGpu());
@@ -369,7 +370,7 @@ void TestGpuSubdivision::viewportEvaluatesAgainInTheSameContext()
 {
     constexpr QSize kSize = ViewportEdit::kSize;
     const ViewportEdit edit;
-    const auto& [cage, scene, stencils, edited, camera, cpu] = edit;
+    const auto& [cage, scene, stencils, otherLevel, edited, camera, cpu] = edit;
 
     ViewportRenderer view;
     view.setScene(scene);
