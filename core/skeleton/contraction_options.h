@@ -22,6 +22,12 @@ enum class SparseOrdering { Amd, Colamd, Metis };
 ///   METIS ordering, or the COLAMD permutation). Also the fallback when CHOLMOD fails.
 enum class SparseBackend { Cholmod, EigenSimplicialLdlt };
 
+/// Where the medial attraction's points come from (ContractionOptions::medialWeight).
+/// - FilteredChordMidpoints: each vertex's inward chord midpoint, dropped where the chord
+///   runs along a limb (medial_targets.h).
+/// - ShrinkingBalls: the centre of each vertex's medial ball (shrinking_balls.h).
+enum class MedialPoints { FilteredChordMidpoints, ShrinkingBalls };
+
 /// Contraction settings with the paper's defaults (III.A, details 1–3).
 struct ContractionOptions {
     /// W_L⁰, the initial contraction weight. ≤ 0 means 1. The paper gives 10⁻³·√Ā (Ā:
@@ -86,9 +92,14 @@ struct ContractionOptions {
     /// against CGAL (docs/skeleton-extraction.md): it brings lost legs and ears back (the
     /// coverage check passes on 16–19 of 21 instead of 15) but which branches survive
     /// changes from one μ or medial-point filter to the next (10–14 of 21 meshes meet every
-    /// check, 9 without it; the test star lost an arm's length at some settings, the
-    /// elephant a loop at one), so it stays off until that is made robust.
+    /// check, 8 without it; the test star lost an arm's length at some settings, the
+    /// elephant a loop at one), so it stays off. Medial balls instead of chord midpoints
+    /// (medialPoints) did not settle it: 7–11 meshes, and the elephant's or fertility's
+    /// loops lost at μ 1 and 2 — which branches survive is decided by the attraction
+    /// itself, not by where its points come from.
     double medialWeight = 0.0;
+    /// Where the medial points come from, with medialWeight > 0.
+    MedialPoints medialPoints = MedialPoints::FilteredChordMidpoints;
 };
 
 } // namespace trimlab

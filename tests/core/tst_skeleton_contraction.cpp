@@ -8,6 +8,7 @@
 #include "core/skeleton/cotangent_laplacian.h"
 #include "core/skeleton/medial_targets.h"
 #include "core/skeleton/point_in_mesh.h"
+#include "core/skeleton/shrinking_balls.h"
 #include "core/skeleton/skeleton_refinement.h"
 #include "core/skeleton/skeleton_simplification.h"
 #include "core/skeleton/sparse_cholesky.h"
@@ -18,10 +19,13 @@
 
 #include <glm/geometric.hpp>
 
+#include <dlfcn.h>
+
 #include <cmath>
 #include <map>
 #include <numeric>
 #include <stop_token>
+#include <thread>
 
 using namespace trimlab;
 using namespace trimlab::test;
@@ -186,6 +190,77 @@ private slots:
                                  ContractionSolver(mesh, options, std::span(targets).first(targets.size() - 1)));
     }
 
+    // On the capsule every vertex's medial ball is known: on the tube, radius r centred on
+    // the axis; at the poles of the caps, the cap's hemisphere, centred where the cap
+    // meets the tube. The chord from a pole runs along the whole axis to the other pole
+    // (its midpoint is the capsule's centre, half a capsule away from the cap's centre);
+    // the shrinking ball starts there and must end at the cap. With the balls as medial
+    // points the contraction still reaches the axis, and the caps' centres.
+    void shrinkingBallsSitOnTheAxisAndAtTheCapsCentres()
+    {
+        const TriangleMesh mesh = capsule();
+        const PointInMesh solid(mesh);
+        const std::vector<std::optional<glm::dvec3>> midpoints = inwardChordMidpoints(mesh, solid);
+        const std::vector<std::optional<glm::dvec3>> centres = shrinkingBallCentres(mesh, midpoints, solid);
+        QCOMPARE(centres.size(), mesh.vertexCount());
+        int side = 0, apex = 0;
+        for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+            const glm::dvec3 p(mesh.positions[v]);
+            const double y = std::abs(p.y);
+            const bool onSide = y < kHalfLength - 0.1;
+            const bool atApex = y > kHalfLength + 0.9 * kRadius;
+            if (!onSide && !atApex)
+                continue;
+            QVERIFY2(centres[v], qPrintable(QString("vertex %1 has no medial ball").arg(v)));
+            const glm::dvec3 c = *centres[v];
+            const double radius = glm::length(c - p);
+            QVERIFY2(axisDistance(c) < 0.05 * kRadius && std::abs(radius - kRadius) < 0.05 * kRadius,
+                     qPrintable(QString("vertex %1 at y %2: ball centre %3 off the axis, radius %4·r")
+                                    .arg(v)
+                                    .arg(p.y)
+                                    .arg(axisDistance(c))
+                                    .arg(radius / kRadius)));
+            if (atApex) {
+                ++apex;
+                QVERIFY2(std::abs(std::abs(c.y) - kHalfLength) < 0.1 * kRadius,
+                         qPrintable(QString("pole %1: ball centre at y %2, the cap's centre is at %3")
+                                        .arg(v)
+                                        .arg(c.y)
+                                        .arg(kHalfLength)));
+                if (axisDistance(p) < 1e-6) // the pole itself: its chord's midpoint is mid-capsule
+                    QVERIFY(std::abs(midpoints[v]->y) < 0.1 * kRadius);
+            } else {
+                ++side;
+            }
+        }
+        QVERIFY(side > 100 && apex > 4);
+
+        ContractionOptions options;
+        ContractionSolver plain(mesh, options);
+        plain.run();
+        options.medialWeight = 0.5;
+        options.medialPoints = MedialPoints::ShrinkingBalls;
+        ContractionSolver medial(mesh, options, centres);
+        medial.run();
+        double plainReach = 0.0, medialReach = 0.0, medialAxis = 0.0;
+        for (const glm::dvec3& q : plain.positions())
+            plainReach = std::max(plainReach, std::abs(q.y));
+        for (const glm::dvec3& q : medial.positions()) {
+            medialReach = std::max(medialReach, std::abs(q.y));
+            medialAxis = std::max(medialAxis, axisDistance(q));
+        }
+        qInfo("contracted half-length: %.3f without the medial attraction, %.3f with the balls' centres "
+              "(farthest from the axis %.3g·r)",
+              plainReach, medialReach, medialAxis / kRadius);
+        QVERIFY(medialAxis < 0.01 * kRadius);
+        // The capsule's medial axis ends at the caps' centres, where the poles' balls pull
+        // them: the contraction must reach that far (it stops short of the plain
+        // contraction's reach; the leaf extension takes a leaf on to its tip).
+        QVERIFY(medialReach >= kHalfLength);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 shrinkingBallCentres(mesh, std::vector(midpoints.begin() + 1, midpoints.end()), solid));
+    }
+
     void orderingsAndBackendsAgree()
     {
         // 8 iterations (W_L from 1 to 128) take the capsule from its surface to within
@@ -221,6 +296,33 @@ private slots:
 
     // The remeshing's collapses keep a closed 2-manifold of the same genus (the link
     // condition), record where every vertex went, and put the kept vertex at the midpoint.
+    // CHOLMOD's OpenMP teams are dynamic in the thread that runs a contraction, so they fit
+    // the idle cores instead of oversubscribing a small machine (sparse_cholesky.cpp; the
+    // time it saves is measured by bench_skeleton_cgal, not here). The setting is per
+    // thread, so the contraction runs on a thread of its own, as the panel runs it.
+    void cholmodRunsWithDynamicOpenMpTeams()
+    {
+        using GetDynamic = int (*)();
+        const auto getDynamic = reinterpret_cast<GetDynamic>(dlsym(RTLD_DEFAULT, "omp_get_dynamic"));
+        if (!getDynamic)
+            QSKIP("this CHOLMOD brought no OpenMP runtime: nothing to make dynamic");
+        int before = -1, after = -1;
+        std::thread worker([&] {
+            before = getDynamic();
+            ContractionOptions options;
+            options.backend = SparseBackend::Cholmod;
+            options.maxIterations = 1;
+            ContractionSolver solver(capsule(), options);
+            solver.run();
+            after = getDynamic();
+        });
+        worker.join();
+        if (before == 1)
+            QSKIP("OMP_DYNAMIC is set in the environment: teams were dynamic before the contraction");
+        QCOMPARE(before, 0);
+        QCOMPARE(after, 1);
+    }
+
     void shortEdgesCollapseKeepingTheTopology()
     {
         const TriangleMesh torus = makeTorus({0, 0, 0}, 1.0, 0.3, 48, 16);

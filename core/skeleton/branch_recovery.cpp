@@ -1,0 +1,279 @@
+#include "core/skeleton/branch_recovery.h"
+
+#include "core/skeleton/bone_heat_terms.h"
+#include "core/skeleton/shrinking_balls.h"
+#include "core/util/parallel_for.h"
+#include "core/util/union_find.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <queue>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace trimlab {
+
+namespace {
+
+constexpr std::size_t kVertexBlock = 1024;
+/// Nearest skeleton nodes tried for the branch's attachment before the branch is dropped.
+constexpr std::size_t kAttachmentTries = 8;
+
+/// Per vertex, the distance to the nearest edge of `curve` (to the nearest node where the
+/// curve has no edges).
+std::vector<double> distancesToCurve(const CurveSkeleton& curve, const TriangleMesh& mesh)
+{
+    std::vector<double> distance(mesh.vertexCount(), std::numeric_limits<double>::infinity());
+    const std::size_t blocks = (mesh.vertexCount() + kVertexBlock - 1) / kVertexBlock;
+    parallelFor(blocks, 0, [&](std::size_t block) {
+        const std::size_t end = std::min(mesh.vertexCount(), (block + 1) * kVertexBlock);
+        for (std::size_t v = block * kVertexBlock; v < end; ++v) {
+            const glm::dvec3 p(mesh.positions[v]);
+            double best = std::numeric_limits<double>::infinity();
+            for (const auto& e : curve.edges) {
+                const glm::dvec3 q =
+                    closestPointOnSegment(p, curve.nodes[std::size_t(e[0])], curve.nodes[std::size_t(e[1])]);
+                best = std::min(best, glm::length(p - q));
+            }
+            if (curve.edges.empty())
+                for (const glm::dvec3& n : curve.nodes)
+                    best = std::min(best, glm::length(p - n));
+            distance[v] = best;
+        }
+    });
+    return distance;
+}
+
+/// The mesh's vertex neighbours in compressed rows (each undirected edge both ways).
+struct Neighbours {
+    std::vector<std::size_t> start; ///< #V + 1
+    std::vector<std::size_t> index;
+};
+
+Neighbours neighboursOf(const TriangleMesh& mesh)
+{
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    pairs.reserve(mesh.triangleCount() * 6);
+    for (const glm::uvec3& t : mesh.triangles)
+        for (int i = 0; i < 3; ++i) {
+            pairs.emplace_back(t[i], t[(i + 1) % 3]);
+            pairs.emplace_back(t[(i + 1) % 3], t[i]);
+        }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    Neighbours n;
+    n.start.assign(mesh.vertexCount() + 1, 0);
+    for (const auto& [a, b] : pairs)
+        ++n.start[a + 1];
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
+        n.start[v + 1] += n.start[v];
+    n.index.reserve(pairs.size());
+    for (const auto& pair : pairs)
+        n.index.push_back(pair.second);
+    return n;
+}
+
+/// Surface path length from the patch's border with the covered surface, within the patch
+/// (Dijkstra over mesh edges); infinity where no border is reachable.
+std::map<std::size_t, double> depthsFromBorder(const std::vector<std::size_t>& patch,
+                                               const std::vector<char>& uncovered, const Neighbours& neighbours,
+                                               const TriangleMesh& mesh)
+{
+    using Entry = std::pair<double, std::size_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+    std::map<std::size_t, double> depth;
+    for (std::size_t v : patch) {
+        depth[v] = std::numeric_limits<double>::infinity();
+        for (std::size_t i = neighbours.start[v]; i < neighbours.start[v + 1]; ++i)
+            if (!uncovered[neighbours.index[i]]) {
+                depth[v] = 0.0;
+                queue.emplace(0.0, v);
+                break;
+            }
+    }
+    while (!queue.empty()) {
+        const auto [d, v] = queue.top();
+        queue.pop();
+        if (d > depth[v])
+            continue;
+        for (std::size_t i = neighbours.start[v]; i < neighbours.start[v + 1]; ++i) {
+            const std::size_t w = neighbours.index[i];
+            if (!uncovered[w])
+                continue;
+            const double next = d + glm::length(glm::dvec3(mesh.positions[v]) - glm::dvec3(mesh.positions[w]));
+            if (next < depth[w]) {
+                depth[w] = next;
+                queue.emplace(next, w);
+            }
+        }
+    }
+    return depth;
+}
+
+/// One slice of a patch: its vertices and the centre its node takes.
+struct Slice {
+    std::vector<std::size_t> vertices;
+    glm::dvec3 centreSum{0.0};
+};
+
+/// The slice's node: the mean of its ball centres if that is inside, else the ball centre
+/// nearest to that mean (ball centres are inside).
+glm::dvec3 sliceNode(const Slice& slice, const std::vector<std::optional<glm::dvec3>>& ballCentres,
+                     const PointInMesh& solid)
+{
+    const glm::dvec3 mean = slice.centreSum / double(slice.vertices.size());
+    if (solid.contains(mean))
+        return mean;
+    glm::dvec3 nearest = *ballCentres[slice.vertices.front()];
+    for (std::size_t v : slice.vertices)
+        if (glm::length(*ballCentres[v] - mean) < glm::length(nearest - mean))
+            nearest = *ballCentres[v];
+    return nearest;
+}
+
+/// The existing node nearest to `p` whose segment to p lies inside, among the
+/// kAttachmentTries nearest; -1 when none.
+int attachmentNode(const CurveSkeleton& curve, std::size_t existingNodes, const glm::dvec3& p, const PointInMesh& solid)
+{
+    std::vector<std::pair<double, int>> byDistance;
+    for (std::size_t k = 0; k < existingNodes; ++k)
+        byDistance.emplace_back(glm::length(curve.nodes[k] - p), int(k));
+    const std::size_t tries = std::min(kAttachmentTries, byDistance.size());
+    std::partial_sort(byDistance.begin(), byDistance.begin() + std::ptrdiff_t(tries), byDistance.end());
+    for (std::size_t i = 0; i < tries; ++i)
+        if (solid.segmentInside(curve.nodes[std::size_t(byDistance[i].second)], p))
+            return byDistance[i].second;
+    return -1;
+}
+
+} // namespace
+
+std::size_t recoverBranches(CurveSkeleton& curve, const TriangleMesh& mesh,
+                            const std::vector<std::optional<glm::dvec3>>& midpoints, const PointInMesh& solid,
+                            double spacing)
+{
+    if (curve.vertexNode.size() != mesh.vertexCount() || midpoints.size() != mesh.vertexCount())
+        throw std::invalid_argument("recoverBranches: " + std::to_string(curve.vertexNode.size()) +
+                                    " region entries and " + std::to_string(midpoints.size()) + " midpoints for " +
+                                    std::to_string(mesh.vertexCount()) + " vertices");
+    if (!(spacing >= 0.0))
+        throw std::invalid_argument("recoverBranches: the slice spacing must not be negative");
+    if (curve.nodes.empty())
+        return 0;
+
+    const std::vector<double> distance = distancesToCurve(curve, mesh);
+    const Neighbours neighbours = neighboursOf(mesh);
+    const ShrinkingBalls balls(mesh, midpoints, solid);
+    std::vector<std::optional<glm::dvec3>> ballCentres(mesh.vertexCount());
+    std::vector<double> radius(mesh.vertexCount(), 0.0);
+    std::vector<char> uncovered(mesh.vertexCount(), 0);
+    // Seeds without any ball: the chord's half-length bounds the ball's radius from above
+    // (the ball starts as the chord's ball and only shrinks), so a vertex farther than
+    // kUncoveredRatio half-chords is uncovered whatever its ball. Covered parts — most of
+    // the mesh — need no ball then.
+    std::vector<std::size_t> grow;
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
+        if (midpoints[v] &&
+            distance[v] > kUncoveredRatio * glm::length(*midpoints[v] - glm::dvec3(mesh.positions[v]))) {
+            uncovered[v] = 1;
+            grow.push_back(v);
+        }
+    // Then the patches grow over neighbours whose ball says they are uncovered: a limb's
+    // tip, whose chord runs back along the limb, is uncovered by its ball (the cap's).
+    std::vector<char> ballKnown(mesh.vertexCount(), 0);
+    const auto knowBall = [&](std::size_t v) {
+        if (ballKnown[v])
+            return;
+        ballKnown[v] = 1;
+        ballCentres[v] = balls.centre(v);
+        if (ballCentres[v])
+            radius[v] = glm::length(*ballCentres[v] - glm::dvec3(mesh.positions[v]));
+    };
+    while (!grow.empty()) {
+        const std::size_t v = grow.back();
+        grow.pop_back();
+        knowBall(v);
+        for (std::size_t i = neighbours.start[v]; i < neighbours.start[v + 1]; ++i) {
+            const std::size_t w = neighbours.index[i];
+            if (uncovered[w] || ballKnown[w])
+                continue;
+            knowBall(w);
+            if (ballCentres[w] && distance[w] > kUncoveredRatio * radius[w]) {
+                uncovered[w] = 1;
+                grow.push_back(w);
+            }
+        }
+    }
+
+    UnionFind patches(mesh.vertexCount());
+    for (const glm::uvec3& t : mesh.triangles)
+        for (int i = 0; i < 3; ++i)
+            if (uncovered[t[i]] && uncovered[t[(i + 1) % 3]])
+                patches.unite(t[i], t[(i + 1) % 3]);
+    std::map<std::size_t, std::vector<std::size_t>> byPatch;
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
+        if (uncovered[v])
+            byPatch[patches.find(v)].push_back(v);
+
+    const std::size_t existingNodes = curve.nodes.size();
+    std::size_t added = 0;
+    for (const auto& [root, patch] : byPatch) {
+        if (patch.size() < kMinPatchVertices)
+            continue;
+        const std::map<std::size_t, double> depth = depthsFromBorder(patch, uncovered, neighbours, mesh);
+        double deepest = 0.0, meanRadius = 0.0;
+        std::size_t withBall = 0;
+        for (std::size_t v : patch) {
+            if (std::isfinite(depth.at(v)))
+                deepest = std::max(deepest, depth.at(v));
+            if (ballCentres[v]) {
+                meanRadius += radius[v];
+                ++withBall;
+            }
+        }
+        if (withBall == 0)
+            continue;
+        meanRadius /= double(withBall);
+        const double width = std::max(spacing, meanRadius);
+        if (deepest < kMinDepthRatio * meanRadius || !(width > 0.0))
+            continue;
+
+        std::map<std::size_t, Slice> slices; // by slice index, base first
+        for (std::size_t v : patch) {
+            if (!std::isfinite(depth.at(v)) || !ballCentres[v])
+                continue;
+            Slice& slice = slices[std::size_t(depth.at(v) / width)];
+            slice.vertices.push_back(v);
+            slice.centreSum += *ballCentres[v];
+        }
+        int previous = -1;
+        for (const auto& [index, slice] : slices) {
+            const glm::dvec3 node = sliceNode(slice, ballCentres, solid);
+            if (previous < 0) {
+                previous = attachmentNode(curve, existingNodes, node, solid);
+                if (previous < 0)
+                    break;
+            } else if (!solid.segmentInside(curve.nodes[std::size_t(previous)], node)) {
+                break;
+            }
+            const int k = int(curve.nodes.size());
+            curve.nodes.push_back(node);
+            curve.edges.push_back({std::min(previous, k), std::max(previous, k)});
+            for (std::size_t v : slice.vertices)
+                curve.vertexNode[v] = k;
+            previous = k;
+        }
+        if (previous >= int(existingNodes))
+            ++added;
+    }
+    std::sort(curve.edges.begin(), curve.edges.end());
+    return added;
+}
+
+} // namespace trimlab
