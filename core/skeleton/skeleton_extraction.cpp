@@ -1,11 +1,13 @@
 #include "core/skeleton/skeleton_extraction.h"
 
+#include "core/skeleton/branch_recovery.h"
 #include "core/skeleton/contraction_solver.h"
 #include "core/skeleton/point_in_mesh.h"
 #include "core/skeleton/rig_hierarchy.h"
 #include "core/skeleton/leaf_extension.h"
 #include "core/skeleton/skeleton_centring.h"
 #include "core/skeleton/medial_targets.h"
+#include "core/skeleton/shrinking_balls.h"
 #include "core/skeleton/skeleton_refinement.h"
 #include "core/skeleton/skeleton_resampling.h"
 #include "core/skeleton/skeleton_rerouting.h"
@@ -13,6 +15,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <string>
@@ -26,6 +29,22 @@ using Clock = std::chrono::steady_clock;
 double millisecondsSince(Clock::time_point start)
 {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+/// The contraction's medial points (none without a medial weight).
+std::vector<std::optional<glm::dvec3>> medialPointsFor(const TriangleMesh& mesh, const ContractionOptions& options,
+                                                       const std::vector<std::optional<glm::dvec3>>& midpoints,
+                                                       const PointInMesh& solid)
+{
+    if (!(options.medialWeight > 0.0))
+        return {};
+    switch (options.medialPoints) {
+    case MedialPoints::FilteredChordMidpoints:
+        return medialTargets(mesh, midpoints);
+    case MedialPoints::ShrinkingBalls:
+        return shrinkingBallCentres(mesh, midpoints, solid);
+    }
+    return {};
 }
 
 } // namespace
@@ -66,9 +85,7 @@ SkeletonExtraction extractSkeleton(const TriangleMesh& mesh, const SkeletonOptio
     const double midpointsMs = millisecondsSince(start);
 
     start = Clock::now();
-    const std::vector<std::optional<glm::dvec3>> medial = options.contraction.medialWeight > 0.0
-                                                              ? medialTargets(mesh, midpoints)
-                                                              : std::vector<std::optional<glm::dvec3>>{};
+    const std::vector<std::optional<glm::dvec3>> medial = medialPointsFor(mesh, options.contraction, midpoints, solid);
     ContractionSolver contraction(mesh, options.contraction, medial);
     contraction.run(control);
     result.contracted = contraction.positions();
@@ -97,6 +114,9 @@ SkeletonExtraction extractSkeleton(const TriangleMesh& mesh, const SkeletonOptio
                                             options.resampleFraction * glm::length(bounds.max - bounds.min));
         if (options.centre) {
             extendLeaves(result.curve, mesh, solid);
+            if (options.recoverBranches)
+                recoverBranches(result.curve, mesh, midpoints, solid,
+                                std::max(0.0, options.resampleFraction) * glm::length(bounds.max - bounds.min));
             centreOnNearestWallChords(result.curve, solid);
             splitEdgesLeaving(result.curve, midpoints, solid);
             rerouteLeavingEdges(result.curve, mesh, midpoints, solid);

@@ -35,6 +35,9 @@ struct SkeletonOptions {
     /// to the midpoint of its chord towards the nearest wall (skeleton_centring.h). Only with
     /// refine.
     bool centre = true;
+    /// After the leaves reach their tips, limbs that no branch reaches get one
+    /// (branch_recovery.h). Only with refine and centre.
+    bool recoverBranches = true;
     int targetNodes = 30;   ///< joints after selection; 20–40 typical (paper III.D)
     int rootJoint = -1;     ///< −1: automatic (rig_hierarchy.h); else a joint index of the selection
 };

@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <exception>
@@ -127,6 +128,54 @@ void printLeaves(const TriangleMesh& mesh, const SkeletonOptions& options, const
                 leafCount(simplified.nodes.size(), simplified.edges), leafCount(cgal.nodes.size(), cgal.edges));
 }
 
+// Where a skeleton's centring asymmetry (shortest chord) comes from: the mean over its
+// leaves, chain nodes (degree 2), junctions, the samples along its inner edges and along
+// its leaf edges (the evaluator's spacing), each with its share of the total, and the share of the total held
+// by points above 0.3 (a few badly placed points, or a general offset?).
+void printAsymmetryByPlace(const char* name, const SkeletonEvaluator& evaluator, const SkeletonGraph& graph,
+                           double diagonal)
+{
+    const double spacing = SkeletonEvaluationOptions{}.sampleSpacing * diagonal;
+    const std::vector<int> degree = nodeDegrees(graph.nodes.size(), graph.edges);
+    std::array<double, 5> sum{}, count{};
+    double total = 0.0, high = 0.0;
+    const auto add = [&](std::size_t kind, const glm::dvec3& p) {
+        if (!evaluator.inside(p))
+            return;
+        const double a = evaluator.centring(p).shortestChord;
+        sum[kind] += a;
+        count[kind] += 1.0;
+        total += a;
+        if (a > 0.3)
+            high += a;
+    };
+    for (std::size_t n = 0; n < graph.nodes.size(); ++n)
+        add(degree[n] <= 1 ? 0 : degree[n] == 2 ? 1 : 2, graph.nodes[n]);
+    for (const auto& e : graph.edges) {
+        const glm::dvec3 a = graph.nodes[std::size_t(e[0])], b = graph.nodes[std::size_t(e[1])];
+        const int steps = std::max(1, int(std::ceil(glm::length(b - a) / spacing)));
+        const bool leafEdge = degree[std::size_t(e[0])] == 1 || degree[std::size_t(e[1])] == 1;
+        for (int i = 1; i < steps; ++i)
+            add(leafEdge ? 4 : 3, a + (b - a) * (double(i) / steps));
+    }
+    const char* kinds[] = {"leaves", "chain", "junctions", "samples", "leaf-edge samples"};
+    std::printf("  %s asymmetry:", name);
+    for (std::size_t k = 0; k < 5; ++k)
+        std::printf(" %s %.0f x %.3f (%.0f%%);", kinds[k], count[k], count[k] > 0 ? sum[k] / count[k] : 0.0,
+                    total > 0 ? 100.0 * sum[k] / total : 0.0);
+    std::printf(" above 0.3: %.0f%% of the sum\n", total > 0 ? 100.0 * high / total : 0.0);
+
+    // Long edges hold many samples: the edge lengths say whether the samples' share comes
+    // from a few long edges.
+    std::vector<double> lengths;
+    for (const auto& e : graph.edges)
+        lengths.push_back(glm::length(graph.nodes[std::size_t(e[1])] - graph.nodes[std::size_t(e[0])]) / diagonal);
+    std::sort(lengths.begin(), lengths.end());
+    if (!lengths.empty())
+        std::printf("  %s edge lengths x diagonal: median %.4f, 90%% %.4f, max %.4f\n", name,
+                    lengths[lengths.size() / 2], lengths[lengths.size() * 9 / 10], lengths.back());
+}
+
 void compare(const TriangleMesh& mesh, const SkeletonOptions& options)
 {
     const SkeletonEvaluator evaluator(mesh);
@@ -153,6 +202,8 @@ void compare(const TriangleMesh& mesh, const SkeletonOptions& options)
     printRow("cgal-mcf", cgalSeconds, cgal);
     printWorstCovered(mesh, ours.curve, curve);
     printLeaves(mesh, options, ours, cgalGraph);
+    printAsymmetryByPlace("ours", evaluator, skeletonGraph(ours.curve), curve.diagonal);
+    printAsymmetryByPlace("CGAL", evaluator, cgalGraph, curve.diagonal);
     std::printf("  time ours/CGAL %.2f; contraction %d iterations; %s\n", oursSeconds / cgalSeconds,
                 ours.contractionIterations, ours.solver.c_str());
     const bool inside = curve.nodesInside >= 0.99 && curve.samplesInside >= 0.99;
@@ -187,6 +238,11 @@ int main(int argc, char** argv)
     parser.addOption({"initial-wh", "W_H0, the initial attraction weight.", "W", "1"});
     parser.addOption({"medial", "mu, the medial attraction (0: off; default the library's).", "M",
                       QString::number(ContractionOptions{}.medialWeight)});
+    parser.addOption({"medial-points", "Where the medial points come from: chords (filtered chord midpoints) or balls "
+                      "(shrinking balls).", "KIND", "chords"});
+    parser.addOption({"resample", "Resample edges longer than this fraction of the diagonal (<= 0: never).", "F",
+                      QString::number(SkeletonOptions{}.resampleFraction)});
+    parser.addOption({"no-recovery", "Leave out the branch recovery (branch_recovery.h)."});
     parser.addOption(
         {"collapse", "Remesh while contracting: collapse edges below this fraction of the diagonal.", "F", "0"});
     parser.addPositionalArgument("meshes", "Closed mesh files.", "MESH...");
@@ -201,6 +257,11 @@ int main(int argc, char** argv)
     options.contraction.initialContractionWeight = parser.value("initial-wl").toDouble();
     options.contraction.initialAttractionWeight = parser.value("initial-wh").toDouble();
     options.contraction.medialWeight = parser.value("medial").toDouble();
+    options.contraction.medialPoints = parser.value("medial-points") == "balls"
+                                           ? MedialPoints::ShrinkingBalls
+                                           : MedialPoints::FilteredChordMidpoints;
+    options.recoverBranches = !parser.isSet("no-recovery");
+    options.resampleFraction = parser.value("resample").toDouble();
     options.contraction.inputCollapseFraction = parser.value("input-collapse").toDouble();
     options.contraction.collapseFraction = parser.value("collapse").toDouble();
     std::printf("bench_skeleton_cgal, %s, %u hardware threads, CGAL %s\n",
