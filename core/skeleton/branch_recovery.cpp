@@ -152,6 +152,142 @@ int attachmentNode(const CurveSkeleton& curve, std::size_t existingNodes, const 
     return -1;
 }
 
+/// The vertices' medial balls where they were needed, and which vertices are uncovered.
+struct Coverage {
+    std::vector<char> uncovered;
+    std::vector<std::optional<glm::dvec3>> ballCentres; ///< known near the patches only
+    std::vector<double> radius;                         ///< of the known balls
+};
+
+Coverage uncoveredVertices(const TriangleMesh& mesh, const std::vector<std::optional<glm::dvec3>>& midpoints,
+                           const std::vector<double>& distance, const Neighbours& neighbours,
+                           const ShrinkingBalls& balls)
+{
+    Coverage c{std::vector<char>(mesh.vertexCount(), 0), std::vector<std::optional<glm::dvec3>>(mesh.vertexCount()),
+               std::vector<double>(mesh.vertexCount(), 0.0)};
+    // Seeds without any ball: the chord's half-length bounds the ball's radius from above
+    // (the ball starts as the chord's ball and only shrinks), so a vertex farther than
+    // kUncoveredRatio half-chords is uncovered whatever its ball. Covered parts — most of
+    // the mesh — need no ball then.
+    std::vector<std::size_t> grow;
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
+        if (midpoints[v] &&
+            distance[v] > kUncoveredRatio * glm::length(*midpoints[v] - glm::dvec3(mesh.positions[v]))) {
+            c.uncovered[v] = 1;
+            grow.push_back(v);
+        }
+    // Then the patches grow over neighbours whose ball says they are uncovered: a limb's
+    // tip, whose chord runs back along the limb, is uncovered by its ball (the cap's).
+    std::vector<char> ballKnown(mesh.vertexCount(), 0);
+    const auto knowBall = [&](std::size_t v) {
+        if (ballKnown[v])
+            return;
+        ballKnown[v] = 1;
+        c.ballCentres[v] = balls.centre(v);
+        if (c.ballCentres[v])
+            c.radius[v] = glm::length(*c.ballCentres[v] - glm::dvec3(mesh.positions[v]));
+    };
+    while (!grow.empty()) {
+        const std::size_t v = grow.back();
+        grow.pop_back();
+        knowBall(v);
+        for (std::size_t i = neighbours.start[v]; i < neighbours.start[v + 1]; ++i) {
+            const std::size_t w = neighbours.index[i];
+            if (c.uncovered[w] || ballKnown[w])
+                continue;
+            knowBall(w);
+            if (c.ballCentres[w] && distance[w] > kUncoveredRatio * c.radius[w]) {
+                c.uncovered[w] = 1;
+                grow.push_back(w);
+            }
+        }
+    }
+    return c;
+}
+
+/// The connected patches of uncovered vertices (over mesh edges).
+std::vector<std::vector<std::size_t>> uncoveredPatches(const TriangleMesh& mesh, const std::vector<char>& uncovered)
+{
+    UnionFind patches(mesh.vertexCount());
+    for (const glm::uvec3& t : mesh.triangles)
+        for (int i = 0; i < 3; ++i)
+            if (uncovered[t[i]] && uncovered[t[(i + 1) % 3]])
+                patches.unite(t[i], t[(i + 1) % 3]);
+    std::map<std::size_t, std::vector<std::size_t>> byRoot;
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
+        if (uncovered[v])
+            byRoot[patches.find(v)].push_back(v);
+    std::vector<std::vector<std::size_t>> out;
+    for (auto& [root, patch] : byRoot)
+        out.push_back(std::move(patch));
+    return out;
+}
+
+/// A patch's slices by depth, base first; none when the patch is too small or shallow
+/// to be a limb.
+std::vector<Slice> limbSlices(const std::vector<std::size_t>& patch, const Coverage& c, const Neighbours& neighbours,
+                              const TriangleMesh& mesh, double spacing)
+{
+    if (patch.size() < kMinPatchVertices)
+        return {};
+    const std::map<std::size_t, double> depth = depthsFromBorder(patch, c.uncovered, neighbours, mesh);
+    double deepest = 0.0, meanRadius = 0.0;
+    std::size_t withBall = 0;
+    for (std::size_t v : patch) {
+        if (std::isfinite(depth.at(v)))
+            deepest = std::max(deepest, depth.at(v));
+        if (c.ballCentres[v]) {
+            meanRadius += c.radius[v];
+            ++withBall;
+        }
+    }
+    if (withBall == 0)
+        return {};
+    meanRadius /= double(withBall);
+    const double width = std::max(spacing, meanRadius);
+    if (deepest < kMinDepthRatio * meanRadius || !(width > 0.0))
+        return {};
+    std::map<std::size_t, Slice> byIndex;
+    for (std::size_t v : patch) {
+        if (!std::isfinite(depth.at(v)) || !c.ballCentres[v])
+            continue;
+        Slice& slice = byIndex[std::size_t(depth.at(v) / width)];
+        slice.vertices.push_back(v);
+        slice.centreSum += *c.ballCentres[v];
+    }
+    std::vector<Slice> slices;
+    for (auto& [index, slice] : byIndex)
+        slices.push_back(std::move(slice));
+    return slices;
+}
+
+/// Appends the slices' chain to `curve` as described in the header; true when it added
+/// at least one node.
+bool addBranch(CurveSkeleton& curve, std::size_t existingNodes, const std::vector<Slice>& slices,
+               const std::vector<std::optional<glm::dvec3>>& ballCentres, const PointInMesh& solid)
+{
+    int previous = -1;
+    bool added = false;
+    for (const Slice& slice : slices) {
+        const glm::dvec3 node = sliceNode(slice, ballCentres, solid);
+        if (previous < 0) {
+            previous = attachmentNode(curve, existingNodes, node, solid);
+            if (previous < 0)
+                return false;
+        } else if (!solid.segmentInside(curve.nodes[std::size_t(previous)], node)) {
+            break;
+        }
+        const int k = int(curve.nodes.size());
+        curve.nodes.push_back(node);
+        curve.edges.push_back({std::min(previous, k), std::max(previous, k)});
+        for (std::size_t v : slice.vertices)
+            curve.vertexNode[v] = k;
+        previous = k;
+        added = true;
+    }
+    return added;
+}
+
 } // namespace
 
 std::size_t recoverBranches(CurveSkeleton& curve, const TriangleMesh& mesh,
@@ -167,111 +303,15 @@ std::size_t recoverBranches(CurveSkeleton& curve, const TriangleMesh& mesh,
     if (curve.nodes.empty())
         return 0;
 
-    const std::vector<double> distance = distancesToCurve(curve, mesh);
     const Neighbours neighbours = neighboursOf(mesh);
     const ShrinkingBalls balls(mesh, midpoints, solid);
-    std::vector<std::optional<glm::dvec3>> ballCentres(mesh.vertexCount());
-    std::vector<double> radius(mesh.vertexCount(), 0.0);
-    std::vector<char> uncovered(mesh.vertexCount(), 0);
-    // Seeds without any ball: the chord's half-length bounds the ball's radius from above
-    // (the ball starts as the chord's ball and only shrinks), so a vertex farther than
-    // kUncoveredRatio half-chords is uncovered whatever its ball. Covered parts — most of
-    // the mesh — need no ball then.
-    std::vector<std::size_t> grow;
-    for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
-        if (midpoints[v] &&
-            distance[v] > kUncoveredRatio * glm::length(*midpoints[v] - glm::dvec3(mesh.positions[v]))) {
-            uncovered[v] = 1;
-            grow.push_back(v);
-        }
-    // Then the patches grow over neighbours whose ball says they are uncovered: a limb's
-    // tip, whose chord runs back along the limb, is uncovered by its ball (the cap's).
-    std::vector<char> ballKnown(mesh.vertexCount(), 0);
-    const auto knowBall = [&](std::size_t v) {
-        if (ballKnown[v])
-            return;
-        ballKnown[v] = 1;
-        ballCentres[v] = balls.centre(v);
-        if (ballCentres[v])
-            radius[v] = glm::length(*ballCentres[v] - glm::dvec3(mesh.positions[v]));
-    };
-    while (!grow.empty()) {
-        const std::size_t v = grow.back();
-        grow.pop_back();
-        knowBall(v);
-        for (std::size_t i = neighbours.start[v]; i < neighbours.start[v + 1]; ++i) {
-            const std::size_t w = neighbours.index[i];
-            if (uncovered[w] || ballKnown[w])
-                continue;
-            knowBall(w);
-            if (ballCentres[w] && distance[w] > kUncoveredRatio * radius[w]) {
-                uncovered[w] = 1;
-                grow.push_back(w);
-            }
-        }
-    }
-
-    UnionFind patches(mesh.vertexCount());
-    for (const glm::uvec3& t : mesh.triangles)
-        for (int i = 0; i < 3; ++i)
-            if (uncovered[t[i]] && uncovered[t[(i + 1) % 3]])
-                patches.unite(t[i], t[(i + 1) % 3]);
-    std::map<std::size_t, std::vector<std::size_t>> byPatch;
-    for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
-        if (uncovered[v])
-            byPatch[patches.find(v)].push_back(v);
-
+    const Coverage coverage = uncoveredVertices(mesh, midpoints, distancesToCurve(curve, mesh), neighbours, balls);
     const std::size_t existingNodes = curve.nodes.size();
     std::size_t added = 0;
-    for (const auto& [root, patch] : byPatch) {
-        if (patch.size() < kMinPatchVertices)
-            continue;
-        const std::map<std::size_t, double> depth = depthsFromBorder(patch, uncovered, neighbours, mesh);
-        double deepest = 0.0, meanRadius = 0.0;
-        std::size_t withBall = 0;
-        for (std::size_t v : patch) {
-            if (std::isfinite(depth.at(v)))
-                deepest = std::max(deepest, depth.at(v));
-            if (ballCentres[v]) {
-                meanRadius += radius[v];
-                ++withBall;
-            }
-        }
-        if (withBall == 0)
-            continue;
-        meanRadius /= double(withBall);
-        const double width = std::max(spacing, meanRadius);
-        if (deepest < kMinDepthRatio * meanRadius || !(width > 0.0))
-            continue;
-
-        std::map<std::size_t, Slice> slices; // by slice index, base first
-        for (std::size_t v : patch) {
-            if (!std::isfinite(depth.at(v)) || !ballCentres[v])
-                continue;
-            Slice& slice = slices[std::size_t(depth.at(v) / width)];
-            slice.vertices.push_back(v);
-            slice.centreSum += *ballCentres[v];
-        }
-        int previous = -1;
-        for (const auto& [index, slice] : slices) {
-            const glm::dvec3 node = sliceNode(slice, ballCentres, solid);
-            if (previous < 0) {
-                previous = attachmentNode(curve, existingNodes, node, solid);
-                if (previous < 0)
-                    break;
-            } else if (!solid.segmentInside(curve.nodes[std::size_t(previous)], node)) {
-                break;
-            }
-            const int k = int(curve.nodes.size());
-            curve.nodes.push_back(node);
-            curve.edges.push_back({std::min(previous, k), std::max(previous, k)});
-            for (std::size_t v : slice.vertices)
-                curve.vertexNode[v] = k;
-            previous = k;
-        }
-        if (previous >= int(existingNodes))
+    for (const std::vector<std::size_t>& patch : uncoveredPatches(mesh, coverage.uncovered))
+        if (addBranch(curve, existingNodes, limbSlices(patch, coverage, neighbours, mesh, spacing),
+                      coverage.ballCentres, solid))
             ++added;
-    }
     std::sort(curve.edges.begin(), curve.edges.end());
     return added;
 }
