@@ -1,8 +1,8 @@
 #include "core/skeleton/branch_recovery.h"
 
-#include "core/skeleton/bone_heat_terms.h"
+#include "core/skeleton/mesh_adjacency.h"
 #include "core/skeleton/shrinking_balls.h"
-#include "core/util/parallel_for.h"
+#include "core/skeleton/skeleton_evaluation.h"
 #include "core/util/union_find.h"
 
 #include <glm/geometric.hpp>
@@ -21,77 +21,21 @@ namespace trimlab {
 
 namespace {
 
-constexpr std::size_t kVertexBlock = 1024;
 /// Nearest skeleton nodes tried for the branch's attachment before the branch is dropped.
 constexpr std::size_t kAttachmentTries = 8;
-
-/// Per vertex, the distance to the nearest edge of `curve` (to the nearest node where the
-/// curve has no edges).
-std::vector<double> distancesToCurve(const CurveSkeleton& curve, const TriangleMesh& mesh)
-{
-    std::vector<double> distance(mesh.vertexCount(), std::numeric_limits<double>::infinity());
-    const std::size_t blocks = (mesh.vertexCount() + kVertexBlock - 1) / kVertexBlock;
-    parallelFor(blocks, 0, [&](std::size_t block) {
-        const std::size_t end = std::min(mesh.vertexCount(), (block + 1) * kVertexBlock);
-        for (std::size_t v = block * kVertexBlock; v < end; ++v) {
-            const glm::dvec3 p(mesh.positions[v]);
-            double best = std::numeric_limits<double>::infinity();
-            for (const auto& e : curve.edges) {
-                const glm::dvec3 q =
-                    closestPointOnSegment(p, curve.nodes[std::size_t(e[0])], curve.nodes[std::size_t(e[1])]);
-                best = std::min(best, glm::length(p - q));
-            }
-            if (curve.edges.empty())
-                for (const glm::dvec3& n : curve.nodes)
-                    best = std::min(best, glm::length(p - n));
-            distance[v] = best;
-        }
-    });
-    return distance;
-}
-
-/// The mesh's vertex neighbours in compressed rows (each undirected edge both ways).
-struct Neighbours {
-    std::vector<std::size_t> start; ///< #V + 1
-    std::vector<std::size_t> index;
-};
-
-Neighbours neighboursOf(const TriangleMesh& mesh)
-{
-    std::vector<std::pair<std::size_t, std::size_t>> pairs;
-    pairs.reserve(mesh.triangleCount() * 6);
-    for (const glm::uvec3& t : mesh.triangles)
-        for (int i = 0; i < 3; ++i) {
-            pairs.emplace_back(t[i], t[(i + 1) % 3]);
-            pairs.emplace_back(t[(i + 1) % 3], t[i]);
-        }
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-    Neighbours n;
-    n.start.assign(mesh.vertexCount() + 1, 0);
-    for (const auto& [a, b] : pairs)
-        ++n.start[a + 1];
-    for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
-        n.start[v + 1] += n.start[v];
-    n.index.reserve(pairs.size());
-    for (const auto& pair : pairs)
-        n.index.push_back(pair.second);
-    return n;
-}
 
 /// Surface path length from the patch's border with the covered surface, within the patch
 /// (Dijkstra over mesh edges); infinity where no border is reachable.
 std::map<std::size_t, double> depthsFromBorder(const std::vector<std::size_t>& patch,
-                                               const std::vector<char>& uncovered, const Neighbours& neighbours,
-                                               const TriangleMesh& mesh)
+                                               const std::vector<char>& uncovered, const VertexAdjacency& adjacency)
 {
     using Entry = std::pair<double, std::size_t>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
     std::map<std::size_t, double> depth;
     for (std::size_t v : patch) {
         depth[v] = std::numeric_limits<double>::infinity();
-        for (std::size_t i = neighbours.start[v]; i < neighbours.start[v + 1]; ++i)
-            if (!uncovered[neighbours.index[i]]) {
+        for (const auto& [w, length] : adjacency[v])
+            if (!uncovered[w]) {
                 depth[v] = 0.0;
                 queue.emplace(0.0, v);
                 break;
@@ -102,11 +46,10 @@ std::map<std::size_t, double> depthsFromBorder(const std::vector<std::size_t>& p
         queue.pop();
         if (d > depth[v])
             continue;
-        for (std::size_t i = neighbours.start[v]; i < neighbours.start[v + 1]; ++i) {
-            const std::size_t w = neighbours.index[i];
+        for (const auto& [w, length] : adjacency[v]) {
             if (!uncovered[w])
                 continue;
-            const double next = d + glm::length(glm::dvec3(mesh.positions[v]) - glm::dvec3(mesh.positions[w]));
+            const double next = d + length;
             if (next < depth[w]) {
                 depth[w] = next;
                 queue.emplace(next, w);
@@ -160,7 +103,7 @@ struct Coverage {
 };
 
 Coverage uncoveredVertices(const TriangleMesh& mesh, const std::vector<std::optional<glm::dvec3>>& midpoints,
-                           const std::vector<double>& distance, const Neighbours& neighbours,
+                           const std::vector<double>& distance, const VertexAdjacency& adjacency,
                            const ShrinkingBalls& balls)
 {
     Coverage c{std::vector<char>(mesh.vertexCount(), 0), std::vector<std::optional<glm::dvec3>>(mesh.vertexCount()),
@@ -191,8 +134,7 @@ Coverage uncoveredVertices(const TriangleMesh& mesh, const std::vector<std::opti
         const std::size_t v = grow.back();
         grow.pop_back();
         knowBall(v);
-        for (std::size_t i = neighbours.start[v]; i < neighbours.start[v + 1]; ++i) {
-            const std::size_t w = neighbours.index[i];
+        for (const auto& [w, length] : adjacency[v]) {
             if (c.uncovered[w] || ballKnown[w])
                 continue;
             knowBall(w);
@@ -225,12 +167,12 @@ std::vector<std::vector<std::size_t>> uncoveredPatches(const TriangleMesh& mesh,
 
 /// A patch's slices by depth, base first; none when the patch is too small or shallow
 /// to be a limb.
-std::vector<Slice> limbSlices(const std::vector<std::size_t>& patch, const Coverage& c, const Neighbours& neighbours,
-                              const TriangleMesh& mesh, double spacing)
+std::vector<Slice> limbSlices(const std::vector<std::size_t>& patch, const Coverage& c,
+                              const VertexAdjacency& adjacency, double spacing)
 {
     if (patch.size() < kMinPatchVertices)
         return {};
-    const std::map<std::size_t, double> depth = depthsFromBorder(patch, c.uncovered, neighbours, mesh);
+    const std::map<std::size_t, double> depth = depthsFromBorder(patch, c.uncovered, adjacency);
     double deepest = 0.0, meanRadius = 0.0;
     std::size_t withBall = 0;
     for (std::size_t v : patch) {
@@ -303,14 +245,15 @@ std::size_t recoverBranches(CurveSkeleton& curve, const TriangleMesh& mesh,
     if (curve.nodes.empty())
         return 0;
 
-    const Neighbours neighbours = neighboursOf(mesh);
+    const VertexAdjacency adjacency = vertexAdjacency(mesh);
     const ShrinkingBalls balls(mesh, midpoints, solid);
-    const Coverage coverage = uncoveredVertices(mesh, midpoints, distancesToCurve(curve, mesh), neighbours, balls);
+    const Coverage coverage =
+        uncoveredVertices(mesh, midpoints, distancesToSkeleton(mesh.positions, skeletonGraph(curve)), adjacency, balls);
     const std::size_t existingNodes = curve.nodes.size();
     std::size_t added = 0;
     for (const std::vector<std::size_t>& patch : uncoveredPatches(mesh, coverage.uncovered))
-        if (addBranch(curve, existingNodes, limbSlices(patch, coverage, neighbours, mesh, spacing),
-                      coverage.ballCentres, solid))
+        if (addBranch(curve, existingNodes, limbSlices(patch, coverage, adjacency, spacing), coverage.ballCentres,
+                      solid))
             ++added;
     std::sort(curve.edges.begin(), curve.edges.end());
     return added;

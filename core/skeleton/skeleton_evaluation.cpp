@@ -55,7 +55,8 @@ MeshTopology meshTopology(const TriangleMesh& mesh)
             ++vertices;
             components += sets.find(v) == v ? 1 : 0;
         }
-    const long long euler = vertices - static_cast<long long>(edges.size()) + static_cast<long long>(mesh.triangleCount());
+    const long long euler =
+        vertices - static_cast<long long>(edges.size()) + static_cast<long long>(mesh.triangleCount());
     return {components, static_cast<int>((2 * components - euler) / 2)};
 }
 
@@ -78,8 +79,8 @@ void requireValidGraph(const SkeletonGraph& skeleton)
     for (std::size_t e = 0; e < skeleton.edges.size(); ++e)
         for (int end : skeleton.edges[e])
             if (end < 0 || end >= count)
-                throw std::invalid_argument("skeleton edge " + std::to_string(e) + " names node " + std::to_string(end) +
-                                            " of " + std::to_string(count));
+                throw std::invalid_argument("skeleton edge " + std::to_string(e) + " names node " +
+                                            std::to_string(end) + " of " + std::to_string(count));
 }
 
 struct EdgeSample {
@@ -121,6 +122,32 @@ GraphTopology graphTopology(const SkeletonGraph& skeleton)
 
 } // namespace
 
+std::vector<double> distancesToSkeleton(std::span<const glm::vec3> positions, const SkeletonGraph& skeleton)
+{
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> segments;
+    std::vector<int> degree(skeleton.nodes.size(), 0);
+    for (const auto& edge : skeleton.edges) {
+        segments.emplace_back(skeleton.nodes[static_cast<std::size_t>(edge[0])],
+                              skeleton.nodes[static_cast<std::size_t>(edge[1])]);
+        ++degree[static_cast<std::size_t>(edge[0])];
+        ++degree[static_cast<std::size_t>(edge[1])];
+    }
+    for (std::size_t i = 0; i < skeleton.nodes.size(); ++i)
+        if (degree[i] == 0)
+            segments.emplace_back(skeleton.nodes[i], skeleton.nodes[i]);
+    std::vector<double> distance(positions.size(), std::numeric_limits<double>::infinity());
+    const std::size_t blocks = (positions.size() + kVertexBlock - 1) / kVertexBlock;
+    parallelFor(blocks, 0, [&](std::size_t block) {
+        const std::size_t end = std::min(positions.size(), (block + 1) * kVertexBlock);
+        for (std::size_t v = block * kVertexBlock; v < end; ++v) {
+            const glm::dvec3 p(positions[v]);
+            for (const auto& [a, b] : segments)
+                distance[v] = std::min(distance[v], segmentDistance(p, a, b));
+        }
+    });
+    return distance;
+}
+
 SkeletonGraph skeletonGraph(const CurveSkeleton& curve)
 {
     return {curve.nodes, curve.edges};
@@ -156,7 +183,10 @@ std::vector<std::string> describeEvaluation(const SkeletonEvaluation& e)
 }
 
 SkeletonEvaluator::SkeletonEvaluator(const TriangleMesh& mesh, SkeletonEvaluationOptions options)
-    : m_mesh(mesh), m_options(options), m_winding(meshScene(mesh)), m_solid(mesh),
+    : m_mesh(mesh),
+      m_options(options),
+      m_winding(meshScene(mesh)),
+      m_solid(mesh),
       m_directions(halfSphereDirections(std::max(1, options.chordDirections)))
 {
     const Bounds bounds = computeBounds(mesh);
@@ -240,7 +270,8 @@ SkeletonEvaluation SkeletonEvaluator::evaluate(const SkeletonGraph& skeleton) co
         for (int end : skeleton.edges[e])
             if (!inside[static_cast<std::size_t>(end)])
                 edgeLeaves[e] = 1;
-    result.samplesInside = samples.empty() ? 1.0 : static_cast<double>(samplesInside) / static_cast<double>(samples.size());
+    result.samplesInside =
+        samples.empty() ? 1.0 : static_cast<double>(samplesInside) / static_cast<double>(samples.size());
     result.length = totalLength / unit;
     result.lengthOutside = totalLength > 0.0 ? outsideLength / totalLength : 0.0;
     result.edgesLeaving = static_cast<int>(std::count(edgeLeaves.begin(), edgeLeaves.end(), 1));
@@ -258,30 +289,9 @@ SkeletonEvaluation SkeletonEvaluator::evaluate(const SkeletonGraph& skeleton) co
     result.meanWallAsymmetry = insidePoints > 0 ? wallSum / insidePoints : 1.0;
 
     // Coverage: segments, and isolated nodes as points (a graph without edges still covers).
-    std::vector<std::pair<glm::dvec3, glm::dvec3>> segments;
-    std::vector<int> degree(nodes, 0);
-    for (const auto& edge : skeleton.edges) {
-        segments.emplace_back(skeleton.nodes[static_cast<std::size_t>(edge[0])], skeleton.nodes[static_cast<std::size_t>(edge[1])]);
-        ++degree[static_cast<std::size_t>(edge[0])];
-        ++degree[static_cast<std::size_t>(edge[1])];
-    }
-    for (std::size_t i = 0; i < nodes; ++i)
-        if (degree[i] == 0)
-            segments.emplace_back(skeleton.nodes[i], skeleton.nodes[i]);
     const std::size_t vertexCount = m_mesh.vertexCount();
-    std::vector<double> coverage(vertexCount, 0.0);
-    if (!segments.empty()) {
-        const std::size_t blocks = (vertexCount + kVertexBlock - 1) / kVertexBlock;
-        parallelFor(blocks, 0, [&](std::size_t block) {
-            const std::size_t end = std::min(vertexCount, (block + 1) * kVertexBlock);
-            for (std::size_t v = block * kVertexBlock; v < end; ++v) {
-                const glm::dvec3 p(m_mesh.positions[v]);
-                double best = std::numeric_limits<double>::infinity();
-                for (const auto& [a, b] : segments)
-                    best = std::min(best, segmentDistance(p, a, b));
-                coverage[v] = best;
-            }
-        });
+    if (nodes > 0) {
+        const std::vector<double> coverage = distancesToSkeleton(m_mesh.positions, skeleton);
         double sum = 0.0;
         for (std::size_t v = 0; v < vertexCount; ++v) {
             if (coverage[v] / unit > result.maxCoverage) {

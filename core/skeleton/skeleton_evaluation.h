@@ -27,6 +27,7 @@
 
 #include <array>
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,12 @@ struct SkeletonGraph {
 [[nodiscard]] SkeletonGraph skeletonGraph(const CurveSkeleton& curve);
 /// Joints as nodes, one edge per bone.
 [[nodiscard]] SkeletonGraph skeletonGraph(const SkeletonRig& rig);
+
+/// Per point of `positions`, the distance to the nearest edge of `skeleton` (a node without
+/// edges counts as a point); infinity for a skeleton without nodes. The evaluator's
+/// coverage, and the branch recovery's test for uncovered vertices. Parallel over points.
+[[nodiscard]] std::vector<double> distancesToSkeleton(std::span<const glm::vec3> positions,
+                                                      const SkeletonGraph& skeleton);
 
 struct SkeletonEvaluationOptions {
     double sampleSpacing = 0.005; ///< between samples along an edge, × the diagonal

@@ -1,5 +1,7 @@
 #include "core/skeleton/skeleton_rerouting.h"
 
+#include "core/skeleton/mesh_adjacency.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -12,24 +14,6 @@
 namespace trimlab {
 
 namespace {
-
-using Adjacency = std::vector<std::vector<std::pair<std::uint32_t, double>>>;
-
-Adjacency vertexAdjacency(const TriangleMesh& mesh)
-{
-    Adjacency adjacency(mesh.positions.size());
-    const auto link = [&](std::uint32_t a, std::uint32_t b) {
-        const double length = glm::length(glm::dvec3(mesh.positions[a]) - glm::dvec3(mesh.positions[b]));
-        adjacency[a].emplace_back(b, length);
-        adjacency[b].emplace_back(a, length);
-    };
-    for (const glm::uvec3& t : mesh.triangles) {
-        link(t.x, t.y);
-        link(t.y, t.z);
-        link(t.z, t.x);
-    }
-    return adjacency;
-}
 
 // The vertex whose inward chord midpoint the node sees inside, nearest to the node; the
 // nearest few by distance are tried (a node near a thin gap may be nearer to the other
@@ -52,7 +36,7 @@ std::optional<std::uint32_t> anchorVertex(const glm::dvec3& node, const Triangle
 }
 
 // Dijkstra over the mesh's edges; the vertices from `from` to `to`, empty when apart.
-std::vector<std::uint32_t> shortestPath(const Adjacency& adjacency, std::uint32_t from, std::uint32_t to)
+std::vector<std::uint32_t> shortestPath(const VertexAdjacency& adjacency, std::uint32_t from, std::uint32_t to)
 {
     std::vector<double> distance(adjacency.size(), std::numeric_limits<double>::infinity());
     std::vector<std::uint32_t> previous(adjacency.size(), std::numeric_limits<std::uint32_t>::max());
@@ -106,7 +90,7 @@ std::vector<glm::dvec3> visibleChain(const std::vector<glm::dvec3>& points, cons
 
 // The inside nodes replacing edge a–b (not counting a and b), or nullopt.
 std::optional<std::vector<glm::dvec3>> insideRoute(const glm::dvec3& a, const glm::dvec3& b, const TriangleMesh& mesh,
-                                                   const Adjacency& adjacency,
+                                                   const VertexAdjacency& adjacency,
                                                    const std::vector<std::optional<glm::dvec3>>& midpoints,
                                                    const PointInMesh& inside)
 {
@@ -131,14 +115,13 @@ std::optional<std::vector<glm::dvec3>> insideRoute(const glm::dvec3& a, const gl
 } // namespace
 
 ReroutingResult rerouteLeavingEdges(CurveSkeleton& curve, const TriangleMesh& mesh,
-                                    const std::vector<std::optional<glm::dvec3>>& midpoints,
-                                    const PointInMesh& inside)
+                                    const std::vector<std::optional<glm::dvec3>>& midpoints, const PointInMesh& inside)
 {
     if (midpoints.size() != mesh.positions.size())
         throw std::invalid_argument("rerouteLeavingEdges: " + std::to_string(midpoints.size()) + " midpoints for " +
                                     std::to_string(mesh.positions.size()) + " vertices");
     ReroutingResult result;
-    std::optional<Adjacency> adjacency; // built at the first leaving edge
+    std::optional<VertexAdjacency> adjacency; // built at the first leaving edge
     std::vector<std::array<int, 2>> edges;
     for (const std::array<int, 2>& edge : curve.edges) {
         const glm::dvec3 a = curve.nodes[std::size_t(edge[0])];
