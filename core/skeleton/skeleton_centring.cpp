@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace trimlab {
@@ -38,8 +40,12 @@ std::optional<glm::dvec3> nearestWallChordMidpoint(const glm::dvec3& p, const Po
 
 } // namespace
 
-std::size_t centreOnNearestWallChords(CurveSkeleton& curve, const PointInMesh& solid, const CentringOptions& options)
+std::size_t centreOnNearestWallChords(CurveSkeleton& curve, const PointInMesh& solid, const CentringOptions& options,
+                                      const std::vector<char>& keep)
 {
+    if (!keep.empty() && keep.size() != curve.nodes.size())
+        throw std::invalid_argument("centring the skeleton: " + std::to_string(keep.size()) + " keep flags for " +
+                                    std::to_string(curve.nodes.size()) + " nodes");
     const std::vector<glm::dvec3> directions = halfSphereDirections(std::max(1, options.directions));
     std::vector<char> moved(curve.nodes.size(), 0);
     std::vector<int> degree(curve.nodes.size(), 0);
@@ -49,7 +55,7 @@ std::size_t centreOnNearestWallChords(CurveSkeleton& curve, const PointInMesh& s
     }
     parallelFor(curve.nodes.size(), 0, [&](std::size_t k) {
         glm::dvec3 p = curve.nodes[k];
-        if (!solid.contains(p) || (options.keepLeaves && degree[k] == 1))
+        if ((!keep.empty() && keep[k]) || !solid.contains(p) || (options.keepLeaves && degree[k] == 1))
             return;
         for (int round = 0; round < options.rounds; ++round) {
             const std::optional<glm::dvec3> next = nearestWallChordMidpoint(p, solid, directions);

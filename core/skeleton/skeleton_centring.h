@@ -17,6 +17,7 @@
 #include "core/skeleton/skeleton.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace trimlab {
 
@@ -30,8 +31,12 @@ struct CentringOptions {
 };
 
 /// Moves every node of `curve` that lies inside `solid` as described above; a node
-/// outside, or where some direction finds no surface both ways, stays. Returns how many
-/// nodes moved. Parallel over nodes.
-std::size_t centreOnNearestWallChords(CurveSkeleton& curve, const PointInMesh& solid, const CentringOptions& options = {});
+/// outside, or where some direction finds no surface both ways, stays, and so does node k
+/// where keep[k] is nonzero (`keep` empty, or one entry per node: the chains
+/// medial_chain_routing.h lays along the medial axis need no centring). Returns how many
+/// nodes moved. Throws std::invalid_argument when keep has another size. Parallel over
+/// nodes.
+std::size_t centreOnNearestWallChords(CurveSkeleton& curve, const PointInMesh& solid,
+                                      const CentringOptions& options = {}, const std::vector<char>& keep = {});
 
 } // namespace trimlab

@@ -6,6 +6,7 @@
 #include "core/skeleton/rig_hierarchy.h"
 #include "core/skeleton/leaf_extension.h"
 #include "core/skeleton/skeleton_centring.h"
+#include "core/skeleton/medial_chain_routing.h"
 #include "core/skeleton/medial_targets.h"
 #include "core/skeleton/shrinking_balls.h"
 #include "core/skeleton/skeleton_refinement.h"
@@ -19,6 +20,7 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace trimlab {
 
@@ -117,7 +119,21 @@ SkeletonExtraction extractSkeleton(const TriangleMesh& mesh, const SkeletonOptio
             if (options.recoverBranches)
                 recoverBranches(result.curve, mesh, midpoints, solid,
                                 std::max(0.0, options.resampleFraction) * glm::length(bounds.max - bounds.min));
-            centreOnNearestWallChords(result.curve, solid);
+            if (options.routeChains && options.resampleFraction > 0.0) {
+                // The chains the routing replaces are centred only where it fails: the
+                // junctions first (the routes' ends), then the chains left as they were.
+                const std::vector<char> routable = routableChainInteriors(result.curve);
+                centreOnNearestWallChords(result.curve, solid, {}, routable);
+                const ChainRouting routing =
+                    routeChainsAlongMedialAxis(result.curve, mesh, midpoints, solid,
+                                               options.resampleFraction * glm::length(bounds.max - bounds.min));
+                std::vector<char> done(routing.placed.size(), 1);
+                for (std::size_t k = 0; k < routable.size(); ++k)
+                    done[k] = !routable[k] || routing.placed[k];
+                centreOnNearestWallChords(result.curve, solid, {}, done);
+            } else {
+                centreOnNearestWallChords(result.curve, solid);
+            }
             splitEdgesLeaving(result.curve, midpoints, solid);
             rerouteLeavingEdges(result.curve, mesh, midpoints, solid);
         }

@@ -38,6 +38,11 @@ struct SkeletonOptions {
     /// After the leaves reach their tips, limbs that no branch reaches get one
     /// (branch_recovery.h). Only with refine and centre.
     bool recoverBranches = true;
+    /// With the centring, every chain that is a bridge of the curve is laid along the
+    /// cheapest path through the medial points between its ends
+    /// (medial_chain_routing.h), spaced as the resampling's; only the chains it leaves are
+    /// centred. Only with refine, centre and a positive resampleFraction.
+    bool routeChains = true;
     int targetNodes = 30;   ///< joints after selection; 20–40 typical (paper III.D)
     int rootJoint = -1;     ///< −1: automatic (rig_hierarchy.h); else a joint index of the selection
 };

@@ -32,6 +32,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <exception>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -172,8 +173,9 @@ void printAsymmetryByPlace(const char* name, const SkeletonEvaluator& evaluator,
         lengths.push_back(glm::length(graph.nodes[std::size_t(e[1])] - graph.nodes[std::size_t(e[0])]) / diagonal);
     std::sort(lengths.begin(), lengths.end());
     if (!lengths.empty())
-        std::printf("  %s edge lengths x diagonal: median %.4f, 90%% %.4f, max %.4f\n", name,
-                    lengths[lengths.size() / 2], lengths[lengths.size() * 9 / 10], lengths.back());
+        std::printf("  %s edge lengths x diagonal: median %.4f, 90%% %.4f, max %.4f, total %.3f\n", name,
+                    lengths[lengths.size() / 2], lengths[lengths.size() * 9 / 10], lengths.back(),
+                    std::accumulate(lengths.begin(), lengths.end(), 0.0));
 }
 
 void compare(const TriangleMesh& mesh, const SkeletonOptions& options)
@@ -243,6 +245,7 @@ int main(int argc, char** argv)
     parser.addOption({"resample", "Resample edges longer than this fraction of the diagonal (<= 0: never).", "F",
                       QString::number(SkeletonOptions{}.resampleFraction)});
     parser.addOption({"no-recovery", "Leave out the branch recovery (branch_recovery.h)."});
+    parser.addOption({"no-routing", "Leave the chains where the centring put them (medial_chain_routing.h)."});
     parser.addOption(
         {"collapse", "Remesh while contracting: collapse edges below this fraction of the diagonal.", "F", "0"});
     parser.addPositionalArgument("meshes", "Closed mesh files.", "MESH...");
@@ -261,6 +264,7 @@ int main(int argc, char** argv)
                                            ? MedialPoints::ShrinkingBalls
                                            : MedialPoints::FilteredChordMidpoints;
     options.recoverBranches = !parser.isSet("no-recovery");
+    options.routeChains = !parser.isSet("no-routing");
     options.resampleFraction = parser.value("resample").toDouble();
     options.contraction.inputCollapseFraction = parser.value("input-collapse").toDouble();
     options.contraction.collapseFraction = parser.value("collapse").toDouble();

@@ -9,6 +9,7 @@
 #include "core/mesh/mesh_validation.h"
 #include "core/skeleton/branch_recovery.h"
 #include "core/skeleton/leaf_extension.h"
+#include "core/skeleton/medial_chain_routing.h"
 #include "core/skeleton/point_in_mesh.h"
 #include "core/skeleton/skeleton_refinement.h"
 #include "core/skeleton/skeleton_rerouting.h"
@@ -143,6 +144,15 @@ CurveSkeleton handDrawnStar(const Star& star, const TriangleMesh& mesh, const st
     return curve;
 }
 
+// The star meshed, its solid and its inward chord midpoints: what the refinement's steps
+// take.
+struct MeshedStar {
+    Star star;
+    TriangleMesh mesh = star.mesh(kStarCell);
+    PointInMesh solid{mesh};
+    std::vector<std::optional<glm::dvec3>> midpoints = inwardChordMidpoints(mesh, solid);
+};
+
 // The largest distance from a vertex of arm `k` (beyond the hub) to the curve's edges.
 double armCoverage(const Star& star, const TriangleMesh& mesh, const CurveSkeleton& curve, std::size_t k)
 {
@@ -176,10 +186,8 @@ private slots:
     // With every arm drawn, nothing is uncovered and nothing is added.
     void lostArmGetsItsBranchBack()
     {
-        const Star star;
-        const TriangleMesh mesh = star.mesh(kStarCell);
-        const PointInMesh solid(mesh);
-        const std::vector<std::optional<glm::dvec3>> midpoints = inwardChordMidpoints(mesh, solid);
+        const MeshedStar meshed;
+        const auto& [star, mesh, solid, midpoints] = meshed;
 
         CurveSkeleton complete = handDrawnStar(star, mesh, {0, 1, 2});
         const std::size_t completeNodes = complete.nodes.size();
@@ -210,6 +218,82 @@ private slots:
         for (const auto& e : curve.edges)
             QVERIFY(e[0] < e[1] && std::size_t(e[1]) < curve.nodes.size());
         QVERIFY(std::is_sorted(curve.edges.begin(), curve.edges.end()));
+    }
+
+    // Issue 20's centring: a chain that zig-zags across a limb is laid back along its axis
+    // (medial_chain_routing.h). The star's arms are drawn by hand with every other node
+    // half an arm radius to the side; after the routing every node beyond the hub lies
+    // near its arm's axis, the nodes keep their regions, and a chain that is part of a
+    // cycle (arms 0 and 1, joined tip to tip) is left alone.
+    void zigzagChainsAreLaidAlongTheAxes()
+    {
+        const MeshedStar meshed;
+        const auto& [star, mesh, solid, midpoints] = meshed;
+
+        CurveSkeleton curve = handDrawnStar(star, mesh, {0, 1, 2});
+        auto armOf = [&](const glm::dvec3& p) {
+            std::size_t best = 0;
+            for (std::size_t k = 1; k < star.armLengths.size(); ++k)
+                if (glm::dot(p, star.armDirection(k)) > glm::dot(p, star.armDirection(best)))
+                    best = k;
+            return best;
+        };
+        auto offAxis = [&](const glm::dvec3& p) {
+            const glm::dvec3 d = star.armDirection(armOf(p));
+            return glm::length(p - glm::dot(p, d) * d);
+        };
+        std::vector<int> degree(curve.nodes.size(), 0);
+        for (const auto& e : curve.edges) {
+            ++degree[std::size_t(e[0])];
+            ++degree[std::size_t(e[1])];
+        }
+        for (std::size_t n = 1; n < curve.nodes.size(); ++n)
+            if (degree[n] == 2 && n % 2 == 0) {
+                const glm::dvec3 d = star.armDirection(armOf(curve.nodes[n]));
+                curve.nodes[n] += 0.5 * star.armRadius * glm::normalize(glm::cross(d, glm::dvec3(0.0, 1.0, 0.0)));
+            }
+        const std::vector<int> regions = curve.vertexNode;
+        auto length = [](const CurveSkeleton& c) {
+            double sum = 0.0;
+            for (const auto& e : c.edges)
+                sum += glm::length(c.nodes[std::size_t(e[1])] - c.nodes[std::size_t(e[0])]);
+            return sum;
+        };
+        const double zigzagLength = length(curve);
+
+        CurveSkeleton routed = curve;
+        const ChainRouting routing = routeChainsAlongMedialAxis(routed, mesh, midpoints, solid, 0.05);
+        QCOMPARE(routing.chains, std::size_t(3));
+        QCOMPARE(routing.placed.size(), routed.nodes.size());
+        QCOMPARE(std::size_t(std::count(routing.placed.begin(), routing.placed.end(), 1)),
+                 routed.nodes.size() - 1 - star.armLengths.size()); // all but the hub and the leaves
+        QCOMPARE(routed.vertexNode, regions);
+        QVERIFY(std::is_sorted(routed.edges.begin(), routed.edges.end()));
+        double worst = 0.0;
+        for (const glm::dvec3& p : routed.nodes)
+            if (glm::length(p) > star.hubRadius + star.armRadius) { // beyond the hub's blend
+                worst = std::max(worst, offAxis(p));
+                QVERIFY(std::abs(windingNumber(mesh, p) - 1.0) < 0.01);
+            }
+        qInfo("zig-zag: length %.3f, nodes up to %.3f off their arm's axis; routed: length %.3f, nodes up to %.3f off "
+              "(arm radius %.2f)",
+              zigzagLength, 0.5 * star.armRadius, length(routed), worst, star.armRadius);
+        QVERIFY(worst < 0.2 * star.armRadius);
+        QVERIFY(length(routed) < zigzagLength);
+
+        // Arms 0 and 1 in a cycle: only arm 2's chain is a bridge.
+        std::vector<int> leaves;
+        for (std::size_t n = 0; n < curve.nodes.size(); ++n)
+            if (degree[n] == 1 && armOf(curve.nodes[n]) != 2)
+                leaves.push_back(int(n));
+        QCOMPARE(leaves.size(), std::size_t(2));
+        CurveSkeleton loop = curve;
+        loop.edges.push_back({leaves[0], leaves[1]});
+        std::sort(loop.edges.begin(), loop.edges.end());
+        QCOMPARE(routeChainsAlongMedialAxis(loop, mesh, midpoints, solid, 0.05).chains, std::size_t(1));
+        for (std::size_t n = 0; n < curve.nodes.size(); ++n)
+            if (armOf(curve.nodes[n]) != 2 || n == 0)
+                QCOMPARE(loop.nodes[n], curve.nodes[n]);
     }
 
     void starHasOneLeafPerArmAndOneJunction()
@@ -367,6 +451,15 @@ private slots:
             }
             QCOMPARE(curve.nodes[2], glm::dvec3(2.0, 0.0, 0.0));
         }
+        // A node flagged to keep (one the chain routing places) stays too; a wrong-sized
+        // mask is refused.
+        CurveSkeleton curve;
+        curve.nodes = {leaf, {0.0, -0.4, -0.6 * radius}, {0.0, 0.4, 0.6 * radius}, {0.0, 0.8, 0.0}};
+        curve.edges = {{0, 1}, {1, 2}, {2, 3}};
+        QCOMPARE(centreOnNearestWallChords(curve, solid, {}, {0, 1, 0, 0}), std::size_t(1));
+        QCOMPARE(curve.nodes[1], glm::dvec3(0.0, -0.4, -0.6 * radius));
+        QVERIFY(std::hypot(curve.nodes[2].x, curve.nodes[2].z) < 0.05 * radius);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, centreOnNearestWallChords(curve, solid, {}, {0, 1}));
     }
 
     // Leaves that stop short of a capsule's caps reach out to one radius short of the
