@@ -1,5 +1,6 @@
 #include "core/skeleton/medial_chain_routing.h"
 
+#include "core/skeleton/mesh_adjacency.h"
 #include "core/util/parallel_for.h"
 #include "core/util/point_kd_tree.h"
 
@@ -11,7 +12,6 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
-#include <queue>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -64,7 +64,7 @@ struct MedialGraph {
     std::vector<glm::dvec3> points;
     std::vector<double> radii;
     std::unordered_map<std::uint64_t, std::uint32_t> pointOfCell;
-    std::vector<std::vector<std::pair<std::uint32_t, double>>> steps; // neighbour, cost
+    VertexAdjacency steps; // per point: neighbour, cost of the step
 
     [[nodiscard]] Cell cellOf(const glm::dvec3& p) const
     {
@@ -153,8 +153,7 @@ MedialGraph medialGraph(const TriangleMesh& mesh, const std::vector<std::optiona
 }
 
 // The medial points near `p` that it sees inside, nearest first, with the cost of the step.
-std::vector<std::pair<std::uint32_t, double>> attachments(const glm::dvec3& p, const MedialGraph& graph,
-                                                          const PointInMesh& inside)
+std::vector<PathEnd> attachments(const glm::dvec3& p, const MedialGraph& graph, const PointInMesh& inside)
 {
     std::vector<std::pair<double, std::uint32_t>> near;
     const Cell c = graph.cellOf(p);
@@ -165,57 +164,13 @@ std::vector<std::pair<std::uint32_t, double>> attachments(const glm::dvec3& p, c
                     near.emplace_back(glm::length(graph.points[*j] - p), *j);
     const std::size_t tried = std::min(kEndCandidates, near.size());
     std::partial_sort(near.begin(), near.begin() + std::ptrdiff_t(tried), near.end());
-    std::vector<std::pair<std::uint32_t, double>> result;
+    std::vector<PathEnd> result;
     for (std::size_t k = 0; k < tried && result.size() < kEndAttachments; ++k)
         if (inside.segmentInside(p, graph.points[near[k].second])) {
             const double r = graph.radii[near[k].second];
-            result.emplace_back(near[k].second, stepCost(near[k].first, r, r));
+            result.push_back({near[k].second, stepCost(near[k].first, r, r)});
         }
     return result;
-}
-
-// The cheapest path from any of `from` to any of `to` (each with the cost of its step from
-// or to the chain's end); empty when none joins them.
-std::vector<std::uint32_t> cheapestPath(const MedialGraph& graph,
-                                        const std::vector<std::pair<std::uint32_t, double>>& from,
-                                        const std::vector<std::pair<std::uint32_t, double>>& to)
-{
-    constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
-    std::vector<double> cost(graph.points.size(), std::numeric_limits<double>::infinity());
-    std::vector<std::uint32_t> previous(graph.points.size(), none);
-    std::unordered_map<std::uint32_t, double> lastStep(to.begin(), to.end());
-    using Entry = std::pair<double, std::uint32_t>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-    for (const auto& [point, step] : from)
-        if (step < cost[point]) {
-            cost[point] = step;
-            queue.emplace(step, point);
-        }
-    double best = std::numeric_limits<double>::infinity();
-    std::uint32_t bestEnd = none;
-    while (!queue.empty()) {
-        const auto [c, i] = queue.top();
-        queue.pop();
-        if (c > cost[i])
-            continue;
-        if (c >= best)
-            break;
-        if (const auto last = lastStep.find(i); last != lastStep.end() && c + last->second < best) {
-            best = c + last->second;
-            bestEnd = i;
-        }
-        for (const auto& [j, step] : graph.steps[i])
-            if (c + step < cost[j]) {
-                cost[j] = c + step;
-                previous[j] = i;
-                queue.emplace(cost[j], j);
-            }
-    }
-    std::vector<std::uint32_t> path;
-    for (std::uint32_t i = bestEnd; i != none; i = previous[i])
-        path.push_back(i);
-    std::reverse(path.begin(), path.end());
-    return path;
 }
 
 void smooth(std::vector<glm::dvec3>& polyline)
@@ -340,7 +295,7 @@ std::optional<std::vector<glm::dvec3>> routedInterior(const std::vector<int>& ch
     const auto from = attachments(a, graph, inside), to = attachments(b, graph, inside);
     if (from.empty() || to.empty())
         return std::nullopt;
-    const std::vector<std::uint32_t> path = cheapestPath(graph, from, to);
+    const std::vector<std::uint32_t> path = cheapestPath(graph.steps, from, to);
     if (path.empty())
         return std::nullopt;
     std::vector<glm::dvec3> polyline{a};

@@ -5,8 +5,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <limits>
-#include <queue>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -33,38 +31,6 @@ std::optional<std::uint32_t> anchorVertex(const glm::dvec3& node, const Triangle
         if (inside.segmentInside(node, *midpoints[nearest[i].second]))
             return nearest[i].second;
     return std::nullopt;
-}
-
-// Dijkstra over the mesh's edges; the vertices from `from` to `to`, empty when apart.
-std::vector<std::uint32_t> shortestPath(const VertexAdjacency& adjacency, std::uint32_t from, std::uint32_t to)
-{
-    std::vector<double> distance(adjacency.size(), std::numeric_limits<double>::infinity());
-    std::vector<std::uint32_t> previous(adjacency.size(), std::numeric_limits<std::uint32_t>::max());
-    using Entry = std::pair<double, std::uint32_t>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-    distance[from] = 0.0;
-    queue.emplace(0.0, from);
-    while (!queue.empty()) {
-        const auto [d, v] = queue.top();
-        queue.pop();
-        if (d > distance[v])
-            continue;
-        if (v == to)
-            break;
-        for (const auto& [w, length] : adjacency[v])
-            if (d + length < distance[w]) {
-                distance[w] = d + length;
-                previous[w] = v;
-                queue.emplace(distance[w], w);
-            }
-    }
-    if (!(distance[to] < std::numeric_limits<double>::infinity()))
-        return {};
-    std::vector<std::uint32_t> path{to};
-    while (path.back() != from)
-        path.push_back(previous[path.back()]);
-    std::reverse(path.begin(), path.end());
-    return path;
 }
 
 // From `points` (first and last: the edge's ends), the ones to keep as nodes: from each
@@ -98,7 +64,7 @@ std::optional<std::vector<glm::dvec3>> insideRoute(const glm::dvec3& a, const gl
     const std::optional<std::uint32_t> to = anchorVertex(b, mesh, midpoints, inside);
     if (!from || !to)
         return std::nullopt;
-    const std::vector<std::uint32_t> path = shortestPath(adjacency, *from, *to);
+    const std::vector<std::uint32_t> path = cheapestPath(adjacency, {{*from, 0.0}}, {{*to, 0.0}});
     if (path.empty())
         return std::nullopt;
     std::vector<glm::dvec3> points{a};
