@@ -4,6 +4,7 @@
 
 #include "render/gl/gl_error.h"
 #include "render/gl/shader_library.h"
+#include "render/gl/wide_vector_state.h"
 #include "render/frame/gpu_scene.h"
 #include "render/mfr/method_factory.h"
 #include "render/mfr/trim_frame.h"
@@ -122,6 +123,7 @@ TrimRenderer::~TrimRenderer() = default;
 
 void TrimRenderer::setScene(const Scene& scene)
 {
+    const WideVectorStateScope wideVectorState; // the driver may leave it in use (wide_vector_state.h)
     m_scene->upload(scene);
 }
 
@@ -160,6 +162,7 @@ void TrimRenderer::render(const Camera& camera, const TrimSettings& settings, in
 void TrimRenderer::render(GpuScene& scene, const TrimMode& mode, const Camera& camera, const TrimSettings& settings,
                           int width, int height)
 {
+    const WideVectorStateScope wideVectorState; // the driver may leave it in use (wide_vector_state.h)
     if (const std::optional<std::string> refusal = methodRefusal(methodInfo(m_method->kind()), mode.dynamic, settings))
         throw std::invalid_argument(*refusal);
     checkInspection(mode, settings, scene.objectCount());
@@ -224,21 +227,25 @@ ObjectWindingBuffer* TrimRenderer::prepareInspection(const TrimSettings& setting
 
 void TrimRenderer::blitTo(GLuint framebuffer)
 {
+    const WideVectorStateScope wideVectorState; // the driver may leave it in use (wide_vector_state.h)
     m_target->blitColorTo(framebuffer);
 }
 
 QImage TrimRenderer::readColor()
 {
+    const WideVectorStateScope wideVectorState; // the driver may leave it in use (wide_vector_state.h)
     return m_target->readColor();
 }
 
 TrimImage TrimRenderer::readTrimImage()
 {
+    const WideVectorStateScope wideVectorState; // the driver may leave it in use (wide_vector_state.h)
     return m_target->readTrimImage();
 }
 
 std::optional<PixelOccupancy> TrimRenderer::readOccupancy()
 {
+    const WideVectorStateScope wideVectorState; // the driver may leave it in use (wide_vector_state.h)
     return m_method->readOccupancy();
 }
 

@@ -1,6 +1,7 @@
 #include "render/frame/gpu_scene.h"
 
 #include "render/gl/bindings.h"
+#include "render/gl/wide_vector_state.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -53,6 +54,7 @@ GpuScene::GpuScene(GlFunctions& gl)
 
 void GpuScene::upload(const Scene& scene)
 {
+    const WideVectorStateScope wideVectorState; // the driver may leave it in use (wide_vector_state.h)
     validateSceneLimits(scene);
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
@@ -94,6 +96,7 @@ void GpuScene::upload(const Scene& scene)
 
 void GpuScene::updatePositions(std::size_t objectIndex, const std::vector<glm::vec3>& positions)
 {
+    const WideVectorStateScope wideVectorState; // the driver may leave it in use (wide_vector_state.h)
     if (objectIndex >= m_objects.size() || positions.size() != m_objects[objectIndex].vertexCount)
         throw std::invalid_argument("updatePositions: object " + std::to_string(objectIndex) + " has " +
                                     std::to_string(objectIndex < m_objects.size() ? m_objects[objectIndex].vertexCount : 0) +
@@ -133,12 +136,14 @@ std::vector<glm::vec3> readVec3s(GlFunctions& gl, GLuint buffer, std::size_t fir
 
 std::vector<glm::vec3> GpuScene::readPositions(std::size_t objectIndex) const
 {
+    const WideVectorStateScope wideVectorState; // the driver may leave it in use (wide_vector_state.h)
     const GpuObjectGeometry object = objectGeometry(objectIndex);
     return readVec3s(m_gl, object.positions, object.baseVertex, object.vertexCount);
 }
 
 std::vector<glm::vec3> GpuScene::readNormals(std::size_t objectIndex) const
 {
+    const WideVectorStateScope wideVectorState; // the driver may leave it in use (wide_vector_state.h)
     const GpuObjectGeometry object = objectGeometry(objectIndex);
     return readVec3s(m_gl, object.normals, object.baseVertex, object.vertexCount);
 }

@@ -2,6 +2,7 @@
 
 #include "render/gl/gl_debug_log.h"
 #include "render/gl/gl_error.h"
+#include "render/gl/wide_vector_state.h"
 
 #include <QOpenGLDebugLogger>
 
@@ -40,6 +41,7 @@ OffscreenGlContext::OffscreenGlContext()
         throw GlUnavailableError("Could not make the offscreen OpenGL context current (is an X display available?).");
     m_debugLog = startGlDebugLog(*m_context);
     m_capabilities = queryCapabilities(*m_context);
+    leaveWideVectorState(); // loading and starting the driver may leave it in use
     if (const auto missing = missingRequirements(m_capabilities))
         throw GlUnavailableError(missing->toStdString());
 }
@@ -58,6 +60,7 @@ OffscreenGlContext::~OffscreenGlContext()
 void OffscreenGlContext::makeCurrent()
 {
     m_context->makeCurrent(m_surface.get());
+    leaveWideVectorState();
 }
 
 } // namespace trimlab::render

@@ -11,13 +11,18 @@
 // viewport without the GPU evaluator runs it (no GPU write to the positions between two
 // uploads), with the CPU normals timed apart: on an NVIDIA H200 an upload that follows a GPU
 // evaluation of the same buffer took 154 ms for 131,072 vertices, which a drag without the
-// GPU path should not pay. Not a test: times only.
+// GPU path should not pay. The CPU normals are timed twice per edit: as the last glFinish
+// left the CPU, and after render::leaveWideVectorState() (render/gl/wide_vector_state.h:
+// NVIDIA's driver leaves the upper vector halves in use, and baseline SSE code then runs
+// about 9x slower; TrimLab's own calls into the driver end that state, a bare glFinish does
+// not). Not a test: times only.
 //
 //   xvfb-run -a ./build/tests/render/bench_gpu_subdivision [LEVEL [EDITS]]   (default 5 21)
 #include "render/frame/gpu_scene.h"
 #include "render/frame/gpu_subdivision.h"
 #include "render/frame/subdivision_stencils.h"
 #include "render/gl/offscreen_gl_context.h"
+#include "render/gl/wide_vector_state.h"
 #include "render/trim_renderer.h"
 
 #include "core/mesh/triangle_mesh.h"
@@ -30,6 +35,8 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
+#include <string>
 #include <vector>
 
 using namespace trimlab;
@@ -94,8 +101,9 @@ EditTimes timeEdits(render::TrimRenderer& renderer, SubdivisionSurface& surface,
 }
 
 struct CpuPathTimes {
-    std::vector<double> normals; // vertexNormals of the new positions (part of the upload)
-    std::vector<double> upload;  // GpuScene::updatePositions + glFinish
+    std::vector<double> normals;     // vertexNormals of the new positions (part of the upload)
+    std::vector<double> normalsLeft; // the same after leaveWideVectorState()
+    std::vector<double> upload;      // GpuScene::updatePositions + glFinish
 };
 
 CpuPathTimes timeCpuPathAlone(render::TrimRenderer& renderer, SubdivisionSurface& surface, const SubdivisionCage& cage,
@@ -110,15 +118,29 @@ CpuPathTimes timeCpuPathAlone(render::TrimRenderer& renderer, SubdivisionSurface
         auto start = std::chrono::steady_clock::now();
         const std::vector<glm::vec3> normals = vertexNormals(surface.mesh());
         const double normalTime = millisecondsSince(start);
+        render::leaveWideVectorState();
+        start = std::chrono::steady_clock::now();
+        const std::vector<glm::vec3> normalsAgain = vertexNormals(surface.mesh());
+        const double normalLeftTime = millisecondsSince(start);
         start = std::chrono::steady_clock::now();
         scene.updatePositions(0, surface.mesh().positions);
         renderer.gl().glFinish();
-        if (e == 0 || normals.empty())
+        if (e == 0 || normals.empty() || normalsAgain.empty())
             continue;
         times.upload.push_back(millisecondsSince(start));
         times.normals.push_back(normalTime);
+        times.normalsLeft.push_back(normalLeftTime);
     }
     return times;
+}
+
+// Whether a bare glFinish leaves the wide-vector state in use, where the CPU can tell.
+std::string stateAfterFinish(render::TrimRenderer& renderer)
+{
+    render::leaveWideVectorState();
+    renderer.gl().glFinish();
+    const std::optional<bool> inUse = render::wideVectorStateInUse();
+    return !inUse ? "unknown" : *inUse ? "in use" : "not in use";
 }
 
 } // namespace
@@ -153,5 +175,10 @@ int main(int argc, char** argv)
                 "evaluation / alone %.2f\n",
                 edits, median(alone.upload), median(alone.normals),
                 median(alone.upload) > 0.0 ? median(times.cpuUpload) / median(alone.upload) : 0.0);
+    std::printf("CPU normals as glFinish left the CPU %.3f ms | after leaveWideVectorState %.3f ms | ratio %.2f "
+                "(wide-vector state %s after glFinish)\n",
+                median(alone.normals), median(alone.normalsLeft),
+                median(alone.normalsLeft) > 0.0 ? median(alone.normals) / median(alone.normalsLeft) : 0.0,
+                stateAfterFinish(renderer).c_str());
     return 0;
 }

@@ -3,6 +3,7 @@
 #include "render/gl/context_reset.h"
 #include "render/gl/gl_error.h"
 #include "render/gl/offscreen_gl_context.h"
+#include "render/gl/wide_vector_state.h"
 
 #include "core/trim/trim_shading.h"
 
@@ -38,6 +39,8 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent), m_cpuSt
         setError(tr("Neither the GPU nor the CPU reference could render this view: %1").arg(message));
         update();
     });
+    // Qt's composition of the frame calls the driver after paintGL (wide_vector_state.h).
+    connect(this, &QOpenGLWidget::frameSwapped, this, [] { render::leaveWideVectorState(); });
     setFormat(render::OffscreenGlContext::requestedFormat());
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
@@ -416,6 +419,7 @@ void ViewportWidget::resizeGL(int, int)
 
 void ViewportWidget::paintGL()
 {
+    const render::WideVectorStateScope wideVectorState;  // what follows a frame runs on the CPU again
     if (m_view.hasRenderer() && !context()->isValid()) { // Qt saw the reset first (platforms with reset notification)
         clearToBackground();
         recoverFromContextLoss(QString::fromStdString(render::contextResetMessage(render::ContextReset::Unknown)));
