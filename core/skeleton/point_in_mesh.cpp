@@ -4,9 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 namespace trimlab {
@@ -55,14 +53,10 @@ std::optional<double> PointInMesh::nearestCrossing(const glm::dvec3& origin, con
                                                    double tMin) const
 {
     const double reach = glm::length(origin - m_bounds.center()) + m_bounds.radius() + 1.0;
-    std::vector<RayHit> hits;
-    m_bvh.intersectAll(PixelRay{origin, direction}, tMin, reach, hits);
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const RayHit& hit : hits)
-        nearest = std::min(nearest, hit.t);
-    if (!std::isfinite(nearest))
+    const std::optional<RayHit> hit = m_bvh.intersectNearest(PixelRay{origin, direction}, tMin, reach);
+    if (!hit)
         return std::nullopt;
-    return nearest;
+    return hit->t;
 }
 
 bool PointInMesh::segmentInside(const glm::dvec3& p, const glm::dvec3& q) const

@@ -221,7 +221,8 @@ struct BoxRay {
     double pad;
 };
 
-bool hitsBox(const BoxRay& ray, const BvhNode& node, double tMin, double tMax)
+// The t at which the ray enters the padded box within [tMin, tMax]; none if it misses.
+std::optional<double> boxEntry(const BoxRay& ray, const BvhNode& node, double tMin, double tMax)
 {
     double tNear = tMin;
     double tFar = tMax;
@@ -230,7 +231,7 @@ bool hitsBox(const BoxRay& ray, const BvhNode& node, double tMin, double tMax)
         const double upper = node.upper[axis] + ray.pad;
         if (ray.parallel[axis]) {
             if (ray.origin[axis] < lower || ray.origin[axis] > upper)
-                return false;
+                return std::nullopt;
             continue;
         }
         double t0 = (lower - ray.origin[axis]) * ray.invDirection[axis];
@@ -240,9 +241,29 @@ bool hitsBox(const BoxRay& ray, const BvhNode& node, double tMin, double tMax)
         tNear = std::max(tNear, t0);
         tFar = std::min(tFar, t1);
         if (tNear > tFar)
-            return false;
+            return std::nullopt;
     }
-    return true;
+    return tNear;
+}
+
+bool hitsBox(const BoxRay& ray, const BvhNode& node, double tMin, double tMax)
+{
+    return boxEntry(ray, node, tMin, tMax).has_value();
+}
+
+// The box ray of `ray` for a tree whose triangles lie within `radius` of `center`.
+BoxRay makeBoxRay(const PixelRay& ray, const glm::dvec3& center, double radius)
+{
+    BoxRay boxRay{ray.origin, glm::dvec3(0.0), {false, false, false}, 0.0};
+    for (int axis = 0; axis < 3; ++axis) {
+        boxRay.parallel[axis] = ray.direction[axis] == 0.0;
+        boxRay.invDirection[axis] = boxRay.parallel[axis] ? 0.0 : 1.0 / ray.direction[axis];
+    }
+    // Far above the rounding of the box and shear arithmetic (~1e-15 of the distance),
+    // far below any geometric feature; the triangle test decides exactly afterwards.
+    const double distanceScale = glm::length(ray.origin - center) + radius;
+    boxRay.pad = 1e-10 * distanceScale + std::numeric_limits<double>::min();
+    return boxRay;
 }
 
 } // namespace
@@ -252,15 +273,7 @@ void TriangleBvh::intersectAll(const PixelRay& ray, double tMin, double tMax, st
     if (m_nodes.empty() || !(tMin <= tMax))
         return;
     const WatertightRay watertight = makeWatertightRay(ray);
-    BoxRay boxRay{ray.origin, glm::dvec3(0.0), {false, false, false}, 0.0};
-    for (int axis = 0; axis < 3; ++axis) {
-        boxRay.parallel[axis] = ray.direction[axis] == 0.0;
-        boxRay.invDirection[axis] = boxRay.parallel[axis] ? 0.0 : 1.0 / ray.direction[axis];
-    }
-    // Far above the rounding of the box and shear arithmetic (~1e-15 of the distance),
-    // far below any geometric feature; the triangle test decides exactly afterwards.
-    const double distanceScale = glm::length(ray.origin - m_center) + m_radius;
-    boxRay.pad = 1e-10 * distanceScale + std::numeric_limits<double>::min();
+    const BoxRay boxRay = makeBoxRay(ray, m_center, m_radius);
     // Boxes are tested on a slightly wider t range, so the exact range test is left to t.
     const double tSlack = 1e-10 * (std::abs(tMin) + std::abs(tMax));
     std::array<std::uint32_t, kMaxDepth + 4> stack{};
@@ -282,6 +295,55 @@ void TriangleBvh::intersectAll(const PixelRay& ray, double tMin, double tMax, st
                 hits.push_back({hit->t, tri.objectId, tri.primitiveId, hit->facing, hit->u, hit->v});
         }
     }
+}
+
+std::optional<RayHit> TriangleBvh::intersectNearest(const PixelRay& ray, double tMin, double tMax) const
+{
+    if (m_nodes.empty() || !(tMin <= tMax))
+        return std::nullopt;
+    const WatertightRay watertight = makeWatertightRay(ray);
+    const BoxRay boxRay = makeBoxRay(ray, m_center, m_radius);
+    // The slack of the whole range, kept while the range shrinks: a box is skipped only when
+    // intersectAll would skip it for a range ending at the best hit.
+    const double tSlack = 1e-10 * (std::abs(tMin) + std::abs(tMax));
+    std::optional<RayHit> best;
+    std::array<std::pair<std::uint32_t, double>, kMaxDepth + 4> stack{}; // node, entry t
+    int top = 0;
+    if (const std::optional<double> entry = boxEntry(boxRay, m_nodes[0], tMin - tSlack, tMax + tSlack))
+        stack[top++] = {0u, *entry};
+    while (top > 0) {
+        const auto [index, entry] = stack[--top];
+        if (entry > tMax + tSlack) // the best hit, found since this box was pushed, is nearer
+            continue;
+        const BvhNode& node = m_nodes[index];
+        if (node.count == 0) {
+            const std::uint32_t left = index + 1;
+            const std::uint32_t right = node.index;
+            const std::optional<double> leftEntry = boxEntry(boxRay, m_nodes[left], tMin - tSlack, tMax + tSlack);
+            const std::optional<double> rightEntry = boxEntry(boxRay, m_nodes[right], tMin - tSlack, tMax + tSlack);
+            // The farther child goes on the stack first, so the nearer one is taken next.
+            const bool leftFirst = leftEntry && (!rightEntry || *leftEntry <= *rightEntry);
+            if (leftFirst) {
+                if (rightEntry)
+                    stack[top++] = {right, *rightEntry};
+                stack[top++] = {left, *leftEntry};
+            } else if (rightEntry) {
+                if (leftEntry)
+                    stack[top++] = {left, *leftEntry};
+                stack[top++] = {right, *rightEntry};
+            }
+            continue;
+        }
+        for (std::uint32_t i = node.index; i < node.index + node.count; ++i) {
+            const BvhTriangle& tri = m_triangles[i];
+            const std::optional<TriangleHit> hit = intersectTriangle(watertight, tri.a, tri.b, tri.c);
+            if (hit && hit->t >= tMin && hit->t <= tMax) {
+                best = RayHit{hit->t, tri.objectId, tri.primitiveId, hit->facing, hit->u, hit->v};
+                tMax = hit->t;
+            }
+        }
+    }
+    return best;
 }
 
 } // namespace trimlab

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace trimlab {
@@ -33,7 +34,8 @@ struct BvhNode {
     std::uint32_t count = 0;
 };
 
-/// Immutable after construction; intersectAll is safe to call from many threads.
+/// Immutable after construction; intersectAll and intersectNearest are safe to call from
+/// many threads.
 class TriangleBvh {
 public:
     /// Builds over all triangles of all objects (binned SAH, 16 bins on each axis).
@@ -50,6 +52,13 @@ public:
     /// Boxes are tested conservatively (padded by 1e-10 of the ray's distance scale) so
     /// box rounding never loses a hit that the triangle test would report.
     void intersectAll(const PixelRay& ray, double tMin, double tMax, std::vector<RayHit>& hits) const;
+
+    /// The hit of smallest t in [tMin, tMax], or nullopt: the t that the smallest of
+    /// intersectAll's hits has (of hits at equal t, any one). Visits the nearer child first
+    /// and skips every box beyond the best hit so far (with the same conservative padding),
+    /// so a ray from inside a closed mesh tests the triangles around its first crossing
+    /// instead of every crossing through the mesh — what the skeleton's chords ask.
+    [[nodiscard]] std::optional<RayHit> intersectNearest(const PixelRay& ray, double tMin, double tMax) const;
 
     [[nodiscard]] std::size_t triangleCount() const { return m_triangles.size(); }
     [[nodiscard]] std::size_t nodeCount() const { return m_nodes.size(); }

@@ -76,6 +76,7 @@ private slots:
     void randomRaysMatchBruteForce();
     void axisAlignedAndVertexRaysMatchBruteForce();
     void rangeIsInclusiveAndFiltered();
+    void nearestIsTheSmallestOfAllHits();
     void emptyScene();
 
 private:
@@ -156,6 +157,60 @@ void TestTriangleBvh::axisAlignedAndVertexRaysMatchBruteForce()
         std::sort(hits.begin(), hits.end(), walkOrder);
         QVERIFY2(sameHits(hits, bruteForce(m_triangles, ray, 0.0, 1e30)), qPrintable(QString("ray %1").arg(i)));
     }
+}
+
+// intersectNearest against the smallest t of intersectAll, on rays from outside, from inside
+// the closed objects (the skeleton's chords), along the axes, through vertices, and with
+// ranges that start or end at a hit (inclusive at both ends).
+void TestTriangleBvh::nearestIsTheSmallestOfAllHits()
+{
+    const TriangleBvh bvh(m_scene);
+    std::mt19937 rng(5150);
+    std::uniform_real_distribution<double> coord(-4.0, 4.0);
+    std::uniform_real_distribution<double> inner(-1.5, 1.5);
+    const glm::dvec3 axes[] = {{1, 0, 0}, {0, -1, 0}, {0, 0, 1}};
+    std::size_t found = 0;
+    std::size_t missed = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const glm::dvec3 origin = i % 3 == 0 ? glm::dvec3(inner(rng), inner(rng), inner(rng)) * 0.3
+                                             : glm::dvec3(coord(rng), coord(rng), coord(rng));
+        const glm::dvec3 direction = i % 5 == 0   ? axes[i % 3]
+                                     : i % 5 == 1 ? m_triangles[std::size_t(i * 7919) % m_triangles.size()].b - origin
+                                                  : glm::dvec3(inner(rng), inner(rng), inner(rng)) - origin;
+        const PixelRay ray{origin, direction};
+        std::vector<RayHit> all;
+        bvh.intersectAll(ray, 0.0, 1e30, all);
+        std::sort(all.begin(), all.end(), walkOrder);
+        // The whole ray, then ranges cut at the second hit: from it (inclusive) and to it.
+        std::vector<std::array<double, 2>> ranges{{0.0, 1e30}};
+        if (all.size() >= 2)
+            ranges.insert(ranges.end(), {{all[1].t, 1e30}, {0.0, all[1].t}, {all[1].t, all[1].t}});
+        for (const auto& [tMin, tMax] : ranges) {
+            std::optional<double> expected;
+            for (const RayHit& hit : all)
+                if (hit.t >= tMin && hit.t <= tMax && (!expected || hit.t < *expected))
+                    expected = hit.t;
+            const std::optional<RayHit> nearest = bvh.intersectNearest(ray, tMin, tMax);
+            QVERIFY2(nearest.has_value() == expected.has_value(), qPrintable(QString("ray %1").arg(i)));
+            if (!nearest) {
+                ++missed;
+                continue;
+            }
+            ++found;
+            QVERIFY2(
+                nearest->t == *expected,
+                qPrintable(
+                    QString("ray %1: t %2 against %3").arg(i).arg(nearest->t, 0, 'g', 17).arg(*expected, 0, 'g', 17)));
+            // The hit itself is one of intersectAll's, with its numbers.
+            QVERIFY(std::any_of(all.begin(), all.end(), [&](const RayHit& h) {
+                return h.t == nearest->t && h.objectId == nearest->objectId && h.primitiveId == nearest->primitiveId &&
+                       h.facing == nearest->facing && h.u == nearest->u && h.v == nearest->v;
+            }));
+        }
+    }
+    qInfo("%zu nearest hits compared, %zu rays or ranges without a hit", found, missed);
+    QVERIFY(found > 3000 && missed > 100);
+    QVERIFY(!bvh.intersectNearest(PixelRay{{0, 0, 0}, {1, 0, 0}}, 1.0, 0.0)); // empty range
 }
 
 void TestTriangleBvh::rangeIsInclusiveAndFiltered()
