@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -49,10 +50,10 @@ bool PointInMesh::contains(const glm::dvec3& p) const
     return odd >= 2;
 }
 
-std::optional<double> PointInMesh::nearestCrossing(const glm::dvec3& origin, const glm::dvec3& direction,
-                                                   double tMin) const
+std::optional<double> PointInMesh::nearestCrossing(const glm::dvec3& origin, const glm::dvec3& direction, double tMin,
+                                                   double tMax) const
 {
-    const double reach = glm::length(origin - m_bounds.center()) + m_bounds.radius() + 1.0;
+    const double reach = std::min(tMax, glm::length(origin - m_bounds.center()) + m_bounds.radius() + 1.0);
     const std::optional<RayHit> hit = m_bvh.intersectNearest(PixelRay{origin, direction}, tMin, reach);
     if (!hit)
         return std::nullopt;
@@ -66,8 +67,7 @@ bool PointInMesh::segmentInside(const glm::dvec3& p, const glm::dvec3& q) const
     const double length = glm::length(q - p);
     if (length == 0.0)
         return true;
-    const std::optional<double> crossing = nearestCrossing(p, (q - p) / length, 0.0);
-    return !crossing || *crossing > length;
+    return !nearestCrossing(p, (q - p) / length, 0.0, length);
 }
 
 } // namespace trimlab

@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <limits>
 #include <optional>
 
 namespace trimlab {
@@ -32,9 +33,13 @@ public:
     [[nodiscard]] bool contains(const glm::dvec3& p) const;
 
     /// The distance along the unit `direction` from `origin` to the nearest surface crossing
-    /// farther than `tMin`; none when the ray leaves the mesh's bounds without one.
+    /// farther than `tMin` and not farther than `tMax`; none when there is none in that
+    /// range (with tMax infinite: when the ray leaves the mesh's bounds without one). A
+    /// finite tMax makes the query cheaper where the caller only wants crossings nearer
+    /// than one it already has (boxes beyond it are never opened).
     [[nodiscard]] std::optional<double> nearestCrossing(const glm::dvec3& origin, const glm::dvec3& direction,
-                                                        double tMin) const;
+                                                        double tMin,
+                                                        double tMax = std::numeric_limits<double>::infinity()) const;
 
     /// True when the closed segment [p, q] lies inside: both ends are (contains) and the
     /// ray from p towards q crosses no surface before q. One point query per end and one

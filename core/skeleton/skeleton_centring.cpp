@@ -18,16 +18,28 @@ namespace trimlab {
 
 namespace {
 
-// The midpoint of the chord through p towards its nearest wall; none where a ray finds
-// no surface.
+// The midpoint of the chord through p towards its nearest wall; none where the first
+// direction, or one whose wall is nearer than all before it, finds no surface on a side.
+// Each ray asks only for crossings nearer than the nearest wall so far, which most
+// directions have none of (their queries open few boxes); the other side of a nearer one
+// is then traced in full for the chord. The answer is the one every ray traced in full
+// gives, except that a direction whose walls are both beyond the nearest is not asked
+// whether it has walls at all: inside a closed mesh every ray has (the node is inside,
+// checked by the caller, and the triangle test is watertight).
 std::optional<glm::dvec3> nearestWallChordMidpoint(const glm::dvec3& p, const PointInMesh& solid,
                                                    const std::vector<glm::dvec3>& directions)
 {
     double nearest = std::numeric_limits<double>::infinity();
     std::optional<glm::dvec3> midpoint;
     for (const glm::dvec3& d : directions) {
-        const std::optional<double> a = solid.nearestCrossing(p, d, 0.0);
-        const std::optional<double> b = solid.nearestCrossing(p, -d, 0.0);
+        std::optional<double> a = solid.nearestCrossing(p, d, 0.0, nearest);
+        std::optional<double> b = solid.nearestCrossing(p, -d, 0.0, nearest);
+        if (!a && !b && nearest < std::numeric_limits<double>::infinity())
+            continue; // both walls at least as far as the nearest: not a nearer one
+        if (!a)
+            a = solid.nearestCrossing(p, d, 0.0);
+        if (!b)
+            b = solid.nearestCrossing(p, -d, 0.0);
         if (!a || !b)
             return std::nullopt; // p is not enclosed: leave it
         if (std::min(*a, *b) < nearest) {

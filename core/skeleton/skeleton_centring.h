@@ -31,7 +31,8 @@ struct CentringOptions {
 };
 
 /// Moves every node of `curve` that lies inside `solid` as described above; a node
-/// outside, or where some direction finds no surface both ways, stays, and so does node k
+/// outside, or where a chord it traces finds no surface at an end (the mesh is open
+/// there), stays, and so does node k
 /// where keep[k] is nonzero (`keep` empty, or one entry per node: the chains
 /// medial_chain_routing.h lays along the medial axis need no centring). Returns how many
 /// nodes moved. Throws std::invalid_argument when keep has another size. Parallel over

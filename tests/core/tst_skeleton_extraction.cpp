@@ -8,6 +8,7 @@
 #include "core/mesh/mesh_io.h"
 #include "core/mesh/mesh_validation.h"
 #include "core/skeleton/branch_recovery.h"
+#include "core/skeleton/half_sphere_directions.h"
 #include "core/skeleton/leaf_extension.h"
 #include "core/skeleton/medial_chain_routing.h"
 #include "core/skeleton/point_in_mesh.h"
@@ -30,6 +31,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
+#include <optional>
+#include <random>
 #include <stop_token>
 #include <utility>
 
@@ -37,6 +41,16 @@ using namespace trimlab;
 using namespace trimlab::test;
 
 namespace {
+
+// The decimated knight of the shared data (502 vertices, thin limbs), none where the
+// shared data are missing.
+std::optional<TriangleMesh> decimatedKnight()
+{
+    const std::filesystem::path path = test::sharedDataPath("static/libigl-decimated-knight.off.gz");
+    if (!std::filesystem::exists(path))
+        return std::nullopt;
+    return loadMesh(path.string());
+}
 
 // Three arms of different lengths around a hub 2.25× as wide as an arm, meshed at ~6.6k
 // vertices. With four or five arms the contraction (which stops when an iteration would
@@ -460,6 +474,95 @@ private slots:
         QCOMPARE(curve.nodes[1], glm::dvec3(0.0, -0.4, -0.6 * radius));
         QVERIFY(std::hypot(curve.nodes[2].x, curve.nodes[2].z) < 0.05 * radius);
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, centreOnNearestWallChords(curve, solid, {}, {0, 1}));
+    }
+
+    // A crossing query with an upper bound finds the nearest crossing when it lies within
+    // the bound and nothing otherwise: on random rays from inside the decimated knight (its
+    // vertices' inward chord midpoints), against the unbounded query.
+    void boundedCrossingQueryAgreesWithTheUnbounded()
+    {
+        const std::optional<TriangleMesh> knight = decimatedKnight();
+        if (!knight)
+            QSKIP("the shared decimated knight is missing");
+        const TriangleMesh& mesh = *knight;
+        const PointInMesh solid(mesh);
+        const std::vector<std::optional<glm::dvec3>> midpoints = inwardChordMidpoints(mesh, solid);
+        std::mt19937 random(20);
+        std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 2.0);
+        int within = 0, beyond = 0;
+        for (std::size_t v = 0; v < mesh.vertexCount(); v += 2) {
+            if (!midpoints[v] || !solid.contains(*midpoints[v]))
+                continue;
+            const glm::dvec3 origin = *midpoints[v]; // inside: every ray crosses the surface
+            const glm::dvec3 direction = glm::normalize(glm::dvec3(unit(random), unit(random), unit(random)));
+            const std::optional<double> full = solid.nearestCrossing(origin, direction, 0.0);
+            QVERIFY(full.has_value());
+            const double bound = fraction(random) * *full;
+            const std::optional<double> bounded = solid.nearestCrossing(origin, direction, 0.0, bound);
+            if (*full <= bound) {
+                QVERIFY(bounded.has_value());
+                QCOMPARE(*bounded, *full);
+                ++within;
+            } else {
+                QVERIFY(!bounded.has_value());
+                ++beyond;
+            }
+        }
+        QVERIFY(within > 50 && beyond > 50);
+    }
+
+    // The centring asks each ray only for walls nearer than the nearest so far; it must
+    // move every node where tracing every chord in full does (written out here), to the
+    // same point.
+    void centringMatchesTracingEveryChordInFull()
+    {
+        const std::optional<TriangleMesh> knight = decimatedKnight();
+        if (!knight)
+            QSKIP("the shared decimated knight is missing");
+        const TriangleMesh& mesh = *knight;
+        const PointInMesh solid(mesh);
+        const std::vector<glm::dvec3> directions = halfSphereDirections(CentringOptions{}.directions);
+        const auto fullTrace = [&](glm::dvec3 p) {
+            for (int round = 0; round < CentringOptions{}.rounds; ++round) {
+                double nearest = std::numeric_limits<double>::infinity();
+                std::optional<glm::dvec3> midpoint;
+                for (const glm::dvec3& d : directions) {
+                    const std::optional<double> a = solid.nearestCrossing(p, d, 0.0);
+                    const std::optional<double> b = solid.nearestCrossing(p, -d, 0.0);
+                    if (!a || !b)
+                        return p;
+                    if (std::min(*a, *b) < nearest) {
+                        nearest = std::min(*a, *b);
+                        midpoint = p + 0.5 * (*a - *b) * d;
+                    }
+                }
+                if (!midpoint || !solid.contains(*midpoint))
+                    return p;
+                p = *midpoint;
+            }
+            return p;
+        };
+        // Inside points near the surface: each vertex pushed a little along the inward
+        // chord, kept where it is inside. A chain of them (no leaves: all degree 2 but the
+        // ends, which are left out of the comparison).
+        CurveSkeleton curve;
+        const std::vector<std::optional<glm::dvec3>> midpoints = inwardChordMidpoints(mesh, solid);
+        for (std::size_t v = 0; v < mesh.vertexCount(); v += 3)
+            if (midpoints[v] && solid.contains(*midpoints[v]))
+                curve.nodes.push_back(0.5 * (glm::dvec3(mesh.positions[v]) + *midpoints[v]));
+        QVERIFY(curve.nodes.size() > 100);
+        for (int k = 0; k + 1 < int(curve.nodes.size()); ++k)
+            curve.edges.push_back({k, k + 1});
+        const std::vector<glm::dvec3> before = curve.nodes;
+        centreOnNearestWallChords(curve, solid);
+        int moved = 0;
+        for (std::size_t k = 1; k + 1 < before.size(); ++k) {
+            if (!solid.contains(before[k]))
+                continue;
+            QCOMPARE(curve.nodes[k], fullTrace(before[k]));
+            moved += curve.nodes[k] != before[k];
+        }
+        QVERIFY(moved > 100);
     }
 
     // Leaves that stop short of a capsule's caps reach out to one radius short of the
