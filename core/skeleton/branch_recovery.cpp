@@ -165,6 +165,10 @@ std::vector<std::vector<std::size_t>> uncoveredPatches(const TriangleMesh& mesh,
     return out;
 }
 
+/// A last slice with fewer than 1/kFringeRatio of the vertices of the slice before it
+/// joins that slice (limbSlices).
+constexpr std::size_t kFringeRatio = 8;
+
 /// A patch's slices by depth, base first; none when the patch is too small or shallow
 /// to be a limb.
 std::vector<Slice> limbSlices(const std::vector<std::size_t>& patch, const Coverage& c,
@@ -200,6 +204,22 @@ std::vector<Slice> limbSlices(const std::vector<std::size_t>& patch, const Cover
     std::vector<Slice> slices;
     for (auto& [index, slice] : byIndex)
         slices.push_back(std::move(slice));
+    // A last slice far smaller than the one before it is a fringe, not a section: where
+    // the limb's end is flat or slanted (the hand's wrist, cut square), the surface path
+    // from the patch's base is longest to one rim of the end, and the deepest slice is a
+    // crescent along that rim, whose ball centres sit at the rim: a leaf there leaves the
+    // far side of the end a whole width from the bone (the hand's worst vertex). Joined to
+    // the slice before, the leaf is the centre of the end. A round tip's last slice is a
+    // cap that this leaves alone unless it is a sliver (then it is shorter than an eighth
+    // of a width and the leaf moves by less).
+    while (slices.size() >= 2 &&
+           kFringeRatio * slices.back().vertices.size() < slices[slices.size() - 2].vertices.size()) {
+        Slice fringe = std::move(slices.back());
+        slices.pop_back();
+        Slice& last = slices.back();
+        last.vertices.insert(last.vertices.end(), fringe.vertices.begin(), fringe.vertices.end());
+        last.centreSum += fringe.centreSum;
+    }
     return slices;
 }
 

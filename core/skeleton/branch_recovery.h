@@ -13,8 +13,10 @@
 /// centre outside — a vertex is judged by its half-chord alone). A patch grows out from where it meets the
 /// covered surface (the limb's base); its depth — the longest surface path from that
 /// border — is the limb's length. A patch at least kMinDepthRatio radii deep gets a branch:
-/// the patch is cut into slices by that path length, each slice's node is the mean of its
-/// vertices' ball centres (the limb's axis, whatever side of the limb the vertices are on),
+/// the patch is cut into slices by that path length (a last slice far smaller than the one
+/// before it, a crescent along one rim of a flat or slanted end, joins that one), each
+/// slice's node is the mean of its vertices' ball centres (the limb's axis, whatever side
+/// of the limb the vertices are on),
 /// and the chain of slice nodes joins the nearest skeleton node whose segment to the first
 /// slice stays inside. The chain stops at the first edge that would leave the solid. A
 /// slice's vertices join its node's region. A patch that is wide but shallow (the flank of
