@@ -35,6 +35,7 @@
 #include <optional>
 #include <random>
 #include <stop_token>
+#include <string>
 #include <utility>
 
 using namespace trimlab;
@@ -42,15 +43,18 @@ using namespace trimlab::test;
 
 namespace {
 
-// The decimated knight of the shared data (502 vertices, thin limbs), none where the
-// shared data are missing.
-std::optional<TriangleMesh> decimatedKnight()
+// A mesh of the shared data (made by others; `relative` under ../shared/data), none where
+// it is missing (the caller skips).
+std::optional<TriangleMesh> sharedMesh(const std::string& relative)
 {
-    const std::filesystem::path path = test::sharedDataPath("static/libigl-decimated-knight.off.gz");
+    const std::filesystem::path path = test::sharedDataPath(relative);
     if (!std::filesystem::exists(path))
         return std::nullopt;
     return loadMesh(path.string());
 }
+
+// The decimated knight: 502 vertices, thin limbs.
+constexpr const char* kDecimatedKnight = "static/libigl-decimated-knight.off.gz";
 
 // Three arms of different lengths around a hub 2.25× as wide as an arm, meshed at ~6.6k
 // vertices. With four or five arms the contraction (which stops when an iteration would
@@ -242,11 +246,10 @@ private slots:
     // mean-curvature-flow skeleton of this mesh reaches 0.146-0.148.
     void handWristIsCovered()
     {
-        const std::filesystem::path path = test::sharedDataPath("static/odedstein-hand_closed.obj.gz");
-        if (!std::filesystem::exists(path))
-            QSKIP(qPrintable(QString::fromStdString(path.string()) + " is missing"));
-        const TriangleMesh mesh = loadMesh(path.string());
-        const auto [curve, rig] = evaluateBoth(mesh, extractSkeleton(mesh, SkeletonOptions{}));
+        const std::optional<TriangleMesh> hand = sharedMesh("static/odedstein-hand_closed.obj.gz");
+        if (!hand)
+            QSKIP("the shared closed hand is missing");
+        const auto [curve, rig] = evaluateBoth(*hand, extractSkeleton(*hand, SkeletonOptions{}));
         QVERIFY2(curve.maxCoverage < 0.145, qPrintable(QString::number(curve.maxCoverage)));
         QCOMPARE(curve.nodesInside, 1.0);
         QCOMPARE(rig.edgesLeaving, 0);
@@ -447,11 +450,10 @@ private slots:
     void sharedMeshesKeepTheirSkeletonInside()
     {
         QFETCH(QString, file);
-        const std::filesystem::path path = test::sharedDataPath(file.toStdString());
-        if (!std::filesystem::exists(path))
-            QSKIP(qPrintable(QString::fromStdString(path.string()) + " is missing"));
-        const TriangleMesh mesh = loadMesh(path.string());
-        const auto [curve, rig] = evaluateBoth(mesh, extractSkeleton(mesh, SkeletonOptions{}));
+        const std::optional<TriangleMesh> mesh = sharedMesh(file.toStdString());
+        if (!mesh)
+            QSKIP(qPrintable(file + " is missing from the shared data"));
+        const auto [curve, rig] = evaluateBoth(*mesh, extractSkeleton(*mesh, SkeletonOptions{}));
         QVERIFY(curve.nodesInside >= 0.99);
         QVERIFY(curve.samplesInside >= 0.99);
         QCOMPARE(rig.edgesLeaving, 0);
@@ -499,7 +501,7 @@ private slots:
     // vertices' inward chord midpoints), against the unbounded query.
     void boundedCrossingQueryAgreesWithTheUnbounded()
     {
-        const std::optional<TriangleMesh> knight = decimatedKnight();
+        const std::optional<TriangleMesh> knight = sharedMesh(kDecimatedKnight);
         if (!knight)
             QSKIP("the shared decimated knight is missing");
         const TriangleMesh& mesh = *knight;
@@ -534,7 +536,7 @@ private slots:
     // same point.
     void centringMatchesTracingEveryChordInFull()
     {
-        const std::optional<TriangleMesh> knight = decimatedKnight();
+        const std::optional<TriangleMesh> knight = sharedMesh(kDecimatedKnight);
         if (!knight)
             QSKIP("the shared decimated knight is missing");
         const TriangleMesh& mesh = *knight;
