@@ -116,6 +116,7 @@ SkeletonExtraction extractSkeleton(const TriangleMesh& mesh, const SkeletonOptio
                                             options.resampleFraction * glm::length(bounds.max - bounds.min));
         if (options.centre) {
             extendLeaves(result.curve, mesh, solid);
+            centreLeavesAcrossTheirBones(result.curve, solid);
             if (options.recoverBranches)
                 recoverBranches(result.curve, mesh, midpoints, solid,
                                 std::max(0.0, options.resampleFraction) * glm::length(bounds.max - bounds.min));

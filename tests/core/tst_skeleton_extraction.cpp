@@ -608,6 +608,31 @@ private slots:
         QCOMPARE(curve.nodes[1], glm::dvec3(0.0));
     }
 
+    // Leaves off a capsule's axis move across their bones onto it and keep their place
+    // along them: one on the body, and one in a cap, where the chord towards the nearest
+    // wall runs through the cap's centre and would pull the leaf back along its limb.
+    void leavesAreCentredAcrossTheirBones()
+    {
+        const double radius = 0.3;
+        const TriangleMesh mesh = axisCapsule(radius, 1.0, 8, 24, 32);
+        const PointInMesh solid(mesh);
+        CurveSkeleton curve;
+        curve.nodes = {{0.5 * radius, -0.6, 0.2 * radius}, {0.0, 0.0, 0.0}, {0.1, 1.1, 0.05}};
+        curve.edges = {{0, 1}, {1, 2}};
+        const std::vector<glm::dvec3> before = curve.nodes;
+        QCOMPARE(centreLeavesAcrossTheirBones(curve, solid), std::size_t(2));
+        QCOMPARE(curve.nodes[1], before[1]); // not a leaf
+        for (std::size_t k : {0u, 2u}) {
+            const glm::dvec3& p = curve.nodes[k];
+            const glm::dvec3 bone = glm::normalize(before[k] - before[1]);
+            qInfo("leaf %zu: %.4f off the axis, moved %.2e along its bone", k, std::hypot(p.x, p.z),
+                  glm::dot(p - before[k], bone));
+            QVERIFY(std::hypot(p.x, p.z) < 0.05 * radius);
+            QVERIFY(std::abs(glm::dot(p - before[k], bone)) < 1e-12);
+            QVERIFY(solid.segmentInside(before[1], p));
+        }
+    }
+
     // An edge across the hole of a torus (its ends inside the ring, on opposite sides)
     // cannot be bisected inside: it is replaced by a path around the ring, every segment
     // inside, that starts and ends at the edge's nodes. An edge already inside is kept.
