@@ -59,10 +59,13 @@ std::map<std::size_t, double> depthsFromBorder(const std::vector<std::size_t>& p
     return depth;
 }
 
-/// One slice of a patch: its vertices and the centre its node takes.
+/// One connected piece of a slice of a patch: its vertices, the centre its node takes, and
+/// the piece of the slice before it that it continues (an index into the patch's pieces;
+/// -1 for the pieces of the first slice, which join the skeleton).
 struct Slice {
     std::vector<std::size_t> vertices;
     glm::dvec3 centreSum{0.0};
+    int parent = -1;
 };
 
 /// The slice's node: the mean of its ball centres if that is inside, else the ball centre
@@ -165,12 +168,64 @@ std::vector<std::vector<std::size_t>> uncoveredPatches(const TriangleMesh& mesh,
     return out;
 }
 
-/// A last slice with fewer than 1/kFringeRatio of the vertices of the slice before it
-/// joins that slice (limbSlices).
+/// A last piece with fewer than 1/kFringeRatio of the vertices of the piece before it
+/// joins that piece (limbSlices).
 constexpr std::size_t kFringeRatio = 8;
 
-/// A patch's slices by depth, base first; none when the patch is too small or shallow
-/// to be a limb.
+/// The connected pieces of the slices (vertices with the same `sliceOf`, joined by mesh
+/// edges), ordered by slice, each with the piece of the slice before that it shares most
+/// mesh edges with as its parent.
+std::vector<Slice> slicePieces(const std::map<std::size_t, std::size_t>& sliceOf, const Coverage& c,
+                               const VertexAdjacency& adjacency)
+{
+    std::map<std::size_t, std::size_t> local; // patch vertex -> index in `vertices`
+    std::vector<std::size_t> vertices;
+    for (const auto& [v, slice] : sliceOf) {
+        local[v] = vertices.size();
+        vertices.push_back(v);
+    }
+    UnionFind pieces(vertices.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+        for (const auto& [w, length] : adjacency[vertices[i]])
+            if (const auto found = sliceOf.find(w); found != sliceOf.end() && found->second == sliceOf.at(vertices[i]))
+                pieces.unite(i, local.at(w));
+    // Pieces ordered by slice, then by their first vertex: the same order every run.
+    std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> members; // (slice, root) -> vertices
+    std::vector<std::size_t> pieceOfVertex(vertices.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+        members[{sliceOf.at(vertices[i]), pieces.find(i)}].push_back(i);
+    std::vector<std::pair<std::size_t, std::vector<std::size_t>>> ordered; // (slice, members)
+    for (auto& [key, list] : members)
+        ordered.emplace_back(key.first, std::move(list));
+    std::stable_sort(ordered.begin(), ordered.end(), [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first < b.first : a.second.front() < b.second.front();
+    });
+    std::vector<Slice> result(ordered.size());
+    for (std::size_t p = 0; p < ordered.size(); ++p)
+        for (std::size_t i : ordered[p].second) {
+            pieceOfVertex[i] = p;
+            result[p].vertices.push_back(vertices[i]);
+            result[p].centreSum += *c.ballCentres[vertices[i]];
+        }
+    for (std::size_t p = 0; p < ordered.size(); ++p) {
+        std::map<std::size_t, int> shared; // piece of the slice before -> mesh edges to it
+        for (std::size_t i : ordered[p].second)
+            for (const auto& [w, length] : adjacency[vertices[i]])
+                if (const auto found = sliceOf.find(w); found != sliceOf.end() && found->second + 1 == ordered[p].first)
+                    ++shared[pieceOfVertex[local.at(w)]];
+        int most = 0;
+        for (const auto& [piece, edges] : shared)
+            if (edges > most) {
+                most = edges;
+                result[p].parent = int(piece);
+            }
+    }
+    return result;
+}
+
+/// A patch's slices by depth, cut into their connected pieces (where a limb forks — a
+/// head's two ears — a slice has a piece in each fork), base first; none when the patch is
+/// too small or shallow to be a limb.
 std::vector<Slice> limbSlices(const std::vector<std::size_t>& patch, const Coverage& c,
                               const VertexAdjacency& adjacency, double spacing)
 {
@@ -193,58 +248,76 @@ std::vector<Slice> limbSlices(const std::vector<std::size_t>& patch, const Cover
     const double width = std::max(spacing, meanRadius);
     if (deepest < kMinDepthRatio * meanRadius || !(width > 0.0))
         return {};
-    std::map<std::size_t, Slice> byIndex;
-    for (std::size_t v : patch) {
-        if (!std::isfinite(depth.at(v)) || !c.ballCentres[v])
-            continue;
-        Slice& slice = byIndex[std::size_t(depth.at(v) / width)];
-        slice.vertices.push_back(v);
-        slice.centreSum += *c.ballCentres[v];
-    }
-    std::vector<Slice> slices;
-    for (auto& [index, slice] : byIndex)
-        slices.push_back(std::move(slice));
-    // A last slice far smaller than the one before it is a fringe, not a section: where
+    std::map<std::size_t, std::size_t> sliceOf;
+    for (std::size_t v : patch)
+        if (std::isfinite(depth.at(v)) && c.ballCentres[v])
+            sliceOf[v] = std::size_t(depth.at(v) / width);
+    std::vector<Slice> slices = slicePieces(sliceOf, c, adjacency);
+    // A last piece far smaller than the one before it is a fringe, not a section: where
     // the limb's end is flat or slanted (the hand's wrist, cut square), the surface path
     // from the patch's base is longest to one rim of the end, and the deepest slice is a
     // crescent along that rim, whose ball centres sit at the rim: a leaf there leaves the
     // far side of the end a whole width from the bone (the hand's worst vertex). Joined to
-    // the slice before, the leaf is the centre of the end. A round tip's last slice is a
+    // the piece before, the leaf is the centre of the end. A round tip's last slice is a
     // cap that this leaves alone unless it is a sliver (then it is shorter than an eighth
-    // of a width and the leaf moves by less).
-    while (slices.size() >= 2 &&
-           kFringeRatio * slices.back().vertices.size() < slices[slices.size() - 2].vertices.size()) {
-        Slice fringe = std::move(slices.back());
-        slices.pop_back();
-        Slice& last = slices.back();
-        last.vertices.insert(last.vertices.end(), fringe.vertices.begin(), fringe.vertices.end());
-        last.centreSum += fringe.centreSum;
+    // of a width and the leaf moves by less). Children come after their parents, so one
+    // pass from the back joins fringes of fringes too.
+    std::vector<int> children(slices.size(), 0);
+    for (const Slice& slice : slices)
+        if (slice.parent >= 0)
+            ++children[std::size_t(slice.parent)];
+    std::vector<char> joined(slices.size(), 0);
+    for (std::size_t p = slices.size(); p-- > 0;) {
+        const Slice& piece = slices[p];
+        if (children[p] > 0 || piece.parent < 0)
+            continue;
+        Slice& before = slices[std::size_t(piece.parent)];
+        if (kFringeRatio * piece.vertices.size() >= before.vertices.size())
+            continue;
+        before.vertices.insert(before.vertices.end(), piece.vertices.begin(), piece.vertices.end());
+        before.centreSum += piece.centreSum;
+        --children[std::size_t(piece.parent)];
+        joined[p] = 1;
     }
-    return slices;
+    std::vector<Slice> kept;
+    std::vector<int> renumbered(slices.size(), -1);
+    for (std::size_t p = 0; p < slices.size(); ++p) {
+        if (joined[p])
+            continue;
+        renumbered[p] = int(kept.size());
+        kept.push_back(std::move(slices[p]));
+        if (kept.back().parent >= 0)
+            kept.back().parent = renumbered[std::size_t(kept.back().parent)];
+    }
+    return kept;
 }
 
-/// Appends the slices' chain to `curve` as described in the header; true when it added
-/// at least one node.
+/// Appends the pieces' tree to `curve` as described in the header; true when it added at
+/// least one node. A piece whose edge to its parent's node would leave the solid is left
+/// out with everything beyond it.
 bool addBranch(CurveSkeleton& curve, std::size_t existingNodes, const std::vector<Slice>& slices,
                const std::vector<std::optional<glm::dvec3>>& ballCentres, const PointInMesh& solid)
 {
-    int previous = -1;
+    std::vector<int> nodeOf(slices.size(), -1);
     bool added = false;
-    for (const Slice& slice : slices) {
+    for (std::size_t p = 0; p < slices.size(); ++p) {
+        const Slice& slice = slices[p];
         const glm::dvec3 node = sliceNode(slice, ballCentres, solid);
-        if (previous < 0) {
+        int previous = -1;
+        if (slice.parent < 0) {
             previous = attachmentNode(curve, existingNodes, node, solid);
-            if (previous < 0)
-                return false;
-        } else if (!solid.segmentInside(curve.nodes[std::size_t(previous)], node)) {
-            break;
+        } else if (const int parentNode = nodeOf[std::size_t(slice.parent)];
+                   parentNode >= 0 && solid.segmentInside(curve.nodes[std::size_t(parentNode)], node)) {
+            previous = parentNode;
         }
+        if (previous < 0)
+            continue;
         const int k = int(curve.nodes.size());
         curve.nodes.push_back(node);
         curve.edges.push_back({std::min(previous, k), std::max(previous, k)});
         for (std::size_t v : slice.vertices)
             curve.vertexNode[v] = k;
-        previous = k;
+        nodeOf[p] = k;
         added = true;
     }
     return added;

@@ -10,17 +10,24 @@
 /// medial-ball radius from the skeleton (the ball's centre is on the branch), while a vertex
 /// of a lost limb lies many radii away. Vertices farther than kUncoveredRatio radii are
 /// grouped into connected patches of the mesh (without a ball — no inward chord, or a
-/// centre outside — a vertex is judged by its half-chord alone). A patch grows out from where it meets the
-/// covered surface (the limb's base); its depth — the longest surface path from that
-/// border — is the limb's length. A patch at least kMinDepthRatio radii deep gets a branch:
-/// the patch is cut into slices by that path length (a last slice far smaller than the one
-/// before it, a crescent along one rim of a flat or slanted end, joins that one), each
-/// slice's node is the mean of its vertices' ball centres (the limb's axis, whatever side
-/// of the limb the vertices are on),
-/// and the chain of slice nodes joins the nearest skeleton node whose segment to the first
-/// slice stays inside. The chain stops at the first edge that would leave the solid. A
-/// slice's vertices join its node's region. A patch that is wide but shallow (the flank of
-/// a flat body) has no depth and gets nothing.
+/// centre outside — a vertex is judged by its half-chord alone). A patch grows out from
+/// where it meets the covered surface (the limb's base); its depth — the longest surface
+/// path from that border — is the limb's length. A patch at least kMinDepthRatio radii
+/// deep gets a branch:
+/// the patch is cut into slices by that path length, and each slice into its connected
+/// pieces (where the part forks — a cow's head into its ears and horns — a slice has a
+/// piece in each fork, and the branch forks with it); each piece's node is the mean of its
+/// vertices' ball centres (the limb's axis, whatever side of the limb the vertices are on),
+/// joined to the node of the piece of the slice before that it shares most mesh edges with.
+/// A last piece far smaller than the one before it (a crescent along one rim of a flat or
+/// slanted end) joins that one. The first slice's pieces join the nearest skeleton node
+/// whose segment to them stays inside; a piece whose edge would leave the solid is left out
+/// with everything beyond it. A piece's vertices join its node's region. A patch that is
+/// wide but shallow (the flank of a flat body) has no depth and gets nothing.
+///
+/// Measured with the pieces (tenth session): the spot's head, one patch, had one chain up
+/// its middle (the ear 0.164 of the diagonal from a bone, CGAL 0.147); forked into the ears
+/// and horns, 0.161, and the curve's centring asymmetry 0.093 → 0.076 (CGAL 0.074–0.079).
 
 #include "core/mesh/triangle_mesh.h"
 #include "core/skeleton/point_in_mesh.h"

@@ -189,4 +189,29 @@ TriangleMesh Star::mesh(double cell) const
                               glm::dvec3(reach, height, reach), cell);
 }
 
+glm::dvec3 Fork::prongTip(int side) const
+{
+    return glm::dvec3(stemLength, 0.0, 0.0) +
+           prongLength * glm::dvec3(std::cos(spread), 0.0, double(side) * std::sin(spread));
+}
+
+double Fork::implicit(const glm::dvec3& p) const
+{
+    const glm::dvec3 stemEnd(stemLength, 0.0, 0.0);
+    double value = capsuleDistance(p, glm::dvec3(-handleLength, 0.0, 0.0), glm::dvec3(0.0), handleRadius);
+    value = smoothMin(value, capsuleDistance(p, glm::dvec3(0.0), stemEnd, prongRadius), 0.5 * prongRadius);
+    for (const int side : {-1, 1})
+        value = smoothMin(value, capsuleDistance(p, stemEnd, prongTip(side), prongRadius), 0.5 * prongRadius);
+    return value;
+}
+
+TriangleMesh Fork::mesh(double cell) const
+{
+    const double margin = std::max(handleRadius, prongRadius) + 2.0 * cell;
+    const double reach = std::max(prongTip(1).z, 0.0) + margin;
+    return marchingTetrahedra([this](const glm::dvec3& p) { return implicit(p); },
+                              glm::dvec3(-handleLength - margin, -margin, -reach),
+                              glm::dvec3(prongTip(1).x + margin, margin, reach), cell);
+}
+
 } // namespace trimlab::test

@@ -41,4 +41,21 @@ struct Star {
     [[nodiscard]] TriangleMesh mesh(double cell) const;
 };
 
+// A fork in the plane y = 0: a handle (capsule of `handleRadius` from (−handleLength, 0, 0)
+// to the origin), a stem (capsule of `prongRadius` from the origin to (stemLength, 0, 0))
+// and two prongs of `prongRadius` from the stem's end, `prongLength` long, `spread` radians
+// to either side of the x axis; blended by a smooth minimum (blend radius prongRadius/2).
+struct Fork {
+    double handleRadius = 0.3;
+    double handleLength = 1.2;
+    double prongRadius = 0.15;
+    double stemLength = 0.5;
+    double prongLength = 1.0;
+    double spread = 0.6;
+
+    [[nodiscard]] glm::dvec3 prongTip(int side) const; ///< side −1 or +1: the end of its axis
+    [[nodiscard]] double implicit(const glm::dvec3& p) const;
+    [[nodiscard]] TriangleMesh mesh(double cell) const;
+};
+
 } // namespace trimlab::test

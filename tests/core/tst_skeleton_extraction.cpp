@@ -238,6 +238,40 @@ private slots:
         QVERIFY(std::is_sorted(curve.edges.begin(), curve.edges.end()));
     }
 
+    // A lost part that forks gets a branch that forks with it (branch_recovery.h: each
+    // slice is cut into its connected pieces). A fork's handle has its bones, its stem and
+    // prongs none; afterwards the end of each prong's axis is within two prong radii of a
+    // bone, and every new node is inside. One chain up the middle, the mean of both prongs'
+    // sections, would leave at least one prong's end far from it.
+    void lostForkGetsAForkedBranch()
+    {
+        const Fork fork;
+        const TriangleMesh mesh = fork.mesh(0.05);
+        const PointInMesh solid(mesh);
+        CurveSkeleton curve;
+        for (double x = -fork.handleLength; x <= 1e-9; x += 0.2) {
+            curve.nodes.emplace_back(x, 0.0, 0.0);
+            if (curve.nodes.size() > 1)
+                curve.edges.push_back({int(curve.nodes.size()) - 2, int(curve.nodes.size()) - 1});
+        }
+        for (const glm::vec3& p : mesh.positions)
+            curve.vertexNode.push_back(
+                int(std::lround(std::clamp(double(p.x) + fork.handleLength, 0.0, fork.handleLength) / 0.2)));
+        const auto tipDistance = [&](int side) {
+            return distancesToSkeleton(std::vector<glm::vec3>{glm::vec3(fork.prongTip(side))}, skeletonGraph(curve))[0];
+        };
+        const double before = std::max(tipDistance(-1), tipDistance(1));
+        const std::size_t nodesBefore = curve.nodes.size();
+        QCOMPARE(recoverBranches(curve, mesh, inwardChordMidpoints(mesh, solid), solid, 0.05), std::size_t(1));
+        qInfo("%zu nodes added; the prongs' ends %.3f and %.3f from a bone (%.3f before; prong radius %.2f)",
+              curve.nodes.size() - nodesBefore, tipDistance(-1), tipDistance(1), before, fork.prongRadius);
+        QVERIFY(before > 6 * fork.prongRadius);
+        for (const int side : {-1, 1})
+            QVERIFY(tipDistance(side) < 2 * fork.prongRadius);
+        for (std::size_t n = nodesBefore; n < curve.nodes.size(); ++n)
+            QVERIFY(solid.contains(curve.nodes[n]));
+    }
+
     // The closed hand of the shared data (made by others) ends in a wrist cut square and
     // slanted, which the contraction draws into the palm: the branch recovery brings it
     // back, and its deepest slice used to be a crescent along one rim of the cut, whose
