@@ -184,11 +184,26 @@ std::vector<Slice> slicePieces(const std::map<std::size_t, std::size_t>& sliceOf
         local[v] = vertices.size();
         vertices.push_back(v);
     }
+    // Two vertices of a slice are in one piece when a mesh edge joins them, or when both
+    // neighbour one vertex of that slice or of the slices beside it: a slice about an edge
+    // wide is a band whose vertices often meet only across a vertex of the next slice.
     UnionFind pieces(vertices.size());
-    for (std::size_t i = 0; i < vertices.size(); ++i)
-        for (const auto& [w, length] : adjacency[vertices[i]])
-            if (const auto found = sliceOf.find(w); found != sliceOf.end() && found->second == sliceOf.at(vertices[i]))
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        const std::size_t slice = sliceOf.at(vertices[i]);
+        std::map<std::size_t, std::size_t> firstOfSlice; // among i's neighbours
+        for (const auto& [w, length] : adjacency[vertices[i]]) {
+            const auto found = sliceOf.find(w);
+            if (found == sliceOf.end())
+                continue;
+            if (found->second == slice)
                 pieces.unite(i, local.at(w));
+            if (found->second + 1 >= slice && found->second <= slice + 1) {
+                const auto [first, added] = firstOfSlice.try_emplace(found->second, local.at(w));
+                if (!added)
+                    pieces.unite(first->second, local.at(w));
+            }
+        }
+    }
     // Pieces ordered by slice, then by their first vertex: the same order every run.
     std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> members; // (slice, root) -> vertices
     std::vector<std::size_t> pieceOfVertex(vertices.size());

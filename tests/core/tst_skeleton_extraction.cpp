@@ -272,6 +272,31 @@ private slots:
             QVERIFY(solid.contains(curve.nodes[n]));
     }
 
+    // An arm that does not fork gets a chain, also where its slices are about as wide as
+    // the mesh's edges are long (the star meshed with cells of 0.16; a slice is the arm's
+    // mean ball radius, about 0.2, wide): such a band is often connected only across
+    // vertices of the slices beside it, and cut by its own edges alone it fell into pieces
+    // that became spurs (two leaves on this arm; the triceratops' lost legs in 8-19 pieces).
+    void narrowSlicesOfAnArmGiveAChain()
+    {
+        const Star star;
+        const TriangleMesh mesh = star.mesh(0.16);
+        const PointInMesh solid(mesh);
+        CurveSkeleton curve = handDrawnStar(star, mesh, {0, 1});
+        const std::size_t nodesBefore = curve.nodes.size();
+        QCOMPARE(recoverBranches(curve, mesh, inwardChordMidpoints(mesh, solid), solid, 0.0), std::size_t(1));
+        std::vector<int> degree(curve.nodes.size(), 0);
+        for (const auto& e : curve.edges) {
+            ++degree[std::size_t(e[0])];
+            ++degree[std::size_t(e[1])];
+        }
+        const auto added = curve.nodes.size() - nodesBefore;
+        const auto leaves = std::count(degree.begin() + std::ptrdiff_t(nodesBefore), degree.end(), 1);
+        qInfo("%zu nodes added, %td of them leaves", added, leaves);
+        QVERIFY(added >= 4);
+        QCOMPARE(leaves, std::ptrdiff_t(1));
+    }
+
     // The closed hand of the shared data (made by others) ends in a wrist cut square and
     // slanted, which the contraction draws into the palm: the branch recovery brings it
     // back, and its deepest slice used to be a crescent along one rim of the cut, whose
