@@ -34,6 +34,23 @@ void useDynamicOpenMpTeams()
         setDynamic(1);
 }
 
+// OpenBLAS runs on one thread. Its threads spin while they wait for work, and on a busy
+// machine a descheduled one stalls the others: with two busy loops on the 2 cores here, the
+// fish's contraction took 10-29 s with OpenBLAS's threads and 0.9-1.1 s on one (the bunny
+// 5.8-6.8 s and 0.24 s, the triceratops 3.8-5.3 s and 0.25-0.31 s). On an idle machine one
+// thread is no slower (the bunny 0.14 s, the fish 0.55 s, the armadillo after one Loop
+// subdivision 3.7 s, against 0.13-0.15, 0.55 and 4.0-4.1 s; CHOLMOD's supernodes here are
+// small for threaded BLAS). Process-wide, and made before every call into CHOLMOD as the
+// OpenMP setting above, so that nothing set in between lasts; looked up, so another BLAS
+// needs nothing.
+void useOneBlasThread()
+{
+    using SetNumThreads = void (*)(int);
+    static const auto setNumThreads = reinterpret_cast<SetNumThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+    if (setNumThreads)
+        setNumThreads(1);
+}
+
 using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
 
 const char* cholmodOrderingName(int ordering)
@@ -85,6 +102,7 @@ public:
     bool analyze(const SkeletonSparseMatrix& lower, std::string& error) override
     {
         useDynamicOpenMpTeams();
+        useOneBlasThread();
         m_solver.analyzePattern(lower);
         const cholmod_common& common = m_solver.cholmod();
         if (common.status < CHOLMOD_OK || m_solver.factor() == nullptr) {
@@ -106,6 +124,7 @@ public:
             return false;
         }
         useDynamicOpenMpTeams();
+        useOneBlasThread();
         m_solver.factorize(lower);
         const cholmod_common& common = m_solver.cholmod();
         if (m_solver.info() != Eigen::Success || common.status < CHOLMOD_OK || common.status == CHOLMOD_NOT_POSDEF) {
@@ -119,6 +138,7 @@ public:
     bool solve(const Eigen::MatrixX3d& rhs, Eigen::MatrixX3d& x, std::string& error) override
     {
         useDynamicOpenMpTeams();
+        useOneBlasThread();
         x = m_solver.solve(rhs);
         if (m_solver.info() != Eigen::Success) {
             error = "CHOLMOD's solve failed: " + cholmodStatusText(m_solver.cholmod().status) + ".";

@@ -294,6 +294,28 @@ private slots:
         }
     }
 
+    // A contraction puts OpenBLAS on one thread (sparse_cholesky.cpp: its spinning threads
+    // stalled the contraction 10-25x on a busy machine; measured by hand, not here). The
+    // setting is process-wide, so the test first asks for two threads itself.
+    void contractionRunsBlasOnOneThread()
+    {
+        using SetNumThreads = void (*)(int);
+        using GetNumThreads = int (*)();
+        const auto set = reinterpret_cast<SetNumThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+        const auto get = reinterpret_cast<GetNumThreads>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+        if (!set || !get)
+            QSKIP("the BLAS here is not OpenBLAS: no threads to set");
+        set(2);
+        if (get() != 2)
+            QSKIP("OpenBLAS runs one thread whatever is asked (a single-threaded build)");
+        ContractionOptions options;
+        options.backend = SparseBackend::Cholmod;
+        options.maxIterations = 1;
+        ContractionSolver solver(capsule(), options);
+        solver.run();
+        QCOMPARE(get(), 1);
+    }
+
     // The remeshing's collapses keep a closed 2-manifold of the same genus (the link
     // condition), record where every vertex went, and put the kept vertex at the midpoint.
     // CHOLMOD's OpenMP teams are dynamic in the thread that runs a contraction, so they fit
