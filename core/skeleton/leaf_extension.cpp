@@ -14,7 +14,7 @@ constexpr int kShrinkSteps = 4;
 
 } // namespace
 
-std::size_t extendLeaves(CurveSkeleton& curve, const TriangleMesh& mesh, const PointInMesh& solid)
+std::vector<int> leafNeighbours(const CurveSkeleton& curve)
 {
     std::vector<int> degree(curve.nodes.size(), 0), neighbour(curve.nodes.size(), -1);
     for (const auto& edge : curve.edges) {
@@ -23,14 +23,23 @@ std::size_t extendLeaves(CurveSkeleton& curve, const TriangleMesh& mesh, const P
         neighbour[static_cast<std::size_t>(edge[0])] = edge[1];
         neighbour[static_cast<std::size_t>(edge[1])] = edge[0];
     }
+    for (std::size_t k = 0; k < neighbour.size(); ++k)
+        if (degree[k] != 1)
+            neighbour[k] = -1;
+    return neighbour;
+}
+
+std::size_t extendLeaves(CurveSkeleton& curve, const TriangleMesh& mesh, const PointInMesh& solid)
+{
+    const std::vector<int> neighbour = leafNeighbours(curve);
     std::vector<std::vector<std::size_t>> regions(curve.nodes.size());
     for (std::size_t v = 0; v < curve.vertexNode.size() && v < mesh.vertexCount(); ++v)
-        if (const int k = curve.vertexNode[v]; k >= 0 && degree[static_cast<std::size_t>(k)] == 1)
+        if (const int k = curve.vertexNode[v]; k >= 0 && neighbour[static_cast<std::size_t>(k)] >= 0)
             regions[static_cast<std::size_t>(k)].push_back(v);
 
     std::size_t moved = 0;
     for (std::size_t k = 0; k < curve.nodes.size(); ++k) {
-        if (degree[k] != 1 || regions[k].empty())
+        if (neighbour[k] < 0 || regions[k].empty())
             continue;
         const glm::dvec3 leaf = curve.nodes[k];
         const glm::dvec3 along = leaf - curve.nodes[static_cast<std::size_t>(neighbour[k])];

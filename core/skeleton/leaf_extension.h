@@ -14,8 +14,12 @@
 #include "core/skeleton/skeleton.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace trimlab {
+
+/// Per node of `curve`: its one neighbour when it is a leaf (degree 1), else −1.
+[[nodiscard]] std::vector<int> leafNeighbours(const CurveSkeleton& curve);
 
 /// Moves the leaves (nodes of degree 1 with a non-empty region) of `curve` as described
 /// above. `mesh` holds the regions' original positions. Returns the leaves moved.

@@ -1,6 +1,7 @@
 #include "core/skeleton/skeleton_centring.h"
 
 #include "core/skeleton/half_sphere_directions.h"
+#include "core/skeleton/leaf_extension.h"
 #include "core/util/parallel_for.h"
 
 #include <glm/geometric.hpp>
@@ -76,16 +77,10 @@ std::vector<glm::dvec3> directionsAcross(const glm::dvec3& bone)
 
 std::size_t centreLeavesAcrossTheirBones(CurveSkeleton& curve, const PointInMesh& solid, const CentringOptions& options)
 {
-    std::vector<int> degree(curve.nodes.size(), 0), neighbour(curve.nodes.size(), -1);
-    for (const std::array<int, 2>& edge : curve.edges) {
-        ++degree[static_cast<std::size_t>(edge[0])];
-        ++degree[static_cast<std::size_t>(edge[1])];
-        neighbour[static_cast<std::size_t>(edge[0])] = edge[1];
-        neighbour[static_cast<std::size_t>(edge[1])] = edge[0];
-    }
+    const std::vector<int> neighbour = leafNeighbours(curve);
     std::vector<char> moved(curve.nodes.size(), 0);
     parallelFor(curve.nodes.size(), 0, [&](std::size_t k) {
-        if (degree[k] != 1)
+        if (neighbour[k] < 0)
             return;
         const glm::dvec3 parent = curve.nodes[static_cast<std::size_t>(neighbour[k])];
         glm::dvec3 p = curve.nodes[k];

@@ -51,6 +51,13 @@ void useOneBlasThread()
         setNumThreads(1);
 }
 
+// Both settings above, made before every call into CHOLMOD.
+void setThreadsForCholmod()
+{
+    useDynamicOpenMpTeams();
+    useOneBlasThread();
+}
+
 using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
 
 const char* cholmodOrderingName(int ordering)
@@ -101,8 +108,7 @@ public:
 
     bool analyze(const SkeletonSparseMatrix& lower, std::string& error) override
     {
-        useDynamicOpenMpTeams();
-        useOneBlasThread();
+        setThreadsForCholmod();
         m_solver.analyzePattern(lower);
         const cholmod_common& common = m_solver.cholmod();
         if (common.status < CHOLMOD_OK || m_solver.factor() == nullptr) {
@@ -123,8 +129,7 @@ public:
             error = "CHOLMOD factorization requested before a successful analysis.";
             return false;
         }
-        useDynamicOpenMpTeams();
-        useOneBlasThread();
+        setThreadsForCholmod();
         m_solver.factorize(lower);
         const cholmod_common& common = m_solver.cholmod();
         if (m_solver.info() != Eigen::Success || common.status < CHOLMOD_OK || common.status == CHOLMOD_NOT_POSDEF) {
@@ -137,8 +142,7 @@ public:
 
     bool solve(const Eigen::MatrixX3d& rhs, Eigen::MatrixX3d& x, std::string& error) override
     {
-        useDynamicOpenMpTeams();
-        useOneBlasThread();
+        setThreadsForCholmod();
         x = m_solver.solve(rhs);
         if (m_solver.info() != Eigen::Success) {
             error = "CHOLMOD's solve failed: " + cholmodStatusText(m_solver.cholmod().status) + ".";
