@@ -60,14 +60,6 @@ MeshTopology meshTopology(const TriangleMesh& mesh)
     return {components, static_cast<int>((2 * components - euler) / 2)};
 }
 
-double segmentDistance(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b)
-{
-    const glm::dvec3 ab = b - a;
-    const double lengthSquared = glm::dot(ab, ab);
-    const double t = lengthSquared > 0.0 ? std::clamp(glm::dot(p - a, ab) / lengthSquared, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + t * ab));
-}
-
 void requireValidGraph(const SkeletonGraph& skeleton)
 {
     for (std::size_t i = 0; i < skeleton.nodes.size(); ++i) {
@@ -121,6 +113,14 @@ GraphTopology graphTopology(const SkeletonGraph& skeleton)
 }
 
 } // namespace
+
+double segmentDistance(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b)
+{
+    const glm::dvec3 ab = b - a;
+    const double lengthSquared = glm::dot(ab, ab);
+    const double t = lengthSquared > 0.0 ? std::clamp(glm::dot(p - a, ab) / lengthSquared, 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + t * ab));
+}
 
 std::vector<double> distancesToSkeleton(std::span<const glm::vec3> positions, const SkeletonGraph& skeleton)
 {

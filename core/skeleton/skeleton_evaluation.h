@@ -43,6 +43,9 @@ struct SkeletonGraph {
 /// Joints as nodes, one edge per bone.
 [[nodiscard]] SkeletonGraph skeletonGraph(const SkeletonRig& rig);
 
+/// The distance from `p` to the segment from `a` to `b` (to `a` when they coincide).
+[[nodiscard]] double segmentDistance(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b);
+
 /// Per point of `positions`, the distance to the nearest edge of `skeleton` (a node without
 /// edges counts as a point); infinity for a skeleton without nodes. The evaluator's
 /// coverage, and the branch recovery's test for uncovered vertices. Parallel over points.

@@ -1,6 +1,7 @@
 #include "core/skeleton/skeleton_extraction.h"
 
 #include "core/skeleton/branch_recovery.h"
+#include "core/skeleton/cap_bones.h"
 #include "core/skeleton/contraction_solver.h"
 #include "core/skeleton/point_in_mesh.h"
 #include "core/skeleton/rig_hierarchy.h"
@@ -135,6 +136,7 @@ SkeletonExtraction extractSkeleton(const TriangleMesh& mesh, const SkeletonOptio
             } else {
                 centreOnNearestWallChords(result.curve, solid);
             }
+            addCapBones(result.curve, mesh, solid);
             splitEdgesLeaving(result.curve, midpoints, solid);
             rerouteLeavingEdges(result.curve, mesh, midpoints, solid);
         }

@@ -8,6 +8,7 @@
 #include "core/mesh/mesh_io.h"
 #include "core/mesh/mesh_validation.h"
 #include "core/skeleton/branch_recovery.h"
+#include "core/skeleton/cap_bones.h"
 #include "core/skeleton/half_sphere_directions.h"
 #include "core/skeleton/leaf_extension.h"
 #include "core/skeleton/medial_chain_routing.h"
@@ -27,8 +28,10 @@
 #include <QtTest>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -690,6 +693,51 @@ private slots:
             QVERIFY(std::abs(glm::dot(p - before[k], bone)) < 1e-12);
             QVERIFY(solid.segmentInside(before[1], p));
         }
+    }
+
+    // A chain that ends at a fold (node 1: its bones run back down the capsule and sideways,
+    // none towards the top cap) leaves the cap's tip a limb's length from every bone: the
+    // fold gets one new leaf up the axis, and the tip comes within about a radius. The
+    // bottom fold's cap (0.4 from its node, not among the mesh's farthest) gets none.
+    void capBeyondAFoldGetsABone()
+    {
+        const double radius = 0.3;
+        const TriangleMesh mesh = axisCapsule(radius, 1.0, 8, 24, 32);
+        const PointInMesh solid(mesh);
+        CurveSkeleton curve;
+        curve.nodes = {{0.0, -0.9, 0.0}, {0.0, 0.3, 0.0}, {0.15, 0.1, 0.0}, {0.15, -0.7, 0.0}};
+        curve.edges = {{0, 1}, {0, 3}, {1, 2}};
+        curve.vertexNode.resize(mesh.vertexCount());
+        for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+            const double y = mesh.positions[v].y;
+            curve.vertexNode[v] = y > 0.5 ? 1 : y < -0.95 ? 0 : 2;
+        }
+        const auto farthestOnTheTopCap = [&] {
+            const std::vector<double> d = distancesToSkeleton(mesh.positions, skeletonGraph(curve));
+            double farthest = 0.0;
+            for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
+                if (mesh.positions[v].y > 1.0)
+                    farthest = std::max(farthest, d[v]);
+            return farthest;
+        };
+        const double before = farthestOnTheTopCap();
+        QVERIFY(std::abs(before - 1.0) < 1e-3); // the top tip, from node 1; the mesh's farthest
+
+        QCOMPARE(addCapBones(curve, mesh, solid), std::size_t(1));
+        QCOMPARE(curve.nodes.size(), std::size_t(5));
+        QVERIFY(std::find(curve.edges.begin(), curve.edges.end(), std::array<int, 2>{1, 4}) != curve.edges.end());
+        QVERIFY(std::is_sorted(curve.edges.begin(), curve.edges.end()));
+        const glm::dvec3 bone = curve.nodes[4] - curve.nodes[1];
+        const double after = farthestOnTheTopCap();
+        qInfo("cap bone %.3f long, %.2f deg off the axis; farthest vertex %.3f -> %.3f", glm::length(bone),
+              glm::degrees(std::acos(glm::normalize(bone).y)), before, after);
+        QVERIFY(glm::normalize(bone).y > std::cos(glm::radians(5.0)));
+        QVERIFY(solid.segmentInside(curve.nodes[1], curve.nodes[4]));
+        QVERIFY(after < 1.2 * radius);
+        // The vertices past the bone's middle are the new leaf's.
+        for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
+            if (mesh.positions[v].y > 0.3 + 0.5 * bone.y + 1e-9)
+                QCOMPARE(curve.vertexNode[v], 4);
     }
 
     // An edge across the hole of a torus (its ends inside the ring, on opposite sides)
