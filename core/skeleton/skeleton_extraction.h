@@ -31,9 +31,9 @@ struct SkeletonOptions {
     /// centred intermediate nodes (skeleton_resampling.h); ≤ 0 leaves the curve as the
     /// simplification made it. Only with refine.
     double resampleFraction = 0.01;
-    /// Last, the leaves reach out to their tips (leaf_extension.h) and every node moves
-    /// to the midpoint of its chord towards the nearest wall (skeleton_centring.h). Only with
-    /// refine.
+    /// Last, the leaves reach out to their tips (leaf_extension.h), every node moves to the
+    /// midpoint of its chord towards the nearest wall (skeleton_centring.h), and a blunt end
+    /// that no leaf points at gets one (cap_bones.h). Only with refine.
     bool centre = true;
     /// After the leaves reach their tips, limbs that no branch reaches get one
     /// (branch_recovery.h). Only with refine and centre.
