@@ -1,6 +1,7 @@
 #include "core/skeleton/cap_bones.h"
 
 #include "core/skeleton/half_sphere_directions.h"
+#include "core/skeleton/leaf_extension.h"
 #include "core/skeleton/skeleton_evaluation.h"
 
 #include <glm/geometric.hpp>
@@ -46,18 +47,10 @@ std::optional<Cap> capAhead(const CurveSkeleton& curve, std::size_t k, const std
         if (glm::length(bone) > 0.0 && glm::dot(glm::normalize(bone), direction) >= kCapBoneCone)
             return std::nullopt;
     }
-    double reach = 0.0;
-    double radius = 0.0;
-    for (std::size_t v : region) {
-        const glm::dvec3 offset = glm::dvec3(mesh.positions[v]) - node;
-        const double along = glm::dot(offset, direction);
-        reach = std::max(reach, along);
-        radius += glm::length(offset - along * direction);
-    }
-    radius /= static_cast<double>(region.size());
-    if (ahead <= radius || reach <= radius)
+    const RegionReach reach = regionReach(region, mesh, node, direction);
+    if (ahead <= reach.radius || reach.ahead <= reach.radius)
         return std::nullopt; // a ring around the node, or a cap within its own radius
-    return Cap{k, direction, reach - radius, 0.0};
+    return Cap{k, direction, reach.ahead - reach.radius, 0.0};
 }
 
 // The region's largest distance to the curve with the bone from `node` to `tip` added.
@@ -109,12 +102,13 @@ std::size_t addCapBones(CurveSkeleton& curve, const TriangleMesh& mesh, const Po
             farthest = std::max(farthest, distance[v]);
         if (farthest < kCapWorstFraction * meshFarthest)
             continue;
-        if (farthest <= kCapBallRatio * nearestWall(curve.nodes[k], solid, directions))
-            continue; // as near as the node's ball reaches: a round end (a ball-shaped hub)
-        if (auto cap = capAhead(curve, k, neighbours[k], regions[k], mesh)) {
-            cap->farthest = farthest;
-            caps.push_back(*cap);
-        }
+        std::optional<Cap> cap = capAhead(curve, k, neighbours[k], regions[k], mesh);
+        // The node's nearest wall (96 rays) only for a cap: as near as the node's ball
+        // reaches is a round end (a ball-shaped hub).
+        if (!cap || farthest <= kCapBallRatio * nearestWall(curve.nodes[k], solid, directions))
+            continue;
+        cap->farthest = farthest;
+        caps.push_back(*cap);
     }
     std::sort(caps.begin(), caps.end(), [](const Cap& a, const Cap& b) { return a.farthest > b.farthest; });
 

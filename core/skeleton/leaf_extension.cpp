@@ -14,6 +14,20 @@ constexpr int kShrinkSteps = 4;
 
 } // namespace
 
+RegionReach regionReach(const std::vector<std::size_t>& region, const TriangleMesh& mesh, const glm::dvec3& from,
+                        const glm::dvec3& direction)
+{
+    RegionReach reach;
+    for (std::size_t v : region) {
+        const glm::dvec3 offset = glm::dvec3(mesh.positions[v]) - from;
+        const double along = glm::dot(offset, direction);
+        reach.ahead = std::max(reach.ahead, along);
+        reach.radius += glm::length(offset - along * direction);
+    }
+    reach.radius /= static_cast<double>(region.size());
+    return reach;
+}
+
 std::vector<int> leafNeighbours(const CurveSkeleton& curve)
 {
     std::vector<int> degree(curve.nodes.size(), 0), neighbour(curve.nodes.size(), -1);
@@ -46,16 +60,8 @@ std::size_t extendLeaves(CurveSkeleton& curve, const TriangleMesh& mesh, const P
         if (glm::length(along) == 0.0)
             continue;
         const glm::dvec3 direction = glm::normalize(along);
-        double reach = 0.0;
-        double radius = 0.0;
-        for (std::size_t v : regions[k]) {
-            const glm::dvec3 offset = glm::dvec3(mesh.positions[v]) - leaf;
-            const double ahead = glm::dot(offset, direction);
-            reach = std::max(reach, ahead);
-            radius += glm::length(offset - ahead * direction);
-        }
-        radius /= static_cast<double>(regions[k].size());
-        double step = reach - radius;
+        const RegionReach reach = regionReach(regions[k], mesh, leaf, direction);
+        double step = reach.ahead - reach.radius;
         for (int attempt = 0; step > 0.0 && attempt <= kShrinkSteps; ++attempt, step *= 0.5) {
             const glm::dvec3 tip = leaf + step * direction;
             if (solid.segmentInside(leaf, tip)) {

@@ -13,10 +13,24 @@
 #include "core/skeleton/point_in_mesh.h"
 #include "core/skeleton/skeleton.h"
 
+#include <glm/vec3.hpp>
+
 #include <cstddef>
 #include <vector>
 
 namespace trimlab {
+
+/// How far a region reaches ahead of a point along a direction, and how wide it is there.
+struct RegionReach {
+    double ahead = 0.0;  ///< the largest projection of a vertex on the direction (0 when none is ahead)
+    double radius = 0.0; ///< the vertices' mean distance from the line through the point
+};
+
+/// RegionReach of the vertices `region` of `mesh` from `from` along the unit `direction`
+/// (`region` not empty). The extension's length is ahead − radius: one local radius short
+/// of the tip.
+[[nodiscard]] RegionReach regionReach(const std::vector<std::size_t>& region, const TriangleMesh& mesh,
+                                      const glm::dvec3& from, const glm::dvec3& direction);
 
 /// Per node of `curve`: its one neighbour when it is a leaf (degree 1), else −1.
 [[nodiscard]] std::vector<int> leafNeighbours(const CurveSkeleton& curve);
