@@ -2,6 +2,7 @@
 
 #include "core/skeleton/half_sphere_directions.h"
 #include "core/skeleton/leaf_extension.h"
+#include "core/skeleton/skeleton_centring.h"
 #include "core/skeleton/skeleton_evaluation.h"
 
 #include <glm/geometric.hpp>
@@ -21,6 +22,8 @@ constexpr std::size_t kMinCapVertices = 8;
 constexpr int kWallDirections = 48;
 // Halvings of a cap bone that would leave the solid before it is given up.
 constexpr int kShrinkSteps = 4;
+// Moves of a new leaf across its bone (centreLeavesAcrossTheirBones's default).
+constexpr int kCentringRounds = CentringOptions{}.rounds;
 
 struct Cap {
     std::size_t node = 0;
@@ -29,15 +32,24 @@ struct Cap {
     double farthest = 0.0; ///< the region's largest distance to the curve
 };
 
-// The cap ahead of node k, if its region has one that no bone of k reaches (see the header).
+// The cap ahead of node k, if its region has one that no bone of k reaches (see the
+// header): its direction is that of the region's far vertices (distance[v] ≥ band), its
+// width that of the region's part ahead of the node.
 std::optional<Cap> capAhead(const CurveSkeleton& curve, std::size_t k, const std::vector<int>& neighbours,
-                            const std::vector<std::size_t>& region, const TriangleMesh& mesh)
+                            const std::vector<std::size_t>& region, const TriangleMesh& mesh,
+                            const std::vector<double>& distance, double band)
 {
     const glm::dvec3 node = curve.nodes[k];
     glm::dvec3 centroid(0.0);
+    std::size_t far = 0;
     for (std::size_t v : region)
-        centroid += glm::dvec3(mesh.positions[v]);
-    centroid /= static_cast<double>(region.size());
+        if (distance[v] >= band) {
+            centroid += glm::dvec3(mesh.positions[v]);
+            ++far;
+        }
+    if (far == 0)
+        return std::nullopt;
+    centroid /= static_cast<double>(far);
     const double ahead = glm::length(centroid - node);
     if (ahead == 0.0)
         return std::nullopt;
@@ -47,9 +59,13 @@ std::optional<Cap> capAhead(const CurveSkeleton& curve, std::size_t k, const std
         if (glm::length(bone) > 0.0 && glm::dot(glm::normalize(bone), direction) >= kCapBoneCone)
             return std::nullopt;
     }
-    const RegionReach reach = regionReach(region, mesh, node, direction);
+    std::vector<std::size_t> front;
+    for (std::size_t v : region)
+        if (glm::dot(glm::dvec3(mesh.positions[v]) - node, direction) > 0.0)
+            front.push_back(v);
+    const RegionReach reach = regionReach(front, mesh, node, direction);
     if (ahead <= reach.radius || reach.ahead <= reach.radius)
-        return std::nullopt; // a ring around the node, or a cap within its own radius
+        return std::nullopt; // far vertices around the node, or within the cap's own radius
     return Cap{k, direction, reach.ahead - reach.radius, 0.0};
 }
 
@@ -92,20 +108,26 @@ std::size_t addCapBones(CurveSkeleton& curve, const TriangleMesh& mesh, const Po
 
     std::vector<double> distance = distancesToSkeleton(mesh.positions, skeletonGraph(curve));
     const double meshFarthest = distance.empty() ? 0.0 : *std::max_element(distance.begin(), distance.end());
+    const double band = kCapWorstFraction * meshFarthest;
+    const auto regionFarthest = [&](std::size_t k) {
+        double farthest = 0.0;
+        for (std::size_t v : regions[k])
+            farthest = std::max(farthest, distance[v]);
+        return farthest;
+    };
     const std::vector<glm::dvec3> directions = halfSphereDirections(kWallDirections);
     std::vector<Cap> caps;
     for (std::size_t k = 0; k < nodeCount; ++k) {
         if (neighbours[k].size() < 2 || regions[k].size() < kMinCapVertices)
             continue;
-        double farthest = 0.0;
-        for (std::size_t v : regions[k])
-            farthest = std::max(farthest, distance[v]);
-        if (farthest < kCapWorstFraction * meshFarthest)
+        const double farthest = regionFarthest(k);
+        if (farthest < band)
             continue;
-        std::optional<Cap> cap = capAhead(curve, k, neighbours[k], regions[k], mesh);
-        // The node's nearest wall (96 rays) only for a cap: as near as the node's ball
-        // reaches is a round end (a ball-shaped hub).
-        if (!cap || farthest <= kCapBallRatio * nearestWall(curve.nodes[k], solid, directions))
+        std::optional<Cap> cap = capAhead(curve, k, neighbours[k], regions[k], mesh, distance, band);
+        // A junction's nearest wall (96 rays) only for a cap: as near as its ball reaches
+        // is a round end (a ball-shaped hub between limbs).
+        if (!cap ||
+            (neighbours[k].size() >= 3 && farthest <= kCapBallRatio * nearestWall(curve.nodes[k], solid, directions)))
             continue;
         cap->farthest = farthest;
         caps.push_back(*cap);
@@ -116,25 +138,28 @@ std::size_t addCapBones(CurveSkeleton& curve, const TriangleMesh& mesh, const Po
     for (const Cap& cap : caps) {
         const std::vector<std::size_t>& region = regions[cap.node];
         const glm::dvec3 node = curve.nodes[cap.node];
-        double before = 0.0; // again: a cap bone added before may reach this region too
-        for (std::size_t v : region)
-            before = std::max(before, distance[v]);
+        // Again: a bone added before may have brought this region's far vertices nearer
+        // (one bone per cap, not one per node of a chain beside it).
+        const double before = regionFarthest(cap.node);
+        if (before < band)
+            continue;
         double step = cap.step;
         for (int attempt = 0; attempt <= kShrinkSteps; ++attempt, step *= 0.5) {
-            const glm::dvec3 tip = node + step * cap.direction;
+            glm::dvec3 tip = node + step * cap.direction;
             if (!solid.segmentInside(node, tip))
                 continue;
             if (farthestWithBone(region, distance, mesh, node, tip) > (1.0 - kMinCapGain) * before)
                 break; // a shorter bone would gain less
+            tip = leafCentredAcrossItsBone(node, tip, solid, kCentringRounds);
             const int leaf = static_cast<int>(curve.nodes.size());
             curve.nodes.push_back(tip);
             curve.edges.push_back({static_cast<int>(cap.node), leaf});
-            for (std::size_t v : region) {
-                const glm::dvec3 p(mesh.positions[v]);
-                distance[v] = std::min(distance[v], segmentDistance(p, node, tip));
-                if (glm::dot(p - node, cap.direction) > 0.5 * step)
+            for (std::size_t v = 0; v < distance.size(); ++v)
+                distance[v] = std::min(distance[v], segmentDistance(glm::dvec3(mesh.positions[v]), node, tip));
+            const glm::dvec3 along = tip - node;
+            for (std::size_t v : region)
+                if (glm::dot(glm::dvec3(mesh.positions[v]) - node, along) > 0.5 * glm::dot(along, along))
                     curve.vertexNode[v] = leaf;
-            }
             ++added;
             break;
         }

@@ -75,6 +75,23 @@ std::vector<glm::dvec3> directionsAcross(const glm::dvec3& bone)
 
 } // namespace
 
+glm::dvec3 leafCentredAcrossItsBone(const glm::dvec3& parent, const glm::dvec3& leaf, const PointInMesh& solid,
+                                    int rounds)
+{
+    const double length = glm::length(leaf - parent);
+    if (!(length > 0.0) || !solid.contains(leaf))
+        return leaf;
+    const std::vector<glm::dvec3> across = directionsAcross((leaf - parent) / length);
+    glm::dvec3 p = leaf;
+    for (int round = 0; round < rounds; ++round) {
+        const std::optional<glm::dvec3> next = nearestWallChordMidpoint(p, solid, across);
+        if (!next || !solid.contains(*next) || !solid.segmentInside(parent, *next))
+            break;
+        p = *next;
+    }
+    return p;
+}
+
 std::size_t centreLeavesAcrossTheirBones(CurveSkeleton& curve, const PointInMesh& solid, const CentringOptions& options)
 {
     const std::vector<int> neighbour = leafNeighbours(curve);
@@ -82,21 +99,10 @@ std::size_t centreLeavesAcrossTheirBones(CurveSkeleton& curve, const PointInMesh
     parallelFor(curve.nodes.size(), 0, [&](std::size_t k) {
         if (neighbour[k] < 0)
             return;
-        const glm::dvec3 parent = curve.nodes[static_cast<std::size_t>(neighbour[k])];
-        glm::dvec3 p = curve.nodes[k];
-        const double length = glm::length(p - parent);
-        if (!(length > 0.0) || !solid.contains(p))
-            return;
-        const glm::dvec3 bone = (p - parent) / length;
-        const std::vector<glm::dvec3> across = directionsAcross(bone);
-        for (int round = 0; round < options.rounds; ++round) {
-            const std::optional<glm::dvec3> next = nearestWallChordMidpoint(p, solid, across);
-            if (!next || !solid.contains(*next) || !solid.segmentInside(parent, *next))
-                break;
-            p = *next;
-            moved[k] = 1;
-        }
-        curve.nodes[k] = p;
+        const glm::dvec3 centred = leafCentredAcrossItsBone(curve.nodes[static_cast<std::size_t>(neighbour[k])],
+                                                            curve.nodes[k], solid, options.rounds);
+        moved[k] = centred != curve.nodes[k];
+        curve.nodes[k] = centred;
     });
     return static_cast<std::size_t>(std::count(moved.begin(), moved.end(), 1));
 }

@@ -16,6 +16,8 @@
 #include "core/skeleton/point_in_mesh.h"
 #include "core/skeleton/skeleton.h"
 
+#include <glm/vec3.hpp>
+
 #include <cstddef>
 #include <vector>
 
@@ -52,5 +54,10 @@ std::size_t centreOnNearestWallChords(CurveSkeleton& curve, const PointInMesh& s
 /// leaves moved. Parallel over nodes.
 std::size_t centreLeavesAcrossTheirBones(CurveSkeleton& curve, const PointInMesh& solid,
                                          const CentringOptions& options = {});
+
+/// One leaf of centreLeavesAcrossTheirBones: where `leaf`, on a bone from `parent`, moves in
+/// `rounds` moves (`leaf` itself where it is outside `solid` or no move is possible).
+[[nodiscard]] glm::dvec3 leafCentredAcrossItsBone(const glm::dvec3& parent, const glm::dvec3& leaf,
+                                                  const PointInMesh& solid, int rounds);
 
 } // namespace trimlab

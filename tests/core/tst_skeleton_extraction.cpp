@@ -740,6 +740,47 @@ private slots:
                 QCOMPARE(curve.vertexNode[v], 4);
     }
 
+    // A cap bone points at the region's farthest vertices, not at the region's centroid: a
+    // region that also holds a patch of wall beside one of the node's bones (the spot's
+    // neck junction holds the ears' roots, the horns and the muzzle) has its centroid pulled
+    // towards that bone, within 60° of it, while its farthest vertices — the capsule's top
+    // tip — lie square to it.
+    void capBonePointsAtTheFarthestVertices()
+    {
+        const double radius = 0.3;
+        const TriangleMesh mesh = axisCapsule(radius, 1.0, 8, 24, 32);
+        const PointInMesh solid(mesh);
+        CurveSkeleton curve;
+        curve.nodes = {{0.0, -0.9, 0.0}, {0.0, 0.3, 0.0}, {-0.2, 0.35, 0.0}};
+        curve.edges = {{0, 1}, {1, 2}};
+        curve.vertexNode.resize(mesh.vertexCount());
+        glm::dvec3 centroid(0.0);
+        double count = 0.0;
+        for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+            const glm::dvec3 p(mesh.positions[v]);
+            const bool top = p.y > 1.0, wall = p.x < 0.0 && p.y > -0.9 && p.y <= 0.5;
+            curve.vertexNode[v] = top || wall ? 1 : 0;
+            if (top || wall) {
+                centroid += p;
+                count += 1.0;
+            }
+        }
+        centroid /= count;
+        const glm::dvec3 toCentroid = glm::normalize(centroid - curve.nodes[1]);
+        const glm::dvec3 sideBone = glm::normalize(curve.nodes[2] - curve.nodes[1]);
+        qInfo("the region's centroid %.0f deg from the side bone",
+              glm::degrees(std::acos(glm::dot(toCentroid, sideBone))));
+        QVERIFY(glm::dot(toCentroid, sideBone) >= kCapBoneCone); // by the centroid, a bone already reaches it
+
+        QCOMPARE(addCapBones(curve, mesh, solid), std::size_t(1));
+        QCOMPARE(curve.nodes.size(), std::size_t(4));
+        const glm::dvec3 bone = curve.nodes[3] - curve.nodes[1];
+        qInfo("cap bone %.3f long, %.2f deg off the axis", glm::length(bone),
+              glm::degrees(std::acos(glm::normalize(bone).y)));
+        QVERIFY(glm::normalize(bone).y > std::cos(glm::radians(5.0)));
+        QVERIFY(solid.segmentInside(curve.nodes[1], curve.nodes[3]));
+    }
+
     // An edge across the hole of a torus (its ends inside the ring, on opposite sides)
     // cannot be bisected inside: it is replaced by a path around the ring, every segment
     // inside, that starts and ends at the edge's nodes. An edge already inside is kept.
