@@ -30,18 +30,11 @@ QJsonObject headerObject(const BenchHeader& header)
     QJsonArray methods;
     for (const render::FragmentMethodKind method : header.methods)
         methods.append(methodId(method));
-    return {{"version", header.version},
-            {"openGl", header.openGl},
-            {"cpuThreads", int(header.cpuThreads)},
-            {"date", header.date},
-            {"sizes", sizes},
-            {"views", header.views},
-            {"repeat", header.repeat},
-            {"k", header.parameters.k},
-            {"sharedCounters", header.parameters.sharedCounters},
-            {"locks", header.locks},
-            {"methods", methods},
-            {"scenes", QJsonArray::fromStringList(header.scenes)}};
+    return {
+        {"version", header.version}, {"openGl", header.openGl},  {"cpuThreads", int(header.cpuThreads)},
+        {"date", header.date},       {"sizes", sizes},           {"views", header.views},
+        {"repeat", header.repeat},   {"k", header.parameters.k}, {"sharedCounters", header.parameters.sharedCounters},
+        {"locks", header.locks},     {"methods", methods},       {"scenes", QJsonArray::fromStringList(header.scenes)}};
 }
 
 QString status(const BenchCell& cell)
@@ -80,9 +73,10 @@ void addMeasurements(QJsonObject& object, const BenchReport& report, const Bench
     object.insert("excludedPercent", 100.0 * a.excludedFraction());
     object.insert("overflowedPixelsNotCompared", a.overflowed);
     object.insert("violation", cell.violation.isEmpty() ? QJsonValue() : QJsonValue(cell.violation));
-    object.insert("ratioToF2B", optionalNumber(timeRatio(cell, findCell(report, cell, render::FragmentMethodKind::PeelingF2B))));
-    object.insert("ratioToABLL",
-                  optionalNumber(timeRatio(cell, findCell(report, cell, render::FragmentMethodKind::ABufferLinkedList))));
+    object.insert("ratioToF2B",
+                  optionalNumber(timeRatio(cell, findCell(report, cell, render::FragmentMethodKind::PeelingF2B))));
+    object.insert("ratioToABLL", optionalNumber(timeRatio(
+                                     cell, findCell(report, cell, render::FragmentMethodKind::ABufferLinkedList))));
     object.insert("ratioToInterlock", cell.usesLock && !cell.interlock
                                           ? optionalNumber(timeRatio(cell, findInterlockCell(report, cell)))
                                           : QJsonValue());
@@ -123,7 +117,7 @@ void writeBenchJson(const BenchReport& report, const QString& path)
 {
     // Through a temporary file and a rename: a killed run leaves an earlier report whole.
     const QByteArray json = benchJson(report);
-    timeline::writeFileAtomically(path.toStdString(), std::string_view(json.constData(), std::size_t(json.size())));
+    io::writeFileAtomically(path.toStdString(), std::string_view(json.constData(), std::size_t(json.size())));
 }
 
 } // namespace trimlab::app

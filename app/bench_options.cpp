@@ -3,10 +3,10 @@
 #include "app/output_paths.h"
 
 #include "app/cli_messages.h"
+#include "app/parameter_options.h"
 
 #include "app/bench_scenes.h"
 #include "app/bench_skinning.h"
-#include "ui/render_panel/render_choices.h"
 #include "app/render_options.h"
 #include "core/trim/static_rule.h"
 
@@ -34,9 +34,10 @@ void addBenchOptions(QCommandLineParser& parser)
         "Measures every multi-fragment method on a fixed camera path over named scenes and checks each frame "
         "against the exact CPU reference. Prints a table (and --json); exits 1 if a method disagrees with the "
         "reference beyond the render tests' threshold, never because of speed.");
-    parser.addPositionalArgument("sources", "Optional mesh files or demo:NAME forming one more scene (object ids "
-                                            "across them in order), drawn with --rule, --csg, --object-rule and "
-                                            "--object-transform; alone unless --scenes is given.",
+    parser.addPositionalArgument("sources",
+                                 "Optional mesh files or demo:NAME forming one more scene (object ids "
+                                 "across them in order), drawn with --rule, --csg, --object-rule and "
+                                 "--object-transform; alone unless --scenes is given.",
                                  "[SOURCE...]");
     parser.addOptions({
         {"scenes",
@@ -47,27 +48,21 @@ void addBenchOptions(QCommandLineParser& parser)
         {"size", "Comma-separated frame sizes. Default: 1024x768.", "WxH[,WxH]"},
         {"methods", QStringLiteral("Comma-separated methods. Default: all of %1.").arg(fragmentMethodIds().join(", ")),
          "a,b"},
-        {"k", "Fragments kept per pixel by the capacity-bounded methods (1-128). Default: 16.", "N"},
-        {"shared-counters", "S, the S-buffer's shared counters (1-1048576). Default: 1024.", "S"},
-        {"repeat", "Timed frames per view (after one untimed warm-up frame per method). Default: 5.", "N"},
-        {"views", "Cameras on the orbit around each scene. Default: 8.", "N"},
-        {"threads", "Worker threads of the CPU reference (0 = all cores).", "N"},
-        {"locks", "The k⁺-buffer family's per-pixel critical section: auto (fragment shader interlock where the "
-                  "driver has it), spin (always the spin-lock) or both (auto, and each method that used interlock "
-                  "measured again with the spin-lock). Default: auto.",
-         "auto|spin|both"},
         {"json", "Also write the results as JSON.", "file.json"},
-        {"rule", QStringLiteral("Rule of the scene of the positional sources: %1, or none. Default: "
-                                "alternating-border.")
-                     .arg(QString::fromStdString(staticRuleNamesHelp())),
+        {"rule",
+         QStringLiteral("Rule of the scene of the positional sources: %1, or none. Default: "
+                        "alternating-border.")
+             .arg(QString::fromStdString(staticRuleNamesHelp())),
          "rule"},
         {"csg", "CSG over the objects of the positional sources, as trimlab render --csg.", "expression"},
         {"object-rule", "Rule of one object of the positional sources, e.g. 1=parity. Repeatable.", "id=rule"},
         {"object-transform", objectTransformHelp(), "id=tx,ty,tz[,rx,ry,rz[,s]]"},
-        {"data", "The shared data folder with the catalog's meshes. Default: $TRIMLAB_DATA_DIR or ../shared/data "
-                 "beside the source tree.",
+        {"data",
+         "The shared data folder with the catalog's meshes. Default: $TRIMLAB_DATA_DIR or ../shared/data "
+         "beside the source tree.",
          "dir"},
     });
+    addParameterOptions(parser, bench_parameters::kTable);
     parser.addHelpOption();
 }
 
@@ -121,44 +116,19 @@ std::optional<QString> parseScenes(const QString& text, BenchOptions& options)
     return std::nullopt;
 }
 
-std::optional<QString> parseLocks(const QString& text, BenchOptions& options)
+// Every row of bench_parameters::kTable, before any other check.
+std::optional<QString> parseParameters(const QCommandLineParser& parser, BenchOptions& options)
 {
-    if (text == QLatin1String("auto"))
-        options.locks = BenchLocks::Auto;
-    else if (text == QLatin1String("spin"))
-        options.locks = BenchLocks::SpinLock;
-    else if (text == QLatin1String("both"))
-        options.locks = BenchLocks::Both;
-    else
-        return QStringLiteral("--locks must be auto, spin or both, not '%1'").arg(text);
-    options.parameters.allowInterlock = options.locks != BenchLocks::SpinLock;
-    return std::nullopt;
-}
-
-std::optional<QString> parseNumbers(const QCommandLineParser& parser, BenchOptions& options)
-{
-    if (parser.isSet("k"))
-        if (auto e = parseIntegerOption("k", parser.value("k"), 1, render::MethodParameters::kMaxK, options.parameters.k))
-            return e;
-    if (parser.isSet("shared-counters"))
-        if (auto e = parseIntegerOption("shared-counters", parser.value("shared-counters"), 1, ui::kMaxSharedCounters,
-                                        options.parameters.sharedCounters))
-            return e;
-    if (parser.isSet("repeat"))
-        if (auto e = parseIntegerOption("repeat", parser.value("repeat"), 1, 1000, options.repeat))
-            return e;
-    if (parser.isSet("views"))
-        if (auto e = parseIntegerOption("views", parser.value("views"), 1, 360, options.views))
-            return e;
-    if (parser.isSet("locks"))
-        if (auto e = parseLocks(parser.value("locks"), options))
-            return e;
-    if (parser.isSet("threads")) {
-        int threads = 0;
-        if (auto e = parseIntegerOption("threads", parser.value("threads"), 0, 1024, threads))
-            return e;
-        options.threads = unsigned(threads);
+    using namespace bench_parameters;
+    for (const std::optional<QString>& error :
+         {parseParameter(parser, render::method_parameters::kK, options.parameters.k),
+          parseParameter(parser, render::method_parameters::kSharedCounters, options.parameters.sharedCounters),
+          parseParameter(parser, kRepeat, options.repeat), parseParameter(parser, kViews, options.views),
+          parseParameter(parser, kThreads, options.threads), parseParameter(parser, kLocks, options.locks)}) {
+        if (error)
+            return error;
     }
+    options.parameters.allowInterlock = options.locks != BenchLocks::SpinLock;
     return std::nullopt;
 }
 
@@ -224,6 +194,8 @@ std::variant<BenchOptions, QString> parseBenchOptions(const QStringList& argumen
         return QString();
     }
     BenchOptions options;
+    if (auto e = parseParameters(parser, options))
+        return *e;
     if (auto e = parseComposedScene(parser, options))
         return *e;
     options.jsonOutput = parser.value("json");
@@ -231,8 +203,6 @@ std::variant<BenchOptions, QString> parseBenchOptions(const QStringList& argumen
         return *e;
     options.dataDirectory = parser.value("data");
     if (auto e = parseLists(parser, options))
-        return *e;
-    if (auto e = parseNumbers(parser, options))
         return *e;
     return options;
 }

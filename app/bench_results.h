@@ -26,17 +26,17 @@ struct BenchCell {
     /// Set when the method could not render (e.g. out of GPU memory); nothing else is then
     /// meaningful.
     QString error;
-    bool outOfMemory = false;      ///< the error was a GpuMemoryError (reported, not a failure)
+    bool outOfMemory = false; ///< the error was a GpuMemoryError (reported, not a failure)
     /// The method cannot render the scene's settings by design (peeling and CSG); `error`
     /// says why. Reported, not a failure.
     bool notApplicable = false;
-    render::FrameTimes times;      ///< every timed frame of every view
+    render::FrameTimes times; ///< every timed frame of every view
     int views = 0;
-    int geometryPasses = 0;        ///< most over the views
-    int fullscreenPasses = 0;      ///< most over the views
-    double megabytes = 0.0;        ///< most over the views (method + target + scene)
-    bool interlock = false;        ///< the last frame used fragment shader interlock
-    bool usesLock = false;         ///< the method has a per-pixel critical section (k⁺-buffer family)
+    int geometryPasses = 0;   ///< most over the views
+    int fullscreenPasses = 0; ///< most over the views
+    double megabytes = 0.0;   ///< most over the views (method + target + scene)
+    bool interlock = false;   ///< the last frame used fragment shader interlock
+    bool usesLock = false;    ///< the method has a per-pixel critical section (k⁺-buffer family)
     /// Frame counters of the last frame of each view, summed over the views.
     std::uint64_t fragmentsInSpan = 0;
     std::uint64_t fragmentsStored = 0;
@@ -44,7 +44,7 @@ struct BenchCell {
     std::uint64_t overflowPixels = 0;
     std::uint64_t unresolvedPixels = 0;
     std::uint64_t spinGiveUps = 0;
-    TrimAgreement agreement;       ///< summed over the views (counts only)
+    TrimAgreement agreement; ///< summed over the views (counts only)
     double worstViewAgreement = 1.0;
     /// The first view that fails the test criteria and why ("view 3: agreement below ...").
     QString violation;
@@ -58,16 +58,16 @@ struct BenchCell {
 
 struct BenchHeader {
     QString version;
-    QString openGl;           ///< GlCapabilities::summary()
-    unsigned cpuThreads = 0;  ///< std::thread::hardware_concurrency()
-    QString date;             ///< ISO 8601, local time with offset
+    QString openGl;          ///< GlCapabilities::summary()
+    unsigned cpuThreads = 0; ///< std::thread::hardware_concurrency()
+    QString date;            ///< ISO 8601, local time with offset
     std::vector<QSize> sizes;
     int views = 0;
     int repeat = 0;
     render::MethodParameters parameters;
     std::vector<render::FragmentMethodKind> methods;
-    QStringList scenes;       ///< the scenes measured, in order
-    QString locks;            ///< --locks: "auto", "spin" or "both"
+    QStringList scenes; ///< the scenes measured, in order
+    QString locks;      ///< --locks: "auto", "spin" or "both"
 };
 
 struct BenchSkip {

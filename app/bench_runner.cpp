@@ -69,14 +69,15 @@ void BenchRunner::measureScene(const BenchScene& scene, BenchReport& report)
         QElapsedTimer clock;
         clock.start();
         const std::vector<ViewReference> views = referenceViews(reference, scene, size);
-        printNote(QStringLiteral("%1 (%L2 triangles, %3 objects) at %4: %5 views, CPU reference %6 s; measuring %7 methods")
-                      .arg(QString::fromStdString(scene.name))
-                      .arg(qulonglong(scene.loaded.scene.triangleCount()))
-                      .arg(scene.loaded.scene.objects.size())
-                      .arg(sizeText(size))
-                      .arg(views.size())
-                      .arg(double(clock.elapsed()) / 1000.0, 0, 'f', 1)
-                      .arg(m_options.methods.size()));
+        printNote(
+            QStringLiteral("%1 (%L2 triangles, %3 objects) at %4: %5 views, CPU reference %6 s; measuring %7 methods")
+                .arg(QString::fromStdString(scene.name))
+                .arg(qulonglong(scene.loaded.scene.triangleCount()))
+                .arg(scene.loaded.scene.objects.size())
+                .arg(sizeText(size))
+                .arg(views.size())
+                .arg(double(clock.elapsed()) / 1000.0, 0, 'f', 1)
+                .arg(m_options.methods.size()));
         for (const render::FragmentMethodKind method : m_options.methods) {
             if (render::needsInspectionMethod(scene.settings) && !render::methodInfo(method).inspection) {
                 report.cells.push_back(notApplicableCell(method, scene, size));
@@ -100,15 +101,16 @@ std::vector<BenchRunner::ViewReference> BenchRunner::referenceViews(const Refere
     std::vector<ViewReference> views;
     const double aspect = double(size.width()) / double(size.height());
     for (const Camera& camera : benchViews(scene.loaded.scene.worldBounds(), aspect, m_options.views)) {
-        ReferenceResult result = reference.render(camera, size.width(), size.height(), scene.settings, m_options.threads);
+        ReferenceResult result =
+            reference.render(camera, size.width(), size.height(), scene.settings, m_options.threads);
         views.push_back({camera, std::move(result.trim), std::move(result.diagnostics)});
     }
     return views;
 }
 
 BenchCell BenchRunner::measureMethod(render::FragmentMethodKind method, const render::MethodParameters& parameters,
-                                     const BenchScene& scene, QSize size,
-                                     const ReferenceRenderer& reference, const std::vector<ViewReference>& views)
+                                     const BenchScene& scene, QSize size, const ReferenceRenderer& reference,
+                                     const std::vector<ViewReference>& views)
 {
     BenchCell cell;
     cell.scene = QString::fromStdString(scene.name);

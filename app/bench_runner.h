@@ -27,11 +27,10 @@ public:
 private:
     struct ViewReference;
 
-    [[nodiscard]] std::vector<ViewReference> referenceViews(const ReferenceRenderer& reference,
-                                                            const BenchScene& scene, QSize size) const;
+    [[nodiscard]] std::vector<ViewReference> referenceViews(const ReferenceRenderer& reference, const BenchScene& scene,
+                                                            QSize size) const;
     [[nodiscard]] BenchCell measureMethod(render::FragmentMethodKind method, const render::MethodParameters& parameters,
-                                          const BenchScene& scene, QSize size,
-                                          const ReferenceRenderer& reference,
+                                          const BenchScene& scene, QSize size, const ReferenceRenderer& reference,
                                           const std::vector<ViewReference>& views);
     void measureView(BenchCell& cell, const BenchScene& scene, const ReferenceRenderer& reference,
                      const ViewReference& view, int index);

@@ -20,10 +20,10 @@ enum class Kind { Demo, File, BunnyInCube, CsgOfThree };
 struct CatalogEntry {
     const char* name;
     Kind kind;
-    const char* source;   ///< demo:NAME, or a path relative to the data folder
+    const char* source; ///< demo:NAME, or a path relative to the data folder
     StaticRule rule;
-    bool clipHalf;        ///< keep z <= 0 (the GUI's first clipping plane)
-    double keptFraction;  ///< BunnyInCube: the part of the cube's height kept, from below
+    bool clipHalf;       ///< keep z <= 0 (the GUI's first clipping plane)
+    double keptFraction; ///< BunnyInCube: the part of the cube's height kept, from below
 };
 
 constexpr const char* kBunny = "static/odedstein-bunny.obj.gz";
@@ -76,7 +76,12 @@ TriangleMesh boxMesh(const glm::dvec3& min, const glm::dvec3& max)
     for (unsigned i = 0; i < 8; ++i)
         box.positions.emplace_back((i & 1u) ? max.x : min.x, (i & 2u) ? max.y : min.y, (i & 4u) ? max.z : min.z);
     constexpr std::array<std::array<unsigned, 4>, 6> faces = {{
-        {0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6},
+        {0, 4, 6, 2},
+        {1, 3, 7, 5},
+        {0, 1, 5, 4},
+        {2, 6, 7, 3},
+        {0, 2, 3, 1},
+        {4, 5, 7, 6},
     }};
     for (const auto& f : faces) {
         box.triangles.emplace_back(f[0], f[1], f[2]);
@@ -211,7 +216,7 @@ std::optional<BenchScene> loadBenchScene(const std::string& name, const std::fil
 }
 
 BenchScene composeBenchScene(const std::vector<std::string>& sources,
-                              const std::vector<ObjectTransformOption>& transforms, const TrimSettings& trim)
+                             const std::vector<ObjectTransformOption>& transforms, const TrimSettings& trim)
 {
     BenchScene scene{{}, loadScenes(sources), trim};
     scene.name = scene.loaded.displayName;

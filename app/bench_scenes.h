@@ -45,9 +45,8 @@ struct BenchScene {
 /// Loads `name` (a catalog name, demo:NAME or a mesh file path). Returns nullopt with the
 /// reason in `skipReason` when a catalog scene's file is missing from `dataDirectory`.
 /// Throws what loadScene throws for unreadable or malformed files and unknown demos.
-[[nodiscard]] std::optional<BenchScene> loadBenchScene(const std::string& name,
-                                                       const std::filesystem::path& dataDirectory,
-                                                       std::string* skipReason);
+[[nodiscard]] std::optional<BenchScene>
+loadBenchScene(const std::string& name, const std::filesystem::path& dataDirectory, std::string* skipReason);
 
 /// The scene of `trimlab bench A.obj B.obj ...`: the sources as one scene (loadScenes),
 /// placed by `transforms` and drawn with `trim` (trimming off when an object is not a

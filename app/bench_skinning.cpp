@@ -21,8 +21,8 @@ constexpr std::size_t kBones = 20;
 
 struct SkinningScene {
     const char* name;
-    const char* source;  ///< relative to the data folder: a folder or a file pattern
-    std::size_t poses;   ///< 0: all
+    const char* source; ///< relative to the data folder: a folder or a file pattern
+    std::size_t poses;  ///< 0: all
 };
 
 constexpr SkinningScene kScenes[] = {
@@ -73,9 +73,9 @@ double largestDistance(const std::vector<glm::vec3>& gpu, const PosePositions& c
 SkinningBenchRow timeModel(render::TrimRenderer& renderer, const SkinningModel& model, int rounds)
 {
     Scene scene;
-    scene.objects.push_back(
-        {"skinned", TriangleMesh{{model.restPositions.begin(), model.restPositions.end()}, model.triangles},
-         glm::dmat4(1.0)});
+    scene.objects.push_back({"skinned",
+                             TriangleMesh{{model.restPositions.begin(), model.restPositions.end()}, model.triangles},
+                             glm::dmat4(1.0)});
     const double diagonal = 2.0 * computeBounds(scene.objects.front().mesh).radius();
     renderer.setScene(scene);
     render::GlFunctions& gl = renderer.gl();
@@ -138,17 +138,15 @@ bool isSkinningBenchScene(const std::string& name)
     return findScene(name) != nullptr;
 }
 
-std::optional<MeshAnimation> loadSkinningBenchAnimation(const std::string& name,
-                                                        const std::filesystem::path& dataDirectory,
-                                                        std::string* skipReason)
+std::optional<MeshAnimation>
+loadSkinningBenchAnimation(const std::string& name, const std::filesystem::path& dataDirectory, std::string* skipReason)
 {
     const SkinningScene* scene = findScene(name);
     if (!scene)
         throw std::invalid_argument("unknown animation scene " + name);
     const std::filesystem::path source = dataDirectory / scene->source;
-    const std::filesystem::path folder = source.filename().string().find('?') != std::string::npos
-                                             ? source.parent_path()
-                                             : source;
+    const std::filesystem::path folder =
+        source.filename().string().find('?') != std::string::npos ? source.parent_path() : source;
     if (!std::filesystem::is_directory(folder)) {
         if (skipReason)
             *skipReason = folder.string() + " is missing";
@@ -178,7 +176,8 @@ std::vector<SkinningBenchRow> measureSkinning(render::TrimRenderer& renderer, co
             row.bones = model.boneCount();
             row.poses = model.poseCount();
             row.method = method == SkinningMethod::Lbs ? QStringLiteral("LBS") : QStringLiteral("DQS");
-            row.chain = chain == SkinningChain::PoseToPose ? QStringLiteral("pose-to-pose") : QStringLiteral("rest-to-pose");
+            row.chain =
+                chain == SkinningChain::PoseToPose ? QStringLiteral("pose-to-pose") : QStringLiteral("rest-to-pose");
             rows.push_back(row);
         }
     return rows;

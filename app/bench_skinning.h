@@ -1,9 +1,9 @@
 #pragma once
 /// \file
-/// The animation scenes of `trimlab bench` (issue 19): a skinned pose played on the CPU
-/// (one skinning step, then the float conversion, normals and upload of
-/// GpuScene::updatePositions) against the GPU (render/frame/gpu_skinning.h: bone
-/// transforms uploaded, skinning and normals in compute passes), side by side in one run.
+/// The animation scenes of `trimlab bench`: a skinned pose played on the CPU (one skinning
+/// step, then the float conversion, normals and upload of GpuScene::updatePositions)
+/// against the GPU (render/frame/gpu_skinning.h: bone transforms uploaded, skinning and
+/// normals in compute passes), side by side in one run.
 /// - skinning:samba — the first 40 poses of samba (9,971 vertices);
 /// - skinning:elephant-gallop — all 48 poses (42,321 vertices).
 /// Each is fitted with 20 bones (core/skinning/seed_bones.h) by LBS and DQS, pose-to-pose
@@ -28,7 +28,7 @@
 namespace trimlab::app {
 
 /// The largest deviation of GPU-skinned positions from the CPU's the bench accepts, as a
-/// fraction of the diagonal (render.gpu_skinning's threshold, issue 19's acceptance).
+/// fraction of the diagonal (render.gpu_skinning's threshold).
 inline constexpr double kSkinningDeviationLimit = 1e-5;
 
 /// One skinned model of one animation, timed.
@@ -38,8 +38,8 @@ struct SkinningBenchRow {
     std::size_t triangles = 0;
     std::size_t bones = 0;
     std::size_t poses = 0;
-    QString method; ///< "LBS" or "DQS"
-    QString chain;  ///< "pose-to-pose" or "rest-to-pose"
+    QString method;           ///< "LBS" or "DQS"
+    QString chain;            ///< "pose-to-pose" or "rest-to-pose"
     double cpuSkinMs = 0.0;   ///< median per pose: the skinning step
     double cpuUploadMs = 0.0; ///< median per pose: floats, normals, upload (glFinish'ed)
     double gpuMs = 0.0;       ///< median per pose: GpuSkinning::skinPose (glFinish'ed)
@@ -61,9 +61,8 @@ struct SkinningBenchRow {
 
 /// Fits the four models of `animation` and times them (`rounds` rounds of playback after
 /// one that compiles the GPU's code). `renderer`'s context must be current.
-[[nodiscard]] std::vector<SkinningBenchRow> measureSkinning(render::TrimRenderer& renderer,
-                                                            const MeshAnimation& animation, const QString& name,
-                                                            int rounds);
+[[nodiscard]] std::vector<SkinningBenchRow>
+measureSkinning(render::TrimRenderer& renderer, const MeshAnimation& animation, const QString& name, int rounds);
 
 /// The table of `rows`, one line each, with the CPU/GPU ratio.
 [[nodiscard]] QStringList skinningTableLines(const std::vector<SkinningBenchRow>& rows);

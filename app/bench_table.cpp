@@ -57,30 +57,31 @@ QString cellLine(const BenchReport& report, const BenchCell& cell)
     const QStringList identity{cell.scene, sizeText(cell.size), methodId(cell.method),
                                cell.rendered() ? lockId(cell) : QStringLiteral("-")};
     if (!cell.rendered())
-        return formatRow(identity) + QStringLiteral("  %1: %2").arg(
-                                         cell.outOfMemory     ? QStringLiteral("out of GPU memory")
-                                         : cell.notApplicable ? QStringLiteral("not applicable")
-                                                              : QStringLiteral("failed"),
-                                         cell.error.section(QLatin1Char('\n'), 0, 0));
+        return formatRow(identity) + QStringLiteral("  %1: %2")
+                                         .arg(cell.outOfMemory     ? QStringLiteral("out of GPU memory")
+                                              : cell.notApplicable ? QStringLiteral("not applicable")
+                                                                   : QStringLiteral("failed"),
+                                              cell.error.section(QLatin1Char('\n'), 0, 0));
     const QString agreement = QString::number(100.0 * cell.agreement.agreement(), 'f', 3) +
                               (cell.violation.isEmpty() ? QString() : QStringLiteral("!"));
-    return formatRow(identity + QStringList{
-                                    QString::number(cell.times.medianMilliseconds(), 'f', 2),
-                                    QString::fromLatin1(cell.times.source().data(), qsizetype(cell.times.source().size())),
-                                    QString::number(cell.geometryPasses),
-                                    QString::number(cell.megabytes, 'f', 1),
-                                    QString::number(cell.fragmentsInSpan),
-                                    QString::number(cell.fragmentsStored),
-                                    QString::number(cell.fragmentsLost),
-                                    QString::number(cell.overflowPixels),
-                                    QString::number(cell.unresolvedPixels),
-                                    agreement,
-                                    ratioText(timeRatio(cell, findCell(report, cell, render::FragmentMethodKind::PeelingF2B))),
-                                    ratioText(timeRatio(cell, findCell(report, cell,
-                                                                       render::FragmentMethodKind::ABufferLinkedList))),
-                                    cell.usesLock && !cell.interlock ? ratioText(timeRatio(cell, findInterlockCell(report, cell)))
-                                                                     : QStringLiteral("-"),
-                                });
+    return formatRow(
+        identity +
+        QStringList{
+            QString::number(cell.times.medianMilliseconds(), 'f', 2),
+            QString::fromLatin1(cell.times.source().data(), qsizetype(cell.times.source().size())),
+            QString::number(cell.geometryPasses),
+            QString::number(cell.megabytes, 'f', 1),
+            QString::number(cell.fragmentsInSpan),
+            QString::number(cell.fragmentsStored),
+            QString::number(cell.fragmentsLost),
+            QString::number(cell.overflowPixels),
+            QString::number(cell.unresolvedPixels),
+            agreement,
+            ratioText(timeRatio(cell, findCell(report, cell, render::FragmentMethodKind::PeelingF2B))),
+            ratioText(timeRatio(cell, findCell(report, cell, render::FragmentMethodKind::ABufferLinkedList))),
+            cell.usesLock && !cell.interlock ? ratioText(timeRatio(cell, findInterlockCell(report, cell)))
+                                             : QStringLiteral("-"),
+        });
 }
 
 QString parameterText(const render::MethodParameters& parameters)
@@ -142,8 +143,9 @@ QStringList benchFailureLines(const BenchReport& report)
     for (const BenchCell& cell : report.cells) {
         if (!cell.failed())
             continue;
-        const QString what = cell.violation.isEmpty() ? QStringLiteral("could not render: %1").arg(cell.error)
-                                                      : QStringLiteral("disagrees with the CPU reference: %1").arg(cell.violation);
+        const QString what = cell.violation.isEmpty()
+                                 ? QStringLiteral("could not render: %1").arg(cell.error)
+                                 : QStringLiteral("disagrees with the CPU reference: %1").arg(cell.violation);
         lines << QStringLiteral("%1 on %2 at %3 %4").arg(methodId(cell.method), cell.scene, sizeText(cell.size), what);
     }
     return lines;

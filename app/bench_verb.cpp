@@ -52,7 +52,7 @@ QStringList sceneNames(const BenchOptions& options)
 /// Loads and measures one scene; false when it could not be loaded (a missing catalog
 /// file is a skip, not a failure). `load` returns the scene, or nullopt with the skip
 /// reason.
-template<typename Load>
+template <typename Load>
 bool measureScene(const QString& name, Load&& load, BenchRunner& runner, BenchReport& report)
 {
     std::string skipReason;
@@ -70,7 +70,8 @@ bool measureScene(const QString& name, Load&& load, BenchRunner& runner, BenchRe
         return true;
     }
     if (!scene->settings.trimEnabled && !scene->loaded.trimmable())
-        printNote(QStringLiteral("%1 renders untrimmed: %2").arg(name, QString::fromStdString(scene->loaded.trimUnavailableReason())));
+        printNote(QStringLiteral("%1 renders untrimmed: %2")
+                      .arg(name, QString::fromStdString(scene->loaded.trimUnavailableReason())));
     report.header.scenes << name;
     runner.measureScene(*scene, report);
     return true;
@@ -82,7 +83,8 @@ bool measureSkinningScene(const QString& name, const std::filesystem::path& data
 {
     std::string skipReason;
     try {
-        const std::optional<MeshAnimation> animation = loadSkinningBenchAnimation(name.toStdString(), data, &skipReason);
+        const std::optional<MeshAnimation> animation =
+            loadSkinningBenchAnimation(name.toStdString(), data, &skipReason);
         if (!animation) {
             printNote(QStringLiteral("skipping %1: %2").arg(name, QString::fromStdString(skipReason)));
             report.skipped.push_back({name, QString::fromStdString(skipReason)});
@@ -107,8 +109,9 @@ int runBench(const BenchOptions& options)
     report.header = makeHeader(options, renderer);
     for (const QString& line : benchHeaderLines(report.header))
         printLine(line);
-    const std::filesystem::path data = options.dataDirectory.isEmpty() ? defaultBenchDataDirectory()
-                                                                       : std::filesystem::path(options.dataDirectory.toStdString());
+    const std::filesystem::path data = options.dataDirectory.isEmpty()
+                                           ? defaultBenchDataDirectory()
+                                           : std::filesystem::path(options.dataDirectory.toStdString());
     BenchRunner runner(renderer, options);
     bool allLoaded = true;
     std::vector<SkinningBenchRow> skinning;
@@ -118,8 +121,8 @@ int runBench(const BenchOptions& options)
             continue;
         }
         allLoaded = measureScene(
-                        name, [&](std::string* skip) { return loadBenchScene(name.toStdString(), data, skip); },
-                        runner, report) &&
+                        name, [&](std::string* skip) { return loadBenchScene(name.toStdString(), data, skip); }, runner,
+                        report) &&
                     allLoaded;
     }
     if (!options.sources.empty()) {

@@ -51,15 +51,25 @@ DesignedFrame replayScript(const RenderOptions& options)
         if (progress.done == progress.total)
             printNote(QStringLiteral("replayed %1 strokes").arg(progress.total));
     };
-    return DesignedFrame{timeline::replayStrokeScript(object.mesh, script, control, scriptPath.filename().string()),
-                         frame, object.modelMatrix, name};
+    DesignedFrame design;
+    design.timeline = timeline::replayStrokeScript(object.mesh, script, control, scriptPath.filename().string());
+    design.frame = frame;
+    design.model = object.modelMatrix;
+    design.displayName = name;
+    return design;
 }
 
 DesignedFrame loadProjectFile(const RenderOptions& options)
 {
     const std::filesystem::path path = options.sources.front();
-    DesignedFrame design{timeline::loadProject(path), 0, glm::dmat4(1.0), path.filename().string()};
+    timeline::Project project = timeline::readHistoryProject(path);
+    DesignedFrame design;
+    design.timeline = std::move(project.timeline);
+    design.displayName = path.filename().string();
     design.frame = chosenFrame(options, design.timeline.frameCount() - 1, design.displayName);
+    design.savedRule = project.extras.staticRule;
+    if (project.extras.viewSettings)
+        design.savedClassification = project.extras.viewSettings->classification;
     return design;
 }
 
@@ -72,12 +82,24 @@ std::optional<DesignedFrame> demoHistory(const RenderOptions& options)
     std::optional<timeline::Timeline> history = surfaceDemoHistory(name);
     if (!history)
         return std::nullopt;
-    DesignedFrame design{std::move(*history), 0, glm::dmat4(1.0), name};
+    DesignedFrame design;
+    design.timeline = std::move(*history);
+    design.displayName = name;
     design.frame = chosenFrame(options, design.timeline.frameCount() - 1, design.displayName);
     return design;
 }
 
 } // namespace
+
+DesignedClassification designedClassification(const RenderOptions& options, const DesignedFrame& design)
+{
+    DesignedClassification chosen{options.classification, options.trim.rule};
+    if (!options.classificationGiven && design.savedClassification)
+        chosen.classification = *design.savedClassification;
+    if (!options.ruleGiven && design.savedRule)
+        chosen.rule = *design.savedRule;
+    return chosen;
+}
 
 DesignedFrame loadDesignedFrame(const RenderOptions& options)
 {

@@ -16,7 +16,8 @@ namespace trimlab::app {
 int runGui(int argc, char** argv)
 {
     if (!displayAvailable()) {
-        printError("the GUI needs a display; for a headless image use: xvfb-run -a trimlab render demo:pushed-sphere -o out.png");
+        printError("the GUI needs a display; for a headless image use: xvfb-run -a trimlab render demo:pushed-sphere "
+                   "-o out.png");
         return 1;
     }
     // Before QApplication: every OpenGL widget then gets a 4.3 core context.

@@ -44,7 +44,8 @@ int printReports(const std::vector<std::string>& sources, const std::vector<Obje
                                                     .arg(QString::fromStdString(loaded.trimUnavailableReason()))));
     }
     if (loaded.savedCsg.enabled())
-        printLine(QStringLiteral("saved CSG: %1").arg(QString::fromStdString(formatCsgExpression(loaded.savedCsg.expression))));
+        printLine(QStringLiteral("saved CSG: %1")
+                      .arg(QString::fromStdString(formatCsgExpression(loaded.savedCsg.expression))));
     return 0;
 }
 
@@ -54,8 +55,9 @@ int runInfoVerb(int argc, char** argv, const QStringList& arguments)
 {
     QCoreApplication application(argc, argv);
     QCommandLineParser parser;
-    parser.setApplicationDescription("Prints the validation report of each object of mesh files or demo scenes (several "
-                                     "sources make one scene, object ids counting across them in order).");
+    parser.setApplicationDescription(
+        "Prints the validation report of each object of mesh files or demo scenes (several "
+        "sources make one scene, object ids counting across them in order).");
     parser.addPositionalArgument("sources", "Mesh files (.obj .ply .stl .off .gltf .glb, optionally .gz) or demo:NAME.",
                                  "SOURCE...");
     parser.addOption({"object-transform", objectTransformHelp(), "id=tx,ty,tz[,rx,ry,rz[,s]]"});

@@ -56,9 +56,10 @@ void printUsage()
         "(.nurbs.json), a .trimlab project (render) or a built-in demo:");
     // The demos come from the scene registry, so a new demo is listed without editing this.
     for (const trimlab::DemoEntry& demo : trimlab::builtInDemos())
-        trimlab::app::printLine(QStringLiteral("  %1  %2")
-                                    .arg(QString::fromStdString(demo.source).leftJustified(26))
-                                    .arg(QString::fromUtf8(demo.description.data(), qsizetype(demo.description.size()))));
+        trimlab::app::printLine(
+            QStringLiteral("  %1  %2")
+                .arg(QString::fromStdString(demo.source).leftJustified(26))
+                .arg(QString::fromUtf8(demo.description.data(), qsizetype(demo.description.size()))));
 }
 
 struct BatchVerb {
@@ -68,12 +69,9 @@ struct BatchVerb {
 
 // Each verb creates the Qt application object it needs (a GUI one only where OpenGL is).
 constexpr BatchVerb kVerbs[] = {
-    {"render", trimlab::app::runRenderVerb},
-    {"info", trimlab::app::runInfoVerb},
-    {"bench", trimlab::app::runBenchVerb},
-    {"segment", trimlab::app::runSegmentVerb},
-    {"skin", trimlab::app::runSkinVerb},
-    {"skeleton", trimlab::app::runSkeletonVerb},
+    {"render", trimlab::app::runRenderVerb}, {"info", trimlab::app::runInfoVerb},
+    {"bench", trimlab::app::runBenchVerb},   {"segment", trimlab::app::runSegmentVerb},
+    {"skin", trimlab::app::runSkinVerb},     {"skeleton", trimlab::app::runSkeletonVerb},
     {"trim", trimlab::app::runTrimVerb},
 };
 

@@ -6,10 +6,10 @@ namespace trimlab::app {
 
 std::optional<QString> checkOutputPaths(std::initializer_list<std::pair<const char*, QString>> outputs)
 {
-    std::vector<timeline::OutputRequest> requests;
+    std::vector<io::OutputRequest> requests;
     for (const auto& [option, path] : outputs)
         requests.push_back({option, path.toStdString()});
-    if (const std::optional<std::string> error = timeline::checkOutputPaths(requests))
+    if (const std::optional<std::string> error = io::checkOutputPaths(requests))
         return QString::fromStdString(*error);
     return std::nullopt;
 }

@@ -29,7 +29,8 @@ std::optional<Conversion> conversionAt(const QString& text, int at)
         ++digits;
     }
     // %Nd would pad with spaces: not in a file name.
-    if (i >= text.size() || text[i] != QLatin1Char('d') || width > 9 || (digits > 0 && !zeros) || (zeros && digits == 0))
+    if (i >= text.size() || text[i] != QLatin1Char('d') || width > 9 || (digits > 0 && !zeros) ||
+        (zeros && digits == 0))
         return std::nullopt;
     return Conversion{i + 1 - at, width};
 }
@@ -62,7 +63,10 @@ std::optional<QString> parsePoseSelection(const QString& pose, const QString& po
         if (!a || !b)
             return QStringLiteral("--poses '%1' is not a range A:B of pose numbers (e.g. 0:47)").arg(poses);
         if (*a > *b)
-            return QStringLiteral("--poses %1 runs backwards; give the first pose first (%2:%3)").arg(poses).arg(*b).arg(*a);
+            return QStringLiteral("--poses %1 runs backwards; give the first pose first (%2:%3)")
+                .arg(poses)
+                .arg(*b)
+                .arg(*a);
         out = PoseSelection{*a, *b, true};
     }
     return std::nullopt;

@@ -12,7 +12,7 @@ namespace trimlab::app {
 
 struct PoseSelection {
     int first = 0;
-    int last = 0;         ///< inclusive
+    int last = 0;          ///< inclusive
     bool sequence = false; ///< --poses (one image per pose) rather than --pose
 };
 

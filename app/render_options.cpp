@@ -3,11 +3,10 @@
 #include "app/output_paths.h"
 
 #include "app/cli_messages.h"
-#include "app/option_values.h"
+#include "app/parameter_options.h"
 #include "app/scene_composition.h"
 
 #include "render/mfr/fragment_method.h"
-#include "ui/render_panel/render_choices.h"
 #include "core/catalog/scene_source.h"
 #include "core/catalog/surface_scenes.h"
 #include "core/timeline/project_file.h"
@@ -28,79 +27,120 @@ void addRenderOptions(QCommandLineParser& parser)
 {
     parser.setApplicationDescription(
         "Renders mesh files or built-in demos (demo:pushed-sphere, demo:crossing-loop, ...) trimmed by a static rule, "
-        "or a frame of a design (a stroke script replayed on the mesh, or a .trimlab project) under the dynamic rules.");
-    parser.addPositionalArgument("sources", "One or more mesh files (.obj .ply .stl .off .gltf .glb, optionally .gz) "
-                                            "or demo:NAME, one scene whose object ids count across them in order; or "
-                                            "one .trimlab project.",
+        "or a frame of a design (a stroke script replayed on the mesh, or a .trimlab project) under the dynamic "
+        "rules.");
+    parser.addPositionalArgument("sources",
+                                 "One or more mesh files (.obj .ply .stl .off .gltf .glb, optionally .gz) "
+                                 "or demo:NAME, one scene whose object ids count across them in order; or "
+                                 "one .trimlab project.",
                                  "SOURCE...");
     parser.addOptions({
-        {"rule", "parity | positive-index | alternating-border | nonzero | negative | 'w>=K' | '|w|>=K' (quoted; "
-                 "or at-least-K, abs-at-least-K) | none (no trimming). Default: alternating-border.",
+        {"rule",
+         "parity | positive-index | alternating-border | nonzero | negative | 'w>=K' | '|w|>=K' (quoted; "
+         "or at-least-K, abs-at-least-K) | none (no trimming). Default: alternating-border.",
          "rule"},
-        {"clip", "Clipping plane a,b,c,d keeping a*x+b*y+c*z+d >= 0 (world space). Repeat for up to 6 planes "
-                 "(e.g. a clipping box); together they keep the points every plane keeps.", "a,b,c,d"},
+        {"clip",
+         QStringLiteral("Clipping plane a,b,c,d keeping a*x+b*y+c*z+d >= 0 (world space). Repeat for up to %1 "
+                        "planes (e.g. a clipping box); together they keep the points every plane keeps.")
+             .arg(kMaxClipPlanes),
+         "a,b,c,d"},
         {"cap", "Cap the cut: where a clipping plane cuts into the solid (under the rule, or the CSG result), show "
                 "the plane there, lit flat and cross-hatched in world space. Needs --clip."},
         {"cap-pattern", "Pattern of the caps: hatched, striped or solid. Default: hatched.", "name"},
-        {"csg", "CSG of the scene's objects (ids 0-7 in source order): | union, & intersection, - difference, "
-                "parentheses, e.g. \"0 | (1 & 2)\" or \"(0 | 1) - 2\". Each object is classified by its own rule "
-                "(--object-rule, else --rule). Buffer methods only.", "expression"},
+        {"csg",
+         QStringLiteral("CSG of the scene's objects (ids 0-%1 in source order): | union, & intersection, - "
+                        "difference, parentheses, e.g. \"0 | (1 & 2)\" or \"(0 | 1) - 2\". Each object is "
+                        "classified by its own rule (--object-rule, else --rule). Buffer methods only.")
+             .arg(kMaxCsgOperands - 1),
+         "expression"},
         {"object-rule", "Rule of one object for --csg and collision highlighting, e.g. 0=parity. Repeatable.",
          "id=rule"},
         {"object-transform", objectTransformHelp(), "id=tx,ty,tz[,rx,ry,rz[,s]]"},
-        {"highlight", "Tint shown fragments: collisions (inside another object, or where an object overlaps "
-                      "itself) and/or coplanar (groups of fragments at equal depth, by group size); comma-separated. "
-                      "Buffer methods only.", "what"},
-        {"transparency", "X-ray over the kept span's sorted fragments: opaque (the trimmed solid as usual, the "
-                         "fragments the trim removed in front of it as translucent ghosts) or translucent (every "
-                         "boundary of the trimmed solid, caps included, as a translucent layer). Buffer methods only.",
+        {"highlight",
+         "Tint shown fragments: collisions (inside another object, or where an object overlaps "
+         "itself) and/or coplanar (groups of fragments at equal depth, by group size); comma-separated. "
+         "Buffer methods only.",
+         "what"},
+        {"transparency",
+         "X-ray over the kept span's sorted fragments: opaque (the trimmed solid as usual, the "
+         "fragments the trim removed in front of it as translucent ghosts) or translucent (every "
+         "boundary of the trimmed solid, caps included, as a translucent layer). Buffer methods only.",
          "mode"},
-        {"layer-alpha", "Opacity of each layer of the trimmed solid with --transparency translucent (0-1). "
-                        "Default: 0.4.", "A"},
-        {"ghost-alpha", "Opacity of each removed fragment with --transparency (0-1, 0 hides them). Default: 0.25.",
-         "A"},
-        {"density", "Absorption per world unit of distance travelled inside the solid with --transparency "
-                    "(Beer-Lambert, 0-1000000). Default: 0.", "D"},
-        {"fresnel", "Fresnel exponent P with --transparency: a layer's alpha grows towards grazing angles, "
-                    "a + (1 - a)(1 - |n.v|)^P (0-64, 0 = off). Default: 0.", "P"},
-        {"k", "Fragments kept per pixel by the capacity-bounded methods (k+-buffer, K+B-SB, AB_FP; 1-128). Default: 16.",
-         "N"},
-        {"method", QStringLiteral("Multi-fragment method of the OpenGL backend: %1. Default: kplus-array.")
-                       .arg(fragmentMethodIds().join(QStringLiteral(", "))),
+        {"method",
+         QStringLiteral("Multi-fragment method of the OpenGL backend: %1. Default: kplus-array.")
+             .arg(fragmentMethodIds().join(QStringLiteral(", "))),
          "id"},
-        {"shared-counters", "S, the shared counters of the S-buffer's memory referencing (1-1048576). Default: 1024.",
-         "S"},
         {"size", "Image size. Default: 1024x768.", "WxH"},
         {"camera", "Eye, target, up and vertical field of view in degrees. Default: fitted to the scene.",
          "ex,ey,ez,tx,ty,tz,ux,uy,uz,fovy"},
         {"backend", "kplus (OpenGL, the method of --method) or reference (exact CPU ray caster). Default: kplus.",
          "name"},
-        {"threads", "Worker threads of the reference backend (0 = all cores).", "N"},
-        {"repeat", "Render N times and report the median time (the first frame includes shader JIT). Default: 1.", "N"},
         {{"o", "output"}, "Output PNG (required).", "file.png"},
-        {"depth", "Also write the shown surface's distance along each view ray as a PFM (empty pixels +inf).", "file.pfm"},
+        {"depth", "Also write the shown surface's distance along each view ray as a PFM (empty pixels +inf).",
+         "file.pfm"},
         {"ids", "Also write object and primitive ids as a 16-bit RGBA PNG (see docs/file-formats.md).", "file.png"},
-        {"script", "Replay this stroke script (docs/project-format.md) on the source mesh and render one of its "
-                   "frames.", "strokes.json"},
-        {"frame", "Frame of the replayed script or of a .trimlab project source (0 = the base mesh). Default: the "
-                  "last.", "N"},
-        {"classification", "For a script or project: dynamic (each set's rule, the base mesh classified by --rule) "
-                           "or static (--rule on the frame alone). Default: dynamic.", "name"},
-        {"pose", "The source is a mesh animation (a folder or numbered pattern of meshes such as 'walk_%04d.obj', or "
-                 "a glTF file): render its pose N (0 = the first).", "N"},
-        {"poses", "The source is a mesh animation: render poses A to B, one image each, with one camera for all; "
-                  "-o (and --depth, --ids) hold the pose number as %d or %04d, e.g. frame_%04d.png.", "A:B"},
-        {"dynamic-rule", "With --pose/--poses: classify each pose by this dynamic rule against --reference, the "
-                         "animation being the deformation history (additive, subtractive, intersection, confluent, "
-                         "homogeneous-confluent); the rest pose is classified by --rule. Default: --rule on each pose "
-                         "alone.", "name"},
-        {"reference", "With --dynamic-rule: rest (each pose against the rest pose) or previous (the classification "
-                      "carries from pose to pose, from the rest pose on). Default: rest.", "name"},
-        {"sets", "With --pose/--poses, instead of --dynamic-rule: the poses after the rest pose as sets of "
-                 "consecutive poses, each from its first pose to the next set's, with its own dynamic rule, e.g. "
-                 "1:confluent,40:additive; a set's reference is the pose before its first.", "A:rule,..."},
+        {"script",
+         "Replay this stroke script (docs/project-format.md) on the source mesh and render one of its "
+         "frames.",
+         "strokes.json"},
+        {"classification",
+         "For a script or project: dynamic (each set's rule, the base mesh classified by --rule) "
+         "or static (--rule on the frame alone). Default: dynamic.",
+         "name"},
+        {"pose",
+         "The source is a mesh animation (a folder or numbered pattern of meshes such as 'walk_%04d.obj', or "
+         "a glTF file): render its pose N (0 = the first).",
+         "N"},
+        {"poses",
+         "The source is a mesh animation: render poses A to B, one image each, with one camera for all; "
+         "-o (and --depth, --ids) hold the pose number as %d or %04d, e.g. frame_%04d.png.",
+         "A:B"},
+        {"dynamic-rule",
+         "With --pose/--poses: classify each pose by this dynamic rule against --reference, the "
+         "animation being the deformation history (additive, subtractive, intersection, confluent, "
+         "homogeneous-confluent); the rest pose is classified by --rule. Default: --rule on each pose "
+         "alone.",
+         "name"},
+        {"reference",
+         "With --dynamic-rule: rest (each pose against the rest pose) or previous (the classification "
+         "carries from pose to pose, from the rest pose on). Default: rest.",
+         "name"},
+        {"sets",
+         "With --pose/--poses, instead of --dynamic-rule: the poses after the rest pose as sets of "
+         "consecutive poses, each from its first pose to the next set's, with its own dynamic rule, e.g. "
+         "1:confluent,40:additive; a set's reference is the pose before its first.",
+         "A:rule,..."},
     });
+    addParameterOptions(parser, render_verb_parameters::kTable);
     parser.addHelpOption();
+}
+
+// Every row of render_verb_parameters::kTable, before any other check.
+std::optional<QString> parseParameters(const QCommandLineParser& parser, RenderOptions& options)
+{
+    using namespace render::method_parameters;
+    using namespace render_verb_parameters;
+    TransparencySettings& xray = options.trim.transparency;
+    int budget = int(kMemoryBudget.defaultValue);
+    int frame = 0;
+    for (const std::optional<QString>& error :
+         {parseParameter(parser, kK, options.parameters.k),
+          parseParameter(parser, kSharedCounters, options.parameters.sharedCounters),
+          parseParameter(parser, kMemoryBudget, budget),
+          parseParameter(parser, inspect_parameters::kLayerAlpha, xray.layerAlpha),
+          parseParameter(parser, inspect_parameters::kGhostAlpha, xray.ghostAlpha),
+          parseParameter(parser, inspect_parameters::kDensity, xray.density),
+          parseParameter(parser, inspect_parameters::kFresnel, xray.fresnelExponent),
+          parseParameter(parser, inspect_parameters::kCapSpacing, options.capSpacingFraction),
+          parseParameter(parser, kRepeat, options.repeat), parseParameter(parser, kThreads, options.threads),
+          parseParameter(parser, kFrame, frame)}) {
+        if (error)
+            return error;
+    }
+    options.parameters.memoryBudgetBytes = budgetBytes(budget);
+    if (parser.isSet(QStringLiteral("frame")))
+        options.frame = frame;
+    return std::nullopt;
 }
 
 std::optional<QString> parseRule(const QString& text, RenderOptions& options)
@@ -139,9 +179,6 @@ std::optional<QString> parseMethodOptions(const QCommandLineParser& parser, Rend
                 .arg(id, fragmentMethodIds().join(QStringLiteral(", ")));
         options.method = *method;
     }
-    if (parser.isSet("shared-counters"))
-        return parseIntegerOption("shared-counters", parser.value("shared-counters"), 1, ui::kMaxSharedCounters,
-                              options.sharedCounters);
     return std::nullopt;
 }
 
@@ -155,13 +192,8 @@ std::optional<QString> parseDesignOptions(const QCommandLineParser& parser, Rend
     if (options.designed() && !options.objectTransforms.empty())
         return QStringLiteral("--object-transform places the objects of mesh sources; a design keeps its own "
                               "placement");
-    if (parser.isSet("frame")) {
-        int frame = 0;
-        if (auto e = parseIntegerOption("frame", parser.value("frame"), 0, 1000000, frame))
-            return e;
-        options.frame = frame;
-    }
     const QString classification = parser.value("classification");
+    options.classificationGiven = parser.isSet("classification");
     if (classification == QLatin1String("static"))
         options.classification = Classification::Static;
     else if (!classification.isEmpty() && classification != QLatin1String("dynamic"))
@@ -241,10 +273,13 @@ std::optional<QString> parseInspectionOptions(const QCommandLineParser& parser, 
     options.trim.cap.enabled = parser.isSet("cap");
     if (options.trim.cap.enabled && !options.trim.clipSet().anyEnabled())
         return QStringLiteral("--cap needs at least one --clip plane to cut with");
+    if (parser.isSet("cap-spacing") && !options.trim.cap.enabled)
+        return QStringLiteral("--cap-spacing is the spacing of the cap's pattern; give --cap too");
     if (parser.isSet("cap-pattern")) {
         const std::optional<CapPattern> pattern = parseCapPattern(parser.value("cap-pattern").toStdString());
         if (!pattern)
-            return QStringLiteral("unknown --cap-pattern '%1' (use hatched, striped or solid)").arg(parser.value("cap-pattern"));
+            return QStringLiteral("unknown --cap-pattern '%1' (use hatched, striped or solid)")
+                .arg(parser.value("cap-pattern"));
         options.trim.cap.pattern = *pattern;
     }
     if (parser.isSet("csg"))
@@ -287,13 +322,7 @@ std::optional<QString> parseTransparencyOptions(const QCommandLineParser& parser
     for (const char* name : {"layer-alpha", "ghost-alpha", "density", "fresnel"})
         if (parser.isSet(name) && !xray.enabled)
             return QStringLiteral("--%1 needs --transparency opaque|translucent").arg(QLatin1String(name));
-    if (auto e = parseRealFlag(parser, QStringLiteral("layer-alpha"), 0.0, 1.0, xray.layerAlpha))
-        return e;
-    if (auto e = parseRealFlag(parser, QStringLiteral("ghost-alpha"), 0.0, 1.0, xray.ghostAlpha))
-        return e;
-    if (auto e = parseRealFlag(parser, QStringLiteral("density"), 0.0, 1e6, xray.density))
-        return e;
-    return parseRealFlag(parser, QStringLiteral("fresnel"), 0.0, 64.0, xray.fresnelExponent);
+    return std::nullopt;
 }
 
 std::optional<QString> parseBackendOptions(const QCommandLineParser& parser, RenderOptions& options)
@@ -301,18 +330,6 @@ std::optional<QString> parseBackendOptions(const QCommandLineParser& parser, Ren
     if (parser.isSet("size"))
         if (auto e = parseImageSize(parser.value("size"), options.width, options.height))
             return e;
-    if (parser.isSet("k"))
-        if (auto e = parseIntegerOption("k", parser.value("k"), 1, render::MethodParameters::kMaxK, options.k))
-            return e;
-    if (parser.isSet("repeat"))
-        if (auto e = parseIntegerOption("repeat", parser.value("repeat"), 1, 1000, options.repeat))
-            return e;
-    if (parser.isSet("threads")) {
-        int threads = 0;
-        if (auto e = parseIntegerOption("threads", parser.value("threads"), 0, 1024, threads))
-            return e;
-        options.threads = unsigned(threads);
-    }
     const QString backend = parser.value("backend");
     if (backend == QLatin1String("reference"))
         options.backend = Backend::Reference;
@@ -322,15 +339,6 @@ std::optional<QString> parseBackendOptions(const QCommandLineParser& parser, Ren
 }
 
 } // namespace
-
-std::optional<QString> parseIntegerOption(const QString& name, const QString& text, int lo, int hi, int& out)
-{
-    bool ok = false;
-    out = text.toInt(&ok);
-    if (!ok || out < lo || out > hi)
-        return QStringLiteral("--%1 must be an integer from %2 to %3, got '%4'").arg(name).arg(lo).arg(hi).arg(text);
-    return std::nullopt;
-}
 
 std::optional<QString> parseImageSize(const QString& text, int& width, int& height)
 {
@@ -365,6 +373,8 @@ std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& argum
         return QString();
     }
     RenderOptions options;
+    if (auto e = parseParameters(parser, options))
+        return *e;
     if (auto e = takeSources(parser.positionalArguments(), QStringLiteral("render"), options.sources))
         return *e;
     options.designSource = options.sources.size() == 1 && isDesignSource(options.sources.front());
@@ -373,7 +383,8 @@ std::variant<RenderOptions, QString> parseRenderOptions(const QStringList& argum
     options.output = parser.value("output");
     options.depthOutput = parser.value("depth");
     options.idsOutput = parser.value("ids");
-    if (auto e = checkOutputPaths({{"-o", options.output}, {"--depth", options.depthOutput}, {"--ids", options.idsOutput}}))
+    if (auto e =
+            checkOutputPaths({{"-o", options.output}, {"--depth", options.depthOutput}, {"--ids", options.idsOutput}}))
         return *e;
     if (parser.isSet("rule"))
         if (auto e = parseRule(parser.value("rule"), options))

@@ -11,10 +11,12 @@
 #include "render/gl/offscreen_gl_context.h"
 #include "core/animation/animation_chain.h"
 #include "core/animation/animation_loader.h"
+#include "core/animation/pose_history_plan.h"
 #include "core/animation/pose_sets.h"
 #include "core/catalog/scene_source.h"
 #include "core/mesh/mesh_validation.h"
 #include "core/timeline/frame_chain.h"
+#include "core/trim/dynamic_frame_scene.h"
 #include "core/trim/dynamic_reference_renderer.h"
 #include "core/trim/csg_expression.h"
 #include "core/trim/reference_renderer.h"
@@ -30,8 +32,9 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <vector>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace trimlab::app {
 
@@ -93,8 +96,9 @@ QString gpuStatistics(const render::FrameStats& s, const render::MethodParameter
 void configure(render::TrimRenderer& renderer, const RenderOptions& options)
 {
     render::MethodParameters parameters = renderer.parameters();
-    parameters.k = options.k;
-    parameters.sharedCounters = options.sharedCounters;
+    parameters.k = options.parameters.k;
+    parameters.sharedCounters = options.parameters.sharedCounters;
+    parameters.memoryBudgetBytes = options.parameters.memoryBudgetBytes;
     renderer.setMethod(options.method);
     renderer.setParameters(parameters);
 }
@@ -162,21 +166,30 @@ RenderOutcome renderWithReference(const Scene& scene, const RenderOptions& optio
     return outcome;
 }
 
-// `options.repeat` frames of the chain's shown level on `renderer` (configured).
-// How the pose follows the history `dynamic` rendered last (--poses, consecutive poses):
-// one set more, which is appended so that only the new set is characterized as the
-// viewport's timeline does; the same sets with another frame shown, which keeps every
-// characterization; or a new history. For Append and ReplaceShown `chain` holds only the
-// pose's own level, the one that changes.
-enum class HistoryStep { New, Append, ReplaceShown };
+// The chain levels of `step`: each pose against its reference pose, under its set's rule.
+std::vector<DynamicChainLevel> historyLevels(const MeshAnimation& animation, const PoseHistoryStep& step)
+{
+    std::vector<DynamicChainLevel> levels;
+    for (const PoseHistoryLevel& level : step.levels)
+        levels.push_back(
+            {makeDynamicFrameScene(animation.triangles, animation.poses[level.reference], animation.poses[level.pose]),
+             level.rule});
+    return levels;
+}
 
+// `options.repeat` frames of the chain's shown level on `renderer` (configured), after
+// the step the pose history plan chose (core/animation/pose_history_plan.h) from the
+// history `dynamic` rendered last: for Append and ReplaceShown `chain` holds only the
+// levels that change — appended, so that only the new sets are characterized as the
+// viewport's timeline does, or the new shown level, which keeps every characterization.
 RenderOutcome renderDynamicOn(render::TrimRenderer& renderer, render::DynamicTrimRenderer& dynamic,
-                              const QString& rendererName, const DynamicChain& chain, HistoryStep step,
+                              const QString& rendererName, const DynamicChain& chain, PoseHistoryStep::Kind step,
                               const RenderOptions& options, const Camera& camera)
 {
-    if (step == HistoryStep::Append)
-        dynamic.appendLevel(chain.levels.back());
-    else if (step == HistoryStep::ReplaceShown)
+    if (step == PoseHistoryStep::Kind::Append)
+        for (const DynamicChainLevel& level : chain.levels)
+            dynamic.appendLevel(level);
+    else if (step == PoseHistoryStep::Kind::ReplaceShown)
         dynamic.setShownLevel(chain.levels.back());
     else
         dynamic.setChain(chain);
@@ -208,7 +221,8 @@ RenderOutcome renderDynamicWithGpu(const DynamicChain& chain, const RenderOption
     render::TrimRenderer renderer(gl.context());
     configure(renderer, options);
     render::DynamicTrimRenderer dynamic(renderer);
-    return renderDynamicOn(renderer, dynamic, gl.capabilities().renderer, chain, HistoryStep::New, options, camera);
+    return renderDynamicOn(renderer, dynamic, gl.capabilities().renderer, chain, PoseHistoryStep::Kind::New, options,
+                           camera);
 }
 
 RenderOutcome renderDynamicWithReference(const DynamicChain& chain, const RenderOptions& options, const Camera& camera)
@@ -220,7 +234,8 @@ RenderOutcome renderDynamicWithReference(const DynamicChain& chain, const Render
         result = reference.render(camera, options.width, options.height, options.trim, options.threads);
         renderMs.push_back(result.stats.wallMs);
     }
-    RenderOutcome outcome{render::toQImage(result.color), withMeshIds(std::move(result.trim), chain.levels.back().frame), {}};
+    RenderOutcome outcome{
+        render::toQImage(result.color), withMeshIds(std::move(result.trim), chain.levels.back().frame), {}};
     outcome.statistics = QStringLiteral("reference ray caster, dynamic rules over %1 sets: %2 ms wall (%3)")
                              .arg(chain.levels.size())
                              .arg(render::medianOf(renderMs), 0, 'f', 2)
@@ -257,7 +272,7 @@ void writeOutputs(const RenderOutcome& outcome, const RenderOptions& options, co
 {
     saveImage(outcome.color, options.output);
     if (!options.depthOutput.isEmpty())
-        writePfm(options.depthOutput.toStdString(), rayDistanceImage(outcome.trim, camera));
+        io::writePfm(options.depthOutput.toStdString(), rayDistanceImage(outcome.trim, camera));
     if (!options.idsOutput.isEmpty())
         saveImage(idImage(outcome.trim), options.idsOutput);
 }
@@ -277,9 +292,13 @@ QString classificationText(const RenderOptions& options, const timeline::Timelin
 
 // A frame of a design: the sets' dynamic rules over the chain of reference frames, or
 // the static rule on the frame alone.
-int renderDesigned(const RenderOptions& options)
+int renderDesigned(const RenderOptions& given)
 {
-    const DesignedFrame design = loadDesignedFrame(options);
+    const DesignedFrame design = loadDesignedFrame(given);
+    RenderOptions options = given;
+    const DesignedClassification chosen = designedClassification(given, design);
+    options.classification = chosen.classification;
+    options.trim.rule = chosen.rule;
     const bool gpu = options.backend == Backend::KPlus;
     RenderOutcome outcome;
     Camera camera;
@@ -309,14 +328,14 @@ int renderDesigned(const RenderOptions& options)
     return 0;
 }
 
-// The cap pattern's spacing from the scene's size (1/25 of its bounding radius), and the
+// The cap pattern's spacing from the scene's size (--cap-spacing of its bounding radius), and the
 // CSG expression and the object rules checked against the scene's objects. False (after
 // printing why) when they name an object the scene lacks.
 bool fitInspection(const Scene& scene, RenderOptions& options)
 {
     const double radius = scene.worldBounds().radius();
     if (radius > 0.0)
-        options.trim.cap.spacing = radius / 25.0;
+        options.trim.cap.spacing = radius * options.capSpacingFraction;
     if (const std::optional<QString> error = checkObjectIds(options.trim.csg, scene.objects.size())) {
         printError(*error);
         return false;
@@ -335,7 +354,8 @@ QString settingsText(const TrimSettings& trim)
     if (trim.capping())
         text += QStringLiteral(", capped");
     if (trim.xray())
-        text += QStringLiteral(", X-ray %1").arg(QString::fromLatin1(trimDisplayName(trim.transparency.display).data()));
+        text +=
+            QStringLiteral(", X-ray %1").arg(QString::fromLatin1(trimDisplayName(trim.transparency.display).data()));
     return text;
 }
 
@@ -444,7 +464,8 @@ int renderPoses(RenderOptions options)
         try {
             requireValidPoseSets(*options.poseSets, animation.restPose, animation.poseCount());
         } catch (const std::invalid_argument& e) {
-            printError(QStringLiteral("--sets for %1: %2").arg(QString::fromStdString(source), QString::fromUtf8(e.what())));
+            printError(
+                QStringLiteral("--sets for %1: %2").arg(QString::fromStdString(source), QString::fromUtf8(e.what())));
             return 2;
         }
         if (std::size_t(selection.first) < animation.restPose) {
@@ -467,44 +488,37 @@ int renderPoses(RenderOptions options)
     const Camera camera = cameraFor(bounds, options);
     const bool gpu = options.backend == Backend::KPlus;
     std::unique_ptr<render::OffscreenGlContext> gl = gpu ? std::make_unique<render::OffscreenGlContext>() : nullptr;
-    std::unique_ptr<render::TrimRenderer> renderer = gpu ? std::make_unique<render::TrimRenderer>(gl->context()) : nullptr;
+    std::unique_ptr<render::TrimRenderer> renderer =
+        gpu ? std::make_unique<render::TrimRenderer>(gl->context()) : nullptr;
     if (renderer)
         configure(*renderer, options);
     std::unique_ptr<render::DynamicTrimRenderer> dynamic =
         renderer ? std::make_unique<render::DynamicTrimRenderer>(*renderer) : nullptr;
-    // The poses after the rest pose as sets (--sets, or the reference's sets): a pose that
-    // follows the one rendered before needs only its own level when the GPU keeps the rest.
-    const std::vector<PoseSet> sets =
-        options.poseSets   ? *options.poseSets
-        : options.poseRule ? referenceSets(animation.restPose, animation.poseCount(), options.poseReference,
-                                           *options.poseRule)
-                           : std::vector<PoseSet>{};
-    std::size_t historyLevels = 0; // sets of the chain `dynamic` holds
+    // The history's sets (--sets after the rest pose, or the reference's on both sides): a
+    // pose that follows the one rendered before needs only its own level when the GPU
+    // keeps the rest.
+    const PoseHistorySets history = options.poseSets   ? PoseHistorySets{animation.restPose, *options.poseSets, {}}
+                                    : options.poseRule ? referenceHistory(animation.restPose, animation.poseCount(),
+                                                                          options.poseReference, *options.poseRule)
+                                                       : PoseHistorySets{};
+    std::optional<std::size_t> held; // the pose whose chain `dynamic` holds
     for (std::size_t i = 0; i < poses.size(); ++i) {
         const int pose = selection.first + int(i);
         RenderOutcome outcome;
         if (options.poseRule && std::size_t(pose) != animation.restPose) {
-            // After the rest pose, the next pose has the history of the one before plus a
-            // set (a new set begins), or the same sets with another shown frame.
-            HistoryStep step = HistoryStep::New;
-            if (renderer && historyLevels > 0 && std::size_t(pose) > animation.restPose) {
-                const std::size_t levels = setOfPose(sets, std::size_t(pose)) + 1;
-                step = levels == historyLevels + 1 ? HistoryStep::Append
-                       : levels == historyLevels   ? HistoryStep::ReplaceShown
-                                                   : HistoryStep::New;
-            }
+            const PoseHistoryStep step = planPoseHistory(history, held, std::size_t(pose));
             const DynamicChain chain =
-                step != HistoryStep::New
-                    ? DynamicChain{options.trim.rule, {poseSetShownLevel(animation, std::size_t(pose), sets)}}
-                : options.poseSets ? *poseSetChain(animation, std::size_t(pose), sets, options.trim.rule)
+                step.kind != PoseHistoryStep::Kind::New
+                    ? DynamicChain{options.trim.rule, historyLevels(animation, step)}
+                : options.poseSets ? *poseSetChain(animation, std::size_t(pose), *options.poseSets, options.trim.rule)
                                    : *animationChain(animation, std::size_t(pose), options.poseReference,
                                                      *options.poseRule, options.trim.rule);
-            outcome = renderer ? renderDynamicOn(*renderer, *dynamic, gl->capabilities().renderer, chain, step,
+            outcome = renderer ? renderDynamicOn(*renderer, *dynamic, gl->capabilities().renderer, chain, step.kind,
                                                  options, camera)
                                : renderDynamicWithReference(chain, options, camera);
-            historyLevels = renderer ? std::size_t(dynamic->levelCount()) : 0;
+            held = renderer ? std::optional(std::size_t(pose)) : std::nullopt;
         } else {
-            historyLevels = 0;
+            held.reset();
             outcome = renderer ? renderOn(*renderer, gl->capabilities().renderer, poses[i].scene, options, camera)
                                : renderWithReference(poses[i].scene, options, camera);
         }

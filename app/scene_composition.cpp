@@ -1,6 +1,7 @@
 #include "app/scene_composition.h"
 
 #include "core/trim/csg_expression.h"
+#include "core/trim/csg_object_ids.h"
 #include "core/trim/static_rule.h"
 
 #include <cmath>
@@ -64,14 +65,18 @@ std::optional<QString> applyObjectTransforms(const std::vector<ObjectTransformOp
     return std::nullopt;
 }
 
-std::optional<QString> takeSources(const QStringList& positional, const QString& verb, std::vector<std::string>& sources)
+std::optional<QString> takeSources(const QStringList& positional, const QString& verb,
+                                   std::vector<std::string>& sources)
 {
     if (positional.isEmpty())
         return QStringLiteral("%1 needs at least one source (a mesh file or demo:NAME; several make one scene); see "
                               "trimlab %1 --help")
             .arg(verb);
     if (positional.size() > qsizetype(Scene::maxObjects))
-        return QStringLiteral("%1 takes at most %2 sources, got %3").arg(verb).arg(Scene::maxObjects).arg(positional.size());
+        return QStringLiteral("%1 takes at most %2 sources, got %3")
+            .arg(verb)
+            .arg(Scene::maxObjects)
+            .arg(positional.size());
     for (const QString& source : positional)
         sources.push_back(source.toStdString());
     return std::nullopt;
@@ -129,22 +134,12 @@ void adoptSavedCsg(const LoadedScene& loaded, CsgSettings& csg, bool expressionG
 
 std::optional<QString> checkObjectIds(const CsgSettings& csg, std::size_t objectCount)
 {
-    const auto outOfRange = [&](const QString& what, int id) {
-        return QStringLiteral("%1 refers to object %2, but the scene has %3 object(s) (ids 0 to %4)")
-            .arg(what)
-            .arg(id)
-            .arg(objectCount)
-            .arg(int(objectCount) - 1);
-    };
-    if (csg.enabled()) {
-        const int maxId = csgMaxObjectId(csg.expression);
-        if (maxId >= int(objectCount))
-            return outOfRange(QStringLiteral("--csg"), maxId);
-    }
-    for (std::size_t id = objectCount; id < csg.objectRules.size(); ++id)
-        if (csg.objectRules[id])
-            return outOfRange(QStringLiteral("--object-rule"), int(id));
-    return std::nullopt;
+    const std::optional<CsgObjectIdProblem> problem = csgObjectIdOutsideScene(csg, objectCount);
+    if (!problem)
+        return std::nullopt;
+    return QStringLiteral("%1 %2").arg(problem->inExpression ? QStringLiteral("--csg")
+                                                             : QStringLiteral("--object-rule"),
+                                       QString::fromStdString(csgObjectIdReason(problem->id, objectCount)));
 }
 
 } // namespace trimlab::app

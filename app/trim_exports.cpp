@@ -1,6 +1,6 @@
 #include "app/trim_exports.h"
 
-#include "ui/common/image_file.h"
+#include "render/image_file.h"
 
 #include <glm/geometric.hpp>
 
@@ -9,9 +9,9 @@
 
 namespace trimlab::app {
 
-FloatImage rayDistanceImage(const TrimImage& trim, const Camera& camera)
+io::FloatImage rayDistanceImage(const TrimImage& trim, const Camera& camera)
 {
-    FloatImage image{trim.width, trim.height, std::vector<float>(trim.pixels.size())};
+    io::FloatImage image{trim.width, trim.height, std::vector<float>(trim.pixels.size())};
     for (int y = 0; y < trim.height; ++y) {
         for (int x = 0; x < trim.width; ++x) {
             const TrimPixel& p = trim.at(x, y);
@@ -46,7 +46,7 @@ QImage idImage(const TrimImage& trim)
 
 void saveImage(const QImage& image, const QString& path)
 {
-    ui::writeImageFile(image, path);
+    render::writeImageFile(image, path);
 }
 
 } // namespace trimlab::app

@@ -17,7 +17,7 @@
 namespace trimlab::app {
 
 /// Distances along the view rays (row 0 at the top).
-[[nodiscard]] FloatImage rayDistanceImage(const TrimImage& trim, const Camera& camera);
+[[nodiscard]] io::FloatImage rayDistanceImage(const TrimImage& trim, const Camera& camera);
 
 /// The id image described above.
 [[nodiscard]] QImage idImage(const TrimImage& trim);

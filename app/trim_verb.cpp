@@ -35,18 +35,21 @@ void addTrimOptions(QCommandLineParser& parser)
         "Exports the trimmed solid as exact geometry: the scene's triangles refined along all their intersections "
         "(exact arithmetic), every cell of space classified by its winding number under the rule (or the CSG "
         "expression), and the faces between kept and dropped cells written as a closed mesh facing outward.");
-    parser.addPositionalArgument("sources", "Mesh files or demo:NAME (several make one scene, object ids counting "
-                                            "across them in order), or a .trimlab project.",
+    parser.addPositionalArgument("sources",
+                                 "Mesh files or demo:NAME (several make one scene, object ids counting "
+                                 "across them in order), or a .trimlab project.",
                                  "SOURCE...");
     parser.addOptions({
-        {"rule", QStringLiteral("The static rule: %1. Default: alternating-border, or the rule a scene project saved.")
-                     .arg(QString::fromStdString(staticRuleNamesHelp())),
+        {"rule",
+         QStringLiteral("The static rule: %1. Default: alternating-border, or the rule a scene project saved.")
+             .arg(QString::fromStdString(staticRuleNamesHelp())),
          "rule"},
         {"csg", "CSG of the objects, as trimlab render --csg (each object by --object-rule, else --rule).",
          "expression"},
         {"object-rule", "Rule of one object for --csg, e.g. 1=parity. Repeatable.", "id=rule"},
         {"object-transform", objectTransformHelp(), "id=tx,ty,tz[,rx,ry,rz[,s]]"},
-        {{"o", "output"}, QStringLiteral("The mesh to write: %1.").arg(QString::fromStdString(meshExportFormatsText())),
+        {{"o", "output"},
+         QStringLiteral("The mesh to write: %1.").arg(QString::fromStdString(meshExportFormatsText())),
          "file"},
     });
     parser.addHelpOption();

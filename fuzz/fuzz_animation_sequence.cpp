@@ -33,7 +33,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             break;
         rest.remove_prefix(cut + kSeparator.size());
     }
-    trimlab::fuzz::expectTypedErrors<trimlab::MeshLoadError>(
-        [&] { (void)trimlab::loadMeshSequence(files, {}, 1); });
+    trimlab::fuzz::expectTypedErrors<trimlab::MeshLoadError>([&] { (void)trimlab::loadMeshSequence(files, {}, 1); });
     return 0;
 }

@@ -15,7 +15,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
     if (size == 0)
         return 0;
-    const auto scheme = (data[0] & 1u) != 0 ? trimlab::SubdivisionScheme::Loop : trimlab::SubdivisionScheme::CatmullClark;
+    const auto scheme =
+        (data[0] & 1u) != 0 ? trimlab::SubdivisionScheme::Loop : trimlab::SubdivisionScheme::CatmullClark;
     trimlab::fuzz::expectTypedErrors<trimlab::MeshLoadError, trimlab::SubdivisionError>([&] {
         const trimlab::SubdivisionCage cage =
             trimlab::readCageObj(trimlab::fuzz::bytesOf(data + 1, size - 1), "fuzz.obj", scheme);

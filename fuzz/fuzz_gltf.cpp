@@ -10,8 +10,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
     const std::string_view bytes = trimlab::fuzz::bytesOf(data, size);
     const bool binary = bytes.substr(0, 4) == "glTF";
-    trimlab::fuzz::expectTypedErrors<trimlab::MeshLoadError>([&] {
-        (void)trimlab::loadMeshFromMemory(bytes, binary ? "glb" : "gltf", binary ? "fuzz.glb" : "fuzz.gltf");
-    });
+    trimlab::fuzz::expectTypedErrors<trimlab::MeshLoadError>(
+        [&] { (void)trimlab::loadMeshFromMemory(bytes, binary ? "glb" : "gltf", binary ? "fuzz.glb" : "fuzz.gltf"); });
     return 0;
 }

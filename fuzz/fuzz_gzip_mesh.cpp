@@ -13,8 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
     const std::string_view bytes = trimlab::fuzz::bytesOf(data, size);
     // The cap itself (a zip bomb must stop at it, not exhaust memory).
-    trimlab::fuzz::expectTypedErrors<trimlab::MeshLoadError>(
-        [&] { (void)trimlab::gunzip(bytes, "fuzz.gz", 1 << 16); });
+    trimlab::fuzz::expectTypedErrors<trimlab::MeshLoadError>([&] { (void)trimlab::gunzip(bytes, "fuzz.gz", 1 << 16); });
     static constexpr std::array<const char*, 5> kExtensions = {"obj.gz", "off.gz", "ply.gz", "stl.gz", "gltf.gz"};
     for (const char* extension : kExtensions) {
         trimlab::fuzz::expectTypedErrors<trimlab::MeshLoadError>(

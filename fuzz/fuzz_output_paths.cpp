@@ -33,15 +33,16 @@ const std::string& scratchFolder()
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
     const std::string_view text = trimlab::fuzz::bytesOf(data, size);
-    std::vector<trimlab::timeline::OutputRequest> requests;
+    std::vector<trimlab::io::OutputRequest> requests;
     const char* options[] = {"-o", "--depth", "--ids", "--json"};
     std::size_t begin = 0;
     for (std::size_t i = 0; i < 4 && begin <= text.size(); ++i) {
         const std::size_t end = std::min(text.find('\n', begin), text.size());
         const std::string_view path = text.substr(begin, end - begin);
-        requests.push_back({options[i], path.starts_with('/') ? std::string(path) : scratchFolder() + std::string(path)});
+        requests.push_back(
+            {options[i], path.starts_with('/') ? std::string(path) : scratchFolder() + std::string(path)});
         begin = end + 1;
     }
-    trimlab::fuzz::expectTypedErrors<>([&] { (void)trimlab::timeline::checkOutputPaths(requests); });
+    trimlab::fuzz::expectTypedErrors<>([&] { (void)trimlab::io::checkOutputPaths(requests); });
     return 0;
 }

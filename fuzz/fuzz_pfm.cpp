@@ -10,6 +10,6 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
     const auto path = trimlab::fuzz::writeScratchFile("fuzz.pfm", trimlab::fuzz::bytesOf(data, size));
-    trimlab::fuzz::expectTypedErrors<std::runtime_error>([&] { (void)trimlab::readPfm(path); });
+    trimlab::fuzz::expectTypedErrors<std::runtime_error>([&] { (void)trimlab::io::readPfm(path); });
     return 0;
 }

@@ -10,8 +10,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     using trimlab::SkeletonFileError;
     trimlab::fuzz::expectTypedErrors<SkeletonFileError>([&] {
         const auto document = trimlab::parseSkeletonJson(trimlab::fuzz::bytesOf(data, size), "fuzz.json");
-        const std::string again =
-            trimlab::skeletonJson(document.rig, document.curve ? &*document.curve : nullptr);
+        const std::string again = trimlab::skeletonJson(document.rig, document.curve ? &*document.curve : nullptr);
         try {
             const auto reread = trimlab::parseSkeletonJson(again, "fuzz-again.json");
             if (reread.rig.joints != document.rig.joints || reread.rig.parent != document.rig.parent) {

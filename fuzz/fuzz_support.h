@@ -55,8 +55,8 @@ void expectTypedErrors(Load&& load)
 inline const std::filesystem::path& scratchFolder()
 {
     static const std::filesystem::path folder = [] {
-        std::filesystem::path f = std::filesystem::temp_directory_path() /
-                                  ("trimlab-fuzz-" + std::to_string(::getpid()));
+        std::filesystem::path f =
+            std::filesystem::temp_directory_path() / ("trimlab-fuzz-" + std::to_string(::getpid()));
         std::filesystem::create_directories(f);
         std::atexit([] {
             std::error_code ignored;

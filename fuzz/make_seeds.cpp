@@ -109,8 +109,8 @@ int main(int argc, char** argv)
     extras.staticRule = StaticRule::AlternatingBorder;
     writeText(out / "project" / "two_sets.trimlab", timeline::projectJson(t, extras));
 
-    FloatImage image{3, 2, {0.5f, 1.0f, 2.0f, -1.0f, 0.0f, std::numeric_limits<float>::infinity()}};
-    writePfm(out / "pfm" / "depth_3x2.pfm", image);
+    io::FloatImage image{3, 2, {0.5f, 1.0f, 2.0f, -1.0f, 0.0f, std::numeric_limits<float>::infinity()}};
+    io::writePfm(out / "pfm" / "depth_3x2.pfm", image);
 
     // A three-joint chain with its curve skeleton: every section of the format.
     SkeletonRig rig;

@@ -35,7 +35,9 @@ void clearWords(GlFunctions& gl, const GlBuffer& buffer, std::size_t offset, std
 
 } // namespace
 
-DynamicTrimRenderer::DynamicTrimRenderer(TrimRenderer& renderer) : m_renderer(renderer), m_gl(renderer.gl()) {}
+DynamicTrimRenderer::DynamicTrimRenderer(TrimRenderer& renderer) : m_renderer(renderer), m_gl(renderer.gl())
+{
+}
 
 DynamicTrimRenderer::~DynamicTrimRenderer() = default;
 
@@ -146,7 +148,8 @@ void DynamicTrimRenderer::characterizeLevels(const Camera& camera, const TrimSet
     for (std::size_t level = m_characterized; level + 1 < m_levels.size(); ++level) {
         const int read = 1 - written;
         clearState(width, height);
-        clearWords(m_gl, m_bits[written], 0, std::size_t(width) * std::size_t(height) * kBitsWordsPerPixel * sizeof(GLuint));
+        clearWords(m_gl, m_bits[written], 0,
+                   std::size_t(width) * std::size_t(height) * kBitsWordsPerPixel * sizeof(GLuint));
         m_gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kReferenceBitsStorage, m_bits[read].id());
         m_gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCharacterizationBitsStorage, m_bits[written].id());
         m_gl.glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

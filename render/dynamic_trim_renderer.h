@@ -24,8 +24,8 @@ namespace trimlab::render {
 class GpuScene;
 
 struct DynamicFrameStats {
-    int levels = 0;                 ///< sets in the chain
-    int characterizedLevels = 0;    ///< characterization passes this frame ran (0 when cached)
+    int levels = 0;              ///< sets in the chain
+    int characterizedLevels = 0; ///< characterization passes this frame ran (0 when cached)
     double characterizeMilliseconds = 0.0;
     double frameMilliseconds = 0.0; ///< the shown level's wall-clock time
 };

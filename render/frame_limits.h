@@ -20,8 +20,7 @@ namespace trimlab::render {
 /// when k exceeds GL_MAX_ARRAY_TEXTURE_LAYERS (slot methods), or when
 /// `estimatedMethodBytes` (nullopt: scene-dependent, not checked here) exceeds a
 /// non-zero budget in `parameters`.
-void checkFrameLimits(FragmentMethodKind method, const GlCapabilities& capabilities,
-                      const MethodParameters& parameters, std::optional<std::size_t> estimatedMethodBytes, int width,
-                      int height);
+void checkFrameLimits(FragmentMethodKind method, const GlCapabilities& capabilities, const MethodParameters& parameters,
+                      std::optional<std::size_t> estimatedMethodBytes, int width, int height);
 
 } // namespace trimlab::render

@@ -37,7 +37,8 @@ FrameRecovery FramePolicy::outOfMemory(const std::string& reason, const FrameDem
     }
     if (demands.dynamicRules) // the CPU still knows only the static rule
         return {FrameRecovery::Action::Refuse,
-                reason + " No GPU method with the dynamic rules fits: lower the image size or raise the memory budget."};
+                reason +
+                    " No GPU method with the dynamic rules fits: lower the image size or raise the memory budget."};
     m_cpuStill = true;
     return {FrameRecovery::Action::CpuStill,
             reason + " No GPU method fits this view: showing the CPU reference as a still image (it re-renders after "

@@ -3,7 +3,7 @@
 namespace trimlab::render {
 
 std::optional<FragmentMethodKind> memoryFallbackAfter(FragmentMethodKind failed, bool dynamicRules,
-                                                     bool needsInspection)
+                                                      bool needsInspection)
 {
     switch (failed) {
     case FragmentMethodKind::KPlusArray:

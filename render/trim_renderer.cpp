@@ -7,6 +7,7 @@
 #include "render/gl/wide_vector_state.h"
 #include "render/frame/gpu_scene.h"
 #include "render/mfr/method_factory.h"
+#include "render/mfr/method_parameter_table.h"
 #include "render/mfr/trim_frame.h"
 #include "render/passes/object_windings.h"
 #include "render/frame/render_target.h"
@@ -86,8 +87,9 @@ void checkInspection(const TrimMode& mode, const TrimSettings& settings, std::si
         throw std::invalid_argument("Transparency (X-ray) is not available with the dynamic rules; switch the "
                                     "classification to static to use it.");
     if (mode.dynamic && (needsInspectionMethod(settings) || settings.capping()))
-        throw std::invalid_argument("Capping, CSG and highlighting are not available with the dynamic rules; switch the "
-                                    "classification to static to use them.");
+        throw std::invalid_argument(
+            "Capping, CSG and highlighting are not available with the dynamic rules; switch the "
+            "classification to static to use them.");
     if (settings.csg.enabled() && settings.trimEnabled) {
         const int maxId = csgMaxObjectId(settings.csg.expression);
         if (maxId >= int(objectCount))
@@ -135,10 +137,7 @@ void TrimRenderer::setMethod(FragmentMethodKind method)
 
 void TrimRenderer::setParameters(const MethodParameters& parameters)
 {
-    if (parameters.k < 1 || parameters.k > MethodParameters::kMaxK)
-        throw std::invalid_argument("k must be between 1 and " + std::to_string(MethodParameters::kMaxK) + ".");
-    if (parameters.sharedCounters < 1)
-        throw std::invalid_argument("the number of shared counters must be at least 1.");
+    method_parameters::validateMethodParameters(parameters);
     m_parameters = parameters;
 }
 
@@ -179,10 +178,23 @@ void TrimRenderer::render(GpuScene& scene, const TrimMode& mode, const Camera& c
     if (mode.dynamic && mode.characterize)
         modeDefines << QStringLiteral("DYNAMIC_CHARACTERIZE");
     ObjectWindingBuffer* objectWindings = prepareInspection(settings, scene.objectCount(), width, height, modeDefines);
-    TrimFrame frame{m_gl,        *m_shaders, m_capabilities, scene,          *m_target,
-                    *m_counters, camera,     settings,       m_parameters,   view,
-                    projectionMatrix(camera, double(width) / double(height)), width, height, modeDefines,
-                    mode.dynamicRule, mode.referenceIsBase, objectWindings};
+    TrimFrame frame{m_gl,
+                    *m_shaders,
+                    m_capabilities,
+                    scene,
+                    *m_target,
+                    *m_counters,
+                    camera,
+                    settings,
+                    m_parameters,
+                    view,
+                    projectionMatrix(camera, double(width) / double(height)),
+                    width,
+                    height,
+                    modeDefines,
+                    mode.dynamicRule,
+                    mode.referenceIsBase,
+                    objectWindings};
 
     m_gl.glBeginQuery(GL_TIME_ELAPSED, m_timer.id());
     m_counters->reset();

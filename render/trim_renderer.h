@@ -52,8 +52,8 @@ struct FrameStats {
 /// per-pixel state those need).
 struct TrimMode {
     bool dynamic = false;
-    bool characterize = false;  ///< write the characterization instead of stopping at the trim
-    int dynamicRule = 3;        ///< DynamicRule as int
+    bool characterize = false; ///< write the characterization instead of stopping at the trim
+    int dynamicRule = 3;       ///< DynamicRule as int
     bool referenceIsBase = true;
 };
 

@@ -1,8 +1,6 @@
 #include "render/viewport_renderer.h"
 
 #include "render/frame/gpu_scene.h"
-#include "render/frame/gpu_skinning.h"
-#include "render/frame/gpu_subdivision.h"
 #include "render/gl/context_reset.h"
 #include "render/gl/gl_error.h"
 
@@ -12,109 +10,31 @@
 
 namespace trimlab::render {
 
-ViewportRenderer::ViewportRenderer() = default;
+ViewportRenderer::ViewportRenderer(std::shared_ptr<ShownContent> content)
+    : m_content(std::move(content)),
+      m_subscription(m_content->subscribe([this](ShownLayer layer) { contentChanged(layer); }))
+{
+}
 
 ViewportRenderer::~ViewportRenderer() = default;
 
-void ViewportRenderer::setScene(std::shared_ptr<const Scene> scene)
+// What a change means for the frame policy and the frame record, at once: the widget
+// asks the policy which path to paint before the next frame syncs anything.
+void ViewportRenderer::contentChanged(ShownLayer layer)
 {
-    m_scene = std::move(scene);
-    m_posedScene.reset();
-    m_sceneUploaded = false;
-    m_lastFrame.reset();
-    m_pose.clear();
-    m_skinning.reset();
-    m_subdivision.reset();
-    m_vertexColors.clear();
-    m_chain.reset(); // a chain belongs to the previous scene's mesh
-    m_level.reset();
-    m_appended.clear();
-    m_chainLastLevel.reset();
-    m_policy.reset();
-}
-
-void ViewportRenderer::setSceneTransforms(std::shared_ptr<const Scene> scene)
-{
-    if (!m_scene || !scene || scene->objects.size() != m_scene->objects.size())
-        throw std::invalid_argument("setSceneTransforms: the new scene does not have the shown scene's objects.");
-    for (std::size_t i = 0; i < scene->objects.size(); ++i) {
-        if (scene->objects[i].mesh.vertexCount() != m_scene->objects[i].mesh.vertexCount() ||
-            scene->objects[i].mesh.triangleCount() != m_scene->objects[i].mesh.triangleCount())
-            throw std::invalid_argument("setSceneTransforms: object " + std::to_string(i) +
-                                        " has another mesh than the one shown.");
+    if (layer == ShownLayer::Geometry && m_content->meshVersion() != m_meshesSeen) {
+        m_meshesSeen = m_content->meshVersion();
+        m_lastFrame.reset();
+        m_policy.reset(); // another scene: back to the chosen method
     }
-    m_scene = std::move(scene);
-    m_posedScene.reset();
-    m_transformsDirty = true;
-}
-
-void ViewportRenderer::showPose(const std::vector<glm::vec3>& positions)
-{
-    const std::size_t expected = m_scene && !m_scene->objects.empty() ? m_scene->objects.front().mesh.vertexCount() : 0;
-    if (positions.size() != expected || expected == 0)
-        throw std::invalid_argument("showPose: the scene's first object has " + std::to_string(expected) +
-                                    " vertices, the pose " + std::to_string(positions.size()) + ".");
-    m_pose = positions;
-    m_poseDirty = true;
-    m_posedScene.reset();
-    m_skinning.reset();
-    m_subdivision.reset();
-}
-
-void ViewportRenderer::showSkinnedPose(std::shared_ptr<const SkinningModel> model, std::size_t pose,
-                                       const std::vector<glm::vec3>& positions)
-{
-    if (!model || pose >= model->poseCount())
-        throw std::invalid_argument("showSkinnedPose: pose " + std::to_string(pose) + " of a model with " +
-                                    std::to_string(model ? model->poseCount() : 0) + " poses.");
-    showPose(positions);
-    if (model != m_gpuSkinningModel)
-        m_gpuSkinningFailed = false;
-    m_skinning = std::move(model);
-    m_skinnedPose = pose;
-}
-
-void ViewportRenderer::showSubdivisionPose(std::shared_ptr<const SubdivisionStencils> stencils,
-                                           std::vector<glm::dvec3> controlPoints,
-                                           const std::vector<glm::vec3>& positions)
-{
-    if (!stencils || controlPoints.size() != stencils->cageVertexCount)
-        throw std::invalid_argument("showSubdivisionPose: " + std::to_string(controlPoints.size()) +
-                                    " control points for a cage of " +
-                                    std::to_string(stencils ? stencils->cageVertexCount : 0) + ".");
-    showPose(positions);
-    if (stencils != m_gpuSubdivisionStencils)
-        m_gpuSubdivisionFailed = false;
-    m_subdivision = std::move(stencils);
-    m_controlPoints = std::move(controlPoints);
-}
-
-void ViewportRenderer::setVertexColors(std::vector<std::uint32_t> rgba8)
-{
-    std::size_t vertices = 0;
-    if (m_scene)
-        for (const SceneObject& object : m_scene->objects)
-            vertices += object.mesh.vertexCount();
-    if (!rgba8.empty() && rgba8.size() != vertices)
-        throw std::invalid_argument("setVertexColors: the scene has " + std::to_string(vertices) + " vertices, got " +
-                                    std::to_string(rgba8.size()) + " colors.");
-    m_vertexColors = std::move(rgba8);
-    m_colorsDirty = true;
-    m_dynamicColorsDirty = true;
-}
-
-std::shared_ptr<const Scene> ViewportRenderer::posedScene()
-{
-    if (!m_posedScene && m_scene) {
-        if (m_pose.empty()) {
-            m_posedScene = m_scene;
-        } else {
-            auto posed = std::make_shared<Scene>(*m_scene);
-            posed->objects.front().mesh.positions = m_pose;
-            m_posedScene = std::move(posed);
+    if (layer == ShownLayer::Chain) {
+        const ShownChain* chain = m_content->chain();
+        const std::uint64_t id = chain ? chain->id : 0;
+        if (id != m_chainSeen) {
+            m_chainSeen = id;
+            m_policy.clearStop(); // other rules: worth trying again after resets in a row
         }
     }
-    return m_posedScene;
 }
 
 void ViewportRenderer::setMethod(FragmentMethodKind method)
@@ -130,65 +50,9 @@ void ViewportRenderer::setMethodParameters(const MethodParameters& parameters)
     m_policy.reset();
 }
 
-void ViewportRenderer::setDynamicChain(std::shared_ptr<const DynamicChain> chain)
-{
-    m_chain = std::move(chain);
-    m_policy.clearStop();
-    m_level.reset();
-    m_appended.clear();
-    m_appendedUploaded = 0;
-    m_chainLastLevel.reset();
-    m_chainDirty = m_chain != nullptr;
-    m_levelDirty = false;
-}
-
-// A replaced shown level is folded into the history before the new level follows it; if
-// the replacement never reached the GPU, the whole chain goes up again (a drag followed
-// at once by an append: rare, and correct rather than clever).
-void ViewportRenderer::appendDynamicLevel(std::shared_ptr<const DynamicChainLevel> level)
-{
-    if (!m_chain || !level)
-        return;
-    if (m_level) {
-        if (m_appended.empty())
-            m_chainLastLevel = m_level;
-        else
-            m_appended.back() = m_level;
-        if (m_levelDirty)
-            m_chainDirty = true;
-        m_level.reset();
-        m_levelDirty = false;
-    }
-    m_appended.push_back(std::move(level));
-}
-
-std::size_t ViewportRenderer::dynamicLevelCount() const
-{
-    return m_chain ? m_chain->levels.size() + m_appended.size() : 0;
-}
-
-void ViewportRenderer::setDynamicShownLevel(std::shared_ptr<const DynamicChainLevel> level)
-{
-    if (!m_chain)
-        return;
-    m_level = std::move(level);
-    m_levelDirty = m_level != nullptr;
-}
-
-const DynamicChainLevel* ViewportRenderer::dynamicShownLevel() const
-{
-    if (m_level)
-        return m_level.get();
-    if (!m_appended.empty())
-        return m_appended.back().get();
-    if (m_chainLastLevel)
-        return m_chainLastLevel.get();
-    return m_chain && !m_chain->levels.empty() ? &m_chain->levels.back() : nullptr;
-}
-
 void ViewportRenderer::initialize(QOpenGLContext& context)
 {
-    m_sceneUploaded = false;
+    m_uploaded = {};
     m_renderer = std::make_unique<TrimRenderer>(context);
     applyMethod();
 }
@@ -196,12 +60,9 @@ void ViewportRenderer::initialize(QOpenGLContext& context)
 void ViewportRenderer::release()
 {
     m_dynamic.reset(); // its GL objects go first: it holds a reference to the renderer
-    m_gpuSkinning.reset();
-    m_gpuSubdivision.reset();
+    m_gpuPose.evaluator.reset();
     m_renderer.reset();
-    m_sceneUploaded = false;
-    m_chainDirty = m_chain != nullptr;
-    m_levelDirty = m_level != nullptr;
+    m_uploaded = {}; // a new context gets every layer again
 }
 
 void ViewportRenderer::applyMethod()
@@ -212,7 +73,7 @@ void ViewportRenderer::applyMethod()
 
 FrameDemands ViewportRenderer::frameDemands() const
 {
-    return {m_chain && m_settings.trimEnabled, needsInspectionMethod(m_settings)};
+    return {dynamicFrames(), needsInspectionMethod(m_settings)};
 }
 
 // Out of GPU memory (checked before allocating, or a failed allocation): the next method
@@ -242,91 +103,143 @@ FrameRecovery ViewportRenderer::contextLost(const std::string& reason)
     return m_policy.contextLost(reason, frameDemands());
 }
 
-// Brings the renderer's scene buffers up to date: the scene itself after setScene() or a
-// new context, then the pose and colors when they changed or the scene was re-uploaded.
-void ViewportRenderer::syncGpuScene()
+// The scene itself when its meshes changed or the context is new (the upload carries the
+// model matrices and the scene's own positions, without colours); else the matrices when
+// an object moved.
+void ViewportRenderer::syncGeometry()
 {
-    if (!m_sceneUploaded) {
-        m_renderer->setScene(*m_scene);
-        m_sceneUploaded = true;
-        m_transformsDirty = false; // the upload carried the current matrices
-        m_poseDirty = !m_pose.empty();
-        m_colorsDirty = !m_vertexColors.empty();
+    const ShownContent& content = *m_content;
+    if (m_uploaded.meshes != content.meshVersion()) {
+        m_renderer->setScene(*content.scene());
+        m_uploaded.meshes = content.meshVersion();
+        m_uploaded.geometry = content.version(ShownLayer::Geometry);
+        m_uploaded.posed = false;
+        m_uploaded.pose = content.pose() ? 0 : content.version(ShownLayer::Pose);
+        m_uploaded.colors = content.colors() ? 0 : content.version(ShownLayer::Colors);
+        return;
     }
-    if (m_transformsDirty) {
-        for (std::size_t i = 0; i < m_scene->objects.size(); ++i)
-            m_renderer->gpuScene().setModelMatrix(i, m_scene->objects[i].modelMatrix);
-        m_transformsDirty = false;
-    }
-    if (m_poseDirty) {
-        uploadPose();
-        m_poseDirty = false;
-    }
-    if (m_colorsDirty) {
-        m_renderer->gpuScene().setVertexColors(m_vertexColors);
-        m_colorsDirty = false;
+    if (m_uploaded.geometry != content.version(ShownLayer::Geometry)) {
+        const Scene& scene = *content.scene();
+        for (std::size_t i = 0; i < scene.objects.size(); ++i)
+            m_renderer->gpuScene().setModelMatrix(i, scene.objects[i].modelMatrix);
+        m_uploaded.geometry = content.version(ShownLayer::Geometry);
     }
 }
 
-void ViewportRenderer::uploadPose()
+// Object 0 as the pose layer shows it: evaluated on the GPU where its source allows,
+// else the CPU's positions; without a pose, the scene's own positions again.
+void ViewportRenderer::syncPose()
 {
-    m_poseOnGpu = (m_skinning && !m_gpuSkinningFailed && skinPoseOnGpu()) ||
-                  (m_subdivision && !m_gpuSubdivisionFailed && subdividePoseOnGpu());
-    if (!m_poseOnGpu)
-        m_renderer->gpuScene().updatePositions(0, m_pose);
-}
-
-// The GPU skinning of the shown model, made in this context on first use; false when it
-// cannot run (the CPU's pose is uploaded instead, and the model is not tried again). A GPU
-// reset is the frame policy's to handle.
-bool ViewportRenderer::skinPoseOnGpu()
-{
-    try {
-        if (!m_gpuSkinning || m_gpuSkinningModel != m_skinning) {
-            m_gpuSkinning.reset();
-            m_gpuSkinningModel = m_skinning;
-            m_gpuSkinning = std::make_unique<GpuSkinning>(m_renderer->gl(), *m_skinning);
+    const std::uint64_t version = m_content->version(ShownLayer::Pose);
+    if (m_uploaded.pose == version)
+        return;
+    if (const ShownPose* pose = m_content->pose()) {
+        if (evaluatePoseOnGpu(*pose)) {
+            m_poseEvaluation = m_gpuPose.evaluator->kind();
+        } else {
+            m_renderer->gpuScene().updatePositions(0, pose->positions);
+            m_poseEvaluation = PoseEvaluation::Uploaded;
         }
-        m_gpuSkinning->skinPose(m_renderer->gpuScene(), 0, m_skinnedPose);
+        m_uploaded.posed = true;
+    } else {
+        if (m_uploaded.posed)
+            m_renderer->gpuScene().updatePositions(0, m_content->scene()->objects.front().mesh.positions);
+        m_uploaded.posed = false;
+        m_poseEvaluation = PoseEvaluation::Uploaded;
+    }
+    m_uploaded.pose = version;
+}
+
+// The one GPU path of skinned poses and subdivision surfaces: the evaluator of the pose's
+// source, made in this context on first use; false when it cannot run (the CPU's positions
+// are uploaded instead, and that source is not tried again until another one was shown).
+// A GPU reset is the frame policy's to handle.
+bool ViewportRenderer::evaluatePoseOnGpu(const ShownPose& pose)
+{
+    std::shared_ptr<const void> source = gpuPoseSource(pose);
+    if (!source)
+        return false;
+    if (source != m_gpuPose.source)
+        m_gpuPose = GpuPose{std::move(source), nullptr, false};
+    if (m_gpuPose.failed)
+        return false;
+    try {
+        if (!m_gpuPose.evaluator)
+            m_gpuPose.evaluator = makeGpuPoseEvaluator(m_renderer->gl(), pose);
+        m_gpuPose.evaluator->evaluate(m_renderer->gpuScene(), 0, pose);
         return true;
     } catch (const GlContextLostError&) {
         throw;
     } catch (const std::exception&) {
-        m_gpuSkinning.reset();
-        m_gpuSkinningFailed = true;
+        m_gpuPose.evaluator.reset();
+        m_gpuPose.failed = true;
         return false;
     }
 }
 
-// The same for the shown subdivision surface: its GPU evaluation, made in this context on
-// first use; false (the CPU's positions are uploaded, these stencils not tried again) when
-// it cannot run.
-bool ViewportRenderer::subdividePoseOnGpu()
+void ViewportRenderer::syncColors()
 {
-    try {
-        if (!m_gpuSubdivision || m_gpuSubdivisionStencils != m_subdivision) {
-            m_gpuSubdivision.reset();
-            m_gpuSubdivisionStencils = m_subdivision;
-            m_gpuSubdivision = std::make_unique<GpuSubdivision>(m_renderer->gl(), *m_subdivision);
-        }
-        m_gpuSubdivision->evaluate(m_renderer->gpuScene(), 0, m_controlPoints);
-        return true;
-    } catch (const GlContextLostError&) {
-        throw;
-    } catch (const std::exception&) {
-        m_gpuSubdivision.reset();
-        m_gpuSubdivisionFailed = true;
-        return false;
+    const std::uint64_t version = m_content->version(ShownLayer::Colors);
+    if (m_uploaded.colors == version)
+        return;
+    const std::vector<std::uint32_t>* colors = m_content->colors();
+    m_renderer->gpuScene().setVertexColors(colors ? *colors : std::vector<std::uint32_t>{});
+    m_uploaded.colors = version;
+}
+
+// Another chain (or a new dynamic renderer) uploads every level; the same chain only its
+// replaced shown level and the levels appended since, so the earlier sets'
+// characterizations stay cached (a drag, playback going forward).
+void ViewportRenderer::syncChain()
+{
+    const ShownChain& chain = *m_content->chain();
+    std::vector<std::shared_ptr<const DynamicChainLevel>>& held = m_uploaded.levels;
+    const bool extends = m_uploaded.chainId == chain.id && !held.empty() && held.size() <= chain.levels.size() &&
+                         std::equal(held.begin(), held.end() - 1, chain.levels.begin());
+    if (!extends) {
+        m_dynamic->setChain(*chain.chain);
+        held.clear();
+        for (const DynamicChainLevel& level : chain.chain->levels)
+            held.emplace_back(chain.chain, &level);
+        m_uploaded.chainId = chain.id;
+    }
+    const std::size_t last = held.size() - 1;
+    if (held[last] != chain.levels[last]) {
+        m_dynamic->setShownLevel(*chain.levels[last]);
+        held[last] = chain.levels[last];
+    }
+    for (std::size_t i = held.size(); i < chain.levels.size(); ++i) {
+        m_dynamic->appendLevel(*chain.levels[i]);
+        held.push_back(chain.levels[i]);
     }
 }
 
+// The designed mesh is the scene's only object, so the scene's colours are per mesh vertex.
+void ViewportRenderer::syncDynamicColors()
+{
+    const std::uint64_t version = m_content->version(ShownLayer::Colors);
+    if (m_uploaded.dynamicColors == version)
+        return;
+    const std::vector<std::uint32_t>* colors = m_content->colors();
+    m_dynamic->setShownVertexColors(colors ? *colors : std::vector<std::uint32_t>{});
+    m_uploaded.dynamicColors = version;
+}
+
+// The static path shows the pose and colours in the scene's buffers; the dynamic path
+// renders the chain's levels, which carry their own positions and the shown colours.
 void ViewportRenderer::renderFrame(const Camera& camera, QSize size, GLuint framebuffer)
 {
-    syncGpuScene();
+    if (!m_content->scene())
+        throw std::invalid_argument("There is no scene to render.");
+    syncGeometry();
     applyMethod();
-    if (m_chain && m_settings.trimEnabled) {
+    if (dynamicFrames()) {
         renderDynamicFrame(camera, size);
     } else {
+        if (!m_content->chain())
+            m_uploaded.levels.clear(); // no chain shown: keep none alive for the GPU's copy
+        syncPose();
+        syncColors();
         m_renderer->render(camera, m_settings, size.width(), size.height());
         m_dynamicStats.reset();
     }
@@ -334,33 +247,16 @@ void ViewportRenderer::renderFrame(const Camera& camera, QSize size, GLuint fram
     recordFrame(camera, size);
 }
 
-// The chain's levels are uploaded only when the chain changed; a drag replaces only the
-// shown level, so the earlier sets' characterizations stay cached.
 void ViewportRenderer::renderDynamicFrame(const Camera& camera, QSize size)
 {
     if (!m_dynamic) {
         m_dynamic = std::make_unique<DynamicTrimRenderer>(*m_renderer);
-        m_dynamicColorsDirty = true;
+        m_uploaded.chainId = 0;
+        m_uploaded.levels.clear();
+        m_uploaded.dynamicColors = 0;
     }
-    if (m_chainDirty) {
-        m_dynamic->setChain(*m_chain);
-        if (m_chainLastLevel)
-            m_dynamic->setShownLevel(*m_chainLastLevel);
-        m_appendedUploaded = 0;
-        m_chainDirty = false;
-        m_levelDirty = m_level != nullptr;
-    }
-    for (; m_appendedUploaded < m_appended.size(); ++m_appendedUploaded)
-        m_dynamic->appendLevel(*m_appended[m_appendedUploaded]);
-    if (m_levelDirty) {
-        m_dynamic->setShownLevel(*m_level);
-        m_levelDirty = false;
-    }
-    if (m_dynamicColorsDirty) {
-        // The designed mesh is the scene's only object, so the scene's colors are per mesh vertex.
-        m_dynamic->setShownVertexColors(m_vertexColors);
-        m_dynamicColorsDirty = false;
-    }
+    syncChain();
+    syncDynamicColors();
     m_dynamic->render(camera, m_settings, size.width(), size.height());
     m_dynamicStats = m_dynamic->lastStats();
 }
@@ -368,7 +264,7 @@ void ViewportRenderer::renderDynamicFrame(const Camera& camera, QSize size)
 void ViewportRenderer::recordFrame(const Camera& camera, QSize size)
 {
     const FrameStats& stats = m_renderer->lastStats();
-    ViewFrame frame{camera, m_settings, m_parameters.k, m_parameters, size, stats, std::nullopt, m_scene};
+    ViewFrame frame{camera, m_settings, m_parameters.k, m_parameters, size, stats, std::nullopt, m_content->scene()};
     const FrameCounts& counts = stats.counts;
     if (counts.overflowPixels > 0 || counts.unresolvedPixels > 0 || counts.fragmentsLost > 0) {
         const std::optional<PixelOccupancy> occupancy = m_renderer->readOccupancy();
@@ -382,7 +278,11 @@ MethodMeasurement ViewportRenderer::measure(FragmentMethodKind method, int frame
 {
     MethodMeasurement result;
     try {
-        syncGpuScene();
+        if (!m_content->scene())
+            throw std::invalid_argument("There is no scene to render.");
+        syncGeometry();
+        syncPose();
+        syncColors();
         m_renderer->setMethod(method);
         m_renderer->setParameters(m_parameters);
         m_renderer->render(camera, m_settings, size.width(), size.height()); // warm-up: shaders, storage

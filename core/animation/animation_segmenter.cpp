@@ -22,7 +22,9 @@ double millisecondsSince(std::chrono::steady_clock::time_point start)
 class PoseRollback {
 public:
     PoseRollback(MeshAnimation& animation, std::size_t pose, std::vector<glm::vec3> previous)
-        : m_animation(animation), m_pose(pose), m_previous(std::move(previous)) {}
+        : m_animation(animation), m_pose(pose), m_previous(std::move(previous))
+    {
+    }
     ~PoseRollback()
     {
         if (m_armed)
@@ -88,10 +90,12 @@ void AnimationSegmenter::commitJoin(std::unique_ptr<PoseJoin> join, double start
 
 void AnimationSegmenter::run(const TaskControl& control)
 {
-    const std::vector<std::size_t> poses = featurePoses(m_animation.poseCount(), m_animation.restPose, m_settings.feature);
+    const std::vector<std::size_t> poses =
+        featurePoses(m_animation.poseCount(), m_animation.restPose, m_settings.feature);
     SegmentationTimes times;
     std::vector<PoseFeature> features = computeFeatures(poses, control, times.featuresMs);
-    std::vector<VertexLabeling> partitions = computePartitions(features, m_settings.partition, control, times.partitionsMs);
+    std::vector<VertexLabeling> partitions =
+        computePartitions(features, m_settings.partition, control, times.partitionsMs);
     const auto start = std::chrono::steady_clock::now();
     auto join = std::make_unique<PoseJoin>(m_graph);
     for (VertexLabeling& partition : partitions)
@@ -164,7 +168,8 @@ void AnimationSegmenter::editPose(std::size_t pose, std::vector<glm::vec3> posit
     PoseRollback rollback(m_animation, pose, std::exchange(m_animation.poses[pose], std::move(positions)));
     if (pose == m_animation.restPose) {
         // The rest pose gives the areas every partition is weighted by: recompute all.
-        std::vector<double> previousAreas = std::exchange(m_areas, trimlab::vertexAreas(m_animation.poses[pose], m_animation.triangles));
+        std::vector<double> previousAreas =
+            std::exchange(m_areas, trimlab::vertexAreas(m_animation.poses[pose], m_animation.triangles));
         try {
             run(control);
         } catch (...) {
@@ -178,7 +183,8 @@ void AnimationSegmenter::editPose(std::size_t pose, std::vector<glm::vec3> posit
         posesAffectedByEdit(m_animation.poseCount(), m_animation.restPose, pose, m_settings.feature);
     SegmentationTimes times;
     std::vector<PoseFeature> features = computeFeatures(affected, control, times.featuresMs);
-    std::vector<VertexLabeling> partitions = computePartitions(features, m_settings.partition, control, times.partitionsMs);
+    std::vector<VertexLabeling> partitions =
+        computePartitions(features, m_settings.partition, control, times.partitionsMs);
     const auto start = std::chrono::steady_clock::now();
     std::vector<std::pair<std::size_t, VertexLabeling>> replaced;
     for (std::size_t i = 0; i < affected.size(); ++i) {

@@ -5,7 +5,7 @@
 /// targets, every vertex weighted): pose t of vertex v is Σ_i w_vi · M_{j_vi}(t) · b_v with
 /// M_j(t) = world(joint j at t) · inverseBind_j. A renderer can then pose the file on the
 /// GPU from the bind positions, weights and per-pose joint matrices instead of uploading
-/// every sampled pose (issue 19); the sampled poses stay the reference.
+/// every sampled pose; the sampled poses stay the reference.
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -18,10 +18,10 @@ namespace trimlab {
 
 struct AnimationSkin {
     std::size_t jointCount = 0;
-    std::size_t influences = 0;             ///< per vertex (4 per JOINTS_n/WEIGHTS_n set)
-    std::vector<glm::dvec3> bindPositions;  ///< #V, mesh space
-    std::vector<std::uint32_t> joints;      ///< #V × influences, indices into the joints
-    std::vector<double> weights;            ///< #V × influences, each vertex's summing to 1
+    std::size_t influences = 0;                         ///< per vertex (4 per JOINTS_n/WEIGHTS_n set)
+    std::vector<glm::dvec3> bindPositions;              ///< #V, mesh space
+    std::vector<std::uint32_t> joints;                  ///< #V × influences, indices into the joints
+    std::vector<double> weights;                        ///< #V × influences, each vertex's summing to 1
     std::vector<std::vector<glm::dmat4>> jointMatrices; ///< #P × jointCount
 };
 

@@ -27,12 +27,24 @@ glm::vec3 hsv(double hue, double s, double v)
     const double x = c * (1.0 - std::abs(std::fmod(h, 2.0) - 1.0));
     glm::dvec3 rgb(0.0);
     switch (int(h) % 6) {
-    case 0: rgb = {c, x, 0}; break;
-    case 1: rgb = {x, c, 0}; break;
-    case 2: rgb = {0, c, x}; break;
-    case 3: rgb = {0, x, c}; break;
-    case 4: rgb = {x, 0, c}; break;
-    default: rgb = {c, 0, x}; break;
+    case 0:
+        rgb = {c, x, 0};
+        break;
+    case 1:
+        rgb = {x, c, 0};
+        break;
+    case 2:
+        rgb = {0, c, x};
+        break;
+    case 3:
+        rgb = {0, x, c};
+        break;
+    case 4:
+        rgb = {x, 0, c};
+        break;
+    default:
+        rgb = {c, 0, x};
+        break;
     }
     return glm::vec3(rgb + glm::dvec3(v - c));
 }

@@ -65,7 +65,8 @@ glm::dmat3 polarRotation(const glm::dmat3& x)
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c)
             m(r, c) = x[c][r]; // glm is column-major: x[column][row]
-    const Eigen::JacobiSVD<Eigen::Matrix3d, Eigen::NoQRPreconditioner> svd(m, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    const Eigen::JacobiSVD<Eigen::Matrix3d, Eigen::NoQRPreconditioner> svd(m,
+                                                                           Eigen::ComputeFullU | Eigen::ComputeFullV);
     Eigen::Matrix3d u = svd.matrixU();
     const Eigen::Matrix3d v = svd.matrixV();
     if ((u * v.transpose()).determinant() < 0.0)

@@ -14,6 +14,7 @@ namespace trimlab {
 
 /// #F labels: the label two or three corners share; when all three corners differ (a
 /// face where three segments meet), the label of the first corner.
-[[nodiscard]] std::vector<std::uint32_t> faceLabels(std::span<const glm::uvec3> triangles, const VertexLabeling& labeling);
+[[nodiscard]] std::vector<std::uint32_t> faceLabels(std::span<const glm::uvec3> triangles,
+                                                    const VertexLabeling& labeling);
 
 } // namespace trimlab

@@ -20,7 +20,8 @@ std::vector<glm::dvec3> toVectors(const std::vector<glm::vec3>& values)
 }
 
 // The scene's nodes in depth-first pre-order (children in file order).
-std::vector<std::size_t> sceneNodes(const tinygltf::Model& model, const std::vector<int>& parents, const std::string& name)
+std::vector<std::size_t> sceneNodes(const tinygltf::Model& model, const std::vector<int>& parents,
+                                    const std::string& name)
 {
     std::vector<int> roots;
     if (model.defaultScene >= int(model.scenes.size()))
@@ -40,7 +41,8 @@ std::vector<std::size_t> sceneNodes(const tinygltf::Model& model, const std::vec
         if (node < 0 || std::size_t(node) >= model.nodes.size())
             throw MeshLoadError(name, "the scene lists node " + std::to_string(node) + ", which does not exist");
         if (visited[std::size_t(node)]++)
-            throw MeshLoadError(name, "node " + std::to_string(node) + " is reached twice; glTF node hierarchies must be trees");
+            throw MeshLoadError(name, "node " + std::to_string(node) +
+                                          " is reached twice; glTF node hierarchies must be trees");
         order.push_back(std::size_t(node));
         const std::vector<int>& children = model.nodes[std::size_t(node)].children;
         stack.insert(stack.end(), children.rbegin(), children.rend());
@@ -63,8 +65,9 @@ GltfSkin readSkin(const tinygltf::Model& model, std::size_t index, const std::st
     if (skin.inverseBindMatrices >= 0) {
         const std::vector<double> m = readGltfNumbers(model, skin.inverseBindMatrices, TINYGLTF_TYPE_MAT4, context);
         if (m.size() != 16 * result.joints.size())
-            throw MeshLoadError(name, "has " + std::to_string(result.joints.size()) + " joints but " +
-                                          std::to_string(m.size() / 16) + " inverse bind matrices",
+            throw MeshLoadError(name,
+                                "has " + std::to_string(result.joints.size()) + " joints but " +
+                                    std::to_string(m.size() / 16) + " inverse bind matrices",
                                 {.line = 0, .element = context.element});
         for (std::size_t j = 0; j < result.joints.size(); ++j)
             result.inverseBind[j] = glm::make_mat4(m.data() + 16 * j);
@@ -87,8 +90,9 @@ void readInfluences(const tinygltf::Model& model, const tinygltf::Primitive& pri
         joints.push_back(readGltfNumbers(model, j->second, TINYGLTF_TYPE_VEC4, context));
         weights.push_back(readGltfNumbers(model, w->second, TINYGLTF_TYPE_VEC4, context));
         if (joints.back().size() != 4 * count || weights.back().size() != 4 * count)
-            throw MeshLoadError(context.displayName, "JOINTS_" + std::to_string(set) + " or WEIGHTS_" +
-                                                         std::to_string(set) + " does not have one entry per vertex",
+            throw MeshLoadError(context.displayName,
+                                "JOINTS_" + std::to_string(set) + " or WEIGHTS_" + std::to_string(set) +
+                                    " does not have one entry per vertex",
                                 {.line = 0, .element = context.element});
     }
     if (joints.empty())
@@ -100,9 +104,9 @@ void readInfluences(const tinygltf::Model& model, const tinygltf::Primitive& pri
             for (std::size_t c = 0; c < 4; ++c) {
                 const double joint = joints[s][4 * v + c];
                 if (joint < 0.0 || joint >= double(jointCount) || joint != std::floor(joint))
-                    throw MeshLoadError(context.displayName, "vertex " + std::to_string(v) + " names joint " +
-                                                                 std::to_string(joint) + ", but the skin has " +
-                                                                 std::to_string(jointCount) + " joints",
+                    throw MeshLoadError(context.displayName,
+                                        "vertex " + std::to_string(v) + " names joint " + std::to_string(joint) +
+                                            ", but the skin has " + std::to_string(jointCount) + " joints",
                                         {.line = 0, .element = context.element});
                 instance.joints.push_back(std::uint32_t(joint));
                 instance.weights.push_back(weights[s][4 * v + c]);
@@ -120,8 +124,9 @@ std::vector<std::uint32_t> primitiveIndices(const tinygltf::Model& model, const 
     else
         std::iota(indices.begin(), indices.end(), 0u);
     if (indices.size() % 3 != 0)
-        throw MeshLoadError(context.displayName, "a TRIANGLES primitive has " + std::to_string(indices.size()) +
-                                                     " indices, which is not a multiple of 3",
+        throw MeshLoadError(context.displayName,
+                            "a TRIANGLES primitive has " + std::to_string(indices.size()) +
+                                " indices, which is not a multiple of 3",
                             {.line = 0, .element = context.element});
     return indices;
 }
@@ -137,8 +142,9 @@ std::vector<std::vector<glm::dvec3>> readTargets(const tinygltf::Model& model, c
             continue;
         targets.back() = toVectors(readGltfPositions(model, position->second, context));
         if (targets.back().size() != count)
-            throw MeshLoadError(context.displayName, "a morph target has " + std::to_string(targets.back().size()) +
-                                                         " positions but the primitive has " + std::to_string(count),
+            throw MeshLoadError(context.displayName,
+                                "a morph target has " + std::to_string(targets.back().size()) +
+                                    " positions but the primitive has " + std::to_string(count),
                                 {.line = 0, .element = context.element});
     }
     return targets;
@@ -149,14 +155,16 @@ std::vector<std::vector<glm::dvec3>> readTargets(const tinygltf::Model& model, c
 namespace {
 
 // Appends the TRIANGLES primitive `p` of the mesh of node `node` to `geometry`.
-void addPrimitive(const tinygltf::Model& model, std::size_t node, std::size_t p, bool mirrored,
-                  const std::string& name, GltfAnimatedGeometry& geometry)
+void addPrimitive(const tinygltf::Model& model, std::size_t node, std::size_t p, bool mirrored, const std::string& name,
+                  GltfAnimatedGeometry& geometry)
 {
     const tinygltf::Node& n = model.nodes[node];
     const auto meshIndex = std::size_t(n.mesh);
     const tinygltf::Primitive& prim = model.meshes[meshIndex].primitives[p];
     const GltfReadContext context{name, "mesh " + std::to_string(meshIndex) + " primitive " + std::to_string(p)};
-    auto fail = [&](const std::string& reason) { throw MeshLoadError(name, reason, {.line = 0, .element = context.element}); };
+    auto fail = [&](const std::string& reason) {
+        throw MeshLoadError(name, reason, {.line = 0, .element = context.element});
+    };
     const auto position = prim.attributes.find("POSITION");
     if (position == prim.attributes.end())
         fail("the primitive has no POSITION attribute");
@@ -197,9 +205,11 @@ void addMeshNode(const tinygltf::Model& model, std::size_t node, const glm::dmat
         if (mode <= TINYGLTF_MODE_LINE_STRIP)
             continue; // points and lines carry no surface
         if (mode != TINYGLTF_MODE_TRIANGLES)
-            throw MeshLoadError(name, "triangle strips and fans are not supported in animations; re-export the mesh as "
-                                      "TRIANGLES",
-                                {.line = 0, .element = "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(p)});
+            throw MeshLoadError(
+                name,
+                "triangle strips and fans are not supported in animations; re-export the mesh as "
+                "TRIANGLES",
+                {.line = 0, .element = "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(p)});
         addPrimitive(model, node, p, mirrored, name, geometry);
     }
 }

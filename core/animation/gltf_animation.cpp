@@ -30,8 +30,8 @@ std::vector<double> sampleTimes(const GltfAnimationClip& clip, double fps, const
     const double span = clip.keyframeTimes.back() - start;
     const double frames = std::floor(span * fps + 1e-9) + 1.0;
     if (frames > double(kMaxSampledPoses))
-        throw MeshLoadError(name, "sampling " + std::to_string(span) + " s at " + std::to_string(fps) + " fps gives more than " +
-                                      std::to_string(kMaxSampledPoses) + " poses");
+        throw MeshLoadError(name, "sampling " + std::to_string(span) + " s at " + std::to_string(fps) +
+                                      " fps gives more than " + std::to_string(kMaxSampledPoses) + " poses");
     std::vector<double> times;
     for (std::size_t i = 0; i < std::size_t(frames); ++i)
         times.push_back(start + double(i) / fps);
@@ -128,7 +128,8 @@ MeshAnimation readGltfAnimation(std::string_view bytes, const std::string& displ
         clip.apply(times[i], nodes);
         const std::vector<glm::dmat4> world = worldMatrices(nodes, parents);
         animation.poseNames.push_back(poseName(clip.name, times[i]));
-        animation.poses.push_back(toFloatPositions(geometry.pose(nodes, world), displayName, animation.poseNames.back()));
+        animation.poses.push_back(
+            toFloatPositions(geometry.pose(nodes, world), displayName, animation.poseNames.back()));
         animation.poseTimes.push_back(times[i]);
         if (skin)
             skin->jointMatrices.push_back(

@@ -36,13 +36,15 @@ inline constexpr std::size_t kMaxSampledPoses = 100000;
 /// gltf_accessor.h, gltf_animation_clip.h, gltf_animated_geometry.h), a negative or
 /// non-finite fps, more than kMaxSampledPoses poses, and non-finite posed positions;
 /// OperationCancelled when `control` asks to stop (stage "load", one item per pose).
-[[nodiscard]] MeshAnimation loadGltfAnimation(const std::filesystem::path& path, const GltfAnimationOptions& options = {},
+[[nodiscard]] MeshAnimation loadGltfAnimation(const std::filesystem::path& path,
+                                              const GltfAnimationOptions& options = {},
                                               const TaskControl& control = {});
 
 /// The same for glTF data in memory (possibly gzip-compressed); external buffers are
 /// read relative to `baseDir` (empty: refused). `displayName` names the data in errors.
 [[nodiscard]] MeshAnimation readGltfAnimation(std::string_view bytes, const std::string& displayName,
                                               const std::filesystem::path& baseDir,
-                                              const GltfAnimationOptions& options = {}, const TaskControl& control = {});
+                                              const GltfAnimationOptions& options = {},
+                                              const TaskControl& control = {});
 
 } // namespace trimlab

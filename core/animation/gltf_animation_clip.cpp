@@ -64,10 +64,18 @@ void GltfAnimationClip::apply(double time, std::vector<NodeTransform>& nodes) co
         const std::vector<double> v = channel.track.sample(time);
         NodeTransform& node = nodes[channel.node];
         switch (channel.path) {
-        case KeyframePath::Translation: node.translation = glm::dvec3(v[0], v[1], v[2]); break;
-        case KeyframePath::Rotation: node.rotation = glm::dquat(v[3], v[0], v[1], v[2]); break;
-        case KeyframePath::Scale: node.scale = glm::dvec3(v[0], v[1], v[2]); break;
-        case KeyframePath::Weights: node.weights = v; break;
+        case KeyframePath::Translation:
+            node.translation = glm::dvec3(v[0], v[1], v[2]);
+            break;
+        case KeyframePath::Rotation:
+            node.rotation = glm::dquat(v[3], v[0], v[1], v[2]);
+            break;
+        case KeyframePath::Scale:
+            node.scale = glm::dvec3(v[0], v[1], v[2]);
+            break;
+        case KeyframePath::Weights:
+            node.weights = v;
+            break;
         }
     }
 }
@@ -94,7 +102,8 @@ GltfAnimationClip readAnimationClip(const tinygltf::Model& model, int index, con
         throw MeshLoadError(name, "animates nothing (no translation, rotation, scale or weights channel)",
                             {.line = 0, .element = "animation " + std::to_string(index)});
     std::sort(clip.keyframeTimes.begin(), clip.keyframeTimes.end());
-    clip.keyframeTimes.erase(std::unique(clip.keyframeTimes.begin(), clip.keyframeTimes.end()), clip.keyframeTimes.end());
+    clip.keyframeTimes.erase(std::unique(clip.keyframeTimes.begin(), clip.keyframeTimes.end()),
+                             clip.keyframeTimes.end());
     return clip;
 }
 

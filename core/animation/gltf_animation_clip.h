@@ -32,11 +32,11 @@ struct GltfAnimationClip {
     void apply(double time, std::vector<NodeTransform>& nodes) const;
 };
 
-/// Reads animation `index`. Throws MeshLoadError naming the animation and channel for:
-/// a missing animation ("the file has 1 animation"), a channel whose target node does
-/// not exist, an animated node that gives a matrix instead of TRS, weights for a node
-/// without morph targets, and every sampler problem (gltf_keyframes.h). A clip without
-/// channels is an error too ("animates nothing").
+/// Reads animation `index`. Throws MeshLoadError naming the animation and channel for: a
+/// missing animation ("animation 2 does not exist (the file has 1)"), a channel whose
+/// target node does not exist, an animated node that gives a matrix instead of TRS, weights
+/// for a node without morph targets, and every sampler problem (gltf_keyframes.h). A clip
+/// without channels is an error too ("animates nothing").
 [[nodiscard]] GltfAnimationClip readAnimationClip(const tinygltf::Model& model, int index, const std::string& name);
 
 } // namespace trimlab

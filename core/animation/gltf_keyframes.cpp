@@ -128,8 +128,9 @@ KeyframeTrack readKeyframeTrack(const tinygltf::Model& model, int animation, int
     track.values = readGltfNumbers(model, s.output, outputType, context);
     const std::size_t perKey = (track.interpolation == KeyframeInterpolation::CubicSpline ? 3 : 1) * components;
     if (track.values.size() != track.times.size() * perKey)
-        fail("has " + std::to_string(track.times.size()) + " keyframe times but " + std::to_string(track.values.size()) +
-             " output numbers; expected " + std::to_string(track.times.size() * perKey));
+        fail("has " + std::to_string(track.times.size()) + " keyframe times but " +
+             std::to_string(track.values.size()) + " output numbers; expected " +
+             std::to_string(track.times.size() * perKey));
     return track;
 }
 

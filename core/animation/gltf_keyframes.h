@@ -44,6 +44,7 @@ struct KeyframeTrack {
 /// sampler, an unknown interpolation, input that is not a SCALAR of increasing finite
 /// times, and output whose count does not match the input (×3 for CUBICSPLINE).
 [[nodiscard]] KeyframeTrack readKeyframeTrack(const tinygltf::Model& model, int animation, int sampler,
-                                              std::size_t components, KeyframePath path, const std::string& displayName);
+                                              std::size_t components, KeyframePath path,
+                                              const std::string& displayName);
 
 } // namespace trimlab

@@ -15,8 +15,9 @@ void requireCount(const std::vector<double>& values, std::size_t count, const ch
                   const std::string& name)
 {
     if (!values.empty() && values.size() != count)
-        throw MeshLoadError(name, std::string("'") + what + "' must have " + std::to_string(count) + " numbers, not " +
-                                      std::to_string(values.size()),
+        throw MeshLoadError(name,
+                            std::string("'") + what + "' must have " + std::to_string(count) + " numbers, not " +
+                                std::to_string(values.size()),
                             {.line = 0, .element = "node " + std::to_string(node)});
 }
 
@@ -35,7 +36,8 @@ NodeTransform fileTransform(const tinygltf::Model& model, std::size_t index, con
     if (!node.rotation.empty()) {
         const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
         if (!(glm::length(q) > 0.0))
-            throw MeshLoadError(name, "the rotation quaternion is zero", {.line = 0, .element = "node " + std::to_string(index)});
+            throw MeshLoadError(name, "the rotation quaternion is zero",
+                                {.line = 0, .element = "node " + std::to_string(index)});
         transform.rotation = glm::normalize(q);
     }
     if (!node.scale.empty())
@@ -85,7 +87,8 @@ std::vector<int> nodeParents(const tinygltf::Model& model, const std::string& na
         int node = int(i);
         for (std::size_t steps = 0; node >= 0; ++steps) {
             if (steps > parents.size())
-                throw MeshLoadError(name, "node " + std::to_string(i) + " is part of a cycle; glTF node hierarchies must be trees");
+                throw MeshLoadError(name, "node " + std::to_string(i) +
+                                              " is part of a cycle; glTF node hierarchies must be trees");
             node = parents[std::size_t(node)];
         }
     }

@@ -79,7 +79,8 @@ std::uint32_t percentileVertex(const std::vector<std::uint32_t>& vs, const std::
 {
     std::vector<std::size_t> order(vs.size());
     std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return projection[a] < projection[b]; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return projection[a] < projection[b]; });
     double total = 0.0;
     for (const std::uint32_t v : vs)
         total += w[v];
@@ -104,7 +105,8 @@ bool splitCluster(const VertexGraph& graph, const FeatureView& f, std::span<cons
     if (vs.size() < 2 || !(set.spread[c] > 0.0))
         return false;
     const std::vector<double> projection = principalProjection(f, w, vs);
-    std::vector<std::uint32_t> seeds{percentileVertex(vs, projection, w, 0.1), percentileVertex(vs, projection, w, 0.9)};
+    std::vector<std::uint32_t> seeds{percentileVertex(vs, projection, w, 0.1),
+                                     percentileVertex(vs, projection, w, 0.9)};
     if (seeds[0] == seeds[1] || f.distance(seeds[0], f.values.subspan(seeds[1] * f.dimension, f.dimension)) == 0.0) {
         const auto [low, high] = std::minmax_element(projection.begin(), projection.end());
         seeds = {vs[std::size_t(low - projection.begin())], vs[std::size_t(high - projection.begin())]};
@@ -147,7 +149,8 @@ VertexLabeling hierarchicalPartition(const VertexGraph& graph, const FeatureView
     while (set.members.size() < clusters) {
         std::size_t best = set.members.size();
         for (std::size_t c = 0; c < set.members.size(); ++c) {
-            if (set.splittable[c] && set.spread[c] > 0.0 && (best == set.members.size() || set.spread[c] > set.spread[best]))
+            if (set.splittable[c] && set.spread[c] > 0.0 &&
+                (best == set.members.size() || set.spread[c] > set.spread[best]))
                 best = c;
         }
         if (best == set.members.size())

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Merging segments by how alike they move (issue 21: segments that match rigid parts).
+/// Merging segments by how alike they move, so that segments match rigid parts.
 /// A segment s moved rigidly from the rest pose to pose t leaves the residual
 ///     E_s^t = min over rotations R, translations c of Σ_{j∈s} ‖R v_j + c − y_j^t‖²,
 /// which depends only on sums over the segment (count, Σv, Σy, Σ y vᵀ, Σ‖v‖², Σ‖y‖²:

@@ -37,7 +37,7 @@ void unite(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b)
 
 // Pairs of different segments joined by at least one mesh edge, sorted, unique.
 std::vector<std::pair<std::uint32_t, std::uint32_t>> segmentAdjacency(const VertexGraph& graph,
-                                                                       const std::vector<std::uint32_t>& segment)
+                                                                      const std::vector<std::uint32_t>& segment)
 {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     for (std::size_t v = 0; v < graph.vertexCount(); ++v) {
@@ -60,8 +60,8 @@ bool atMost(double a, double b)
 
 // The index i < k with levels i equal and i + 1 different for two neighbouring segments:
 // the pose (0-based partition index) whose partition separates them first.
-std::size_t separatingPose(const std::vector<std::uint32_t>& levelOf, std::size_t r, std::size_t poses,
-                           std::uint32_t a, std::uint32_t b)
+std::size_t separatingPose(const std::vector<std::uint32_t>& levelOf, std::size_t r, std::size_t poses, std::uint32_t a,
+                           std::uint32_t b)
 {
     std::size_t low = 0;      // levels equal here (level 0: both in one component)
     std::size_t high = poses; // levels differ here (different final segments)

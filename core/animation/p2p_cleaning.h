@@ -79,11 +79,11 @@ private:
     void cleanPose(std::size_t pose, double h, CleaningState& state) const;
 
     std::size_t m_poses = 0;
-    std::vector<std::uint32_t> m_vertexSegment;   ///< #V: segment of OS(A)
-    std::vector<double> m_segmentArea;            ///< r
-    std::vector<std::uint32_t> m_levelOf;         ///< (k+1) × r: segment(S, i)
-    std::vector<std::uint32_t> m_clusterOf;       ///< k × r: cav(S)[i]
-    std::vector<std::vector<double>> m_levelArea; ///< per level i: a(segment(·, i))
+    std::vector<std::uint32_t> m_vertexSegment;     ///< #V: segment of OS(A)
+    std::vector<double> m_segmentArea;              ///< r
+    std::vector<std::uint32_t> m_levelOf;           ///< (k+1) × r: segment(S, i)
+    std::vector<std::uint32_t> m_clusterOf;         ///< k × r: cav(S)[i]
+    std::vector<std::vector<double>> m_levelArea;   ///< per level i: a(segment(·, i))
     std::vector<std::vector<double>> m_clusterArea; ///< per pose: a(C_i cluster)
     /// Neighbouring segments (a < b) grouped by the pose that separates them: the pairs of
     /// pose p are m_pairs[m_pairStart[p] .. m_pairStart[p + 1]).

@@ -28,7 +28,8 @@ std::vector<std::size_t> featurePoses(std::size_t poseCount, std::size_t restPos
 {
     std::vector<std::size_t> poses;
     const bool fromRest = settings.kind == FeatureKind::RotationAngle && settings.reference == ReferenceMode::Rest;
-    const std::size_t end = settings.kind == FeatureKind::Acceleration ? (poseCount >= 1 ? poseCount - 1 : 0) : poseCount;
+    const std::size_t end =
+        settings.kind == FeatureKind::Acceleration ? (poseCount >= 1 ? poseCount - 1 : 0) : poseCount;
     for (std::size_t p = fromRest ? 0 : 1; p < end; ++p) {
         if (!fromRest || p != restPose)
             poses.push_back(p);
@@ -69,17 +70,20 @@ PoseFeature computePoseFeature(const MeshAnimation& animation, std::size_t pose,
     const std::size_t reference = settings.reference == ReferenceMode::Rest ? animation.restPose : pose - 1;
     const std::vector<glm::vec3>& from = animation.poses[reference];
     const std::vector<double> faceAngles = faceRotationAngles(from, animation.poses[pose], animation.triangles);
-    feature.values = vertexRotationAngles(faceAngles, animation.triangles, from, animation.vertexCount(),
-                                          settings.averaging);
+    feature.values =
+        vertexRotationAngles(faceAngles, animation.triangles, from, animation.vertexCount(), settings.averaging);
     return feature;
 }
 
 std::string_view featureName(FeatureKind kind)
 {
     switch (kind) {
-    case FeatureKind::RotationAngle: return "rotation";
-    case FeatureKind::Velocity: return "velocity";
-    case FeatureKind::Acceleration: return "acceleration";
+    case FeatureKind::RotationAngle:
+        return "rotation";
+    case FeatureKind::Velocity:
+        return "velocity";
+    case FeatureKind::Acceleration:
+        return "acceleration";
     }
     return "?";
 }

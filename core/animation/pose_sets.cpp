@@ -42,7 +42,8 @@ std::string poseSetsText(const std::vector<PoseSet>& sets)
 {
     std::string text;
     for (const PoseSet& set : sets)
-        text += (text.empty() ? "" : ",") + std::to_string(set.firstPose) + ":" + std::string(dynamicRuleName(set.rule));
+        text +=
+            (text.empty() ? "" : ",") + std::to_string(set.firstPose) + ":" + std::string(dynamicRuleName(set.rule));
     return text;
 }
 
@@ -60,9 +61,9 @@ void requireValidPoseSets(const std::vector<PoseSet>& sets, std::size_t restPose
                                         std::to_string(sets[i].firstPose) + ", but the animation has poses 0 to " +
                                         std::to_string(poseCount - 1));
         if (i > 0 && sets[i].firstPose <= sets[i - 1].firstPose)
-            throw std::invalid_argument("the sets must start at increasing poses: " +
-                                        std::to_string(sets[i].firstPose) + " follows " +
-                                        std::to_string(sets[i - 1].firstPose));
+            throw std::invalid_argument(
+                "the sets must start at increasing poses: " + std::to_string(sets[i].firstPose) + " follows " +
+                std::to_string(sets[i - 1].firstPose));
     }
 }
 

@@ -75,8 +75,8 @@ void requireSameTopology(const std::vector<glm::uvec3>& triangles, std::size_t v
                          const std::string& poseName)
 {
     if (pose.positions.size() != vertexCount)
-        throw MeshLoadError(poseName, "has " + std::to_string(pose.positions.size()) + " vertices but the first pose has " +
-                                          std::to_string(vertexCount));
+        throw MeshLoadError(poseName, "has " + std::to_string(pose.positions.size()) +
+                                          " vertices but the first pose has " + std::to_string(vertexCount));
     if (pose.triangles.size() != triangles.size())
         throw MeshLoadError(poseName, "has " + std::to_string(pose.triangles.size()) +
                                           " triangles but the first pose has " + std::to_string(triangles.size()));

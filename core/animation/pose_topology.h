@@ -22,7 +22,7 @@ namespace trimlab {
 /// region as the first pose's triangles at those indices — the same vertices and the same
 /// directed boundary edges once interior edges (used in both directions) cancel — and
 /// the caller then uses the first pose's triangles for every pose.
-void requireSameTopology(const std::vector<glm::uvec3>& triangles, std::size_t vertexCount,
-                         const TriangleMesh& pose, const std::string& poseName);
+void requireSameTopology(const std::vector<glm::uvec3>& triangles, std::size_t vertexCount, const TriangleMesh& pose,
+                         const std::string& poseName);
 
 } // namespace trimlab

@@ -104,7 +104,8 @@ std::vector<std::uint32_t> refineRegions(const VertexGraph& graph, const Feature
             const std::uint32_t r = regions[v];
             if (r == kNoRegion)
                 continue;
-            const double d = feature.distance(v, std::span<const double>(means).subspan(r * feature.dimension, feature.dimension));
+            const double d =
+                feature.distance(v, std::span<const double>(means).subspan(r * feature.dimension, feature.dimension));
             if (d < best[r]) { // strict: the smallest index wins ties
                 best[r] = d;
                 moved[r] = std::uint32_t(v);

@@ -41,13 +41,14 @@ namespace trimlab {
 ///   complementary pairs are not mixed) unless that mix is nearlySame or complementary to
 ///   a neighbour's colour, in which case it also takes a fresh palette colour.
 [[nodiscard]] std::vector<WheelColor> propagateColors(const VertexGraph& graph, std::span<const double> areas,
-                                                      const VertexLabeling& past, std::span<const WheelColor> pastColors,
+                                                      const VertexLabeling& past,
+                                                      std::span<const WheelColor> pastColors,
                                                       const VertexLabeling& future);
 
 /// Colours for a sequence of labelings (pose partitions, variable segmentations):
 /// colorSegments for the first, propagateColors from each to the next.
-[[nodiscard]] std::vector<std::vector<WheelColor>> colorSequence(const VertexGraph& graph, std::span<const double> areas,
-                                                                 std::span<const VertexLabeling> sequence);
+[[nodiscard]] std::vector<std::vector<WheelColor>>
+colorSequence(const VertexGraph& graph, std::span<const double> areas, std::span<const VertexLabeling> sequence);
 
 /// RGB in [0, 1] of each colour.
 [[nodiscard]] std::vector<glm::vec3> colorsRgb(std::span<const WheelColor> colors);

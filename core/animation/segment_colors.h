@@ -40,6 +40,7 @@ private:
 
 /// #V packed colors for ViewportWidget::setVertexColors: the color of each vertex's label
 /// (`colors`: one per label).
-[[nodiscard]] std::vector<std::uint32_t> vertexRgba8(const VertexLabeling& labeling, std::span<const WheelColor> colors);
+[[nodiscard]] std::vector<std::uint32_t> vertexRgba8(const VertexLabeling& labeling,
+                                                     std::span<const WheelColor> colors);
 
 } // namespace trimlab

@@ -38,7 +38,8 @@ void requireSearchable(const AnimationSegmenter& segmenter, std::size_t count)
 {
     const std::size_t vertices = segmenter.animation().vertexCount();
     if (count == 0 || count > vertices)
-        throw std::invalid_argument("cannot make " + std::to_string(count) + " segments of " + std::to_string(vertices) +
+        throw std::invalid_argument("cannot make " + std::to_string(count) + " segments of " +
+                                    std::to_string(vertices) +
                                     " vertices: the count must be from 1 to the vertex count");
 }
 

@@ -16,12 +16,12 @@
 namespace trimlab {
 
 struct SegmentCountSearch {
-    VertexLabeling segmentation; ///< exactly the requested count of segments (canonical labels)
-    std::size_t clusters = 0;    ///< clusters per pose partition of the segmenter's last run
+    VertexLabeling segmentation;  ///< exactly the requested count of segments (canonical labels)
+    std::size_t clusters = 0;     ///< clusters per pose partition of the segmenter's last run
     std::size_t overSegments = 0; ///< segments of that run's over-segmentation
-    double h = 0.0;              ///< the cleaning strength of the segmentation merged from
+    double h = 0.0;               ///< the cleaning strength of the segmentation merged from
     std::size_t cleanedCount = 0; ///< segments p2p-cleaning left at `h` (≥ the count)
-    std::size_t merged = 0;      ///< motion merges from `cleanedCount` down to the count
+    std::size_t merged = 0;       ///< motion merges from `cleanedCount` down to the count
 };
 
 /// Segments `segmenter`'s animation into exactly `count` segments:

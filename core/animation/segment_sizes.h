@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// How evenly a segmentation spreads the vertices (issue 21: bones on slivers of a few
-/// vertices lower the skinning error little): segment sizes in vertices, smallest first.
+/// How evenly a segmentation spreads the vertices (bones on slivers of a few vertices lower
+/// the skinning error little): segment sizes in vertices, smallest first.
 
 #include "core/animation/vertex_graph.h"
 

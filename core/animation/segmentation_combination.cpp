@@ -26,7 +26,8 @@ VertexLabeling transferLabeling(const VertexLabeling& labelingOfB, std::span<con
     std::vector<std::uint32_t> labels(count);
     for (std::size_t v = 0; v < count; ++v) {
         if (bijection[v] >= count || hit[bijection[v]]++)
-            throw std::invalid_argument("transferLabeling: the vertex map is not a bijection (entry " + std::to_string(v) + ")");
+            throw std::invalid_argument("transferLabeling: the vertex map is not a bijection (entry " +
+                                        std::to_string(v) + ")");
         labels[v] = labelingOfB.labels[bijection[v]];
     }
     return canonicalLabeling(labels);

@@ -18,13 +18,15 @@ namespace trimlab {
 /// pose order) into their over-segmentation and cleans it with `h` (p2p_cleaning.h).
 /// The inputs need not be connected per label: the join splits disconnected labels.
 /// `areas`: #V vertex areas. Throws std::invalid_argument on size mismatches.
-[[nodiscard]] VertexLabeling combineSegmentations(std::shared_ptr<const VertexGraph> graph, std::span<const double> areas,
+[[nodiscard]] VertexLabeling combineSegmentations(std::shared_ptr<const VertexGraph> graph,
+                                                  std::span<const double> areas,
                                                   std::span<const VertexLabeling> segmentations, double h);
 
 /// A segmentation of animation B carried over to animation A: vertex v of A gets the
 /// label of vertex bijection[v] of B. `bijection` must be a permutation of 0 … #V−1
 /// (std::invalid_argument otherwise). Canonical labels.
-[[nodiscard]] VertexLabeling transferLabeling(const VertexLabeling& labelingOfB, std::span<const std::uint32_t> bijection);
+[[nodiscard]] VertexLabeling transferLabeling(const VertexLabeling& labelingOfB,
+                                              std::span<const std::uint32_t> bijection);
 
 /// The numerical mean of several poses' features (thesis 3.2.5: "a unique global
 /// segmentation is computed from each feature using the numerical mean of the per-pose

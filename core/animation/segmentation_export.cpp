@@ -66,8 +66,9 @@ std::string segmentsArray(const SegmentationRecord& r)
     std::string out = "[";
     for (std::size_t s = 0; s < r.segmentation.count; ++s) {
         out += s > 0 ? ",\n    " : "\n    ";
-        out += "{\"label\": " + std::to_string(s) + ", \"color\": " + rgbArray(r.colors.at(s)) + ", \"hex\": " +
-               jsonString(hexColor(r.colors.at(s))) + ", \"vertex_count\": " + std::to_string(vertexCounts[s]) +
+        out += "{\"label\": " + std::to_string(s) + ", \"color\": " + rgbArray(r.colors.at(s)) +
+               ", \"hex\": " + jsonString(hexColor(r.colors.at(s))) +
+               ", \"vertex_count\": " + std::to_string(vertexCounts[s]) +
                ", \"area\": " + number(s < r.segmentAreas.size() ? r.segmentAreas[s] : NAN) + "}";
     }
     return out + "\n  ]";
@@ -81,18 +82,18 @@ std::string variableArray(const SegmentationRecord& r)
         for (std::size_t c = 0; c < r.variableColors.at(i).size(); ++c)
             colors += (c > 0 ? "," : "") + rgbArray(r.variableColors[i][c]);
         out += i > 0 ? ",\n    " : "\n    ";
-        out += "{\"pose\": " + std::to_string(r.partitionedPoses.at(i)) + ", \"segment_count\": " +
-               std::to_string(r.variable[i].count) + ", \"colors\": " + colors + "], \"labels\": " +
-               integerArray(r.variable[i].labels) + "}";
+        out += "{\"pose\": " + std::to_string(r.partitionedPoses.at(i)) +
+               ", \"segment_count\": " + std::to_string(r.variable[i].count) + ", \"colors\": " + colors +
+               "], \"labels\": " + integerArray(r.variable[i].labels) + "}";
     }
     return out + "\n  ]";
 }
 
 std::string timesObject(const StageTimings& t)
 {
-    return "{\"load\": " + number(t.load) + ", \"features\": " + number(t.features) + ", \"partitions\": " +
-           number(t.partitions) + ", \"over_segmentation\": " + number(t.overSegmentation) + ", \"cleaning\": " +
-           number(t.cleaning) + "}";
+    return "{\"load\": " + number(t.load) + ", \"features\": " + number(t.features) +
+           ", \"partitions\": " + number(t.partitions) + ", \"over_segmentation\": " + number(t.overSegmentation) +
+           ", \"cleaning\": " + number(t.cleaning) + "}";
 }
 
 } // namespace
@@ -110,7 +111,9 @@ std::string hexColor(const WheelColor& color)
 std::string segmentationJson(const SegmentationRecord& r)
 {
     std::string out = "{\n";
-    auto field = [&](const std::string& name, const std::string& value) { out += "  " + jsonString(name) + ": " + value + ",\n"; };
+    auto field = [&](const std::string& name, const std::string& value) {
+        out += "  " + jsonString(name) + ": " + value + ",\n";
+    };
     field("format", jsonString("trimlab-segmentation"));
     field("version", "1");
     field("source", jsonString(r.source));
@@ -157,7 +160,7 @@ std::string segmentationCsv(const SegmentationRecord& r)
 
 void writeTextFile(const std::filesystem::path& path, const std::string& text)
 {
-    timeline::writeFileAtomically(path, text);
+    io::writeFileAtomically(path, text);
 }
 
 } // namespace trimlab

@@ -42,8 +42,8 @@ struct SegmentationRecord {
     std::vector<std::uint32_t> clustersPerPose; ///< clusters each partition actually has
     std::size_t overSegmentCount = 0;
     VertexLabeling segmentation;
-    std::vector<WheelColor> colors;      ///< one per segment
-    std::vector<double> segmentAreas;    ///< one per segment (rest pose)
+    std::vector<WheelColor> colors;   ///< one per segment
+    std::vector<double> segmentAreas; ///< one per segment (rest pose)
     std::vector<VertexLabeling> variable;
     std::vector<std::vector<WheelColor>> variableColors;
     StageTimings times;

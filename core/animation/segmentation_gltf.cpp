@@ -17,14 +17,16 @@ namespace {
 
 int addPositions(tinygltf::Model& model, const TriangleMesh& mesh)
 {
-    return addGltfVec3Accessor(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    return io::addGltfVec3Accessor(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER, true);
 }
 
-tinygltf::Model buildModel(const TriangleMesh& mesh, const VertexLabeling& segmentation, std::span<const WheelColor> colors)
+tinygltf::Model buildModel(const TriangleMesh& mesh, const VertexLabeling& segmentation,
+                           std::span<const WheelColor> colors)
 {
     tinygltf::Model model;
     model.asset.generator = "TrimLab segmentation export";
-    model.asset.extras = tinygltf::Value(tinygltf::Value::Object{{"segment_count", tinygltf::Value(int(segmentation.count))}});
+    model.asset.extras =
+        tinygltf::Value(tinygltf::Value::Object{{"segment_count", tinygltf::Value(int(segmentation.count))}});
     model.buffers.emplace_back();
     tinygltf::Primitive primitive;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
@@ -35,19 +37,23 @@ tinygltf::Model buildModel(const TriangleMesh& mesh, const VertexLabeling& segme
         rgb.push_back(colors[label].rgb());
         labels.push_back(float(label));
     }
-    const int colorView = addGltfBufferView(model, rgb.data(), rgb.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
-    primitive.attributes["COLOR_0"] = addGltfAccessor(model, colorView, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, rgb.size());
-    const int labelView = addGltfBufferView(model, labels.data(), labels.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+    const int colorView =
+        io::addGltfBufferView(model, rgb.data(), rgb.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
+    primitive.attributes["COLOR_0"] =
+        io::addGltfAccessor(model, colorView, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, rgb.size());
+    const int labelView =
+        io::addGltfBufferView(model, labels.data(), labels.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
     primitive.attributes["_SEGMENT"] =
-        addGltfAccessor(model, labelView, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, labels.size());
-    primitive.indices = addGltfTriangleIndices(model, mesh.triangles);
-    addGltfSingleMeshScene(model, primitive, "segmentation");
+        io::addGltfAccessor(model, labelView, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, labels.size());
+    primitive.indices = io::addGltfTriangleIndices(model, mesh.triangles);
+    io::addGltfSingleMeshScene(model, primitive, "segmentation");
     return model;
 }
 
 } // namespace
 
-std::string segmentationGltf(const TriangleMesh& mesh, const VertexLabeling& segmentation, std::span<const WheelColor> colors)
+std::string segmentationGltf(const TriangleMesh& mesh, const VertexLabeling& segmentation,
+                             std::span<const WheelColor> colors)
 {
     if (segmentation.labels.size() != mesh.positions.size() || mesh.positions.empty())
         throw std::invalid_argument("segmentationGltf: " + std::to_string(segmentation.labels.size()) + " labels for " +
@@ -62,10 +68,10 @@ std::string segmentationGltf(const TriangleMesh& mesh, const VertexLabeling& seg
     return out.str();
 }
 
-void writeSegmentationGltf(const std::filesystem::path& path, const TriangleMesh& mesh, const VertexLabeling& segmentation,
-                           std::span<const WheelColor> colors)
+void writeSegmentationGltf(const std::filesystem::path& path, const TriangleMesh& mesh,
+                           const VertexLabeling& segmentation, std::span<const WheelColor> colors)
 {
-    timeline::writeFileAtomically(path, segmentationGltf(mesh, segmentation, colors));
+    io::writeFileAtomically(path, segmentationGltf(mesh, segmentation, colors));
 }
 
 } // namespace trimlab

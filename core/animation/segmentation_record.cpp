@@ -50,7 +50,8 @@ std::optional<SegmentationFileFormat> segmentationFileFormat(const std::filesyst
 }
 
 SegmentationRecord makeSegmentationRecord(const AnimationSegmenter& segmenter, const std::string& source, double h,
-                                          VertexLabeling segmentation, std::vector<WheelColor> colors, bool variableMode)
+                                          VertexLabeling segmentation, std::vector<WheelColor> colors,
+                                          bool variableMode)
 {
     if (!colors.empty() && colors.size() != segmentation.count)
         throw std::invalid_argument("makeSegmentationRecord: " + std::to_string(colors.size()) + " colours for " +
@@ -60,8 +61,8 @@ SegmentationRecord makeSegmentationRecord(const AnimationSegmenter& segmenter, c
     fillCounts(record, segmenter);
     record.variableMode = variableMode;
     record.h = h;
-    record.colors = colors.empty() ? colorSegments(segmenter.graph(), segmentation, segmenter.vertexAreas())
-                                   : std::move(colors);
+    record.colors =
+        colors.empty() ? colorSegments(segmenter.graph(), segmentation, segmenter.vertexAreas()) : std::move(colors);
     record.segmentAreas = labelAreas(segmentation.labels, segmentation.count, segmenter.vertexAreas());
     record.segmentation = std::move(segmentation);
     if (variableMode) {
@@ -79,8 +80,12 @@ void writeSegmentationFile(const std::filesystem::path& path, SegmentationFileFo
                            const SegmentationRecord& record, const MeshAnimation& animation)
 {
     switch (format) {
-    case SegmentationFileFormat::Json: writeTextFile(path, segmentationJson(record)); break;
-    case SegmentationFileFormat::Csv: writeTextFile(path, segmentationCsv(record)); break;
+    case SegmentationFileFormat::Json:
+        writeTextFile(path, segmentationJson(record));
+        break;
+    case SegmentationFileFormat::Csv:
+        writeTextFile(path, segmentationCsv(record));
+        break;
     case SegmentationFileFormat::Gltf:
         writeSegmentationGltf(path, animation.poseMesh(animation.restPose), record.segmentation, record.colors);
         break;

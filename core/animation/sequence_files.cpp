@@ -38,9 +38,9 @@ bool isSequenceExtension(const std::string& extension)
 
 // A file name pattern: literal text with '*' / '?' wildcards, or with one run of digits.
 struct NamePattern {
-    std::string prefix;           // for numbered patterns
-    std::string suffix;           // for numbered patterns
-    std::size_t minDigits = 1;    // for numbered patterns
+    std::string prefix;        // for numbered patterns
+    std::string suffix;        // for numbered patterns
+    std::size_t minDigits = 1; // for numbered patterns
     std::optional<std::string> glob;
 };
 
@@ -75,8 +75,8 @@ bool numberedMatch(const NamePattern& pattern, const std::string& name)
         return false;
     if (!name.starts_with(pattern.prefix) || !name.ends_with(pattern.suffix))
         return false;
-    const std::string_view digits =
-        std::string_view(name).substr(pattern.prefix.size(), name.size() - pattern.prefix.size() - pattern.suffix.size());
+    const std::string_view digits = std::string_view(name).substr(
+        pattern.prefix.size(), name.size() - pattern.prefix.size() - pattern.suffix.size());
     return digits.size() >= pattern.minDigits &&
            std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
@@ -139,7 +139,8 @@ void requireOneFormat(const std::vector<fs::path>& files, const std::string& spe
     for (const fs::path& file : files)
         extensions.insert(meshExtension(file.filename().string()));
     if (extensions.size() > 1)
-        throw MeshLoadError(spec, "the folder holds ." + *extensions.begin() + " and ." + *std::next(extensions.begin()) +
+        throw MeshLoadError(spec, "the folder holds ." + *extensions.begin() + " and ." +
+                                      *std::next(extensions.begin()) +
                                       " files; name a pattern (e.g. dir/mesh_*.obj) to choose one sequence");
 }
 

@@ -17,7 +17,8 @@ namespace trimlab {
 /// segments are shared between them instead of belonging to neither (thesis 3.1.2 sums
 /// the facets of a segment; with vertex segments that would drop the border triangles).
 /// Degenerate triangles add 0. Indices must be < positions.size().
-[[nodiscard]] std::vector<double> vertexAreas(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles);
+[[nodiscard]] std::vector<double> vertexAreas(std::span<const glm::vec3> positions,
+                                              std::span<const glm::uvec3> triangles);
 
 /// Σ areas[v] per label: #labels sums for `labels` in [0, count).
 [[nodiscard]] std::vector<double> labelAreas(std::span<const std::uint32_t> labels, std::size_t count,

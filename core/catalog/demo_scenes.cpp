@@ -57,18 +57,22 @@ struct DemoEntry {
 };
 
 constexpr std::array<DemoEntry, 5> kDemos = {{
-    {"pushed-sphere", "A sphere with a finger pushed through its south cap: the alternating border rule trims "
-                      "a hole through it (genus 0 to 1).",
+    {"pushed-sphere",
+     "A sphere with a finger pushed through its south cap: the alternating border rule trims "
+     "a hole through it (genus 0 to 1).",
      pushedSphereScene},
-    {"crossing-loop", "A tube swept along a figure-eight that passes through itself: an immersed torus with "
-                      "winding index 2 at the crossing.",
+    {"crossing-loop",
+     "A tube swept along a figure-eight that passes through itself: an immersed torus with "
+     "winding index 2 at the crossing.",
      crossingLoopScene},
-    {"nested-spheres", "An outer unit sphere containing a sphere of radius 0.5, both outward (winding index 2 "
-                       "inside the inner one).",
+    {"nested-spheres",
+     "An outer unit sphere containing a sphere of radius 0.5, both outward (winding index 2 "
+     "inside the inner one).",
      nestedSpheresScene},
     {"sphere", "A unit icosphere (5120 triangles): the simplest closed surface.", sphereScene},
-    {"csg-trio", "Three overlapping solids for CSG and capping: the self-crossing pushed sphere (object 0), a ball "
-                 "(1) and a ring (2), e.g. --csg \"0 | 1 - 2\".",
+    {"csg-trio",
+     "Three overlapping solids for CSG and capping: the self-crossing pushed sphere (object 0), a ball "
+     "(1) and a ring (2), e.g. --csg \"0 | 1 - 2\".",
      csgTrioScene},
 }};
 

@@ -14,8 +14,7 @@ namespace {
 
 using Shape = PushedSphereShape;
 
-void appendArc(std::vector<glm::dvec2>& polyline, glm::dvec2 center, double radius, double from, double to,
-               int steps)
+void appendArc(std::vector<glm::dvec2>& polyline, glm::dvec2 center, double radius, double from, double to, int steps)
 {
     for (int i = 1; i <= steps; ++i) {
         const double a = from + (to - from) * i / steps;

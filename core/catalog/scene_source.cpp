@@ -51,8 +51,8 @@ LoadedScene projectFileScene(const std::string& path, const std::string& display
     LoadedScene loaded;
     loaded.source = path;
     loaded.displayName = displayName;
-    loaded.scene = timeline::frameScene(project.timeline, project.timeline.frameCount() - 1, glm::dmat4(1.0),
-                                        displayName);
+    loaded.scene =
+        timeline::frameScene(project.timeline, project.timeline.frameCount() - 1, glm::dmat4(1.0), displayName);
     loaded.savedRule = project.extras.staticRule;
     for (const SceneObject& object : loaded.scene.objects)
         loaded.reports.push_back(validateMesh(object.mesh));
@@ -106,7 +106,8 @@ std::string LoadedScene::trimUnavailableReason() const
     for (std::size_t i = 0; i < reports.size(); ++i) {
         if (!reports[i].trimmable()) {
             const std::string& name = scene.objects[i].name;
-            return (reports.size() > 1 ? "Object '" + name + "': " : std::string()) + reports[i].trimUnavailableReason();
+            return (reports.size() > 1 ? "Object '" + name + "': " : std::string()) +
+                   reports[i].trimUnavailableReason();
         }
     }
     return {};

@@ -19,8 +19,8 @@ namespace trimlab {
 
 struct LoadedScene {
     Scene scene;
-    std::string source;      ///< as given: a file path or "demo:NAME"
-    std::string displayName; ///< the file name or the demo name
+    std::string source;                        ///< as given: a file path or "demo:NAME"
+    std::string displayName;                   ///< the file name or the demo name
     std::vector<MeshValidationReport> reports; ///< one per scene object
     /// What a scene project (.trimlab, version 3) saved besides its objects: the CSG
     /// expression with the per-object rules, and the static rule. Empty for other sources.
@@ -58,9 +58,8 @@ struct DemoEntry {
 [[nodiscard]] LoadedScene loadScene(const std::string& source);
 
 /// The scene of a scene project: its objects (validated), savedCsg and savedRule.
-[[nodiscard]] LoadedScene projectSceneLoaded(const timeline::ProjectScene& scene,
-                                             const std::optional<StaticRule>& rule, const std::string& source,
-                                             const std::string& displayName);
+[[nodiscard]] LoadedScene projectSceneLoaded(const timeline::ProjectScene& scene, const std::optional<StaticRule>& rule,
+                                             const std::string& source, const std::string& displayName);
 
 /// The scene project a LoadedScene saves as (objects and CSG; the rule goes into the
 /// project's extras).

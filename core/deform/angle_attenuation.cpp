@@ -5,8 +5,7 @@
 
 namespace trimlab::deform {
 
-double angleAttenuation(const glm::dvec3& vertexNormal, const glm::dvec3& anchorNormal,
-                        const glm::dvec3& dragDirection)
+double angleAttenuation(const glm::dvec3& vertexNormal, const glm::dvec3& anchorNormal, const glm::dvec3& dragDirection)
 {
     const double deficit = glm::dot(anchorNormal - vertexNormal, dragDirection);
     return glm::clamp(1.0 - 0.5 * deficit, 0.0, 1.0);

@@ -81,8 +81,8 @@ glm::dvec3 restAnchor(const BrushTopology& topology, std::span<const glm::vec3> 
                       const glm::dvec3& anchor)
 {
     const glm::uvec3& t = topology.triangles()[triangle];
-    const glm::dvec3 w = barycentric(anchor, glm::dvec3(positions[t.x]), glm::dvec3(positions[t.y]),
-                                     glm::dvec3(positions[t.z]));
+    const glm::dvec3 w =
+        barycentric(anchor, glm::dvec3(positions[t.x]), glm::dvec3(positions[t.y]), glm::dvec3(positions[t.z]));
     const std::vector<glm::vec3>& rest = topology.restPositions();
     return w.x * glm::dvec3(rest[t.x]) + w.y * glm::dvec3(rest[t.y]) + w.z * glm::dvec3(rest[t.z]);
 }
@@ -102,10 +102,10 @@ InfluenceRegion influenceRegion(const BrushTopology& topology, std::span<const g
     InfluenceRegion region;
     std::size_t i = 0, j = 0; // both lists are sorted by vertex
     while (i < current.vertices.size() || j < rest.vertices.size()) {
-        const bool takeCurrent = j == rest.vertices.size() ||
-                                 (i < current.vertices.size() && current.vertices[i] <= rest.vertices[j]);
-        const bool takeRest = i == current.vertices.size() ||
-                              (j < rest.vertices.size() && rest.vertices[j] <= current.vertices[i]);
+        const bool takeCurrent =
+            j == rest.vertices.size() || (i < current.vertices.size() && current.vertices[i] <= rest.vertices[j]);
+        const bool takeRest =
+            i == current.vertices.size() || (j < rest.vertices.size() && rest.vertices[j] <= current.vertices[i]);
         const std::uint32_t v = takeCurrent ? current.vertices[i] : rest.vertices[j];
         double d = takeCurrent ? current.distances[i] : rest.distances[j];
         if (takeCurrent && takeRest)
@@ -124,8 +124,7 @@ InfluenceRegion influenceRegion(const BrushTopology& topology, std::span<const g
 } // namespace
 
 BrushStroke::BrushStroke(const BrushTopology& topology, std::span<const glm::vec3> positions, const Stroke& stroke)
-    : m_topology(&topology)
-    , m_settings(stroke.brush)
+    : m_topology(&topology), m_settings(stroke.brush)
 {
     requireValidBrushSettings(m_settings);
     requireVertexCount(topology, positions.size(), "BrushStroke");

@@ -76,10 +76,10 @@ private:
     BrushSettings m_settings;
     glm::dvec3 m_anchor{0.0};
     std::uint32_t m_anchorTriangle = 0;
-    glm::dvec3 m_anchorNormal{0.0};      ///< interpolated vertex normal at the anchor, at drag start
+    glm::dvec3 m_anchorNormal{0.0}; ///< interpolated vertex normal at the anchor, at drag start
     InfluenceRegion m_region;
-    RegionPatch m_patch;                 ///< the region and its one-ring, numbered locally
-    std::vector<glm::dvec3> m_start;     ///< per patch vertex: its position at drag start
+    RegionPatch m_patch;                   ///< the region and its one-ring, numbered locally
+    std::vector<glm::dvec3> m_start;       ///< per patch vertex: its position at drag start
     std::vector<glm::vec3> m_startNormals; ///< per region vertex, angle-weighted, at drag start
     std::vector<double> m_smoothingSteps;  ///< per region vertex: λ·f, the smoothing step there
 };

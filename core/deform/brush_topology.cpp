@@ -33,8 +33,7 @@ void requireIndicesInRange(const std::vector<glm::uvec3>& triangles, std::size_t
 
 } // namespace
 
-BrushTopology::BrushTopology(const TriangleMesh& mesh)
-    : m_triangles(mesh.triangles), m_rest(mesh.positions)
+BrushTopology::BrushTopology(const TriangleMesh& mesh) : m_triangles(mesh.triangles), m_rest(mesh.positions)
 {
     const std::size_t vertexCount = mesh.positions.size();
     requireIndicesInRange(m_triangles, vertexCount);

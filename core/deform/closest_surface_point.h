@@ -12,9 +12,9 @@ namespace trimlab::deform {
 
 /// A point on one triangle of a mesh.
 struct SurfacePoint {
-    glm::dvec3 point{0.0};     ///< object space
+    glm::dvec3 point{0.0};      ///< object space
     std::uint32_t triangle = 0; ///< index into the triangle list
-    double distance = 0.0;     ///< Euclidean distance from the query
+    double distance = 0.0;      ///< Euclidean distance from the query
 };
 
 /// Closest point of triangle (a, b, c) to `q`. Degenerate triangles (zero area, a

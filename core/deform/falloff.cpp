@@ -14,8 +14,10 @@ double falloff(FalloffProfile profile, double t)
         const double bell = 1.0 - t * t;
         return bell * bell;
     }
-    case FalloffProfile::Linear: return s;
-    case FalloffProfile::Sharp: return s * s * s;
+    case FalloffProfile::Linear:
+        return s;
+    case FalloffProfile::Sharp:
+        return s * s * s;
     }
     return 0.0;
 }

@@ -25,7 +25,9 @@ constexpr double kReopenMargin = 1e-12;
 class Front {
 public:
     Front(const BrushTopology& topology, std::span<const glm::vec3> positions, double radius)
-        : m_topology(topology), m_positions(positions), m_radius(radius) {}
+        : m_topology(topology), m_positions(positions), m_radius(radius)
+    {
+    }
 
     void offer(std::uint32_t v, double candidate);
     void run();

@@ -46,8 +46,7 @@ struct LocalDistances {
 /// Only vertices whose distance is < radius are ever queued; the work and memory are
 /// proportional to them and their one-rings. `positions` holds #V points, seeds must be
 /// in range (std::invalid_argument otherwise); seeds with distance >= radius are ignored.
-[[nodiscard]] LocalDistances localGeodesicDistances(const BrushTopology& topology,
-                                                    std::span<const glm::vec3> positions,
+[[nodiscard]] LocalDistances localGeodesicDistances(const BrushTopology& topology, std::span<const glm::vec3> positions,
                                                     std::span<const GeodesicSeed> seeds, double radius);
 
 /// Distance at corner c of triangle (a, b, c) from the point source that is `da` from a

@@ -21,8 +21,7 @@ glm::vec3 angleWeightedNormal(const BrushTopology& topology, std::span<const glm
     glm::dvec3 sum(0.0);
     for (const std::uint32_t* f = topology.facesBegin(v); f != topology.facesEnd(v); ++f) {
         const glm::uvec3& t = topology.triangles()[*f];
-        const glm::dvec3 p[3] = {glm::dvec3(positions[t[0]]), glm::dvec3(positions[t[1]]),
-                                 glm::dvec3(positions[t[2]])};
+        const glm::dvec3 p[3] = {glm::dvec3(positions[t[0]]), glm::dvec3(positions[t[1]]), glm::dvec3(positions[t[2]])};
         const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
         const double len = glm::length(n);
         if (len == 0.0 || !std::isfinite(len))

@@ -38,8 +38,7 @@ std::vector<std::uint32_t> patchVertices(const BrushTopology& topology, std::spa
 } // namespace
 
 RegionPatch::RegionPatch(const BrushTopology& topology, std::span<const std::uint32_t> region)
-    : m_regionSize(region.size())
-    , m_global(patchVertices(topology, region))
+    : m_regionSize(region.size()), m_global(patchVertices(topology, region))
 {
     LocalIds local(m_global.size());
     for (std::uint32_t i = 0; i < m_global.size(); ++i)

@@ -5,9 +5,12 @@ namespace trimlab::deform {
 std::string_view falloffProfileName(FalloffProfile profile)
 {
     switch (profile) {
-    case FalloffProfile::Smooth: return "smooth";
-    case FalloffProfile::Linear: return "linear";
-    case FalloffProfile::Sharp: return "sharp";
+    case FalloffProfile::Smooth:
+        return "smooth";
+    case FalloffProfile::Linear:
+        return "linear";
+    case FalloffProfile::Sharp:
+        return "sharp";
     }
     return "unknown"; // only for values cast from out-of-range integers
 }
@@ -24,8 +27,10 @@ std::optional<FalloffProfile> parseFalloffProfile(std::string_view name)
 std::string_view smoothingWeightsName(SmoothingWeights weights)
 {
     switch (weights) {
-    case SmoothingWeights::Uniform: return "uniform";
-    case SmoothingWeights::Cotangent: return "cotangent";
+    case SmoothingWeights::Uniform:
+        return "uniform";
+    case SmoothingWeights::Cotangent:
+        return "cotangent";
     }
     return "unknown";
 }

@@ -30,12 +30,12 @@ enum class SmoothingWeights {
 
 /// What the Brush panel sets. Units: object-space lengths (the mesh's own units).
 struct BrushSettings {
-    double radius = 0.25;            ///< geodesic radius of influence (> 0)
-    double strength = 1.0;           ///< scales the drag (1: the anchor follows the drag)
+    double radius = 0.25;  ///< geodesic radius of influence (> 0)
+    double strength = 1.0; ///< scales the drag (1: the anchor follows the drag)
     FalloffProfile profile = FalloffProfile::Smooth;
-    int smoothingIterations = 2;     ///< Laplacian iterations restricted to the influenced region (>= 0)
+    int smoothingIterations = 2; ///< Laplacian iterations restricted to the influenced region (>= 0)
     SmoothingWeights smoothingWeights = SmoothingWeights::Uniform;
-    double smoothingStep = 0.5;      ///< λ of p ← p + λ·L(p), in (0, 1]
+    double smoothingStep = 0.5; ///< λ of p ← p + λ·L(p), in (0, 1]
 
     friend bool operator==(const BrushSettings&, const BrushSettings&) = default;
 };
@@ -54,7 +54,7 @@ struct Stroke {
     friend bool operator==(const Stroke&, const Stroke&) = default;
 };
 
-[[nodiscard]] std::string_view falloffProfileName(FalloffProfile profile);   ///< "smooth", "linear", "sharp"
+[[nodiscard]] std::string_view falloffProfileName(FalloffProfile profile); ///< "smooth", "linear", "sharp"
 [[nodiscard]] std::optional<FalloffProfile> parseFalloffProfile(std::string_view name);
 [[nodiscard]] std::string_view smoothingWeightsName(SmoothingWeights weights); ///< "uniform", "cotangent"
 [[nodiscard]] std::optional<SmoothingWeights> parseSmoothingWeights(std::string_view name);

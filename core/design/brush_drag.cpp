@@ -84,7 +84,8 @@ BrushPick pickAnchor(const DragView& view, glm::dvec2 pixel, std::uint32_t trian
 glm::dvec3 dragVector(const DragView& view, const BrushPick& pick, glm::dvec2 pixel, bool alongNormal,
                       const glm::dvec3& normal, const glm::dmat4& model)
 {
-    const glm::dvec3 world = viewPlanePoint(view, pixel, pick.viewDepth) - viewPlanePoint(view, pick.pixel, pick.viewDepth);
+    const glm::dvec3 world =
+        viewPlanePoint(view, pixel, pick.viewDepth) - viewPlanePoint(view, pick.pixel, pick.viewDepth);
     if (!alongNormal)
         return vectorToObject(model, world);
     // The screen's up direction measures how far: up pulls out along the normal.

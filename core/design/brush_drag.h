@@ -44,15 +44,15 @@ struct BrushPick {
     std::uint32_t triangle = 0; ///< mesh triangle
     glm::dvec3 anchor{0.0};     ///< object space, on the triangle
     double viewDepth = 0.0;     ///< of the picked point
-    glm::dvec2 pixel;              ///< device pixel position of the press
+    glm::dvec2 pixel;           ///< device pixel position of the press
 };
 
 /// The anchor of a press at `pixel` on a pixel that shows `triangle` at `viewDepth`: the
 /// point at that depth, mapped to object space (inverse of `model`) and snapped onto the
 /// triangle at `positions` (its closest point, which absorbs the depth's rounding).
 [[nodiscard]] BrushPick pickAnchor(const DragView& view, glm::dvec2 pixel, std::uint32_t triangle, double viewDepth,
-                                   const std::vector<glm::vec3>& positions,
-                                   const std::vector<glm::uvec3>& triangles, const glm::dmat4& model);
+                                   const std::vector<glm::vec3>& positions, const std::vector<glm::uvec3>& triangles,
+                                   const glm::dmat4& model);
 
 /// The drag of the anchor (object space) when the cursor moved from the pick to `pixel`:
 /// in the view plane at the anchor's depth, so the anchor follows the cursor exactly; or,

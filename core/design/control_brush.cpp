@@ -25,14 +25,14 @@ std::vector<std::uint32_t> checkedSelection(const EditableSurface& surface, std:
     sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
     if (!sorted.empty() && sorted.back() >= surface.controlPointCount())
         throw std::invalid_argument(std::string(caller) + ": control point " + std::to_string(sorted.back()) +
-                                    " does not exist (the surface has " +
-                                    std::to_string(surface.controlPointCount()) + ")");
+                                    " does not exist (the surface has " + std::to_string(surface.controlPointCount()) +
+                                    ")");
     return sorted;
 }
 
 // The selection and every point tied to it, each moved by `offset`.
-std::vector<ControlPointTarget> offsetTargets(const EditableSurface& surface, const std::vector<std::uint32_t>& selection,
-                                              const glm::dvec3& offset)
+std::vector<ControlPointTarget> offsetTargets(const EditableSurface& surface,
+                                              const std::vector<std::uint32_t>& selection, const glm::dvec3& offset)
 {
     std::vector<std::uint32_t> moved;
     for (const std::uint32_t c : selection)

@@ -46,8 +46,7 @@ namespace trimlab {
 /// All points move by the same vector (the selection keeps its shape). When that average
 /// vanishes (e.g. opposite points selected) nothing moves: empty result. Same throws as
 /// translateControlPoints (non-finite distance).
-[[nodiscard]] std::vector<ControlPointTarget> moveControlPointsAlongNormal(const EditableSurface& surface,
-                                                                           std::span<const std::uint32_t> selection,
-                                                                           double distance);
+[[nodiscard]] std::vector<ControlPointTarget>
+moveControlPointsAlongNormal(const EditableSurface& surface, std::span<const std::uint32_t> selection, double distance);
 
 } // namespace trimlab

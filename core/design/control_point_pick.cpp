@@ -24,8 +24,8 @@ std::optional<std::uint32_t> nearestPoint(glm::dvec2 cursor, std::span<const std
     return best;
 }
 
-std::vector<std::uint32_t> clickedSelection(std::vector<std::uint32_t> selection,
-                                            std::optional<std::uint32_t> picked, bool toggle)
+std::vector<std::uint32_t> clickedSelection(std::vector<std::uint32_t> selection, std::optional<std::uint32_t> picked,
+                                            bool toggle)
 {
     if (!toggle)
         return picked ? std::vector<std::uint32_t>{*picked} : std::vector<std::uint32_t>{};

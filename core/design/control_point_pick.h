@@ -18,9 +18,8 @@ namespace trimlab {
 /// The index of the projected point nearest to `cursor` within `maxDistance` (pixels),
 /// or nullopt. Unprojected points (nullopt: behind the eye) are skipped; ties go to the
 /// lower index.
-[[nodiscard]] std::optional<std::uint32_t> nearestPoint(glm::dvec2 cursor,
-                                                        std::span<const std::optional<glm::dvec2>> points,
-                                                        double maxDistance);
+[[nodiscard]] std::optional<std::uint32_t>
+nearestPoint(glm::dvec2 cursor, std::span<const std::optional<glm::dvec2>> points, double maxDistance);
 
 /// The selection after a click on `picked` (nullopt: empty space) with `toggle` (Shift)
 /// held. `selection` and the result are ascending and unique.

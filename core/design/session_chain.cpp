@@ -2,8 +2,7 @@
 
 namespace trimlab {
 
-DynamicChain dynamicChainTo(const timeline::Timeline& history, int frame, StaticRule baseRule,
-                            const glm::dmat4& model)
+DynamicChain dynamicChainTo(const timeline::Timeline& history, int frame, StaticRule baseRule, const glm::dmat4& model)
 {
     std::vector<std::vector<glm::vec3>> frames;
     std::vector<DynamicRule> rules;

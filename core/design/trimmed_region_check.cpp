@@ -31,8 +31,7 @@ std::vector<std::uint32_t> TrimmedRegionCheck::sample(std::span<const std::uint3
 
 std::vector<std::uint32_t> TrimmedRegionCheck::trimmedOff(const deform::BrushTopology& topology,
                                                           const std::vector<glm::vec3>& positions,
-                                                          std::span<const std::uint32_t> vertices,
-                                                          double epsilon) const
+                                                          std::span<const std::uint32_t> vertices, double epsilon) const
 {
     const std::vector<glm::vec3> normals = deform::vertexNormalsOf(topology, positions, vertices);
     const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(m_model)));

@@ -12,7 +12,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-namespace trimlab::timeline {
+namespace trimlab::io {
 
 namespace {
 
@@ -107,4 +107,4 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
     removeStaleTemporaries(path, kStaleTemporaryAge);
 }
 
-} // namespace trimlab::timeline
+} // namespace trimlab::io

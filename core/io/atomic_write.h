@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string_view>
 
-namespace trimlab::timeline {
+namespace trimlab::io {
 
 /// Writes `bytes` to `<path>.tmp-XXXXXX` in the same folder (created with mode 0666 minus
 /// the umask), flushes and fsyncs it, then renames it over `path` and fsyncs the folder
@@ -17,4 +17,4 @@ namespace trimlab::timeline {
 /// deleted (stale_temporaries.h).
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
-} // namespace trimlab::timeline
+} // namespace trimlab::io

@@ -1,6 +1,6 @@
 #include "core/io/document_file_error.h"
 
-namespace trimlab {
+namespace trimlab::io {
 
 namespace {
 
@@ -12,9 +12,11 @@ std::string message(const std::string& file, const std::string& where, const std
 } // namespace
 
 DocumentFileError::DocumentFileError(std::string file, std::string where, std::string reason)
-    : std::runtime_error(message(file, where, reason)), m_file(std::move(file)), m_where(std::move(where)),
+    : std::runtime_error(message(file, where, reason)),
+      m_file(std::move(file)),
+      m_where(std::move(where)),
       m_reason(std::move(reason))
 {
 }
 
-} // namespace trimlab
+} // namespace trimlab::io

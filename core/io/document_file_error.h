@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace trimlab {
+namespace trimlab::io {
 
 /// A document could not be loaded. `what()` reads `FILE: [WHERE: ]REASON`, e.g.
 /// `scene.trimlab: frames[3].after: CRC mismatch …`. Thrown for problems caused by file
@@ -27,4 +27,4 @@ private:
     std::string m_reason;
 };
 
-} // namespace trimlab
+} // namespace trimlab::io

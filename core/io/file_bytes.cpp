@@ -8,18 +8,18 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace trimlab::timeline {
+namespace trimlab::io {
 
 namespace {
 
 /// What a stat mode is, for a file that is not regular.
 std::string kindOf(mode_t mode)
 {
-    const char* kind = S_ISDIR(mode)                     ? "a folder"
-                       : S_ISFIFO(mode)                  ? "a named pipe (FIFO)"
-                       : S_ISCHR(mode) || S_ISBLK(mode)  ? "a device"
-                       : S_ISSOCK(mode)                  ? "a socket"
-                                                         : nullptr;
+    const char* kind = S_ISDIR(mode)                    ? "a folder"
+                       : S_ISFIFO(mode)                 ? "a named pipe (FIFO)"
+                       : S_ISCHR(mode) || S_ISBLK(mode) ? "a device"
+                       : S_ISSOCK(mode)                 ? "a socket"
+                                                        : nullptr;
     return kind ? "is " + std::string(kind) + ", not a regular file" : "is not a regular file";
 }
 
@@ -88,4 +88,4 @@ std::string readFileBytes(const std::filesystem::path& path, std::size_t maxByte
     return bytes;
 }
 
-} // namespace trimlab::timeline
+} // namespace trimlab::io

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-namespace trimlab::timeline {
+namespace trimlab::io {
 
 /// Why `path` is no regular file TrimLab may read ("No such file or directory", "is a
 /// folder, not a regular file", the same for a named pipe (FIFO), a device, a socket or a
@@ -23,4 +23,4 @@ namespace trimlab::timeline {
 /// have been replaced after the first check); the size read is the size it had then.
 [[nodiscard]] std::string readFileBytes(const std::filesystem::path& path, std::size_t maxBytes);
 
-} // namespace trimlab::timeline
+} // namespace trimlab::io

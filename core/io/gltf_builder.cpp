@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <span>
 
-namespace trimlab {
+namespace trimlab::io {
 
 int addGltfBufferView(tinygltf::Model& model, const void* bytes, std::size_t size, int target)
 {
@@ -62,8 +62,7 @@ int addGltfFloatAccessor(tinygltf::Model& model, const std::vector<float>& value
 {
     const std::size_t components = std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(type)));
     const int view = addGltfBufferView(model, values.data(), values.size() * sizeof(float), 0);
-    const int accessor =
-        addGltfAccessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, type, values.size() / components);
+    const int accessor = addGltfAccessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, type, values.size() / components);
     if (bounds && type == TINYGLTF_TYPE_SCALAR && !values.empty()) {
         const auto [low, high] = std::minmax_element(values.begin(), values.end());
         model.accessors[std::size_t(accessor)].minValues = {*low};
@@ -154,4 +153,4 @@ void addGltfMorphStepAnimation(tinygltf::Model& model, const std::string& name, 
     model.animations.push_back(animation);
 }
 
-} // namespace trimlab
+} // namespace trimlab::io

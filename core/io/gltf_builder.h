@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace trimlab {
+namespace trimlab::io {
 
 /// Appends `size` bytes to model.buffers[0] (4-byte aligned) as a new buffer view and
 /// returns its index. `target` 0 leaves the view without a target (animation data,
@@ -51,4 +51,4 @@ int addGltfSingleMeshScene(tinygltf::Model& model, const tinygltf::Primitive& pr
 void addGltfMorphStepAnimation(tinygltf::Model& model, const std::string& name, const std::vector<float>& times,
                                std::size_t firstTargetKey);
 
-} // namespace trimlab
+} // namespace trimlab::io

@@ -5,10 +5,11 @@
 #include <algorithm>
 #include <cmath>
 
-namespace trimlab::timeline {
+namespace trimlab::io {
 
 JsonPathError::JsonPathError(std::string path, std::string reason)
-    : std::runtime_error(path.empty() ? reason : path + ": " + reason), m_path(std::move(path)),
+    : std::runtime_error(path.empty() ? reason : path + ": " + reason),
+      m_path(std::move(path)),
       m_reason(std::move(reason))
 {
 }
@@ -26,15 +27,23 @@ std::string indexPath(const std::string& parent, std::size_t index)
 std::string jsonTypeText(const nlohmann::json& value)
 {
     switch (value.type()) {
-    case nlohmann::json::value_t::null: return "null";
-    case nlohmann::json::value_t::object: return "an object";
-    case nlohmann::json::value_t::array: return "an array";
-    case nlohmann::json::value_t::string: return "a string";
-    case nlohmann::json::value_t::boolean: return "a boolean";
+    case nlohmann::json::value_t::null:
+        return "null";
+    case nlohmann::json::value_t::object:
+        return "an object";
+    case nlohmann::json::value_t::array:
+        return "an array";
+    case nlohmann::json::value_t::string:
+        return "a string";
+    case nlohmann::json::value_t::boolean:
+        return "a boolean";
     case nlohmann::json::value_t::number_integer:
-    case nlohmann::json::value_t::number_unsigned: return "an integer";
-    case nlohmann::json::value_t::number_float: return "a number";
-    default: return "binary data";
+    case nlohmann::json::value_t::number_unsigned:
+        return "an integer";
+    case nlohmann::json::value_t::number_float:
+        return "a number";
+    default:
+        return "binary data";
     }
 }
 
@@ -198,4 +207,4 @@ std::string jsonSyntaxErrorText(const JsonSyntaxError& error)
            error.reason();
 }
 
-} // namespace trimlab::timeline
+} // namespace trimlab::io

@@ -1,9 +1,9 @@
 #pragma once
 /// \file
 /// Reading typed fields out of parsed JSON (nlohmann) with errors that name the JSON path
-/// of the offending value, e.g. `sets[0].strokes[2].radius: must be > 0`. Internal to
-/// core/timeline: the project file and stroke script readers turn JsonPathError into
-/// their own typed errors, adding the file name.
+/// of the offending value, e.g. `sets[0].strokes[2].radius: must be > 0`. For TrimLab's
+/// JSON document readers (projects, stroke scripts, skeletons, NURBS surfaces), which turn
+/// JsonPathError into their own DocumentFileError, adding the file name.
 
 #include <nlohmann/json.hpp>
 
@@ -16,7 +16,7 @@
 #include <string_view>
 #include <utility>
 
-namespace trimlab::timeline {
+namespace trimlab::io {
 
 /// A problem with the value at `path` ("" for the document itself).
 class JsonPathError : public std::runtime_error {
@@ -111,4 +111,4 @@ auto readJsonDocument(std::string_view text, const std::string& displayName, Rea
     }
 }
 
-} // namespace trimlab::timeline
+} // namespace trimlab::io

@@ -1,6 +1,6 @@
 #include "core/io/json_nesting.h"
 
-namespace trimlab {
+namespace trimlab::io {
 
 std::size_t jsonTooDeepAt(std::string_view json, std::size_t maxDepth)
 {
@@ -25,4 +25,4 @@ std::size_t jsonTooDeepAt(std::string_view json, std::size_t maxDepth)
     return std::string_view::npos;
 }
 
-} // namespace trimlab
+} // namespace trimlab::io

@@ -6,10 +6,10 @@
 #include <cstddef>
 #include <string_view>
 
-namespace trimlab {
+namespace trimlab::io {
 
 /// Offset of the first '[' or '{' nested deeper than `maxDepth` in `json` (brackets in
 /// strings are skipped), or std::string_view::npos when none is.
 [[nodiscard]] std::size_t jsonTooDeepAt(std::string_view json, std::size_t maxDepth);
 
-} // namespace trimlab
+} // namespace trimlab::io

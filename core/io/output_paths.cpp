@@ -6,7 +6,7 @@
 
 #include <unistd.h>
 
-namespace trimlab::timeline {
+namespace trimlab::io {
 
 namespace {
 
@@ -67,4 +67,4 @@ std::optional<std::string> checkOutputPaths(const std::vector<OutputRequest>& ou
     return std::nullopt;
 }
 
-} // namespace trimlab::timeline
+} // namespace trimlab::io

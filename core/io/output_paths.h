@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace trimlab::timeline {
+namespace trimlab::io {
 
 /// One requested output: the option that named it ("-o", "--depth") and the path given
 /// (empty: not requested).
@@ -25,4 +25,4 @@ struct OutputRequest {
 /// ".." and symbolic links of the folders). Never throws for any text.
 [[nodiscard]] std::optional<std::string> checkOutputPaths(const std::vector<OutputRequest>& outputs);
 
-} // namespace trimlab::timeline
+} // namespace trimlab::io

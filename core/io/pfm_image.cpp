@@ -10,7 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace trimlab {
+namespace trimlab::io {
 
 namespace {
 
@@ -48,7 +48,7 @@ void writePfm(const std::filesystem::path& path, const FloatImage& image)
         }
     }
     // A killed run leaves an earlier image whole (core/io/atomic_write.h).
-    timeline::writeFileAtomically(path, bytes);
+    writeFileAtomically(path, bytes);
 }
 
 FloatImage readPfm(const std::filesystem::path& path)
@@ -56,7 +56,7 @@ FloatImage readPfm(const std::filesystem::path& path)
     // Only a regular file of at most 1 GiB (core/io/file_bytes.h), parsed from memory.
     std::istringstream in;
     try {
-        in.str(timeline::readFileBytes(path, std::size_t(1) << 30));
+        in.str(readFileBytes(path, std::size_t(1) << 30));
     } catch (const std::runtime_error& e) {
         throw pfmError(path, e.what());
     }
@@ -88,4 +88,4 @@ FloatImage readPfm(const std::filesystem::path& path)
     return image;
 }
 
-} // namespace trimlab
+} // namespace trimlab::io

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace trimlab {
+namespace trimlab::io {
 
 /// width×height floats, row 0 at the top (the in-memory convention everywhere in TrimLab).
 struct FloatImage {
@@ -25,4 +25,4 @@ void writePfm(const std::filesystem::path& path, const FloatImage& image);
 /// and the problem (wrong magic, bad header, truncated data).
 [[nodiscard]] FloatImage readPfm(const std::filesystem::path& path);
 
-} // namespace trimlab
+} // namespace trimlab::io

@@ -4,7 +4,7 @@
 #include <string>
 #include <system_error>
 
-namespace trimlab::timeline {
+namespace trimlab::io {
 
 namespace {
 
@@ -57,4 +57,4 @@ std::vector<std::filesystem::path> removeStaleTemporaries(const std::filesystem:
     return removed;
 }
 
-} // namespace trimlab::timeline
+} // namespace trimlab::io

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <vector>
 
-namespace trimlab::timeline {
+namespace trimlab::io {
 
 /// True for the file name of a temporary that writeFileAtomically made for `target`
 /// (same folder assumed): exactly `<target name>.tmp-` followed by 6 of [a-z0-9].
@@ -28,4 +28,4 @@ std::vector<std::filesystem::path> removeStaleTemporaries(const std::filesystem:
 /// far longer than any save takes, so it only ever removes leftovers of killed saves.
 inline constexpr std::chrono::seconds kStaleTemporaryAge{600};
 
-} // namespace trimlab::timeline
+} // namespace trimlab::io

@@ -32,7 +32,9 @@ template <class T>
 class ByteCursor {
 public:
     ByteCursor(std::string_view data, std::size_t offset, std::endian order)
-        : m_data(data), m_pos(std::min(offset, data.size())), m_order(order) {}
+        : m_data(data), m_pos(std::min(offset, data.size())), m_order(order)
+    {
+    }
 
     [[nodiscard]] std::size_t offset() const { return m_pos; }
     [[nodiscard]] std::size_t remaining() const { return m_data.size() - m_pos; }

@@ -36,31 +36,35 @@ ElementRun locateRun(const tinygltf::Model& model, int viewIndex, std::size_t of
                      std::size_t elementSize, int accessor, const GltfReadContext& context)
 {
     if (viewIndex < 0 || static_cast<std::size_t>(viewIndex) >= model.bufferViews.size())
-        fail(context, accessor, "buffer view " + std::to_string(viewIndex) + " does not exist (the file has " +
-                                    std::to_string(model.bufferViews.size()) + ")");
+        fail(context, accessor,
+             "buffer view " + std::to_string(viewIndex) + " does not exist (the file has " +
+                 std::to_string(model.bufferViews.size()) + ")");
     const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(viewIndex)];
     if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size())
-        fail(context, accessor, "buffer view " + std::to_string(viewIndex) + " names buffer " +
-                                    std::to_string(view.buffer) + ", which does not exist");
+        fail(context, accessor,
+             "buffer view " + std::to_string(viewIndex) + " names buffer " + std::to_string(view.buffer) +
+                 ", which does not exist");
     const std::vector<unsigned char>& data = model.buffers[static_cast<std::size_t>(view.buffer)].data;
     if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
-        fail(context, accessor, "buffer view " + std::to_string(viewIndex) + " spans " +
-                                    rangeText(view.byteOffset, view.byteOffset + view.byteLength) + " of buffer " +
-                                    std::to_string(view.buffer) + ", which has only " + std::to_string(data.size()));
+        fail(context, accessor,
+             "buffer view " + std::to_string(viewIndex) + " spans " +
+                 rangeText(view.byteOffset, view.byteOffset + view.byteLength) + " of buffer " +
+                 std::to_string(view.buffer) + ", which has only " + std::to_string(data.size()));
     const std::size_t stride = view.byteStride == 0 ? elementSize : view.byteStride;
     if (stride < elementSize)
-        fail(context, accessor, "the byte stride " + std::to_string(stride) + " of buffer view " +
-                                    std::to_string(viewIndex) + " is smaller than an element (" +
-                                    std::to_string(elementSize) + " bytes)");
+        fail(context, accessor,
+             "the byte stride " + std::to_string(stride) + " of buffer view " + std::to_string(viewIndex) +
+                 " is smaller than an element (" + std::to_string(elementSize) + " bytes)");
     const std::size_t available = view.byteLength;
     if (count == 0)
         return {std::string_view(), stride};
     const bool fits = (offset <= available && elementSize <= available - offset &&
-                                     (count - 1) <= (available - offset - elementSize) / stride);
+                       (count - 1) <= (available - offset - elementSize) / stride);
     if (!fits)
-        fail(context, accessor, std::to_string(count) + " elements of " + std::to_string(elementSize) +
-                                    " bytes from byte offset " + std::to_string(offset) + " do not fit in buffer view " +
-                                    std::to_string(viewIndex) + " (" + std::to_string(available) + " bytes)");
+        fail(context, accessor,
+             std::to_string(count) + " elements of " + std::to_string(elementSize) + " bytes from byte offset " +
+                 std::to_string(offset) + " do not fit in buffer view " + std::to_string(viewIndex) + " (" +
+                 std::to_string(available) + " bytes)");
     const auto* base = reinterpret_cast<const char*>(data.data()) + view.byteOffset + offset;
     return {std::string_view(base, available - offset), stride};
 }
@@ -85,10 +89,14 @@ double readComponent(const char* p, int componentType, bool normalized)
         const double v = decodeScalar<std::uint16_t>(p, le);
         return normalized ? v / 65535.0 : v;
     }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return decodeScalar<std::uint32_t>(p, le);
-    case TINYGLTF_COMPONENT_TYPE_INT: return decodeScalar<std::int32_t>(p, le);
-    case TINYGLTF_COMPONENT_TYPE_DOUBLE: return decodeScalar<double>(p, le);
-    default: return decodeScalar<float>(p, le);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return decodeScalar<std::uint32_t>(p, le);
+    case TINYGLTF_COMPONENT_TYPE_INT:
+        return decodeScalar<std::int32_t>(p, le);
+    case TINYGLTF_COMPONENT_TYPE_DOUBLE:
+        return decodeScalar<double>(p, le);
+    default:
+        return decodeScalar<float>(p, le);
     }
 }
 
@@ -103,14 +111,22 @@ std::size_t totalBufferBytes(const tinygltf::Model& model)
 std::string typeName(int type)
 {
     switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-    case TINYGLTF_TYPE_VEC2: return "VEC2";
-    case TINYGLTF_TYPE_VEC3: return "VEC3";
-    case TINYGLTF_TYPE_VEC4: return "VEC4";
-    case TINYGLTF_TYPE_MAT2: return "MAT2";
-    case TINYGLTF_TYPE_MAT3: return "MAT3";
-    case TINYGLTF_TYPE_MAT4: return "MAT4";
-    default: return "type " + std::to_string(type);
+    case TINYGLTF_TYPE_SCALAR:
+        return "SCALAR";
+    case TINYGLTF_TYPE_VEC2:
+        return "VEC2";
+    case TINYGLTF_TYPE_VEC3:
+        return "VEC3";
+    case TINYGLTF_TYPE_VEC4:
+        return "VEC4";
+    case TINYGLTF_TYPE_MAT2:
+        return "MAT2";
+    case TINYGLTF_TYPE_MAT3:
+        return "MAT3";
+    case TINYGLTF_TYPE_MAT4:
+        return "MAT4";
+    default:
+        return "type " + std::to_string(type);
     }
 }
 
@@ -118,15 +134,17 @@ const tinygltf::Accessor& checkedAccessor(const tinygltf::Model& model, int acce
                                           const GltfReadContext& context)
 {
     if (accessor < 0 || static_cast<std::size_t>(accessor) >= model.accessors.size())
-        fail(context, accessor, "does not exist (the file has " + std::to_string(model.accessors.size()) + " accessors)");
+        fail(context, accessor,
+             "does not exist (the file has " + std::to_string(model.accessors.size()) + " accessors)");
     const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(accessor)];
     if (a.type != expectedType)
         fail(context, accessor, "has the wrong type; expected " + typeName(expectedType));
     if (tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType)) <= 0)
         fail(context, accessor, "has an unknown component type " + std::to_string(a.componentType));
     if (a.bufferView < 0 && a.count > std::max<std::size_t>(totalBufferBytes(model), 1u << 20))
-        fail(context, accessor, "declares " + std::to_string(a.count) +
-                                    " elements but no data (no buffer view); refusing to allocate them");
+        fail(context, accessor,
+             "declares " + std::to_string(a.count) +
+                 " elements but no data (no buffer view); refusing to allocate them");
     return a;
 }
 
@@ -149,8 +167,9 @@ void applySparse(const tinygltf::Model& model, const tinygltf::Accessor& a, int 
     for (std::size_t i = 0; i < count; ++i) {
         const double target = readComponent(indices.bytes.data() + i * std::size_t(indexSize), indexType, false);
         if (target < 0.0 || target >= static_cast<double>(a.count))
-            fail(context, accessor, "sparse index " + std::to_string(static_cast<long long>(target)) +
-                                        " is out of range (the accessor has " + std::to_string(a.count) + " elements)");
+            fail(context, accessor,
+                 "sparse index " + std::to_string(static_cast<long long>(target)) +
+                     " is out of range (the accessor has " + std::to_string(a.count) + " elements)");
         for (int c = 0; c < components; ++c)
             values[static_cast<std::size_t>(target) * std::size_t(components) + std::size_t(c)] =
                 readComponent(sparseValues.bytes.data() + i * componentSize * std::size_t(components) +
@@ -212,8 +231,9 @@ std::vector<double> readGltfNumbers(const tinygltf::Model& model, int accessor, 
     std::vector<double> values = readComponents(model, a, accessor, components, context);
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (!std::isfinite(values[i]))
-            fail(context, accessor, "element " + std::to_string(i / std::size_t(components)) + " is not finite (" +
-                                        describeNonFinite(values[i]) + ")");
+            fail(context, accessor,
+                 "element " + std::to_string(i / std::size_t(components)) + " is not finite (" +
+                     describeNonFinite(values[i]) + ")");
     }
     return values;
 }
@@ -225,8 +245,8 @@ std::vector<std::uint32_t> readGltfIndices(const tinygltf::Model& model, int acc
     if (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
         a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
         a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-        fail(context, accessor, "indices must be unsigned bytes, shorts or ints (component type " +
-                                    std::to_string(a.componentType) + ")");
+        fail(context, accessor,
+             "indices must be unsigned bytes, shorts or ints (component type " + std::to_string(a.componentType) + ")");
     if (a.normalized)
         fail(context, accessor, "indices must not be normalized");
     const std::vector<double> values = readComponents(model, a, accessor, 1, context);
@@ -234,9 +254,9 @@ std::vector<std::uint32_t> readGltfIndices(const tinygltf::Model& model, int acc
     indices.reserve(values.size());
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (values[i] >= static_cast<double>(vertexCount))
-            fail(context, accessor, "index " + std::to_string(static_cast<std::uint64_t>(values[i])) + " (element " +
-                                        std::to_string(i) + ") is out of range; the primitive has only " +
-                                        countNoun(vertexCount, "vertex", "vertices"));
+            fail(context, accessor,
+                 "index " + std::to_string(static_cast<std::uint64_t>(values[i])) + " (element " + std::to_string(i) +
+                     ") is out of range; the primitive has only " + countNoun(vertexCount, "vertex", "vertices"));
         indices.push_back(static_cast<std::uint32_t>(values[i]));
     }
     return indices;

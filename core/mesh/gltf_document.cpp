@@ -26,16 +26,16 @@ bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, i
 /// from inside the asset's own folder.
 struct FileAccess {
     bool allowed = false;
-    std::string base;              ///< the folder as handed to tinygltf (it joins URIs to it)
-    std::filesystem::path folder;  ///< the same folder, canonical
+    std::string base;             ///< the folder as handed to tinygltf (it joins URIs to it)
+    std::filesystem::path folder; ///< the same folder, canonical
 };
 
 bool isImagePath(const std::string& path)
 {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    static const std::array<std::string_view, 9> images = {".png", ".jpg", ".jpeg", ".ktx2", ".webp",
-                                                           ".basis", ".dds", ".bmp", ".gif"};
+    static const std::array<std::string_view, 9> images = {".png",   ".jpg", ".jpeg", ".ktx2", ".webp",
+                                                           ".basis", ".dds", ".bmp",  ".gif"};
     return std::find(images.begin(), images.end(), ext) != images.end();
 }
 
@@ -52,8 +52,8 @@ std::string uriOf(const std::string& path, const FileAccess& access)
 std::string containmentProblem(const std::string& path, const FileAccess& access)
 {
     const std::string uri = uriOf(path, access);
-    if (const std::size_t colon = uri.find(':'); colon != std::string::npos && colon > 1 &&
-                                                 uri.find_first_of("/\\") > colon)
+    if (const std::size_t colon = uri.find(':');
+        colon != std::string::npos && colon > 1 && uri.find_first_of("/\\") > colon)
         return "it names the URI scheme '" + uri.substr(0, colon) + ":'; only files inside the asset's folder are read";
     if (uri.starts_with('/') || uri.starts_with('\\'))
         return "it is an absolute path; only files inside the asset's folder are read";
@@ -72,7 +72,7 @@ bool fileExists(const std::string& path, void* user)
     const FileAccess& access = *static_cast<FileAccess*>(user);
     if (!access.allowed || !containmentProblem(path, access).empty())
         return true; // let readWholeFile refuse it with a clear message
-    return !isImagePath(path) && timeline::regularFileProblem(path).empty();
+    return !isImagePath(path) && io::regularFileProblem(path).empty();
 }
 
 std::string expandFilePath(const std::string& path, void*)
@@ -97,7 +97,7 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
         return false;
     }
     try {
-        const std::string bytes = timeline::readFileBytes(path, std::size_t(2) << 30);
+        const std::string bytes = io::readFileBytes(path, std::size_t(2) << 30);
         out->assign(bytes.begin(), bytes.end());
     } catch (const std::runtime_error& e) {
         if (err)
@@ -164,8 +164,8 @@ bool isAttributeSemantic(std::string_view key)
 std::string firstNegativeIndex(std::string_view json)
 {
     static constexpr std::array<std::string_view, 19> kKeys = {
-        "byteOffset", "byteLength", "byteStride", "count",  "bufferView", "buffer", "scene",
-        "mesh",       "skin",       "camera",     "material", "source",   "sampler", "input",
+        "byteOffset", "byteLength", "byteStride", "count",    "bufferView", "buffer",  "scene",
+        "mesh",       "skin",       "camera",     "material", "source",     "sampler", "input",
         "output",     "indices",    "node",       "texCoord", "skeleton"};
     std::string_view key;
     for (std::size_t i = 0; i < json.size(); ++i) {
@@ -207,9 +207,11 @@ tinygltf::Model parseModel(std::string_view bytes, const std::string& name, cons
     const bool binary = hasGlbMagic(bytes);
     if (binary)
         checkGlbHeader(bytes, name);
-    else if (bytes.find_first_not_of(" \t\r\n") == std::string_view::npos || bytes[bytes.find_first_not_of(" \t\r\n")] != '{')
-        throw MeshLoadError(name, "not a glTF file: neither JSON (starting with '{') nor binary glTF (starting with 'glTF')");
-    if (jsonTooDeepAt(jsonPart(bytes, binary), kMaxJsonNesting) != std::string_view::npos)
+    else if (bytes.find_first_not_of(" \t\r\n") == std::string_view::npos ||
+             bytes[bytes.find_first_not_of(" \t\r\n")] != '{')
+        throw MeshLoadError(name,
+                            "not a glTF file: neither JSON (starting with '{') nor binary glTF (starting with 'glTF')");
+    if (io::jsonTooDeepAt(jsonPart(bytes, binary), kMaxJsonNesting) != std::string_view::npos)
         throw MeshLoadError(name, "invalid glTF: the JSON is nested more than " + std::to_string(kMaxJsonNesting) +
                                       " levels deep");
     if (const std::string negative = firstNegativeIndex(jsonPart(bytes, binary)); !negative.empty())
@@ -232,8 +234,8 @@ tinygltf::Model parseModel(std::string_view bytes, const std::string& name, cons
     const auto size = static_cast<unsigned int>(bytes.size());
     try {
         if (binary)
-            ok = loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                             size, baseDir.string());
+            ok = loader.LoadBinaryFromMemory(
+                &model, &error, &warning, reinterpret_cast<const unsigned char*>(bytes.data()), size, baseDir.string());
         else
             ok = loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), size, baseDir.string());
     } catch (const std::exception& e) {

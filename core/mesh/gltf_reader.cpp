@@ -40,11 +40,13 @@ std::vector<int> sceneRoots(const tinygltf::Model& model, const std::string& nam
     return roots;
 }
 
-void requireSize(const std::vector<double>& values, std::size_t size, const char* what, int node, const std::string& name)
+void requireSize(const std::vector<double>& values, std::size_t size, const char* what, int node,
+                 const std::string& name)
 {
     if (!values.empty() && values.size() != size)
-        throw MeshLoadError(name, std::string("'") + what + "' must have " + std::to_string(size) + " numbers, not " +
-                                      std::to_string(values.size()),
+        throw MeshLoadError(name,
+                            std::string("'") + what + "' must have " + std::to_string(size) + " numbers, not " +
+                                std::to_string(values.size()),
                             {.line = 0, .element = "node " + std::to_string(node)});
 }
 
@@ -63,7 +65,8 @@ glm::dmat4 localMatrix(const tinygltf::Node& node, int index, const std::string&
         const auto& r = node.rotation;
         const glm::dquat q(r[3], r[0], r[1], r[2]); // glTF stores x, y, z, w
         if (!(glm::length(q) > 0.0))
-            throw MeshLoadError(name, "the rotation quaternion is zero", {.line = 0, .element = "node " + std::to_string(index)});
+            throw MeshLoadError(name, "the rotation quaternion is zero",
+                                {.line = 0, .element = "node " + std::to_string(index)});
         m *= glm::mat4_cast(glm::normalize(q));
     }
     if (!node.scale.empty())
@@ -77,8 +80,9 @@ std::vector<glm::uvec3> assembleTriangles(int mode, const std::vector<std::uint3
     std::vector<glm::uvec3> triangles;
     if (mode == TINYGLTF_MODE_TRIANGLES) {
         if (v.size() % 3 != 0)
-            throw MeshLoadError(context.displayName, "a TRIANGLES primitive has " + std::to_string(v.size()) +
-                                                         " indices, which is not a multiple of 3",
+            throw MeshLoadError(context.displayName,
+                                "a TRIANGLES primitive has " + std::to_string(v.size()) +
+                                    " indices, which is not a multiple of 3",
                                 {.line = 0, .element = context.element});
         triangles.reserve(v.size() / 3);
         for (std::size_t i = 0; i + 2 < v.size(); i += 3)
@@ -116,8 +120,9 @@ void SceneCollector::addNode(int index, const glm::dmat4& world)
     if (meshIndex < 0)
         return;
     if (static_cast<std::size_t>(meshIndex) >= m_model.meshes.size())
-        throw MeshLoadError(m_name, "the node references mesh " + std::to_string(meshIndex) + ", but the file has " +
-                                        countNoun(m_model.meshes.size(), "mesh", "meshes"),
+        throw MeshLoadError(m_name,
+                            "the node references mesh " + std::to_string(meshIndex) + ", but the file has " +
+                                countNoun(m_model.meshes.size(), "mesh", "meshes"),
                             {.line = 0, .element = "node " + std::to_string(index)});
     const auto mesh = static_cast<std::size_t>(meshIndex);
     for (std::size_t p = 0; p < m_model.meshes[mesh].primitives.size(); ++p)
@@ -133,7 +138,9 @@ void SceneCollector::addPrimitive(std::size_t mesh, std::size_t primitive, const
         ++m_skippedPrimitives;
         return;
     }
-    auto fail = [&](const std::string& reason) { throw MeshLoadError(m_name, reason, {.line = 0, .element = context.element}); };
+    auto fail = [&](const std::string& reason) {
+        throw MeshLoadError(m_name, reason, {.line = 0, .element = context.element});
+    };
     if (mode > TINYGLTF_MODE_TRIANGLE_FAN)
         fail("unknown primitive mode " + std::to_string(mode));
     if (prim.extensions.count("KHR_draco_mesh_compression"))
@@ -191,8 +198,9 @@ TriangleMesh collectScene(const tinygltf::Model& model, const std::string& name)
                                           countNoun(model.nodes.size(), "node", "nodes") + ")");
         const auto index = static_cast<std::size_t>(next.node);
         if (visited[index])
-            throw MeshLoadError(name, "node " + std::to_string(next.node) +
-                                          " is reached twice; glTF node hierarchies must be trees (no cycles or shared children)");
+            throw MeshLoadError(
+                name, "node " + std::to_string(next.node) +
+                          " is reached twice; glTF node hierarchies must be trees (no cycles or shared children)");
         visited[index] = 1;
         const glm::dmat4 world = next.parentWorld * localMatrix(model.nodes[index], next.node, name);
         collector.addNode(next.node, world);

@@ -43,13 +43,11 @@ bool allZero(std::string_view bytes)
 
 // Makes room for more output, never beyond maxOutputBytes + 1 (one byte past the cap is
 // how we notice the cap is exceeded).
-void growOutput(std::string& out, std::size_t produced, std::size_t maxOutputBytes,
-                const std::string& displayName)
+void growOutput(std::string& out, std::size_t produced, std::size_t maxOutputBytes, const std::string& displayName)
 {
     const std::size_t limit = maxOutputBytes == SIZE_MAX ? SIZE_MAX : maxOutputBytes + 1;
     if (produced > maxOutputBytes || out.size() >= limit)
-        throw MeshLoadError(displayName, "the gzip data decompresses to more than " +
-                                             formatBytes(maxOutputBytes) +
+        throw MeshLoadError(displayName, "the gzip data decompresses to more than " + formatBytes(maxOutputBytes) +
                                              ", the limit for a mesh file; is it really a mesh?");
     const std::size_t wanted = std::max<std::size_t>(out.size() * 2, std::size_t(1) << 16);
     out.resize(std::min(wanted, limit));
@@ -92,14 +90,13 @@ std::string gunzip(std::string_view compressed, const std::string& displayName, 
             if (unread == 0 || allZero(rest))
                 break;
             if (!hasGzipMagic(rest))
-                throw MeshLoadError(displayName, "unexpected " + std::to_string(unread) +
-                                                     " bytes after the end of the gzip data");
+                throw MeshLoadError(displayName,
+                                    "unexpected " + std::to_string(unread) + " bytes after the end of the gzip data");
             inflateReset(zs); // another gzip member follows
             continue;
         }
         if (status == Z_BUF_ERROR && unread == 0)
-            throw MeshLoadError(displayName, "truncated gzip data: it ends after " +
-                                                 std::to_string(produced) +
+            throw MeshLoadError(displayName, "truncated gzip data: it ends after " + std::to_string(produced) +
                                                  " decompressed bytes; the file is incomplete");
         if (status == Z_DATA_ERROR || status == Z_NEED_DICT || status == Z_STREAM_ERROR)
             throw MeshLoadError(displayName, std::string("corrupt gzip data (") +

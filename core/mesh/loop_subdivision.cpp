@@ -42,9 +42,8 @@ void requireSubdividable(const TriangleMesh& mesh, int levels)
                                     std::to_string(kMaxSubdividedTriangles) + "); use fewer levels");
     // About 160 bytes per final triangle: its indices and half a vertex in the result, the
     // double-precision points of every level and OpenSubdiv's refined topology.
-    requireMemory(std::uint64_t(triangles) * 160, "Loop subdivision to " + std::to_string(std::llround(triangles)) +
-                                                      " triangles",
-                  "use fewer levels");
+    requireMemory(std::uint64_t(triangles) * 160,
+                  "Loop subdivision to " + std::to_string(std::llround(triangles)) + " triangles", "use fewer levels");
     for (std::size_t f = 0; f < mesh.triangleCount(); ++f) {
         const glm::uvec3& t = mesh.triangles[f];
         if (t.x >= mesh.vertexCount() || t.y >= mesh.vertexCount() || t.z >= mesh.vertexCount())

@@ -93,9 +93,10 @@ std::string gltfBytes(const TriangleMesh& mesh, std::string_view comment, bool b
     model.buffers.emplace_back();
     tinygltf::Primitive primitive;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
-    primitive.attributes["POSITION"] = addGltfVec3Accessor(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-    primitive.indices = addGltfTriangleIndices(model, mesh.triangles);
-    addGltfSingleMeshScene(model, primitive, "trimmed solid");
+    primitive.attributes["POSITION"] =
+        io::addGltfVec3Accessor(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    primitive.indices = io::addGltfTriangleIndices(model, mesh.triangles);
+    io::addGltfSingleMeshScene(model, primitive, "trimmed solid");
     std::ostringstream out;
     tinygltf::TinyGLTF writer;
     if (!writer.WriteGltfSceneToStream(&model, out, !binary, binary))
@@ -130,7 +131,7 @@ void saveTriangleMesh(const std::filesystem::path& path, const TriangleMesh& mes
     const std::string bytes = ext == ".ply"   ? plyBytes(mesh, comment)
                               : ext == ".stl" ? stlBytes(mesh, comment)
                                               : gltfBytes(mesh, comment, ext == ".glb");
-    timeline::writeFileAtomically(path, bytes);
+    io::writeFileAtomically(path, bytes);
 }
 
 } // namespace trimlab

@@ -99,11 +99,16 @@ TriangleMesh readFormat(MeshFormat format, std::string_view bytes, const std::st
                         const std::filesystem::path& baseDir)
 {
     switch (format) {
-    case MeshFormat::Obj: return readObj(bytes, displayName);
-    case MeshFormat::Off: return readOff(bytes, displayName);
-    case MeshFormat::Ply: return readPly(bytes, displayName);
-    case MeshFormat::Stl: return readStl(bytes, displayName);
-    case MeshFormat::Gltf: return readGltf(bytes, displayName, baseDir);
+    case MeshFormat::Obj:
+        return readObj(bytes, displayName);
+    case MeshFormat::Off:
+        return readOff(bytes, displayName);
+    case MeshFormat::Ply:
+        return readPly(bytes, displayName);
+    case MeshFormat::Stl:
+        return readStl(bytes, displayName);
+    case MeshFormat::Gltf:
+        return readGltf(bytes, displayName, baseDir);
     }
     throw MeshLoadError(displayName, "internal error: unknown mesh format");
 }
@@ -143,7 +148,7 @@ std::string readMeshInputFile(const std::filesystem::path& path, const std::stri
 {
     // Only regular files, checked before anything is opened: a FIFO would block and a
     // device like /dev/zero would never end (core/io/file_bytes.h).
-    const std::string problem = timeline::regularFileProblem(path);
+    const std::string problem = io::regularFileProblem(path);
     if (problem == std::strerror(ENOENT))
         throw MeshLoadError(displayName, "cannot open the file: it does not exist");
     if (!problem.empty())
@@ -154,7 +159,7 @@ std::string readMeshInputFile(const std::filesystem::path& path, const std::stri
         throw MeshLoadError(displayName, "the file has " + std::to_string(size) +
                                              " bytes, more than the 2 GiB a mesh file may have");
     try {
-        return timeline::readFileBytes(path, kMaxMeshInputBytes);
+        return io::readFileBytes(path, kMaxMeshInputBytes);
     } catch (const std::runtime_error& e) {
         throw MeshLoadError(displayName, e.what());
     }

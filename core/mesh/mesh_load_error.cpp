@@ -4,8 +4,7 @@ namespace trimlab {
 
 namespace {
 
-std::string composeMessage(const std::string& file, const std::string& reason,
-                           const MeshErrorLocation& where)
+std::string composeMessage(const std::string& file, const std::string& reason, const MeshErrorLocation& where)
 {
     std::string text = file;
     if (where.line > 0)
@@ -19,10 +18,10 @@ std::string composeMessage(const std::string& file, const std::string& reason,
 } // namespace
 
 MeshLoadError::MeshLoadError(std::string file, std::string reason, MeshErrorLocation where)
-    : std::runtime_error(composeMessage(file, reason, where))
-    , m_file(std::move(file))
-    , m_reason(std::move(reason))
-    , m_where(std::move(where))
+    : std::runtime_error(composeMessage(file, reason, where)),
+      m_file(std::move(file)),
+      m_reason(std::move(reason)),
+      m_where(std::move(where))
 {
 }
 

@@ -53,15 +53,15 @@ struct MeshValidationReport {
     std::size_t componentCount = 0; ///< face-connected pieces (faces sharing a vertex are connected)
     Bounds bounds;                  ///< of the finite vertices
 
-    DefectSamples<std::size_t> outOfRangeFaces;           ///< faces with an index ≥ #V
-    DefectSamples<std::uint32_t> nonFiniteVertices;       ///< NaN or infinite coordinates
-    DefectSamples<std::size_t> degenerateFaces;           ///< a repeated index or zero area
-    DefectSamples<std::uint32_t> unreferencedVertices;    ///< used by no valid face
-    DefectSamples<MeshEdge> boundaryEdges;                ///< used by exactly one face
-    DefectSamples<MeshEdge> nonManifoldEdges;             ///< used by more than two faces
-    DefectSamples<MeshEdge> inconsistentEdges;            ///< two faces, both in the same direction
-    DefectSamples<MeshEdge> unbalancedEdges;              ///< used more often in one direction than the other
-    DefectSamples<std::uint32_t> nonManifoldVertices;     ///< faces around it form more than one fan
+    DefectSamples<std::size_t> outOfRangeFaces;        ///< faces with an index ≥ #V
+    DefectSamples<std::uint32_t> nonFiniteVertices;    ///< NaN or infinite coordinates
+    DefectSamples<std::size_t> degenerateFaces;        ///< a repeated index or zero area
+    DefectSamples<std::uint32_t> unreferencedVertices; ///< used by no valid face
+    DefectSamples<MeshEdge> boundaryEdges;             ///< used by exactly one face
+    DefectSamples<MeshEdge> nonManifoldEdges;          ///< used by more than two faces
+    DefectSamples<MeshEdge> inconsistentEdges;         ///< two faces, both in the same direction
+    DefectSamples<MeshEdge> unbalancedEdges;           ///< used more often in one direction than the other
+    DefectSamples<std::uint32_t> nonManifoldVertices;  ///< faces around it form more than one fan
 
     /// V − E + F over referenced vertices and valid faces; set only for closed manifolds.
     std::optional<std::int64_t> eulerCharacteristic;

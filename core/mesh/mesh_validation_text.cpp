@@ -33,9 +33,10 @@ std::string unbalancedReason(const DefectSamples<MeshEdge>& edges)
 {
     const MeshEdge& e = edges.first.front();
     return "Trimming needs every edge to be used equally often in both directions: " +
-           countNoun(edges.count, "edge is", "edges are") + " not (" + firstEdge(edges) + ", used " +
-           times(e.forward) + " from " + std::to_string(e.a) + " to " + std::to_string(e.b) + " and " +
-           (e.backward == 0 ? "never" : times(e.backward)) + " back). Remove the extra faces or fix their "
+           countNoun(edges.count, "edge is", "edges are") + " not (" + firstEdge(edges) + ", used " + times(e.forward) +
+           " from " + std::to_string(e.a) + " to " + std::to_string(e.b) + " and " +
+           (e.backward == 0 ? "never" : times(e.backward)) +
+           " back). Remove the extra faces or fix their "
            "orientation to use the trim modes.";
 }
 
@@ -99,9 +100,9 @@ std::string MeshValidationReport::trimUnavailableReason() const
                " vertices that do not exist (" + firstItem(outOfRangeFaces, "face") +
                "). Repair or re-export the mesh to use the trim modes.";
     if (nonFiniteVertices.any())
-        return "Trimming needs finite coordinates: " + countNoun(nonFiniteVertices.count, "vertex has", "vertices have") +
-               " NaN or infinite coordinates (" + firstItem(nonFiniteVertices, "vertex") +
-               "). Repair or remove them to use the trim modes.";
+        return "Trimming needs finite coordinates: " +
+               countNoun(nonFiniteVertices.count, "vertex has", "vertices have") + " NaN or infinite coordinates (" +
+               firstItem(nonFiniteVertices, "vertex") + "). Repair or remove them to use the trim modes.";
     if (boundaryEdges.any())
         return "Trimming needs a closed surface: " + countNoun(boundaryEdges.count, "boundary edge", "boundary edges") +
                " (" + firstEdge(boundaryEdges) +
@@ -131,9 +132,10 @@ std::string formatReport(const MeshValidationReport& report, const std::string& 
     const char* notClosedManifold = "n/a (not a closed manifold)";
     writeLine(out, "Euler characteristic",
               report.eulerCharacteristic ? std::to_string(*report.eulerCharacteristic) : notClosedManifold);
-    writeLine(out, "genus", report.genus ? std::to_string(*report.genus)
-                                         : report.eulerCharacteristic ? "n/a (inconsistent orientation)"
-                                                                      : notClosedManifold);
+    writeLine(out, "genus",
+              report.genus                 ? std::to_string(*report.genus)
+              : report.eulerCharacteristic ? "n/a (inconsistent orientation)"
+                                           : notClosedManifold);
     std::ostringstream volume;
     volume << std::setprecision(6) << report.signedVolume;
     writeLine(out, "signed volume", volume.str() + (report.closed() ? "" : " (not closed: not meaningful)"));

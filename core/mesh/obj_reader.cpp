@@ -51,9 +51,10 @@ TriangleMesh ObjParser::finish()
     for (std::size_t p = 0; p < m_soup.polygonCount(); ++p) {
         for (const std::uint32_t index : m_soup.polygon(p)) {
             if (index >= m_positions.size())
-                throw MeshLoadError(name(), "face " + std::to_string(p + 1) + " references vertex " +
-                                                std::to_string(std::uint64_t(index) + 1) + ", but " +
-                                                vertexCountPhrase(m_positions.size(), false),
+                throw MeshLoadError(name(),
+                                    "face " + std::to_string(p + 1) + " references vertex " +
+                                        std::to_string(std::uint64_t(index) + 1) + ", but " +
+                                        vertexCountPhrase(m_positions.size(), false),
                                     {.line = m_faceLines[p], .element = {}});
         }
     }

@@ -45,9 +45,8 @@ std::string meshObjText(const TriangleMesh& mesh, std::span<const glm::vec3> nor
     char line[96];
     for (const glm::uvec3& t : mesh.triangles) {
         const unsigned a = t.x + 1, b = t.y + 1, c = t.z + 1;
-        const int n = normals.empty()
-                          ? std::snprintf(line, sizeof line, "f %u %u %u\n", a, b, c)
-                          : std::snprintf(line, sizeof line, "f %u//%u %u//%u %u//%u\n", a, a, b, b, c, c);
+        const int n = normals.empty() ? std::snprintf(line, sizeof line, "f %u %u %u\n", a, b, c)
+                                      : std::snprintf(line, sizeof line, "f %u//%u %u//%u %u//%u\n", a, a, b, b, c, c);
         out.append(line, std::size_t(n));
     }
     return out;
@@ -56,7 +55,7 @@ std::string meshObjText(const TriangleMesh& mesh, std::span<const glm::vec3> nor
 void saveMeshObj(const std::filesystem::path& path, const TriangleMesh& mesh, std::span<const glm::vec3> normals,
                  std::string_view comment)
 {
-    timeline::writeFileAtomically(path, meshObjText(mesh, normals, comment));
+    io::writeFileAtomically(path, meshObjText(mesh, normals, comment));
 }
 
 } // namespace trimlab

@@ -148,7 +148,8 @@ void OffParser::parseFace(std::size_t f)
     if (!parseInteger(token, n))
         fail("'" + std::string(token) + "' is not a vertex count", "face " + std::to_string(f));
     if (n < 3)
-        fail("the face has " + countNoun(static_cast<std::uint64_t>(std::max<std::int64_t>(n, 0)), "vertex", "vertices") +
+        fail("the face has " +
+                 countNoun(static_cast<std::uint64_t>(std::max<std::int64_t>(n, 0)), "vertex", "vertices") +
                  "; a face needs at least 3",
              "face " + std::to_string(f));
     for (std::int64_t i = 0; i < n; ++i) {

@@ -14,14 +14,22 @@ namespace {
 std::optional<PlyScalarType> scalarTypeFromName(std::string_view name)
 {
     static constexpr std::array<std::pair<std::string_view, PlyScalarType>, 16> names = {{
-        {"char", PlyScalarType::Int8},     {"int8", PlyScalarType::Int8},
-        {"uchar", PlyScalarType::UInt8},   {"uint8", PlyScalarType::UInt8},
-        {"short", PlyScalarType::Int16},   {"int16", PlyScalarType::Int16},
-        {"ushort", PlyScalarType::UInt16}, {"uint16", PlyScalarType::UInt16},
-        {"int", PlyScalarType::Int32},     {"int32", PlyScalarType::Int32},
-        {"uint", PlyScalarType::UInt32},   {"uint32", PlyScalarType::UInt32},
-        {"float", PlyScalarType::Float32}, {"float32", PlyScalarType::Float32},
-        {"double", PlyScalarType::Float64}, {"float64", PlyScalarType::Float64},
+        {"char", PlyScalarType::Int8},
+        {"int8", PlyScalarType::Int8},
+        {"uchar", PlyScalarType::UInt8},
+        {"uint8", PlyScalarType::UInt8},
+        {"short", PlyScalarType::Int16},
+        {"int16", PlyScalarType::Int16},
+        {"ushort", PlyScalarType::UInt16},
+        {"uint16", PlyScalarType::UInt16},
+        {"int", PlyScalarType::Int32},
+        {"int32", PlyScalarType::Int32},
+        {"uint", PlyScalarType::UInt32},
+        {"uint32", PlyScalarType::UInt32},
+        {"float", PlyScalarType::Float32},
+        {"float32", PlyScalarType::Float32},
+        {"double", PlyScalarType::Float64},
+        {"float64", PlyScalarType::Float64},
     }};
     for (const auto& [text, type] : names) {
         if (text == name)
@@ -33,8 +41,7 @@ std::optional<PlyScalarType> scalarTypeFromName(std::string_view name)
 // Parses the header statements line by line into a PlyHeader.
 class HeaderParser {
 public:
-    HeaderParser(const std::string& displayName, PlyHeader& header)
-        : m_name(displayName), m_header(header) {}
+    HeaderParser(const std::string& displayName, PlyHeader& header) : m_name(displayName), m_header(header) {}
 
     void parseLine(std::string_view line, std::size_t lineNumber);
     [[nodiscard]] bool sawFormat() const { return m_sawFormat; }
@@ -160,13 +167,17 @@ std::size_t plyScalarSize(PlyScalarType type)
 {
     switch (type) {
     case PlyScalarType::Int8:
-    case PlyScalarType::UInt8: return 1;
+    case PlyScalarType::UInt8:
+        return 1;
     case PlyScalarType::Int16:
-    case PlyScalarType::UInt16: return 2;
+    case PlyScalarType::UInt16:
+        return 2;
     case PlyScalarType::Int32:
     case PlyScalarType::UInt32:
-    case PlyScalarType::Float32: return 4;
-    case PlyScalarType::Float64: return 8;
+    case PlyScalarType::Float32:
+        return 4;
+    case PlyScalarType::Float64:
+        return 8;
     }
     return 0;
 }
@@ -214,7 +225,8 @@ PlyHeader parsePlyHeader(std::string_view bytes, const std::string& displayName)
         }
         parser.parseLine(line, lines.lineNumber());
     }
-    throw MeshLoadError(displayName, "the PLY header has no 'end_header' line; the file is truncated or not a PLY file");
+    throw MeshLoadError(displayName,
+                        "the PLY header has no 'end_header' line; the file is truncated or not a PLY file");
 }
 
 } // namespace trimlab

@@ -40,13 +40,15 @@ void findCoordinates(const PlyElement& vertex, PlyLayout& layout, const std::str
     for (int c = 0; c < 3; ++c) {
         layout.coordinate[c] = vertex.findProperty(names[c]);
         if (layout.coordinate[c] < 0 || vertex.properties[layout.coordinate[c]].isList)
-            throw MeshLoadError(displayName, std::string("the vertex element has no scalar property '") +
-                                                 names[c] + "'; vertices need x, y and z",
+            throw MeshLoadError(displayName,
+                                std::string("the vertex element has no scalar property '") + names[c] +
+                                    "'; vertices need x, y and z",
                                 {.line = vertex.headerLine, .element = {}});
     }
     if (vertex.count > kMaxMeshVertices)
-        throw MeshLoadError(displayName, "the header declares " + std::to_string(vertex.count) +
-                                             " vertices; at most 4294967295 are supported",
+        throw MeshLoadError(displayName,
+                            "the header declares " + std::to_string(vertex.count) +
+                                " vertices; at most 4294967295 are supported",
                             {.line = vertex.headerLine, .element = {}});
 }
 
@@ -76,8 +78,11 @@ class PlyBodyReader {
 public:
     PlyBodyReader(std::string_view bytes, const PlyHeader& header, const PlyLayout& layout,
                   const std::string& displayName)
-        : m_header(header), m_layout(layout), m_name(displayName), m_source(bytes, header)
-        , m_vertexCount(header.elements[layout.vertexElement].count)
+        : m_header(header),
+          m_layout(layout),
+          m_name(displayName),
+          m_source(bytes, header),
+          m_vertexCount(header.elements[layout.vertexElement].count)
     {
     }
 

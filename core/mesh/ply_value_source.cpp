@@ -24,9 +24,9 @@ PlyValueSource::Status readAs(ByteCursor& cursor, double& value)
 } // namespace
 
 PlyValueSource::PlyValueSource(std::string_view bytes, const PlyHeader& header)
-    : m_ascii(header.encoding == PlyEncoding::Ascii)
-    , m_tokens(bytes.substr(std::min(header.dataOffset, bytes.size())), header.lineCount + 1)
-    , m_cursor(bytes, header.dataOffset, byteOrder(header.encoding))
+    : m_ascii(header.encoding == PlyEncoding::Ascii),
+      m_tokens(bytes.substr(std::min(header.dataOffset, bytes.size())), header.lineCount + 1),
+      m_cursor(bytes, header.dataOffset, byteOrder(header.encoding))
 {
 }
 
@@ -50,14 +50,22 @@ PlyValueSource::Status PlyValueSource::readBinary(PlyScalarType type, double& va
 {
     m_valueOffset = m_cursor.offset();
     switch (type) {
-    case PlyScalarType::Int8: return readAs<std::int8_t>(m_cursor, value);
-    case PlyScalarType::UInt8: return readAs<std::uint8_t>(m_cursor, value);
-    case PlyScalarType::Int16: return readAs<std::int16_t>(m_cursor, value);
-    case PlyScalarType::UInt16: return readAs<std::uint16_t>(m_cursor, value);
-    case PlyScalarType::Int32: return readAs<std::int32_t>(m_cursor, value);
-    case PlyScalarType::UInt32: return readAs<std::uint32_t>(m_cursor, value);
-    case PlyScalarType::Float32: return readAs<float>(m_cursor, value);
-    case PlyScalarType::Float64: return readAs<double>(m_cursor, value);
+    case PlyScalarType::Int8:
+        return readAs<std::int8_t>(m_cursor, value);
+    case PlyScalarType::UInt8:
+        return readAs<std::uint8_t>(m_cursor, value);
+    case PlyScalarType::Int16:
+        return readAs<std::int16_t>(m_cursor, value);
+    case PlyScalarType::UInt16:
+        return readAs<std::uint16_t>(m_cursor, value);
+    case PlyScalarType::Int32:
+        return readAs<std::int32_t>(m_cursor, value);
+    case PlyScalarType::UInt32:
+        return readAs<std::uint32_t>(m_cursor, value);
+    case PlyScalarType::Float32:
+        return readAs<float>(m_cursor, value);
+    case PlyScalarType::Float64:
+        return readAs<double>(m_cursor, value);
     }
     return Status::End;
 }

@@ -39,8 +39,8 @@ bool facesAlong(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, c
     return glm::dot(glm::cross(b - a, c - a), normal) > 0.0;
 }
 
-void appendQuad(std::span<const glm::vec3> positions, std::span<const std::uint32_t> q,
-                const glm::dvec3& normal, std::vector<glm::uvec3>& out)
+void appendQuad(std::span<const glm::vec3> positions, std::span<const std::uint32_t> q, const glm::dvec3& normal,
+                std::vector<glm::uvec3>& out)
 {
     glm::dvec3 p[4];
     for (int i = 0; i < 4; ++i)
@@ -58,11 +58,11 @@ void appendQuad(std::span<const glm::vec3> positions, std::span<const std::uint3
 
 // Corners projected onto the plane through the first corner spanned by (u, v) with
 // u × v = normal, so a polygon counter-clockwise about the normal stays counter-clockwise.
-std::vector<glm::dvec2> projectToPlane(std::span<const glm::vec3> positions,
-                                       std::span<const std::uint32_t> polygon, const glm::dvec3& normal)
+std::vector<glm::dvec2> projectToPlane(std::span<const glm::vec3> positions, std::span<const std::uint32_t> polygon,
+                                       const glm::dvec3& normal)
 {
     const glm::dvec3 n = glm::normalize(normal);
-    const glm::dvec3 a = std::fabs(n.x) < 0.6 ? glm::dvec3(1, 0, 0)
+    const glm::dvec3 a = std::fabs(n.x) < 0.6   ? glm::dvec3(1, 0, 0)
                          : std::fabs(n.y) < 0.6 ? glm::dvec3(0, 1, 0)
                                                 : glm::dvec3(0, 0, 1);
     const glm::dvec3 u = glm::normalize(glm::cross(a, n));

@@ -43,8 +43,8 @@ inline constexpr std::size_t kMaxEarClippingCorners = 1024;
 ///   can be found (self-intersecting) and polygons above kMaxEarClippingCorners fall back
 ///   to a fan from the first corner.
 /// Polygons with fewer than 3 corners append nothing.
-void triangulatePolygon(std::span<const glm::vec3> positions,
-                        std::span<const std::uint32_t> polygon, std::vector<glm::uvec3>& out);
+void triangulatePolygon(std::span<const glm::vec3> positions, std::span<const std::uint32_t> polygon,
+                        std::vector<glm::uvec3>& out);
 
 /// Triangulates every polygon of `soup` (indices in range, ≥ 3 corners each) in order.
 [[nodiscard]] std::vector<glm::uvec3> triangulatePolygons(std::span<const glm::vec3> positions,

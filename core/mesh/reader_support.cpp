@@ -9,8 +9,7 @@
 
 namespace trimlab {
 
-std::size_t cappedReserve(std::uint64_t declared, std::size_t bytesRemaining,
-                          std::size_t minBytesPerItem)
+std::size_t cappedReserve(std::uint64_t declared, std::size_t bytesRemaining, std::size_t minBytesPerItem)
 {
     const std::uint64_t possible = bytesRemaining / std::max<std::size_t>(minBytesPerItem, 1) + 1;
     return static_cast<std::size_t>(std::min(declared, possible));
@@ -34,8 +33,7 @@ std::string describeNonFinite(double value)
 
 std::string nonFiniteCoordinateReason(double value)
 {
-    return "has a non-finite coordinate (" + describeNonFinite(value) +
-           "); coordinates must be finite numbers";
+    return "has a non-finite coordinate (" + describeNonFinite(value) + "); coordinates must be finite numbers";
 }
 
 std::string countNoun(std::uint64_t count, std::string_view singular, std::string_view plural)
@@ -53,16 +51,13 @@ std::string vertexCountPhrase(std::size_t vertexCount, bool zeroBased)
     return text;
 }
 
-void rejectBinaryData(std::string_view text, const std::string& displayName,
-                      std::string_view formatName)
+void rejectBinaryData(std::string_view text, const std::string& displayName, std::string_view formatName)
 {
     const std::size_t nul = text.find('\0');
     if (nul == std::string_view::npos)
         return;
-    throw MeshLoadError(displayName,
-                        "binary data in a text format (a NUL byte at byte offset " +
-                            std::to_string(nul) + "); is this really an " +
-                            std::string(formatName) + " file?");
+    throw MeshLoadError(displayName, "binary data in a text format (a NUL byte at byte offset " + std::to_string(nul) +
+                                         "); is this really an " + std::string(formatName) + " file?");
 }
 
 } // namespace trimlab

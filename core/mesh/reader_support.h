@@ -36,12 +36,10 @@ inline constexpr std::uint64_t kMaxMeshVertices = 0xFFFFFFFFull;
 [[nodiscard]] std::string vertexCountPhrase(std::size_t vertexCount, bool zeroBased);
 
 /// "8 vertices", "1 vertex": a count with the noun in singular or plural.
-[[nodiscard]] std::string countNoun(std::uint64_t count, std::string_view singular,
-                                    std::string_view plural);
+[[nodiscard]] std::string countNoun(std::uint64_t count, std::string_view singular, std::string_view plural);
 
 /// Throws MeshLoadError if `text` holds a NUL byte: binary data in a text format
 /// ("is this really a FORMAT file?").
-void rejectBinaryData(std::string_view text, const std::string& displayName,
-                      std::string_view formatName);
+void rejectBinaryData(std::string_view text, const std::string& displayName, std::string_view formatName);
 
 } // namespace trimlab

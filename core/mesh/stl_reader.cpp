@@ -83,9 +83,10 @@ TriangleMesh readBinaryStl(std::string_view bytes, const std::string& name)
             cursor.read(value); // in bounds: checked against `expected` above
         for (const float value : xyz) {
             if (!isFiniteFloat(value))
-                throw MeshLoadError(name, "the triangle " + nonFiniteCoordinateReason(value),
-                                    {.line = 0, .element = "triangle " + std::to_string(i) + " (byte offset " +
-                                                            std::to_string(offset) + ")"});
+                throw MeshLoadError(
+                    name, "the triangle " + nonFiniteCoordinateReason(value),
+                    {.line = 0,
+                     .element = "triangle " + std::to_string(i) + " (byte offset " + std::to_string(offset) + ")"});
         }
         const auto base = static_cast<std::uint32_t>(soup.positions.size());
         for (int c = 0; c < 3; ++c)
@@ -126,7 +127,8 @@ std::string_view AsciiStlParser::nextOrTruncated(std::string_view expected)
     std::string_view token;
     if (!m_tokens.next(token))
         throw MeshLoadError(m_name, "truncated ASCII STL: the file ends where '" + std::string(expected) +
-                                        "' was expected (after " + countNoun(m_triangles.size(), "facet", "facets") + ")");
+                                        "' was expected (after " + countNoun(m_triangles.size(), "facet", "facets") +
+                                        ")");
     return token;
 }
 
@@ -181,8 +183,8 @@ void AsciiStlParser::parseFacet()
         m_positions.push_back(parseVertex());
     }
     if (polygon.size() < 3)
-        fail("facet " + std::to_string(m_triangles.size()) + " has " +
-             countNoun(polygon.size(), "vertex", "vertices") + "; a facet needs 3");
+        fail("facet " + std::to_string(m_triangles.size()) + " has " + countNoun(polygon.size(), "vertex", "vertices") +
+             "; a facet needs 3");
     expect("endfacet");
     triangulatePolygon(m_positions, polygon, m_triangles);
 }

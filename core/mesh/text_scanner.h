@@ -33,8 +33,7 @@ private:
 /// token is on (for error messages). No comment handling.
 class TokenStream {
 public:
-    explicit TokenStream(std::string_view text, std::size_t firstLine = 1)
-        : m_text(text), m_line(firstLine) {}
+    explicit TokenStream(std::string_view text, std::size_t firstLine = 1) : m_text(text), m_line(firstLine) {}
 
     /// The next token; false at the end of the text.
     bool next(std::string_view& token);

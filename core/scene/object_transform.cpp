@@ -53,7 +53,8 @@ double largestMagnitude(const glm::dmat4& m)
 glm::dmat4 ObjectTransform::modelMatrix() const
 {
     const double s = std::isfinite(scale) ? std::max(scale, kMinScale) : kMinScale;
-    const glm::dvec3 radians{glm::radians(finiteOrZero(rotationDegrees.x)), glm::radians(finiteOrZero(rotationDegrees.y)),
+    const glm::dvec3 radians{glm::radians(finiteOrZero(rotationDegrees.x)),
+                             glm::radians(finiteOrZero(rotationDegrees.y)),
                              glm::radians(finiteOrZero(rotationDegrees.z))};
     glm::dmat4 model(rotationMatrix(radians) * s);
     model[3] = glm::dvec4(finiteOrZero(translation.x), finiteOrZero(translation.y), finiteOrZero(translation.z), 1.0);

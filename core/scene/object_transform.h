@@ -35,7 +35,6 @@ struct ObjectTransform {
 /// (at y = ±90° the x angle is 0 and z carries the rotation). nullopt when `model` is not
 /// such a transform: a projective last row, a non-uniform scale, shear, a mirror or a
 /// non-finite entry.
-[[nodiscard]] std::optional<ObjectTransform> decomposeObjectTransform(const glm::dmat4& model,
-                                                                      double tolerance = 1e-9);
+[[nodiscard]] std::optional<ObjectTransform> decomposeObjectTransform(const glm::dmat4& model, double tolerance = 1e-9);
 
 } // namespace trimlab

@@ -260,8 +260,8 @@ TriangleMesh makeBox(const glm::dvec3& lower, const glm::dvec3& upper, bool outw
     TriangleMesh mesh;
     // Vertex index bit k set: coordinate k at `upper`.
     for (unsigned i = 0; i < 8; ++i)
-        mesh.positions.emplace_back(glm::dvec3((i & 1u) ? upper.x : lower.x, (i & 2u) ? upper.y : lower.y,
-                                               (i & 4u) ? upper.z : lower.z));
+        mesh.positions.emplace_back(
+            glm::dvec3((i & 1u) ? upper.x : lower.x, (i & 2u) ? upper.y : lower.y, (i & 4u) ? upper.z : lower.z));
     for (unsigned axis = 0; axis < 3; ++axis) {
         // (u, v) the other two axes in cyclic order, so u × v points along +axis.
         const unsigned u = 1u << ((axis + 1) % 3);

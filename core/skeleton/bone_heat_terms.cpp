@@ -176,14 +176,14 @@ bool SegmentVisibility::inside(const glm::dvec3& from, const glm::dvec3& to, std
 
 std::span<const int> BoneHeatTerms::nearest(std::size_t vertex) const
 {
-    return std::span<const int>(nearestBones).subspan(nearestOffsets[vertex],
-                                                      nearestOffsets[vertex + 1] - nearestOffsets[vertex]);
+    return std::span<const int>(nearestBones)
+        .subspan(nearestOffsets[vertex], nearestOffsets[vertex + 1] - nearestOffsets[vertex]);
 }
 
 std::size_t BoneHeatTerms::visibleCount(std::size_t vertex) const
 {
-    return std::size_t(std::count(visible.begin() + nearestOffsets[vertex], visible.begin() + nearestOffsets[vertex + 1],
-                                  std::uint8_t(1)));
+    return std::size_t(std::count(visible.begin() + nearestOffsets[vertex],
+                                  visible.begin() + nearestOffsets[vertex + 1], std::uint8_t(1)));
 }
 
 double BoneHeatTerms::source(std::size_t vertex, int bone) const
@@ -211,18 +211,22 @@ BoneHeatTerms boneHeatTerms(const TriangleMesh& mesh, const SkeletonRig& rig, co
     std::vector<VertexResult> results(mesh.vertexCount());
     constexpr std::size_t kBlock = 512;
     const std::size_t blocks = (results.size() + kBlock - 1) / kBlock;
-    parallelFor(blocks, options.threads, [&](std::size_t block) {
-        std::vector<RayHit> hits;
-        NearestScratch scratch;
-        for (std::size_t j = block * kBlock; j < std::min(results.size(), (block + 1) * kBlock); ++j) {
-            VertexResult& r = results[j];
-            const glm::dvec3 p(mesh.positions[j]);
-            findNearest(p, rig, options.tieTolerance, scratch, r.nearest);
-            r.visible.assign(r.nearest.bones.size(), 0);
-            for (std::size_t i = 0; i < r.nearest.bones.size(); ++i)
-                r.visible[i] = isFinite(p) && (!visibility || visibility->inside(p, r.nearest.points[i], hits)) ? 1 : 0;
-        }
-    }, control, "visibility");
+    parallelFor(
+        blocks, options.threads,
+        [&](std::size_t block) {
+            std::vector<RayHit> hits;
+            NearestScratch scratch;
+            for (std::size_t j = block * kBlock; j < std::min(results.size(), (block + 1) * kBlock); ++j) {
+                VertexResult& r = results[j];
+                const glm::dvec3 p(mesh.positions[j]);
+                findNearest(p, rig, options.tieTolerance, scratch, r.nearest);
+                r.visible.assign(r.nearest.bones.size(), 0);
+                for (std::size_t i = 0; i < r.nearest.bones.size(); ++i)
+                    r.visible[i] =
+                        isFinite(p) && (!visibility || visibility->inside(p, r.nearest.points[i], hits)) ? 1 : 0;
+            }
+        },
+        control, "visibility");
     return assembleTerms(results, options.heatConstant, 1e-9 * sceneSize(mesh, rig));
 }
 

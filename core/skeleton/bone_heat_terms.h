@@ -85,7 +85,7 @@ struct BoneHeatTerms {
     std::vector<std::uint32_t> nearestOffsets; ///< #V + 1
     std::vector<int> nearestBones;
     std::vector<std::uint8_t> visible;
-    std::size_t hiddenVertices = 0;            ///< vertices whose H_jj is 0
+    std::size_t hiddenVertices = 0; ///< vertices whose H_jj is 0
 
     [[nodiscard]] std::span<const int> nearest(std::size_t vertex) const;
     /// k: the number of visible nearest bones of `vertex`.

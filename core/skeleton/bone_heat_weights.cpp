@@ -152,8 +152,9 @@ bool sparseVertexWeights(const std::vector<double>& columns, std::size_t n, std:
         candidates[b] = {std::isfinite(w) ? std::max(w, 0.0) : 0.0, int(b)};
     }
     const std::size_t kept = std::min(kBoneInfluences, boneCount);
-    std::partial_sort(candidates.begin(), candidates.begin() + std::ptrdiff_t(kept), candidates.end(),
-                      [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
+    std::partial_sort(
+        candidates.begin(), candidates.begin() + std::ptrdiff_t(kept), candidates.end(),
+        [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
     double sum = 0.0;
     for (std::size_t k = 0; k < kept; ++k)
         sum += candidates[k].first;
@@ -214,7 +215,9 @@ BoneHeatSolver::BoneHeatSolver(const TriangleMesh& mesh, const SkeletonRig& rig,
     std::vector<std::pair<double, int>> candidates;
     for (std::size_t j = 0; j < n; ++j)
         m_report.fallbackVertices += sparseVertexWeights(m_columns, n, m_boneCount, j, m_terms.nearest(j), candidates,
-                                                         m_weights.bones[j], m_weights.weights[j]) ? 1 : 0;
+                                                         m_weights.bones[j], m_weights.weights[j])
+                                         ? 1
+                                         : 0;
     m_report.sparsifyMs = msSince(clock);
 }
 

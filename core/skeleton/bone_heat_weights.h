@@ -65,11 +65,11 @@ struct BoneHeatOptions {
 
 /// What the solver did, for reports and Table III's "weights" column.
 struct BoneHeatReport {
-    double laplacianMs = 0.0;     ///< Meyer Laplacian
-    double heatTermsMs = 0.0;     ///< nearest bones and visibility rays
-    double factorizationMs = 0.0; ///< symbolic analysis + numeric factorization
-    double solveMs = 0.0;         ///< all right-hand sides
-    double sparsifyMs = 0.0;      ///< top-4 selection and normalisation
+    double laplacianMs = 0.0;         ///< Meyer Laplacian
+    double heatTermsMs = 0.0;         ///< nearest bones and visibility rays
+    double factorizationMs = 0.0;     ///< symbolic analysis + numeric factorization
+    double solveMs = 0.0;             ///< all right-hand sides
+    double sparsifyMs = 0.0;          ///< top-4 selection and normalisation
     std::size_t hiddenVertices = 0;   ///< vertices without a visible nearest bone (H_jj = 0)
     std::size_t pinnedVertices = 0;   ///< in components without any heat source (see file comment)
     std::size_t fallbackVertices = 0; ///< whose kept weights were all ≤ 0
@@ -77,10 +77,7 @@ struct BoneHeatReport {
     std::string factorization;        ///< e.g. "CHOLMOD supernodal LLᵀ, METIS ordering"
     std::string note;                 ///< non-empty when the requested backend failed and the fallback ran
 
-    [[nodiscard]] double totalMs() const
-    {
-        return laplacianMs + heatTermsMs + factorizationMs + solveMs + sparsifyMs;
-    }
+    [[nodiscard]] double totalMs() const { return laplacianMs + heatTermsMs + factorizationMs + solveMs + sparsifyMs; }
 };
 
 /// Computes the weights of every bone of `rig` over `mesh` in the constructor; the

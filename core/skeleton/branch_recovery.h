@@ -1,10 +1,10 @@
 #pragma once
 /// \file
-/// Branch recovery (issue 20: coverage). The contraction can draw a short limb into the
-/// body along its length before its sections shrink to a curve (measured: the
-/// low-resolution spot's four legs, the koala's ears, a triceratops leg, the hand's wrist),
-/// and then no branch of the curve skeleton reaches it: its vertices are left to a bone in
-/// the body, and the maximum coverage distance is the limb's length.
+/// Branch recovery, so that every limb has a bone near it. The contraction can draw a
+/// short limb into the body along its length before its sections shrink to a curve (legs
+/// of a low-resolution cow, a koala's ears, a wrist), and then no branch of the curve
+/// skeleton reaches it: its vertices are left to a bone in the body, and the maximum
+/// coverage distance is the limb's length.
 ///
 /// Such a limb shows on the surface: a vertex of a limb that has its branch lies about one
 /// medial-ball radius from the skeleton (the ball's centre is on the branch), while a vertex
@@ -23,11 +23,10 @@
 /// slanted end) joins that one. The first slice's pieces join the nearest skeleton node
 /// whose segment to them stays inside; a piece whose edge would leave the solid is left out
 /// with everything beyond it. A piece's vertices join its node's region. A patch that is
-/// wide but shallow (the flank of a flat body) has no depth and gets nothing.
-///
-/// Measured with the pieces (tenth session): the spot's head, one patch, had one chain up
-/// its middle (the ear 0.164 of the diagonal from a bone, CGAL 0.147); forked into the ears
-/// and horns, 0.161, and the curve's centring asymmetry 0.093 → 0.076 (CGAL 0.074–0.079).
+/// wide but shallow (the flank of a flat body) has no depth and gets nothing. Forking the
+/// branch with the pieces keeps a head with ears and horns from getting one chain up its
+/// middle, which covers the ears no better and is off-centre in the head (the measurements:
+/// docs/measurements/2026-11-29-skeleton-stages.md).
 
 #include "core/mesh/triangle_mesh.h"
 #include "core/skeleton/point_in_mesh.h"

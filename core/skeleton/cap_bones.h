@@ -1,11 +1,10 @@
 #pragma once
 /// \file
-/// Cap bones (issue 20: coverage). A blunt end of the body — a fish's head — contracts
-/// into a knot of short chains rather than one limb, and the curve leaves it at a node
-/// whose bones run back into the body or sideways along the knot: no leaf points at the
-/// cap, so leaf_extension.h has nothing to extend, and the cap's vertices are the farthest
-/// from any bone (measured: the fish's mouth 0.186 of the diagonal from the curve, CGAL's
-/// skeleton 0.157–0.170).
+/// Cap bones, so that a blunt end of the body has a bone near it. A blunt end — a fish's
+/// head — contracts into a knot of short chains rather than one limb, and the curve leaves
+/// it at a node whose bones run back into the body or sideways along the knot: no leaf
+/// points at the cap, so leaf_extension.h has nothing to extend, and the cap's vertices
+/// are the farthest from any bone.
 ///
 /// Such a node shows in its region: the region holds some of the mesh's farthest vertices
 /// from the curve (within kCapWorstFraction of the farthest), they lie, on average, more
@@ -21,19 +20,10 @@
 /// a bone added before has brought below the band gets none (one bone per cap, not one per
 /// node of a chain that runs past it).
 ///
-/// Measured (eleventh session, the region's centroid for the direction, its whole width, the
-/// ball test at every node): one bone on the fish, its coverage 0.186 → 0.154 of the
-/// diagonal (CGAL 0.157–0.170), two on the armadillo after one Loop subdivision, none on
-/// the 19 other meshes. Twelfth session (the far vertices' direction, the cap's width, the
-/// ball test at junctions only, one bone per cap): bones on 10 of the 21 meshes, the
-/// largest distance from the curve down on all 10 — the spot's muzzle and rump 0.1605 →
-/// 0.1415 (CGAL 0.146–0.149), the hand 0.131 → 0.104, the stuffed toy 0.154 → 0.131, the
-/// armadillo 0.122 → 0.111, after one and two Loop subdivisions 0.136 → 0.122 and 0.130 →
-/// 0.117 — and the curves' centring within 0.003 (the spot 0.076 → 0.074, the
-/// low-resolution spot 0.091 → 0.094). Without the restriction to the
-/// farthest caps every mesh got bones (the fish 10) and the curves' centring lost 0.01;
-/// without the one-bone-per-cap rule a chain past a flat part got a bone at every node (the
-/// armadillo after one subdivision 21, homer 8).
+/// Why the band and one bone per cap: without the restriction to the farthest caps every
+/// mesh gets bones and the curve's centring suffers; without the one-bone-per-cap rule a
+/// chain past a flat part gets a bone at every node (the measurements:
+/// docs/measurements/2026-11-29-skeleton-stages.md).
 
 #include "core/mesh/triangle_mesh.h"
 #include "core/skeleton/point_in_mesh.h"

@@ -5,9 +5,14 @@
 namespace trimlab {
 
 CollapseComplex::CollapseComplex(std::span<const glm::dvec3> positions, std::span<const glm::uvec3> triangles)
-    : m_positions(positions.begin(), positions.end()), m_triangleAlive(triangles.size(), 1),
-      m_vertexTriangles(positions.size()), m_neighbours(positions.size()), m_alive(positions.size(), 1),
-      m_absorbedBy(positions.size(), -1), m_liveTriangles(triangles.size()), m_liveVertices(positions.size())
+    : m_positions(positions.begin(), positions.end()),
+      m_triangleAlive(triangles.size(), 1),
+      m_vertexTriangles(positions.size()),
+      m_neighbours(positions.size()),
+      m_alive(positions.size(), 1),
+      m_absorbedBy(positions.size(), -1),
+      m_liveTriangles(triangles.size()),
+      m_liveVertices(positions.size())
 {
     m_triangles.reserve(triangles.size());
     for (std::size_t f = 0; f < triangles.size(); ++f) {
@@ -53,9 +58,9 @@ void CollapseComplex::addNeighbour(int v, int other)
 void CollapseComplex::dropDeadTriangles(int v)
 {
     std::vector<int>& list = m_vertexTriangles[static_cast<std::size_t>(v)];
-    list.erase(std::remove_if(list.begin(), list.end(),
-                              [&](int f) { return !m_triangleAlive[static_cast<std::size_t>(f)]; }),
-               list.end());
+    list.erase(
+        std::remove_if(list.begin(), list.end(), [&](int f) { return !m_triangleAlive[static_cast<std::size_t>(f)]; }),
+        list.end());
 }
 
 void CollapseComplex::collapse(int from, int to)

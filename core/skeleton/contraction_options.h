@@ -30,13 +30,12 @@ enum class MedialPoints { FilteredChordMidpoints, ShrinkingBalls };
 
 /// Contraction settings with the paper's defaults (III.A, details 1–3).
 struct ContractionOptions {
-    /// W_L⁰, the initial contraction weight. ≤ 0 means 1. The paper gives 10⁻³·√Ā (Ā:
-    /// mean face area); taken in the mesh's own units the formula depends on them, because
-    /// the cotangent Laplacian and W_H are dimensionless, and even with Ā as the unit of
-    /// area (10⁻³) the first ten solves move nothing: on the cat, hand and armadillo the
-    /// area stays above 96 % until W_L reaches 1 (a tube of n vertices per ring starts to
-    /// contract once W_L ≈ (n/2π)²). Starting at 1 gives the same contraction in 8–9
-    /// solves instead of 19 — half the time (measured against CGAL's skeleton, issue 20).
+    /// W_L⁰, the initial contraction weight. ≤ 0 means 1. The paper gives 10⁻³·√Ā (Ā: mean
+    /// face area); taken in the mesh's own units the formula depends on them, because the
+    /// cotangent Laplacian and W_H are dimensionless, and even with Ā as the unit of area
+    /// (10⁻³) the first solves move almost nothing: a tube of n vertices per ring starts to
+    /// contract only once W_L ≈ (n/2π)². Starting at 1 gives the same contraction in about
+    /// half the solves (docs/measurements/2026-11-29-skeleton-stages.md).
     double initialContractionWeight = 0.0;
     /// W_H⁰, the initial attraction weight of every vertex.
     double initialAttractionWeight = 1.0;
@@ -51,9 +50,7 @@ struct ContractionOptions {
     /// Stop once the surface area has fallen below this fraction of the original (Au et
     /// al.'s criterion, who use 10⁻⁶). 10⁻³: by then the remaining area is in sections a
     /// fraction of a pixel wide, which the simplification's pre-collapse merges anyway;
-    /// measured on the fish and the bunny, the 5–8 solves from 10⁻³ to 10⁻⁶ cost a third
-    /// of the time and changed the skeleton's containment and centring by < 1 %, or
-    /// worsened them (bunny: 95 % of the curve inside at 10⁻⁶, 99 % at 10⁻³).
+    /// the solves on to 10⁻⁶ cost time without making the skeleton better.
     double minAreaRatio = 1.0e-3;
     /// Stop once an iteration with W_L at its cap reduces the surface area by less than
     /// this fraction: the contraction has reached its fixed point and further iterations
@@ -62,11 +59,10 @@ struct ContractionOptions {
     /// Remeshing while contracting (contraction_remeshing.h): after every solve, edges
     /// shorter than this fraction of the bounding-box diagonal collapse, so the system
     /// shrinks. ≤ 0 (the default) keeps every vertex, the paper's fixed connectivity.
-    /// Measured at 0.002 (where CGAL's mean-curvature-flow skeleton collapses) on the
-    /// armadillo, homer, triceratops and hand: slower by 1.1–1.9× (every changed pattern
-    /// needs a new symbolic analysis) and worse — the collapses shorten the contracted
-    /// limbs, the simplification then keeps fewer sections and 7–34 % of the curve's
-    /// length lies outside instead of 0–11 %. Kept as an option for such measurements.
+    /// Off because it is slower (every changed pattern needs a new symbolic analysis) and
+    /// worse: the collapses shorten the contracted limbs, the simplification then keeps
+    /// fewer sections and more of the curve's length lies outside. Kept as an option for
+    /// comparisons (with 0.002, where CGAL's mean-curvature-flow skeleton collapses).
     double collapseFraction = 0.0;
     /// A dense input — its median edge shorter than this fraction of the bounding-box
     /// diagonal — first has every edge shorter than that collapsed (the same collapses,
@@ -74,34 +70,29 @@ struct ContractionOptions {
     /// follows the vertex it was merged into. 0.002 is CGAL's skeleton's edge length. A
     /// mesh at its natural sampling (median edge above it) is left as it is, slivers and
     /// all: the skeleton of a mesh is only as stable as its contraction, and a few
-    /// collapses can turn a contracted arm into a hairpin (seen on the test star). At
-    /// 0.004 the 30k-vertex bunny was decimated too and lost 2 % of its curve's
-    /// containment; at 0.002 only the armadillo after two Loop subdivisions (233k
-    /// vertices) is, of the meshes measured. ≤ 0 never decimates.
+    /// collapses can turn a contracted arm into a hairpin (seen on the test star). A larger
+    /// fraction would decimate meshes at their natural sampling as well and cost
+    /// containment. ≤ 0 never decimates.
     double inputCollapseFraction = 0.002;
     SparseOrdering ordering = SparseOrdering::Metis;
     SparseBackend backend = SparseBackend::Cholmod;
     /// At most this many solves.
     int maxIterations = 20;
-    /// μ, the medial attraction (issue 20, an experiment; 0, the default, is Au et al.'s
+    /// μ, the medial attraction (an experiment; 0, the default, is Au et al.'s
     /// contraction): each vertex with a medial point M_i (medial_targets.h, given to the
     /// solver) is also pulled toward it with the weight μ·W_H,i, so a short limb contracts
     /// onto its axis instead of into the body along its length, as CGAL's mean-curvature
     /// flow does with its Voronoi poles. The least-squares row pair is folded into one:
-    /// weight W_H,i·√(1 + μ²) toward (V_i + μ²·M_i)/(1 + μ²). Measured on the 21 meshes
-    /// against CGAL (docs/skeleton-extraction.md): it brings lost legs and ears back (the
-    /// coverage check passes on 16–19 of 21 instead of 15) but which branches survive
-    /// changes from one μ or medial-point filter to the next (10–14 of 21 meshes meet every
-    /// check, 8 without it; the test star lost an arm's length at some settings, the
-    /// elephant a loop at one), so it stays off. Medial balls instead of chord midpoints
-    /// (medialPoints) did not settle it: 7–11 meshes, and the elephant's or fertility's
-    /// loops lost at μ 1 and 2 — which branches survive is decided by the attraction
-    /// itself, not by where its points come from. (All measured before the branch
-    /// recovery, branch_recovery.h, which now brings lost limbs back after the
-    /// contraction instead: 15 of 21 meshes meet every check with μ = 0.)
+    /// weight W_H,i·√(1 + μ²) toward (V_i + μ²·M_i)/(1 + μ²). Off: it brings lost legs and
+    /// ears back, but which branches survive changes from one μ or medial-point source to
+    /// the next (decided by the attraction itself, not by where its points come from), and
+    /// the branch recovery (branch_recovery.h) brings lost limbs back after the contraction
+    /// instead (the measurements: docs/measurements/2026-11-29-skeleton-stages.md).
     double medialWeight = 0.0;
     /// Where the medial points come from, with medialWeight > 0.
     MedialPoints medialPoints = MedialPoints::FilteredChordMidpoints;
+
+    friend bool operator==(const ContractionOptions&, const ContractionOptions&) = default;
 };
 
 } // namespace trimlab

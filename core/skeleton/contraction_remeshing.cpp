@@ -15,8 +15,11 @@ namespace {
 class TriangleSoupEditor {
 public:
     TriangleSoupEditor(std::span<const glm::dvec3> positions, std::span<const glm::uvec3> triangles)
-        : m_positions(positions.begin(), positions.end()), m_triangles(triangles.begin(), triangles.end()),
-          m_triangleAlive(triangles.size(), 1), m_vertexTriangles(positions.size()), m_alive(positions.size(), 1)
+        : m_positions(positions.begin(), positions.end()),
+          m_triangles(triangles.begin(), triangles.end()),
+          m_triangleAlive(triangles.size(), 1),
+          m_vertexTriangles(positions.size()),
+          m_alive(positions.size(), 1)
     {
         for (std::size_t t = 0; t < m_triangles.size(); ++t)
             for (int c = 0; c < 3; ++c)

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Remeshing while contracting (issue 20; the connectivity surgery of Au et al. done
-/// during contraction, as CGAL's mean-curvature-flow skeleton does): after each solve,
+/// Remeshing while contracting (the connectivity surgery of Au et al. done during
+/// contraction, as CGAL's mean-curvature-flow skeleton does): after each solve,
 /// edges that became shorter than a length ε collapse to their midpoint, so collapsed
 /// cross-sections become single vertices, the triangles that were slivers disappear and
 /// the linear system shrinks with every iteration. Without it the contraction keeps every
@@ -23,9 +23,9 @@
 namespace trimlab {
 
 struct CollapsedMesh {
-    std::vector<glm::dvec3> positions;  ///< the surviving vertices
-    std::vector<glm::uvec3> triangles;  ///< re-indexed to them, orientation kept
-    std::vector<int> newIndex;          ///< per input vertex: the surviving vertex that holds it
+    std::vector<glm::dvec3> positions; ///< the surviving vertices
+    std::vector<glm::uvec3> triangles; ///< re-indexed to them, orientation kept
+    std::vector<int> newIndex;         ///< per input vertex: the surviving vertex that holds it
     std::size_t collapses = 0;
 };
 

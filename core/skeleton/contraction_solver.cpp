@@ -88,7 +88,7 @@ struct ContractionSolver::State {
     // point or none; per current vertex the mean of its group's, or none.
     std::vector<std::optional<glm::dvec3>> inputMedial;
     std::vector<std::optional<glm::dvec3>> medialTargets;
-    std::vector<double> initialRingAreas;   // A_i⁰
+    std::vector<double> initialRingAreas; // A_i⁰
     double initialArea = 0.0;
     double area = 0.0;
     std::vector<double> laplacianMagnitude;
@@ -100,16 +100,20 @@ struct ContractionSolver::State {
     std::vector<std::string> warnings;
 
     State(const TriangleMesh& mesh, const ContractionOptions& o)
-        : options(o), triangles(mesh.triangles), positions(mesh.positions.begin(), mesh.positions.end()),
-          groupOf(mesh.positions.size()), backend(o.backend)
+        : options(o),
+          triangles(mesh.triangles),
+          positions(mesh.positions.begin(), mesh.positions.end()),
+          groupOf(mesh.positions.size()),
+          backend(o.backend)
     {
         for (std::size_t v = 0; v < groupOf.size(); ++v)
             groupOf[v] = static_cast<int>(v);
         inputPositions = positions;
         inputMagnitude.assign(positions.size(), 0.0);
         const Bounds bounds = computeBounds(mesh);
-        collapseLength = o.collapseFraction > 0.0 && bounds.valid() ? o.collapseFraction * glm::length(bounds.max - bounds.min)
-                                                                   : 0.0;
+        collapseLength = o.collapseFraction > 0.0 && bounds.valid()
+                             ? o.collapseFraction * glm::length(bounds.max - bounds.min)
+                             : 0.0;
         buildSystem();
     }
 
@@ -228,7 +232,8 @@ struct ContractionSolver::State {
         if (error.empty())
             error = factor->description() + " gave a non-finite solution.";
         if (backend != SparseBackend::Cholmod)
-            throw std::runtime_error("Contraction failed in iteration " + std::to_string(iterations + 1) + ": " + error);
+            throw std::runtime_error("Contraction failed in iteration " + std::to_string(iterations + 1) + ": " +
+                                     error);
         warnings.push_back(error + " Falling back to Eigen SimplicialLDLT with " + orderingName(options.ordering) +
                            " ordering.");
         backend = SparseBackend::EigenSimplicialLdlt;
@@ -347,9 +352,8 @@ bool ContractionSolver::iterate()
     // far from the surface). Keep the previous positions and stop.
     if (nextArea > previousArea && previousArea < kContractionUnderway * s.initialArea) {
         s.finished = true;
-        s.warnings.push_back("Contraction stopped after iteration " + std::to_string(s.iterations) +
-                             ": iteration " + std::to_string(s.iterations + 1) +
-                             " increased the surface area and was discarded.");
+        s.warnings.push_back("Contraction stopped after iteration " + std::to_string(s.iterations) + ": iteration " +
+                             std::to_string(s.iterations + 1) + " increased the surface area and was discarded.");
         return true;
     }
     const bool contractionCapped = s.contractionWeight >= s.options.maxContractionWeight;
@@ -381,17 +385,53 @@ void ContractionSolver::run(const TaskControl& control)
     }
 }
 
-bool ContractionSolver::finished() const { return m->finished; }
-const std::vector<glm::dvec3>& ContractionSolver::positions() const { return m->inputPositions; }
-const std::vector<double>& ContractionSolver::laplacianMagnitude() const { return m->inputMagnitude; }
-std::size_t ContractionSolver::vertexCount() const { return m->positions.size(); }
-std::size_t ContractionSolver::collapses() const { return m->collapses; }
-int ContractionSolver::iterations() const { return m->iterations; }
-int ContractionSolver::symbolicAnalyses() const { return m->analyses; }
-int ContractionSolver::numericFactorizations() const { return m->factorizations; }
-double ContractionSolver::areaRatio() const { return m->initialArea > 0.0 ? m->area / m->initialArea : 0.0; }
-double ContractionSolver::contractionWeight() const { return m->contractionWeight; }
-std::string ContractionSolver::solverDescription() const { return m->factor->description(); }
-const std::vector<std::string>& ContractionSolver::warnings() const { return m->warnings; }
+bool ContractionSolver::finished() const
+{
+    return m->finished;
+}
+const std::vector<glm::dvec3>& ContractionSolver::positions() const
+{
+    return m->inputPositions;
+}
+const std::vector<double>& ContractionSolver::laplacianMagnitude() const
+{
+    return m->inputMagnitude;
+}
+std::size_t ContractionSolver::vertexCount() const
+{
+    return m->positions.size();
+}
+std::size_t ContractionSolver::collapses() const
+{
+    return m->collapses;
+}
+int ContractionSolver::iterations() const
+{
+    return m->iterations;
+}
+int ContractionSolver::symbolicAnalyses() const
+{
+    return m->analyses;
+}
+int ContractionSolver::numericFactorizations() const
+{
+    return m->factorizations;
+}
+double ContractionSolver::areaRatio() const
+{
+    return m->initialArea > 0.0 ? m->area / m->initialArea : 0.0;
+}
+double ContractionSolver::contractionWeight() const
+{
+    return m->contractionWeight;
+}
+std::string ContractionSolver::solverDescription() const
+{
+    return m->factor->description();
+}
+const std::vector<std::string>& ContractionSolver::warnings() const
+{
+    return m->warnings;
+}
 
 } // namespace trimlab

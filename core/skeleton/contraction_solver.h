@@ -19,9 +19,8 @@
 /// capped: the fixed point), when an iteration would RAISE it (that iteration diverged:
 /// with W_L in the hundreds, near-degenerate triangles whose clamped cotangents are
 /// negative admit solutions of L·V' ≈ 0 far from the surface; its result is discarded),
-/// or after maxIterations. Measured on the shared cat, hand and armadillo: a rise
-/// happens after 17–19 iterations, the area down to 11–36 %, when the limbs are curves
-/// already but wide parts (a palm, a thick hub) are still sheets or blobs.
+/// or after maxIterations. A rise comes late, when the limbs are curves already but wide
+/// parts (a palm, a thick hub) are still sheets or blobs.
 
 #include "core/util/task_control.h"
 #include "core/mesh/triangle_mesh.h"

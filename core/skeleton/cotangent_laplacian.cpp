@@ -11,7 +11,7 @@ double clampedCotangent(const glm::dvec3& corner, const glm::dvec3& a, const glm
 {
     const glm::dvec3 u = a - corner;
     const glm::dvec3 w = b - corner;
-    const double cosine = glm::dot(u, w);      // |u||w| cos θ
+    const double cosine = glm::dot(u, w);              // |u||w| cos θ
     const double sine = glm::length(glm::cross(u, w)); // |u||w| sin θ ≥ 0
     if (!(sine > 0.0) || !std::isfinite(sine))
         return cosine < 0.0 ? -maxCotangent : maxCotangent;
@@ -66,17 +66,17 @@ void CotangentLaplacian::update(std::span<const glm::dvec3> positions, double ma
     std::size_t side = 0;
     for (const glm::uvec3& t : m_triangles)
         for (int c = 0; c < 3; ++c, ++side)
-            m_edgeWeights[static_cast<std::size_t>(m_sideEdge[side])] += clampedCotangent(
-                positions[t[c]], positions[t[(c + 1) % 3]], positions[t[(c + 2) % 3]], maxCotangent);
+            m_edgeWeights[static_cast<std::size_t>(m_sideEdge[side])] +=
+                clampedCotangent(positions[t[c]], positions[t[(c + 1) % 3]], positions[t[(c + 2) % 3]], maxCotangent);
     double* values = m_matrix.valuePtr();
     std::fill(values, values + m_matrix.nonZeros(), 0.0);
     for (std::size_t e = 0; e < m_slots.size(); ++e) {
         // An edge whose two opposite angles sum past 180° has a negative cotangent weight:
         // L then no longer averages a vertex's neighbours, and with W_L in the hundreds
         // L·V' ≈ 0 admits webs far from the surface (the area rises, the contraction has to
-        // stop early). Such an edge gets weight 0 instead — measured on the cat: one
-        // iteration more before the area rises, 99.5 % instead of 95.5 % of the curve
-        // skeleton's length inside, 30 % less time.
+        // stop early). Such an edge gets weight 0 instead, which lets the contraction go
+        // further and keeps more of the curve skeleton inside, in less time
+        // (docs/measurements/2026-11-29-skeleton-stages.md).
         const double w = std::max(0.0, m_edgeWeights[e]);
         const std::array<int, 4>& s = m_slots[e];
         values[s[0]] += w;

@@ -43,9 +43,9 @@ public:
 
 private:
     std::vector<glm::uvec3> m_triangles;
-    std::vector<int> m_sideEdge;               // per triangle side (3 per face, opposite corner c): its edge
-    std::vector<std::array<int, 4>> m_slots;   // per edge (a, b): the value slots of L_ab, L_ba, L_aa, L_bb
-    std::vector<double> m_edgeWeights;         // scratch: ω per edge
+    std::vector<int> m_sideEdge;             // per triangle side (3 per face, opposite corner c): its edge
+    std::vector<std::array<int, 4>> m_slots; // per edge (a, b): the value slots of L_ab, L_ba, L_aa, L_bb
+    std::vector<double> m_edgeWeights;       // scratch: ω per edge
     SkeletonSparseMatrix m_matrix;
 };
 

@@ -1,13 +1,12 @@
 #pragma once
 /// \file
-/// Leaf extension (issue 20: coverage). Contraction shrinks every limb along its length as
-/// well as across it, and the simplification's pre-collapse merges the last sections, so a
-/// curve skeleton's leaf ends about a limb's width short of the tip: the vertices of the
-/// tip are then the farthest from any bone (measured: coverage 1.3× CGAL's on the hand).
-/// Each leaf here moves outward along its edge's direction until it is one local radius
-/// short of the farthest vertex of its region (the tip's cap), as far as the extension
-/// stays inside the solid. The local radius is the mean distance of the region's vertices
-/// from the edge's line.
+/// Leaf extension, so that a limb's tip has a bone near it. Contraction shrinks every limb
+/// along its length as well as across it, and the simplification's pre-collapse merges the
+/// last sections, so a curve skeleton's leaf ends about a limb's width short of the tip:
+/// the vertices of the tip are then the farthest from any bone. Each leaf here moves
+/// outward along its edge's direction until it is one local radius short of the farthest
+/// vertex of its region (the tip's cap), as far as the extension stays inside the solid.
+/// The local radius is the mean distance of the region's vertices from the edge's line.
 
 #include "core/mesh/triangle_mesh.h"
 #include "core/skeleton/point_in_mesh.h"

@@ -34,8 +34,8 @@ constexpr int kEndSearchCells = 6;
 
 // Steps join a medial point to its nearest few within this many cells: the chord midpoints
 // sample the medial axis unevenly, and only neighbouring cells left it in hundreds of
-// pieces (the spot: 943 components). 3 cells measured alike on the 21 meshes and cost a
-// third more (the spot's graph 79 ms against 52).
+// pieces (a cow's mesh in almost a thousand). 3 cells give the same curves and cost a
+// third more time.
 constexpr int kStepCells = 2;
 constexpr std::size_t kStepsPerPoint = 16;
 
@@ -97,8 +97,8 @@ MedialGraph medialGraph(const TriangleMesh& mesh, const std::vector<std::optiona
     // limb or a slab has its midpoint in the middle whatever its tilt; the longest is the
     // least likely to end on a nearby bump). Its radius is then the distance to the
     // nearest vertex — a query for a point deep inside visits many of a kd-tree's cells,
-    // so it is asked once per cell, not once per vertex (0.6 s of the armadillo after one
-    // Loop subdivision for all 58k vertices).
+    // so it is asked once per cell, not once per vertex (which takes most of a second on a
+    // mesh of 58k vertices).
     std::vector<double> halfChords;
     for (std::size_t v = 0; v < midpoints.size(); ++v) {
         if (!midpoints[v])
@@ -205,7 +205,7 @@ std::vector<glm::dvec3> spreadAlong(const std::vector<glm::dvec3>& polyline, std
 // Per position, the distance to the nearest of points sampled along the curve's edges no
 // farther apart than `step` — within step/2 of the distance to the curve. The guard below
 // compares coverage before and after the routing for every vertex; exactly, over every
-// edge, that cost 7 s of the armadillo after two Loop subdivisions (233k vertices).
+// edge, that costs seconds on a mesh of a few hundred thousand vertices.
 std::vector<double> distancesToCurveSamples(const std::vector<glm::vec3>& positions, const CurveSkeleton& curve,
                                             double step)
 {

@@ -1,12 +1,11 @@
 #pragma once
 /// \file
-/// Chains of the curve skeleton laid along the medial axis (issue 20: a centred curve as
-/// long as the shape's, not three times it). The resampling centres each slice of a chain
-/// on its own, and where a chain crosses a thick or flat part (a cow's torso, which the
-/// contraction leaves as a web between the feet) neighbouring slices' centres land on
-/// different places of the medial sheet: the chain zig-zags (measured: the spot's curve
-/// 5.8 diagonals long against CGAL's 2.0), and every straight edge between two sheet
-/// points cuts through the slab off its middle.
+/// Chains of the curve skeleton laid along the medial axis, so that the curve is centred
+/// and about as long as the shape's, not several times it. The resampling centres each
+/// slice of a chain on its own, and where a chain crosses a thick or flat part (a cow's
+/// torso, which the contraction leaves as a web between the feet) neighbouring slices'
+/// centres land on different places of the medial sheet: the chain zig-zags, and every
+/// straight edge between two sheet points cuts through the slab off its middle.
 ///
 /// Here every chain between two nodes of degree other than 2 is replaced by the cheapest
 /// path between its two ends through a graph of medial points: the inward chord midpoints

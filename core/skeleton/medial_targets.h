@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// The medial points the contraction pulls toward (ContractionOptions::medialWeight,
-/// issue 20): each vertex's inward chord midpoint (skeleton_refinement.h), kept only where
+/// The medial points the contraction pulls toward (ContractionOptions::medialWeight):
+/// each vertex's inward chord midpoint (skeleton_refinement.h), kept only where
 /// the chord is not much longer than the surface's curvature allows. On a tube the chord
 /// crosses the tube and its midpoint lies on the axis; at the cap of a limb the inward
 /// normal runs along the axis, the chord crosses the whole limb and its midpoint lies

@@ -73,9 +73,8 @@ bool triangleTerms(const std::array<glm::dvec3, 3>& p, TriangleTerms& out)
 // listed once by each of its two triangles).
 std::vector<LaplacianEdge> mergedEdges(std::vector<LaplacianEdge> entries)
 {
-    std::sort(entries.begin(), entries.end(), [](const LaplacianEdge& a, const LaplacianEdge& b) {
-        return a.i != b.i ? a.i < b.i : a.j < b.j;
-    });
+    std::sort(entries.begin(), entries.end(),
+              [](const LaplacianEdge& a, const LaplacianEdge& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
     std::vector<LaplacianEdge> merged;
     merged.reserve(entries.size() / 2 + 1);
     for (const LaplacianEdge& e : entries) {

@@ -21,7 +21,9 @@ Scene singleObjectScene(const TriangleMesh& mesh)
 
 } // namespace
 
-PointInMesh::PointInMesh(const TriangleMesh& mesh) : m_bvh(singleObjectScene(mesh)), m_bounds(computeBounds(mesh)) {}
+PointInMesh::PointInMesh(const TriangleMesh& mesh) : m_bvh(singleObjectScene(mesh)), m_bounds(computeBounds(mesh))
+{
+}
 
 bool PointInMesh::contains(const glm::dvec3& p) const
 {

@@ -30,10 +30,11 @@ std::optional<RigProblem> jointProblem(const SkeletonRig& rig)
             return RigProblem{at("nodes", j), "joint position is not finite"};
     }
     if (rig.parent.size() != n)
-        return RigProblem{"parent", std::to_string(rig.parent.size()) + " entries for " + std::to_string(n) + " joints"};
+        return RigProblem{"parent",
+                          std::to_string(rig.parent.size()) + " entries for " + std::to_string(n) + " joints"};
     if (rig.root < 0 || std::size_t(rig.root) >= n)
-        return RigProblem{"root", "joint " + std::to_string(rig.root) + " does not exist (" + std::to_string(n) +
-                                      " joints)"};
+        return RigProblem{"root",
+                          "joint " + std::to_string(rig.root) + " does not exist (" + std::to_string(n) + " joints)"};
     for (std::size_t j = 0; j < n; ++j) {
         const int p = rig.parent[j];
         if (int(j) == rig.root && p != -1)
@@ -80,10 +81,11 @@ std::optional<RigProblem> boneProblem(const SkeletonRig& rig)
         if (bone.tail < 0 || std::size_t(bone.tail) >= n || bone.tail == rig.root)
             return RigProblem{bonePath(b, "tail"), "joint " + std::to_string(bone.tail) + " is not a non-root joint"};
         if (bone.head != rig.parent[std::size_t(bone.tail)])
-            return RigProblem{bonePath(b, "head"), "joint " + std::to_string(bone.head) + " is not the parent of tail " +
-                                                       std::to_string(bone.tail)};
+            return RigProblem{bonePath(b, "head"), "joint " + std::to_string(bone.head) +
+                                                       " is not the parent of tail " + std::to_string(bone.tail)};
         if (boneOfTail[std::size_t(bone.tail)] >= 0)
-            return RigProblem{bonePath(b, "tail"), "joint " + std::to_string(bone.tail) + " is already the tail of bone " +
+            return RigProblem{bonePath(b, "tail"), "joint " + std::to_string(bone.tail) +
+                                                       " is already the tail of bone " +
                                                        std::to_string(boneOfTail[std::size_t(bone.tail)])};
         boneOfTail[std::size_t(bone.tail)] = int(b);
         const int expected = bone.head == rig.root ? -1 : boneOfTail[std::size_t(bone.head)];

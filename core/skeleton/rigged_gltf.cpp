@@ -73,7 +73,8 @@ void writtenInfluences(std::size_t vertex, const std::array<int, kBoneInfluences
     double total = 0.0;
     for (std::size_t k = 0; k < used; ++k)
         total += double(written[k]);
-    const std::size_t largest = std::size_t(std::max_element(written.begin(), written.begin() + used) - written.begin());
+    const std::size_t largest =
+        std::size_t(std::max_element(written.begin(), written.begin() + used) - written.begin());
     double others = 0.0;
     for (std::size_t k = 0; k < used; ++k)
         if (k != largest) {
@@ -105,14 +106,14 @@ void addSkinAttributes(tinygltf::Model& model, const BoneWeights& weights, std::
         values.insert(values.end(), w.begin(), w.end());
     }
     tinygltf::Primitive& primitive = model.meshes[0].primitives[0];
-    const int jointView =
-        addGltfBufferView(model, joints.data(), joints.size() * sizeof(std::uint16_t), TINYGLTF_TARGET_ARRAY_BUFFER);
-    primitive.attributes["JOINTS_0"] = addGltfAccessor(model, jointView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                                                       TINYGLTF_TYPE_VEC4, weights.vertexCount());
+    const int jointView = io::addGltfBufferView(model, joints.data(), joints.size() * sizeof(std::uint16_t),
+                                                TINYGLTF_TARGET_ARRAY_BUFFER);
+    primitive.attributes["JOINTS_0"] = io::addGltfAccessor(model, jointView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                                           TINYGLTF_TYPE_VEC4, weights.vertexCount());
     const int weightView =
-        addGltfBufferView(model, values.data(), values.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
-    primitive.attributes["WEIGHTS_0"] = addGltfAccessor(model, weightView, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                                        TINYGLTF_TYPE_VEC4, weights.vertexCount());
+        io::addGltfBufferView(model, values.data(), values.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+    primitive.attributes["WEIGHTS_0"] = io::addGltfAccessor(model, weightView, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                                            TINYGLTF_TYPE_VEC4, weights.vertexCount());
 }
 
 // Unit normals as the validator requires them; +Z where the mesh gives none.
@@ -133,11 +134,11 @@ tinygltf::Model meshModel(const TriangleMesh& mesh)
     tinygltf::Primitive primitive;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
     primitive.attributes["POSITION"] =
-        addGltfVec3Accessor(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+        io::addGltfVec3Accessor(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER, true);
     primitive.attributes["NORMAL"] =
-        addGltfVec3Accessor(model, exportNormals(mesh), TINYGLTF_TARGET_ARRAY_BUFFER, false);
-    primitive.indices = addGltfTriangleIndices(model, mesh.triangles);
-    addGltfSingleMeshScene(model, primitive, "mesh", 0);
+        io::addGltfVec3Accessor(model, exportNormals(mesh), TINYGLTF_TARGET_ARRAY_BUFFER, false);
+    primitive.indices = io::addGltfTriangleIndices(model, mesh.triangles);
+    io::addGltfSingleMeshScene(model, primitive, "mesh", 0);
     return model;
 }
 
@@ -222,7 +223,7 @@ void addSkin(tinygltf::Model& model, const SkeletonRig& rig)
     const std::vector<float> inverseBind = addJointNodes(model, rig, restFrames(rig));
     for (std::size_t b = 0; b < rig.bones.size(); ++b)
         skin.joints.push_back(skin.skeleton + 1 + int(b));
-    skin.inverseBindMatrices = addGltfFloatAccessor(model, inverseBind, TINYGLTF_TYPE_MAT4, false);
+    skin.inverseBindMatrices = io::addGltfFloatAccessor(model, inverseBind, TINYGLTF_TYPE_MAT4, false);
     model.skins.push_back(skin);
 }
 
@@ -231,7 +232,7 @@ void addChannel(tinygltf::Model& model, tinygltf::Animation& animation, int inpu
 {
     tinygltf::AnimationSampler sampler;
     sampler.input = input;
-    sampler.output = addGltfFloatAccessor(model, values, type, false);
+    sampler.output = io::addGltfFloatAccessor(model, values, type, false);
     sampler.interpolation = "LINEAR";
     tinygltf::AnimationChannel channel;
     channel.sampler = int(animation.samplers.size());
@@ -250,11 +251,11 @@ void addPoseAnimation(tinygltf::Model& model, const SkeletonRig& rig, const Skel
     const std::vector<Frame> frames = restFrames(rig);
     tinygltf::Animation animation;
     animation.name = "pose";
-    const int input = addGltfFloatAccessor(model, {0.0f, 1.0f}, TINYGLTF_TYPE_SCALAR, true);
+    const int input = io::addGltfFloatAccessor(model, {0.0f, 1.0f}, TINYGLTF_TYPE_SCALAR, true);
     const int skeletonNode = model.skins[0].skeleton;
     const glm::vec3 rest(frames[0].position), moved(frames[0].position + pose.rootTranslation);
-    addChannel(model, animation, input, skeletonNode, "translation", {rest.x, rest.y, rest.z, moved.x, moved.y, moved.z},
-               TINYGLTF_TYPE_VEC3);
+    addChannel(model, animation, input, skeletonNode, "translation",
+               {rest.x, rest.y, rest.z, moved.x, moved.y, moved.z}, TINYGLTF_TYPE_VEC3);
     for (std::size_t b = 0; b < rig.bones.size(); ++b) {
         const glm::dquat toParent = glm::conjugate(frames[parentFrame(rig, b)].rotation);
         const glm::dquat atRest = asFloat(toParent * frames[1 + b].rotation);
@@ -311,7 +312,7 @@ std::string riggedGltf(const TriangleMesh& mesh, const SkeletonRig& rig, const B
 void exportRiggedGltf(const TriangleMesh& mesh, const SkeletonRig& rig, const BoneWeights& weights,
                       const std::filesystem::path& path, const RiggedGltfOptions& options)
 {
-    timeline::writeFileAtomically(path, riggedGltf(mesh, rig, weights, hasGlbExtension(path), options));
+    io::writeFileAtomically(path, riggedGltf(mesh, rig, weights, hasGlbExtension(path), options));
 }
 
 } // namespace trimlab

@@ -8,7 +8,7 @@
 /// places, so its centre lies on the (sampled) medial axis — CGAL's mean-curvature-flow
 /// skeleton gets the same points from the Voronoi poles of the vertices.
 ///
-/// Why here (issue 20): the contraction's medial attraction needs one medial point per
+/// Why here: the contraction's medial attraction needs one medial point per
 /// vertex. The inward chord's midpoint (skeleton_refinement.h) depends on where a single
 /// ray lands: at the cap of a limb the ray runs along the axis and its midpoint lies half
 /// a limb back, on a bent limb the far wall is hit obliquely. The ball starts as the

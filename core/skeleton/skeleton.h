@@ -16,9 +16,9 @@ namespace trimlab {
 /// A curve skeleton: nodes joined by edges, and which node each mesh vertex collapsed into
 /// (the skeleton–mesh correspondence of III.B, the regions Π_k of eq. 11).
 struct CurveSkeleton {
-    std::vector<glm::dvec3> nodes;           ///< #N positions, in the mesh's units
-    std::vector<std::array<int, 2>> edges;   ///< undirected, first < second, no duplicates
-    std::vector<int> vertexNode;             ///< #V (mesh vertices): the node that absorbed it
+    std::vector<glm::dvec3> nodes;         ///< #N positions, in the mesh's units
+    std::vector<std::array<int, 2>> edges; ///< undirected, first < second, no duplicates
+    std::vector<int> vertexNode;           ///< #V (mesh vertices): the node that absorbed it
 };
 
 /// One bone of a rig: the segment from joint `head` to joint `tail`, where head is the
@@ -37,8 +37,8 @@ struct SkeletonRig {
     std::vector<glm::dvec3> joints; ///< #J rest-pose positions
     std::vector<int> parent;        ///< #J, parent joint, −1 for the root
     int root = 0;
-    std::vector<Bone> bones;        ///< #J − 1, parents first
-    std::vector<int> vertexJoint;   ///< #V (mesh vertices): the joint whose region holds it
+    std::vector<Bone> bones;      ///< #J − 1, parents first
+    std::vector<int> vertexJoint; ///< #V (mesh vertices): the joint whose region holds it
 };
 
 } // namespace trimlab

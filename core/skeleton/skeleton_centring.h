@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The last step of placing curve-skeleton nodes (issue 20: nodes centred): each node
+/// The last step of placing curve-skeleton nodes, so that they are centred: each node
 /// moves, a few times over, to the midpoint of the chord of the solid through it towards
 /// its nearest wall (among antipodal ray pairs in a fixed set of directions, the pair
 /// whose nearer hit is nearest). In a round limb that chord is the diameter through the
@@ -43,15 +43,15 @@ struct CentringOptions {
 std::size_t centreOnNearestWallChords(CurveSkeleton& curve, const PointInMesh& solid,
                                       const CentringOptions& options = {}, const std::vector<char>& keep = {});
 
-/// Moves every leaf of `curve` (a node of degree 1) across its bone, `options.rounds` times,
-/// to the midpoint of its chord towards the nearest wall among 16 directions in the plane
-/// square to the bone (the bone from its neighbour to the leaf): the nearest wall is then a
-/// side of its limb, never the tip's cap, so the leaf reaches the limb's axis without being
-/// pulled back along it (why centreOnNearestWallChords keeps leaves). A leaf outside
-/// `solid`, or a move that would put it or its bone outside, stays. Measured (issue 20):
-/// leaves had the curve's worst centring (the armadillo after one Loop subdivision: 95
-/// leaves at asymmetry 0.128 against 0.069 for its chain nodes; 0.076 after). Returns the
-/// leaves moved. Parallel over nodes.
+/// Moves every leaf of `curve` (a node of degree 1) across its bone, `options.rounds`
+/// times, to the midpoint of its chord towards the nearest wall among 16 directions in the
+/// plane square to the bone (the bone from its neighbour to the leaf): the nearest wall is
+/// then a side of its limb, never the tip's cap, so the leaf reaches the limb's axis
+/// without being pulled back along it (why centreOnNearestWallChords keeps leaves). A leaf
+/// outside `solid`, or a move that would put it or its bone outside, stays. Without it the
+/// leaves are the worst-centred nodes of a curve
+/// (docs/measurements/2026-11-29-skeleton-stages.md). Returns the leaves moved. Parallel
+/// over nodes.
 std::size_t centreLeavesAcrossTheirBones(CurveSkeleton& curve, const PointInMesh& solid,
                                          const CentringOptions& options = {});
 

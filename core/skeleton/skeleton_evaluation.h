@@ -8,7 +8,7 @@
 /// - centring: through each inside sample, antipodal ray pairs (±d over a fixed set of
 ///   directions) hit the surface at distances a and b; a pair's asymmetry |a − b| / (a + b)
 ///   is 0 at the chord's midpoint and 1 on the surface. Two pairs are reported: the
-///   shortest chord (a + b least; the measure issue 20 compares with CGAL), and the pair
+///   shortest chord (a + b least; the measure compared with CGAL's skeleton), and the pair
 ///   towards the nearest wall (a least). The shortest chord alone cannot see a sample off
 ///   the axis of a round tube — the shortest chord through any point of a disc is bisected
 ///   by it — while the nearest-wall pair reads δ/r for a sample δ off the axis of a tube of
@@ -60,22 +60,22 @@ struct SkeletonEvaluationOptions {
 struct SkeletonEvaluation {
     int nodeCount = 0;
     int edgeCount = 0;
-    double length = 0.0;          ///< total edge length, × diagonal
-    double nodesInside = 0.0;     ///< fraction of nodes inside (1 when there are none)
-    int samples = 0;              ///< edge samples (interior points of the edges)
-    double samplesInside = 0.0;   ///< fraction of them inside (1 when there are none)
-    double lengthOutside = 0.0;   ///< fraction of the total length whose samples lie outside
-    int edgesLeaving = 0;         ///< edges with a sample or an end outside
-    double meanAsymmetry = 0.0;   ///< shortest chord, mean over inside nodes and samples; 0 = centred
-    double meanWallAsymmetry = 0.0; ///< nearest-wall pair, mean over the same points
-    double maxCoverage = 0.0;     ///< max over vertices of the distance to the nearest edge, × diagonal
-    double meanCoverage = 0.0;    ///< its mean
+    double length = 0.0;                ///< total edge length, × diagonal
+    double nodesInside = 0.0;           ///< fraction of nodes inside (1 when there are none)
+    int samples = 0;                    ///< edge samples (interior points of the edges)
+    double samplesInside = 0.0;         ///< fraction of them inside (1 when there are none)
+    double lengthOutside = 0.0;         ///< fraction of the total length whose samples lie outside
+    int edgesLeaving = 0;               ///< edges with a sample or an end outside
+    double meanAsymmetry = 0.0;         ///< shortest chord, mean over inside nodes and samples; 0 = centred
+    double meanWallAsymmetry = 0.0;     ///< nearest-wall pair, mean over the same points
+    double maxCoverage = 0.0;           ///< max over vertices of the distance to the nearest edge, × diagonal
+    double meanCoverage = 0.0;          ///< its mean
     std::size_t worstCoveredVertex = 0; ///< a vertex at maxCoverage
-    int components = 0;           ///< of the graph (isolated nodes count)
-    int cycles = 0;               ///< edges − nodes + components
+    int components = 0;                 ///< of the graph (isolated nodes count)
+    int cycles = 0;                     ///< edges − nodes + components
     int meshComponents = 0;
-    int meshGenus = 0;            ///< Σ over components of (2 − χ)/2, for a closed mesh
-    double diagonal = 0.0;        ///< the mesh's bounding-box diagonal, in its units
+    int meshGenus = 0;     ///< Σ over components of (2 − χ)/2, for a closed mesh
+    double diagonal = 0.0; ///< the mesh's bounding-box diagonal, in its units
 };
 
 /// The numbers on three lines for people (the verb prints them, the panel shows them):

@@ -26,7 +26,7 @@ namespace trimlab {
 struct SkeletonOptions {
     ContractionOptions contraction;
     SimplificationOptions simplification;
-    bool refine = true;     ///< stage C; false keeps the nodes at their contracted positions
+    bool refine = true; ///< stage C; false keeps the nodes at their contracted positions
     /// After refinement, edges longer than this fraction of the bounding-box diagonal get
     /// centred intermediate nodes (skeleton_resampling.h); ≤ 0 leaves the curve as the
     /// simplification made it. Only with refine.
@@ -43,8 +43,10 @@ struct SkeletonOptions {
     /// (medial_chain_routing.h), spaced as the resampling's; only the chains it leaves are
     /// centred. Only with refine, centre and a positive resampleFraction.
     bool routeChains = true;
-    int targetNodes = 30;   ///< joints after selection; 20–40 typical (paper III.D)
-    int rootJoint = -1;     ///< −1: automatic (rig_hierarchy.h); else a joint index of the selection
+    int targetNodes = 30; ///< joints after selection; 20–40 typical (paper III.D); skeleton_parameters.h
+    int rootJoint = -1;   ///< −1: automatic (rig_hierarchy.h); else a joint index of the selection
+
+    friend bool operator==(const SkeletonOptions&, const SkeletonOptions&) = default;
 };
 
 /// Wall-clock time of each stage, in milliseconds.
@@ -53,15 +55,15 @@ struct SkeletonStageTimes {
 };
 
 struct SkeletonExtraction {
-    std::vector<glm::dvec3> contracted;       ///< #V contracted positions
-    std::vector<double> laplacianMagnitude;   ///< #V, ‖L·V'‖ of the last iteration, for the Fig. 7 colour map
+    std::vector<glm::dvec3> contracted;     ///< #V contracted positions
+    std::vector<double> laplacianMagnitude; ///< #V, ‖L·V'‖ of the last iteration, for the Fig. 7 colour map
     int contractionIterations = 0;
     int symbolicAnalyses = 0, numericFactorizations = 0;
-    CurveSkeleton curve;                      ///< simplified and refined curve skeleton
-    SkeletonRig rig;                          ///< selected joints, bones, hierarchy
+    CurveSkeleton curve; ///< simplified and refined curve skeleton
+    SkeletonRig rig;     ///< selected joints, bones, hierarchy
     SkeletonStageTimes times;
-    std::string solver;                       ///< the factorization used, e.g. "CHOLMOD supernodal LLᵀ, METIS ordering"
-    std::vector<std::string> warnings;        ///< solver fallbacks, a discarded divergent iteration, ...
+    std::string solver;                ///< the factorization used, e.g. "CHOLMOD supernodal LLᵀ, METIS ordering"
+    std::vector<std::string> warnings; ///< solver fallbacks, a discarded divergent iteration, ...
 };
 
 /// Runs stages A–D on `mesh`, reporting progress through `control` with the stages

@@ -16,10 +16,10 @@ namespace trimlab {
 
 namespace {
 
+using io::fieldPath;
+using io::indexPath;
+using io::JsonPathError;
 using nlohmann::json;
-using timeline::JsonPathError;
-using timeline::fieldPath;
-using timeline::indexPath;
 
 constexpr std::int64_t kMaxIndex = std::numeric_limits<int>::max();
 
@@ -29,7 +29,7 @@ json positionsJson(const std::vector<glm::dvec3>& positions)
 {
     json array = json::array();
     for (const glm::dvec3& p : positions)
-        array.push_back(timeline::dvec3Json(p));
+        array.push_back(io::dvec3Json(p));
     return array;
 }
 
@@ -50,27 +50,27 @@ json curveJson(const CurveSkeleton& curve)
 
 std::vector<glm::dvec3> positionsValue(const json& value, const std::string& path)
 {
-    timeline::requireArray(value, path);
+    io::requireArray(value, path);
     std::vector<glm::dvec3> positions;
     positions.reserve(value.size());
     for (std::size_t i = 0; i < value.size(); ++i)
-        positions.push_back(timeline::dvec3Value(value[i], indexPath(path, i)));
+        positions.push_back(io::dvec3Value(value[i], indexPath(path, i)));
     return positions;
 }
 
 std::vector<int> indicesValue(const json& value, std::int64_t low, const std::string& path)
 {
-    timeline::requireArray(value, path);
+    io::requireArray(value, path);
     std::vector<int> indices;
     indices.reserve(value.size());
     for (std::size_t i = 0; i < value.size(); ++i)
-        indices.push_back(int(timeline::integerInRange(value[i], low, kMaxIndex, indexPath(path, i))));
+        indices.push_back(int(io::integerInRange(value[i], low, kMaxIndex, indexPath(path, i))));
     return indices;
 }
 
 std::vector<std::array<int, 2>> pairsValue(const json& value, const std::string& path)
 {
-    timeline::requireArray(value, path);
+    io::requireArray(value, path);
     std::vector<std::array<int, 2>> pairs;
     pairs.reserve(value.size());
     for (std::size_t i = 0; i < value.size(); ++i) {
@@ -85,16 +85,15 @@ std::vector<std::array<int, 2>> pairsValue(const json& value, const std::string&
 
 std::vector<Bone> bonesValue(const json& value, const std::string& path)
 {
-    timeline::requireArray(value, path);
+    io::requireArray(value, path);
     std::vector<Bone> bones;
     bones.reserve(value.size());
     for (std::size_t b = 0; b < value.size(); ++b) {
         const std::string at = indexPath(path, b);
-        timeline::requireObject(value[b], at);
-        timeline::rejectUnknownFields(value[b], {"head", "tail", "parent_bone"}, at);
+        io::requireObject(value[b], at);
+        io::rejectUnknownFields(value[b], {"head", "tail", "parent_bone"}, at);
         auto field = [&](std::string_view key, std::int64_t low) {
-            return int(timeline::integerInRange(timeline::requiredField(value[b], key, at), low, kMaxIndex,
-                                                fieldPath(at, key)));
+            return int(io::integerInRange(io::requiredField(value[b], key, at), low, kMaxIndex, fieldPath(at, key)));
         };
         bones.push_back({field("head", 0), field("tail", 0), field("parent_bone", -1)});
     }
@@ -108,56 +107,55 @@ void checkEdges(const std::vector<std::array<int, 2>>& edges, const SkeletonRig&
                                          " bones (one [head, tail] per bone)");
     for (std::size_t b = 0; b < edges.size(); ++b)
         if (edges[b][0] != rig.bones[b].head || edges[b][1] != rig.bones[b].tail)
-            throw JsonPathError(indexPath("edges", b), "is [" + std::to_string(edges[b][0]) + ", " +
-                                                           std::to_string(edges[b][1]) + "] but bone " +
-                                                           std::to_string(b) + " runs from joint " +
-                                                           std::to_string(rig.bones[b].head) + " to " +
-                                                           std::to_string(rig.bones[b].tail));
+            throw JsonPathError(indexPath("edges", b),
+                                "is [" + std::to_string(edges[b][0]) + ", " + std::to_string(edges[b][1]) +
+                                    "] but bone " + std::to_string(b) + " runs from joint " +
+                                    std::to_string(rig.bones[b].head) + " to " + std::to_string(rig.bones[b].tail));
 }
 
 CurveSkeleton curveValue(const json& value, const std::string& path)
 {
-    timeline::requireObject(value, path);
-    timeline::rejectUnknownFields(value, {"nodes", "edges", "vertex_node"}, path);
+    io::requireObject(value, path);
+    io::rejectUnknownFields(value, {"nodes", "edges", "vertex_node"}, path);
     CurveSkeleton curve;
-    curve.nodes = positionsValue(timeline::requiredField(value, "nodes", path), fieldPath(path, "nodes"));
+    curve.nodes = positionsValue(io::requiredField(value, "nodes", path), fieldPath(path, "nodes"));
     const std::string edgesPath = fieldPath(path, "edges");
-    curve.edges = pairsValue(timeline::requiredField(value, "edges", path), edgesPath);
+    curve.edges = pairsValue(io::requiredField(value, "edges", path), edgesPath);
     std::vector<std::array<int, 2>> seen;
     for (std::size_t e = 0; e < curve.edges.size(); ++e) {
         const auto [a, b] = curve.edges[e];
         if (!(a < b) || std::size_t(b) >= curve.nodes.size())
-            throw JsonPathError(indexPath(edgesPath, e), "must join two existing nodes a < b (of " +
-                                                             std::to_string(curve.nodes.size()) + ")");
+            throw JsonPathError(indexPath(edgesPath, e),
+                                "must join two existing nodes a < b (of " + std::to_string(curve.nodes.size()) + ")");
         seen.push_back(curve.edges[e]);
     }
     std::sort(seen.begin(), seen.end());
     if (std::adjacent_find(seen.begin(), seen.end()) != seen.end())
         throw JsonPathError(edgesPath, "lists an edge twice");
     const std::string mappingPath = fieldPath(path, "vertex_node");
-    curve.vertexNode = indicesValue(timeline::requiredField(value, "vertex_node", path), 0, mappingPath);
+    curve.vertexNode = indicesValue(io::requiredField(value, "vertex_node", path), 0, mappingPath);
     for (std::size_t v = 0; v < curve.vertexNode.size(); ++v)
         if (std::size_t(curve.vertexNode[v]) >= curve.nodes.size())
-            throw JsonPathError(indexPath(mappingPath, v), "node " + std::to_string(curve.vertexNode[v]) +
-                                                               " does not exist");
+            throw JsonPathError(indexPath(mappingPath, v),
+                                "node " + std::to_string(curve.vertexNode[v]) + " does not exist");
     return curve;
 }
 
 void checkFormat(const json& document)
 {
-    timeline::requireObject(document, "");
-    const json* format = timeline::optionalField(document, "format");
+    io::requireObject(document, "");
+    const json* format = io::optionalField(document, "format");
     if (!format || !format->is_string() || format->get<std::string>() != kSkeletonFormatName)
-        throw JsonPathError("format", "not a TrimLab skeleton (\"format\" is not \"" +
-                                          std::string(kSkeletonFormatName) + "\")");
-    const auto version = timeline::integerInRange(timeline::requiredField(document, "version", ""), 1, kMaxIndex,
-                                                  "version");
+        throw JsonPathError("format",
+                            "not a TrimLab skeleton (\"format\" is not \"" + std::string(kSkeletonFormatName) + "\")");
+    const auto version = io::integerInRange(io::requiredField(document, "version", ""), 1, kMaxIndex, "version");
     if (version > kSkeletonFormatVersion)
         throw JsonPathError("version", "version " + std::to_string(version) + " is newer than this TrimLab (" +
                                            std::to_string(kSkeletonFormatVersion) + "); update TrimLab to open it");
-    timeline::rejectUnknownFields(document, {"format", "version", "generator", "nodes", "root", "parent", "edges",
-                                             "bones", "vertex_joint", "curve_skeleton"},
-                                  "");
+    io::rejectUnknownFields(document,
+                            {"format", "version", "generator", "nodes", "root", "parent", "edges", "bones",
+                             "vertex_joint", "curve_skeleton"},
+                            "");
 }
 
 SkeletonDocument readDocument(const json& document)
@@ -165,15 +163,15 @@ SkeletonDocument readDocument(const json& document)
     checkFormat(document);
     SkeletonDocument result;
     SkeletonRig& rig = result.rig;
-    rig.joints = positionsValue(timeline::requiredField(document, "nodes", ""), "nodes");
-    rig.root = int(timeline::integerInRange(timeline::requiredField(document, "root", ""), 0, kMaxIndex, "root"));
-    rig.parent = indicesValue(timeline::requiredField(document, "parent", ""), -1, "parent");
-    rig.bones = bonesValue(timeline::requiredField(document, "bones", ""), "bones");
-    rig.vertexJoint = indicesValue(timeline::requiredField(document, "vertex_joint", ""), 0, "vertex_joint");
+    rig.joints = positionsValue(io::requiredField(document, "nodes", ""), "nodes");
+    rig.root = int(io::integerInRange(io::requiredField(document, "root", ""), 0, kMaxIndex, "root"));
+    rig.parent = indicesValue(io::requiredField(document, "parent", ""), -1, "parent");
+    rig.bones = bonesValue(io::requiredField(document, "bones", ""), "bones");
+    rig.vertexJoint = indicesValue(io::requiredField(document, "vertex_joint", ""), 0, "vertex_joint");
     if (const std::optional<RigProblem> problem = findRigProblem(rig))
         throw JsonPathError(problem->where, problem->reason);
-    checkEdges(pairsValue(timeline::requiredField(document, "edges", ""), "edges"), rig);
-    if (const json* curve = timeline::optionalField(document, "curve_skeleton")) {
+    checkEdges(pairsValue(io::requiredField(document, "edges", ""), "edges"), rig);
+    if (const json* curve = io::optionalField(document, "curve_skeleton")) {
         result.curve = curveValue(*curve, "curve_skeleton");
         if (!rig.vertexJoint.empty() && !result.curve->vertexNode.empty() &&
             rig.vertexJoint.size() != result.curve->vertexNode.size())
@@ -211,20 +209,20 @@ std::string skeletonJson(const SkeletonRig& rig, const CurveSkeleton* curve)
 
 void saveSkeletonJson(const std::filesystem::path& path, const SkeletonRig& rig, const CurveSkeleton* curve)
 {
-    timeline::writeFileAtomically(path, skeletonJson(rig, curve));
+    io::writeFileAtomically(path, skeletonJson(rig, curve));
 }
 
 SkeletonDocument parseSkeletonJson(std::string_view text, const std::string& displayName)
 {
-    return timeline::readJsonDocument<SkeletonFileError>(
-        text, displayName, [](const json& document) { return readDocument(document); });
+    return io::readJsonDocument<SkeletonFileError>(text, displayName,
+                                                   [](const json& document) { return readDocument(document); });
 }
 
 SkeletonDocument loadSkeletonJson(const std::filesystem::path& path)
 {
     std::string text;
     try {
-        text = timeline::readFileBytes(path, kMaxSkeletonFileBytes);
+        text = io::readFileBytes(path, kMaxSkeletonFileBytes);
     } catch (const std::runtime_error& error) {
         throw SkeletonFileError(path.string(), "", error.what());
     }

@@ -37,7 +37,7 @@ inline constexpr std::size_t kMaxSkeletonFileBytes = std::size_t(1) << 30;
 /// A skeleton file could not be read. `what()` reads `FILE: [WHERE: ]REASON`, with WHERE
 /// a JSON path such as "bones[3].parent_bone" or "curve_skeleton.edges[7]", e.g.
 /// `rig.json: bones[3].head: joint 5 is not the parent of tail 4`.
-class SkeletonFileError : public DocumentFileError {
+class SkeletonFileError : public io::DocumentFileError {
 public:
     using DocumentFileError::DocumentFileError;
 };

@@ -138,8 +138,9 @@ void skinPositions(std::span<const glm::vec3> rest, const BoneWeights& weights, 
     });
 }
 
-std::vector<glm::vec3> posePositions(std::span<const glm::vec3> rest, const SkeletonRig& rig, const BoneWeights& weights,
-                                     const SkeletonPose& pose, SkinningMethod method, unsigned threads)
+std::vector<glm::vec3> posePositions(std::span<const glm::vec3> rest, const SkeletonRig& rig,
+                                     const BoneWeights& weights, const SkeletonPose& pose, SkinningMethod method,
+                                     unsigned threads)
 {
     std::vector<glm::vec3> out;
     skinPositions(rest, weights, boneMotions(rig, pose), method, out, threads);

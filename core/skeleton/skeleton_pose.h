@@ -54,9 +54,8 @@ struct SkeletonPose {
 /// `out` (resized). A vertex without any influence stays where it is. Parallel over
 /// blocks of vertices on `threads` threads (0 = all cores). Throws std::invalid_argument
 /// when the sizes disagree or a bone index is out of range.
-void skinPositions(std::span<const glm::vec3> rest, const BoneWeights& weights,
-                   std::span<const DualQuaternion> motions, SkinningMethod method, std::vector<glm::vec3>& out,
-                   unsigned threads = 0);
+void skinPositions(std::span<const glm::vec3> rest, const BoneWeights& weights, std::span<const DualQuaternion> motions,
+                   SkinningMethod method, std::vector<glm::vec3>& out, unsigned threads = 0);
 
 /// Convenience: boneMotions then skinPositions of `rest`.
 [[nodiscard]] std::vector<glm::vec3> posePositions(std::span<const glm::vec3> rest, const SkeletonRig& rig,

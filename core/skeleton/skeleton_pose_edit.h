@@ -26,7 +26,6 @@ namespace trimlab {
 /// (rig-space) `axis` through the bone's posed head: the posed bone moves exactly as a
 /// rigid rotation of its current placement. A zero or non-finite axis changes nothing.
 /// Throws as boneMotions for an inconsistent rig or pose, std::out_of_range for a bad bone.
-void rotateBoneAboutAxis(const SkeletonRig& rig, SkeletonPose& pose, int bone, const glm::dvec3& axis,
-                         double radians);
+void rotateBoneAboutAxis(const SkeletonRig& rig, SkeletonPose& pose, int bone, const glm::dvec3& axis, double radians);
 
 } // namespace trimlab

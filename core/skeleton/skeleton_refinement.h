@@ -8,8 +8,7 @@
 /// centre of a section only when the region samples the whole section evenly: half a
 /// ring of a bent limb, a flank absorbed by a junction or a region sampled densely on
 /// one side puts it off the axis or outside, and a node left at its contracted position
-/// may lie outside (measured against CGAL's skeleton: a quarter of the armadillo's nodes
-/// were outside). Here every region vertex also votes with the midpoint of its inward
+/// may lie outside. Here every region vertex also votes with the midpoint of its inward
 /// chord — from the vertex along its inward normal to the first surface crossing — which
 /// lies on the medial axis of a tube whatever part of the ring the vertex is on. A node
 /// moves to the first of these that is inside:
@@ -37,7 +36,7 @@ namespace trimlab {
 /// vertex has no normal or its inward ray finds no surface (an open or inverted part).
 /// `inside` must be built from the same mesh. Parallel over vertices.
 [[nodiscard]] std::vector<std::optional<glm::dvec3>> inwardChordMidpoints(const TriangleMesh& mesh,
-                                                                         const PointInMesh& inside);
+                                                                          const PointInMesh& inside);
 
 /// The inside one of `midpoints` nearest to `p` (the nearest few are tried in order of
 /// distance); none when no midpoint is inside. O(#V).

@@ -25,8 +25,8 @@
 namespace trimlab {
 
 struct ReroutingResult {
-    std::size_t rerouted = 0;  ///< leaving edges replaced by an inside path
-    std::size_t kept = 0;      ///< leaving edges left as they were (no inside path found)
+    std::size_t rerouted = 0; ///< leaving edges replaced by an inside path
+    std::size_t kept = 0;     ///< leaving edges left as they were (no inside path found)
     std::size_t nodesAdded = 0;
 };
 
@@ -35,7 +35,6 @@ struct ReroutingResult {
 /// inwardChordMidpoints. Edges stay sorted, first < second. Throws std::invalid_argument
 /// when midpoints and the mesh's vertices differ in number.
 ReroutingResult rerouteLeavingEdges(CurveSkeleton& curve, const TriangleMesh& mesh,
-                                    const std::vector<std::optional<glm::dvec3>>& midpoints,
-                                    const PointInMesh& inside);
+                                    const std::vector<std::optional<glm::dvec3>>& midpoints, const PointInMesh& inside);
 
 } // namespace trimlab

@@ -89,11 +89,10 @@ void splitEdge(CurveSkeleton& curve, std::array<int, 2> edge, int depth,
     splitEdge(curve, {std::min(edge[1], node), std::max(edge[1], node)}, depth + 1, midpoints, inside, edges);
 }
 
-
 } // namespace
 
 std::size_t splitEdgesLeaving(CurveSkeleton& curve, const std::vector<std::optional<glm::dvec3>>& midpoints,
-                       const PointInMesh& inside)
+                              const PointInMesh& inside)
 {
     std::vector<std::array<int, 2>> edges;
     const std::vector<std::array<int, 2>> original = curve.edges;
@@ -141,8 +140,8 @@ CurveSkeleton resampleSkeleton(const CurveSkeleton& curve, const TriangleMesh& m
         if (node < 0 || node >= static_cast<int>(curve.nodes.size()))
             throw std::invalid_argument("resampleSkeleton: vertex " + std::to_string(v) + " maps to node " +
                                         std::to_string(node));
-        const Placement at = place(glm::dvec3(mesh.positions[v]), node, curve,
-                                   incident[static_cast<std::size_t>(node)], steps);
+        const Placement at =
+            place(glm::dvec3(mesh.positions[v]), node, curve, incident[static_cast<std::size_t>(node)], steps);
         if (at.edge < 0 || at.slice <= 0 || at.slice >= steps[static_cast<std::size_t>(at.edge)])
             continue;
         const int target = firstNew[static_cast<std::size_t>(at.edge)] + at.slice - 1;
@@ -166,7 +165,8 @@ CurveSkeleton resampleSkeleton(const CurveSkeleton& curve, const TriangleMesh& m
             const glm::dvec3 onEdge = curve.nodes[static_cast<std::size_t>(a)] +
                                       (static_cast<double>(k) / n) * (curve.nodes[static_cast<std::size_t>(b)] -
                                                                       curve.nodes[static_cast<std::size_t>(a)]);
-            const glm::dvec3 centre = midpointCount[i] > 0 ? midpointSum[i] / static_cast<double>(midpointCount[i]) : onEdge;
+            const glm::dvec3 centre =
+                midpointCount[i] > 0 ? midpointSum[i] / static_cast<double>(midpointCount[i]) : onEdge;
             if (midpointCount[i] > 0 && inside.contains(centre)) {
                 out.nodes[i] = centre;
             } else if (inside.contains(onEdge)) {

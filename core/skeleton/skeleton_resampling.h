@@ -1,10 +1,9 @@
 #pragma once
 /// \file
-/// Resampling of the refined curve skeleton (issue 20: nodes inside and centred). The
-/// simplification leaves as few nodes as the contracted mesh had sections that survived
-/// the collapses: on a bent limb an edge can span a whole knee, and the straight segment
-/// between two centred nodes then runs off the axis or out of the solid (measured on the
-/// cat: 43 nodes, 0.5 % of the length outside; the asymmetry of its samples twice CGAL's).
+/// Resampling of the refined curve skeleton, so that its nodes and edges are inside and
+/// centred. The simplification leaves as few nodes as the contracted mesh had sections
+/// that survived the collapses: on a bent limb an edge can span a whole knee, and the
+/// straight segment between two centred nodes then runs off the axis or out of the solid.
 /// Here every edge longer than `spacing` is cut into equal steps no longer than it, and
 /// each new node goes to the centre of its slice of the surface: the region vertices of
 /// the edge's two nodes are assigned to the edge they lie along (the incident edge nearest

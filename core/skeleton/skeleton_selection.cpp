@@ -33,7 +33,10 @@ public:
     [[nodiscard]] NodeSelection result() const;
 
 private:
-    [[nodiscard]] double length(int a, int b) const { return glm::length(m_positions[static_cast<std::size_t>(a)] - m_positions[static_cast<std::size_t>(b)]); }
+    [[nodiscard]] double length(int a, int b) const
+    {
+        return glm::length(m_positions[static_cast<std::size_t>(a)] - m_positions[static_cast<std::size_t>(b)]);
+    }
     [[nodiscard]] bool eligible(int a, int b) const;
     [[nodiscard]] int survivor(int a, int b) const;
     [[nodiscard]] bool mergeStaysInside(int loser, int survivor);
@@ -45,10 +48,10 @@ private:
     std::vector<glm::dvec3> m_positions;
     std::vector<std::vector<int>> m_adjacent;
     std::vector<std::size_t> m_regionSize;
-    std::vector<double> m_radius; // mean distance from the node to its region's original vertices
+    std::vector<double> m_radius;    // mean distance from the node to its region's original vertices
     std::vector<double> m_clearance; // distance from the node to the nearest original vertex (junctions only)
     std::vector<std::size_t> m_curveRegionSize; // region sizes before any merge
-    std::vector<int> m_absorbedBy; // −1 while alive
+    std::vector<int> m_absorbedBy;              // −1 while alive
     std::size_t m_aliveCount = 0;
     const PointInMesh* m_solid = nullptr;
     std::map<std::pair<int, int>, bool> m_segmentInside; // positions never change: test each pair once
@@ -56,8 +59,12 @@ private:
 
 NodeGraph::NodeGraph(const CurveSkeleton& curve, std::span<const glm::dvec3> originalPositions,
                      const PointInMesh* solid)
-    : m_positions(curve.nodes), m_adjacent(curve.nodes.size()), m_regionSize(curve.nodes.size(), 0),
-      m_radius(curve.nodes.size(), 0.0), m_absorbedBy(curve.nodes.size(), -1), m_aliveCount(curve.nodes.size()),
+    : m_positions(curve.nodes),
+      m_adjacent(curve.nodes.size()),
+      m_regionSize(curve.nodes.size(), 0),
+      m_radius(curve.nodes.size(), 0.0),
+      m_absorbedBy(curve.nodes.size(), -1),
+      m_aliveCount(curve.nodes.size()),
       m_solid(solid)
 {
     const auto n = static_cast<int>(curve.nodes.size());
@@ -80,7 +87,8 @@ NodeGraph::NodeGraph(const CurveSkeleton& curve, std::span<const glm::dvec3> ori
             throw std::invalid_argument("selectSkeletonNodes: vertex " + std::to_string(v) + " maps to node " +
                                         std::to_string(k) + " of " + std::to_string(n));
         ++m_regionSize[static_cast<std::size_t>(k)];
-        m_radius[static_cast<std::size_t>(k)] += glm::length(originalPositions[v] - m_positions[static_cast<std::size_t>(k)]);
+        m_radius[static_cast<std::size_t>(k)] +=
+            glm::length(originalPositions[v] - m_positions[static_cast<std::size_t>(k)]);
     }
     for (std::size_t k = 0; k < m_radius.size(); ++k)
         if (m_regionSize[k] > 0)
@@ -169,7 +177,8 @@ bool NodeGraph::pruneBranchFrom(int leaf)
         return false; // the graph is a path: its ends are the arms
     const auto junction = static_cast<std::size_t>(current);
     const bool inside = branchLength < m_radius[junction];
-    const bool tiny = static_cast<double>(branchRegion) < kSpuriousRegionFraction * static_cast<double>(m_curveRegionSize[junction]);
+    const bool tiny =
+        static_cast<double>(branchRegion) < kSpuriousRegionFraction * static_cast<double>(m_curveRegionSize[junction]);
     if (!inside && !tiny)
         return false; // the branch sticks out and carries surface: an arm
     for (int k : chain)
@@ -227,7 +236,7 @@ bool NodeGraph::eligible(int a, int b) const
 {
     const int da = degree(a), db = degree(b);
     if ((da == 1 && db >= 3) || (db == 1 && da >= 3))
-        return false; // would remove an arm
+        return false;             // would remove an arm
     return !(da == 1 && db == 1); // a lone edge: both of its ends are arm ends
 }
 
@@ -277,7 +286,8 @@ NodeSelection NodeGraph::result() const
     for (int a : selection.survivors)
         for (int b : m_adjacent[static_cast<std::size_t>(a)])
             if (a < b)
-                selection.edges.push_back({jointIndex[static_cast<std::size_t>(a)], jointIndex[static_cast<std::size_t>(b)]});
+                selection.edges.push_back(
+                    {jointIndex[static_cast<std::size_t>(a)], jointIndex[static_cast<std::size_t>(b)]});
     std::sort(selection.edges.begin(), selection.edges.end());
     return selection;
 }

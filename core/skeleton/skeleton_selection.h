@@ -48,10 +48,10 @@ namespace trimlab {
 
 /// Which curve nodes survive selection as joints.
 struct NodeSelection {
-    std::vector<int> survivors;               ///< #J curve-node indices, ascending (joint j = survivors[j])
-    std::vector<int> jointOfNode;             ///< #N: the joint whose region absorbed curve node k
-    std::vector<std::array<int, 2>> edges;    ///< between joints, first < second, no duplicates
-    std::size_t prunedBranches = 0;           ///< spurious branches merged before selection
+    std::vector<int> survivors;            ///< #J curve-node indices, ascending (joint j = survivors[j])
+    std::vector<int> jointOfNode;          ///< #N: the joint whose region absorbed curve node k
+    std::vector<std::array<int, 2>> edges; ///< between joints, first < second, no duplicates
+    std::size_t prunedBranches = 0;        ///< spurious branches merged before selection
 };
 
 /// Selects at most `targetNodes` joints (fewer only if the curve has fewer nodes; more

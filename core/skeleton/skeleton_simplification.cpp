@@ -52,8 +52,11 @@ class Simplifier {
 public:
     Simplifier(std::span<const glm::dvec3> contracted, std::span<const glm::uvec3> triangles,
                const SimplificationOptions& options, const TaskControl& control)
-        : m_complex(contracted, triangles), m_quadrics(contracted.size(), Quadric(0.0)),
-          m_stamps(contracted.size(), 0), m_referenced(contracted.size(), 0), m_options(options),
+        : m_complex(contracted, triangles),
+          m_quadrics(contracted.size(), Quadric(0.0)),
+          m_stamps(contracted.size(), 0),
+          m_referenced(contracted.size(), 0),
+          m_options(options),
           m_control(control)
     {
         for (const glm::uvec3& t : triangles)
@@ -94,7 +97,8 @@ double Simplifier::cost(int from, int to) const
 {
     const glm::dvec3& vi = m_complex.position(from);
     const glm::dvec3& vj = m_complex.position(to);
-    const double shape = quadricValue(m_quadrics[static_cast<std::size_t>(from)] + m_quadrics[static_cast<std::size_t>(to)], vj);
+    const double shape =
+        quadricValue(m_quadrics[static_cast<std::size_t>(from)] + m_quadrics[static_cast<std::size_t>(to)], vj);
     const double sampling = glm::length(vi - vj) * m_around[static_cast<std::size_t>(from)];
     return m_options.shapeWeight * shape + m_options.samplingWeight * sampling;
 }
@@ -235,7 +239,8 @@ CurveSkeleton Simplifier::result()
     curve.vertexNode.resize(static_cast<std::size_t>(n), -1);
     for (int v = 0; v < n; ++v) {
         if (m_referenced[static_cast<std::size_t>(v)]) {
-            curve.vertexNode[static_cast<std::size_t>(v)] = nodeOf[static_cast<std::size_t>(m_complex.representative(v))];
+            curve.vertexNode[static_cast<std::size_t>(v)] =
+                nodeOf[static_cast<std::size_t>(m_complex.representative(v))];
             continue;
         }
         double best = std::numeric_limits<double>::infinity();

@@ -26,6 +26,8 @@ struct SimplificationOptions {
     double preCollapseFraction = 1.0e-3;
     double shapeWeight = 1.0;    ///< w_a of eq. (10)
     double samplingWeight = 0.1; ///< w_b of eq. (10)
+
+    friend bool operator==(const SimplificationOptions&, const SimplificationOptions&) = default;
 };
 
 /// The curve skeleton of the contracted mesh: `contracted` (#V contracted positions),

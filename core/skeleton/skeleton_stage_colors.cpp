@@ -29,8 +29,8 @@ std::vector<int> greedyNodeColors(const CurveSkeleton& curve)
     std::vector<int> color(n, -1);
     for (std::size_t k = 0; k < n; ++k) {
         int c = 0;
-        while (std::any_of(neighbours[k].begin(), neighbours[k].end(),
-                           [&](int m) { return color[std::size_t(m)] == c; }))
+        while (
+            std::any_of(neighbours[k].begin(), neighbours[k].end(), [&](int m) { return color[std::size_t(m)] == c; }))
             ++c;
         color[k] = c;
     }

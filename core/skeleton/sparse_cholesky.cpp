@@ -16,16 +16,16 @@ namespace trimlab {
 
 namespace {
 
-// CHOLMOD's supernodal factorization opens OpenMP teams of a size compiled into the
-// library (CHOLMOD_OMP_NUM_THREADS: 4 in Debian's build) whatever the machine has, and
-// OpenBLAS's own threads run beside them. On 2 cores the 4 threads spin and yield against
-// the BLAS threads: measured here, a third of the contraction's time (armadillo after one
-// Loop subdivision 4.9 s, 3.3 s with dynamic teams; the fish 0.97 s, 0.63 s). With dynamic
-// teams the OpenMP runtime caps a team at the cores the load average leaves free, so a
-// machine with idle cores still gets CHOLMOD's 4 threads. The dynamic setting belongs to
-// the calling thread, so it is set before every call into CHOLMOD (a contraction may run
-// on any worker thread). The runtime is whichever CHOLMOD brought (libgomp on Debian):
-// looked up rather than linked, so a CHOLMOD without OpenMP needs nothing.
+// CHOLMOD's supernodal factorization opens OpenMP teams of a size compiled into the library
+// (CHOLMOD_OMP_NUM_THREADS: 4 in Debian's build) whatever the machine has, and OpenBLAS's
+// own threads run beside them. On 2 cores the 4 threads spin and yield against the BLAS
+// threads, which costs about a third of the contraction's time
+// (docs/measurements/2026-11-29-skeleton-stages.md). With dynamic teams the OpenMP runtime
+// caps a team at the cores the load average leaves free, so a machine with idle cores still
+// gets CHOLMOD's 4 threads. The dynamic setting belongs to the calling thread, so it is set
+// before every call into CHOLMOD (a contraction may run on any worker thread). The runtime
+// is whichever CHOLMOD brought (libgomp on Debian): looked up rather than linked, so a
+// CHOLMOD without OpenMP needs nothing.
 void useDynamicOpenMpTeams()
 {
     using SetDynamic = void (*)(int);
@@ -35,14 +35,11 @@ void useDynamicOpenMpTeams()
 }
 
 // OpenBLAS runs on one thread. Its threads spin while they wait for work, and on a busy
-// machine a descheduled one stalls the others: with two busy loops on the 2 cores here, the
-// fish's contraction took 10-29 s with OpenBLAS's threads and 0.9-1.1 s on one (the bunny
-// 5.8-6.8 s and 0.24 s, the triceratops 3.8-5.3 s and 0.25-0.31 s). On an idle machine one
-// thread is no slower (the bunny 0.14 s, the fish 0.55 s, the armadillo after one Loop
-// subdivision 3.7 s, against 0.13-0.15, 0.55 and 4.0-4.1 s; CHOLMOD's supernodes here are
-// small for threaded BLAS). Process-wide, and made before every call into CHOLMOD as the
-// OpenMP setting above, so that nothing set in between lasts; looked up, so another BLAS
-// needs nothing.
+// machine a descheduled one stalls the others, which makes a contraction ten to thirty
+// times slower; on an idle machine one thread is no slower, as CHOLMOD's supernodes are
+// small for threaded BLAS (docs/measurements/2026-11-29-skeleton-stages.md). Process-wide,
+// and made before every call into CHOLMOD as the OpenMP setting above, so that nothing set
+// in between lasts; looked up, so another BLAS needs nothing.
 void useOneBlasThread()
 {
     using SetNumThreads = void (*)(int);
@@ -63,28 +60,44 @@ using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int
 const char* cholmodOrderingName(int ordering)
 {
     switch (ordering) {
-    case CHOLMOD_NATURAL: return "natural";
-    case CHOLMOD_GIVEN: return "given";
-    case CHOLMOD_AMD: return "AMD";
-    case CHOLMOD_METIS: return "METIS";
-    case CHOLMOD_NESDIS: return "NESDIS";
-    case CHOLMOD_COLAMD: return "COLAMD";
-    case CHOLMOD_POSTORDERED: return "natural (postordered)";
-    default: return "unknown";
+    case CHOLMOD_NATURAL:
+        return "natural";
+    case CHOLMOD_GIVEN:
+        return "given";
+    case CHOLMOD_AMD:
+        return "AMD";
+    case CHOLMOD_METIS:
+        return "METIS";
+    case CHOLMOD_NESDIS:
+        return "NESDIS";
+    case CHOLMOD_COLAMD:
+        return "COLAMD";
+    case CHOLMOD_POSTORDERED:
+        return "natural (postordered)";
+    default:
+        return "unknown";
     }
 }
 
 std::string cholmodStatusText(int status)
 {
     switch (status) {
-    case CHOLMOD_NOT_INSTALLED: return "a CHOLMOD module it needs is not installed (e.g. METIS: no Partition module)";
-    case CHOLMOD_OUT_OF_MEMORY: return "out of memory";
-    case CHOLMOD_TOO_LARGE: return "the problem is too large for CHOLMOD's integer type";
-    case CHOLMOD_INVALID: return "CHOLMOD rejected its input as invalid";
-    case CHOLMOD_GPU_PROBLEM: return "CHOLMOD's GPU code failed";
-    case CHOLMOD_NOT_POSDEF: return "the matrix is not positive definite";
-    case CHOLMOD_DSMALL: return "the factor has a tiny diagonal entry";
-    default: return "CHOLMOD status " + std::to_string(status);
+    case CHOLMOD_NOT_INSTALLED:
+        return "a CHOLMOD module it needs is not installed (e.g. METIS: no Partition module)";
+    case CHOLMOD_OUT_OF_MEMORY:
+        return "out of memory";
+    case CHOLMOD_TOO_LARGE:
+        return "the problem is too large for CHOLMOD's integer type";
+    case CHOLMOD_INVALID:
+        return "CHOLMOD rejected its input as invalid";
+    case CHOLMOD_GPU_PROBLEM:
+        return "CHOLMOD's GPU code failed";
+    case CHOLMOD_NOT_POSDEF:
+        return "the matrix is not positive definite";
+    case CHOLMOD_DSMALL:
+        return "the factor has a tiny diagonal entry";
+    default:
+        return "CHOLMOD status " + std::to_string(status);
     }
 }
 
@@ -292,9 +305,12 @@ int cholmodOrdering(SparseOrdering ordering)
 const char* orderingName(SparseOrdering ordering)
 {
     switch (ordering) {
-    case SparseOrdering::Amd: return "AMD";
-    case SparseOrdering::Colamd: return "COLAMD";
-    case SparseOrdering::Metis: return "METIS";
+    case SparseOrdering::Amd:
+        return "AMD";
+    case SparseOrdering::Colamd:
+        return "COLAMD";
+    case SparseOrdering::Metis:
+        return "METIS";
     }
     return "unknown";
 }

@@ -23,7 +23,10 @@ struct BoneEdit {
     /// Length units of the animation, applied after the rotation.
     glm::dvec3 translation{0.0};
 
-    [[nodiscard]] bool isIdentity() const { return rotationDegrees == glm::dvec3(0.0) && translation == glm::dvec3(0.0); }
+    [[nodiscard]] bool isIdentity() const
+    {
+        return rotationDegrees == glm::dvec3(0.0) && translation == glm::dvec3(0.0);
+    }
 };
 
 /// Σ_j w_{b,j}·p_j / Σ_j w_{b,j} over the vertices bone `bone` influences, on `positions`

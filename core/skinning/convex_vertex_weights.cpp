@@ -53,7 +53,7 @@ VertexInfluences bestConvexInfluences(const Eigen::MatrixXd& gram, const std::ve
     Eigen::VectorXd current = Eigen::VectorXd::Zero(Eigen::Index(bones.size()));
     for (std::uint32_t i = 0; i < old.count; ++i)
         current(std::lower_bound(bones.begin(), bones.end(), old.bones[i]) - bones.begin()) = old.weights[i];
-    if (!(x.dot(gram * x) < current.dot(gram * current)))
+    if (old.count <= limit && !(x.dot(gram * x) < current.dot(gram * current)))
         return old;
     std::vector<std::pair<std::uint32_t, double>> influences;
     for (std::size_t i = 0; i < bones.size(); ++i)

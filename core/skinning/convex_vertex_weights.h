@@ -20,10 +20,11 @@ namespace trimlab {
 /// argmin xᵀ·gram·x over the simplex (x ≥ 0, Σx = 1) with at most `limit` (≤ kMaxInfluences)
 /// non-zero entries: the exact simplex minimiser, and when it uses more than `limit` bones
 /// the minimiser again over its `limit` largest. `bones`: the candidates (sorted,
-/// distinct), one per row/column of `gram`. Returns `old` unless the new weights are
-/// strictly better in xᵀGx (so repeated updates never raise the error); `old`'s bones
-/// must be among `bones`.
-[[nodiscard]] VertexInfluences bestConvexInfluences(const Eigen::MatrixXd& gram, const std::vector<std::uint32_t>& bones,
+/// distinct), one per row/column of `gram`. Returns `old` when it is within `limit` and the
+/// new weights are not strictly better in xᵀGx (so repeated updates never raise the
+/// error); `old`'s bones must be among `bones`.
+[[nodiscard]] VertexInfluences bestConvexInfluences(const Eigen::MatrixXd& gram,
+                                                    const std::vector<std::uint32_t>& bones,
                                                     const VertexInfluences& old,
                                                     std::size_t limit = kDefaultInfluences);
 

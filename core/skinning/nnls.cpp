@@ -76,8 +76,7 @@ bool updatePassiveSet(const Matrix& a, const Vector& b, std::vector<bool>& passi
 double defaultTolerance(const Matrix& a, const Vector& b)
 {
     const double columnNorm = a.cols() > 0 ? a.colwise().norm().maxCoeff() : 0.0;
-    return 10.0 * std::numeric_limits<double>::epsilon() * double(std::max(a.rows(), a.cols())) * columnNorm *
-           b.norm();
+    return 10.0 * std::numeric_limits<double>::epsilon() * double(std::max(a.rows(), a.cols())) * columnNorm * b.norm();
 }
 
 } // namespace

@@ -23,7 +23,7 @@ struct NnlsResult {
     std::vector<double> x;     ///< cols values, every one ≥ 0
     double residualNorm = 0.0; ///< ‖A x − b‖₂
     std::size_t iterations = 0;
-    bool converged = false;    ///< false: stopped by maxIterations (x is still feasible)
+    bool converged = false; ///< false: stopped by maxIterations (x is still feasible)
 };
 
 /// min ‖A x − b‖₂ subject to x ≥ 0, by the Lawson–Hanson active-set method: variables

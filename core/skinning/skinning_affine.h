@@ -11,8 +11,8 @@ namespace trimlab {
 
 /// x ↦ linear·x + translation. The default is the identity.
 struct Affine3 {
-    glm::dmat3 linear{1.0};       ///< the upper-left 3×3 block N (column-major, as glm)
-    glm::dvec3 translation{0.0};  ///< T, in the animation's length units
+    glm::dmat3 linear{1.0};      ///< the upper-left 3×3 block N (column-major, as glm)
+    glm::dvec3 translation{0.0}; ///< T, in the animation's length units
 
     [[nodiscard]] glm::dvec3 apply(const glm::dvec3& p) const { return linear * p + translation; }
     bool operator==(const Affine3&) const = default;

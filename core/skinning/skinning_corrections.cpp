@@ -71,12 +71,12 @@ Eigen::MatrixXd differenceGram(const SkinningModel& model, const std::vector<Pos
 }
 
 VertexInfluences correctVertexWeights(const SkinningModel& model, const std::vector<PosePositions>& poses,
-                                      const VertexGraph& graph, std::size_t j, bool neighbours)
+                                      const VertexGraph& graph, std::size_t j, bool neighbours, std::size_t limit)
 {
     const VertexInfluences& old = model.weights.vertices[j];
     const std::vector<std::uint32_t> bones = candidateBones(model, graph, j, neighbours);
     const Eigen::MatrixXd gram = differenceGram(model, poses, j, bones);
-    return bestConvexInfluences(gram, bones, old);
+    return bestConvexInfluences(gram, bones, old, limit);
 }
 
 } // namespace
@@ -109,7 +109,8 @@ SkinningWeights correctedWeights(const SkinningModel& model, const std::vector<P
         [&](std::size_t c) {
             const auto [begin, end] = detail::chunkRange(model.vertexCount(), c);
             for (std::size_t j = begin; j < end; ++j)
-                result.vertices[j] = correctVertexWeights(model, poses, graph, j, options.neighbourBones);
+                result.vertices[j] =
+                    correctVertexWeights(model, poses, graph, j, options.neighbourBones, options.limit);
         },
         control, "weight corrections");
     return result;

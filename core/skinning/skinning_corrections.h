@@ -24,14 +24,15 @@ namespace trimlab {
 /// transforms (e = 0 is a candidate). `poses`: the original animation (#P × #V).
 /// Progress stage "vertex corrections"; parallel over vertices, deterministic.
 [[nodiscard]] std::vector<glm::dvec3> restPoseCorrections(const SkinningModel& model,
-                                                          const std::vector<PosePositions>& poses,
-                                                          unsigned threads = 0, const TaskControl& control = {});
+                                                          const std::vector<PosePositions>& poses, unsigned threads = 0,
+                                                          const TaskControl& control = {});
 
 struct WeightCorrectionOptions {
     /// Candidate bones of a vertex: its own influences plus, when set, those of its graph
-    /// neighbours (so a border vertex can pick up the bone next door). At most 4 survive.
+    /// neighbours (so a border vertex can pick up the bone next door). At most `limit` survive.
     bool neighbourBones = true;
     unsigned threads = 0;
+    std::size_t limit = kDefaultInfluences; ///< influences per vertex, 1 … kMaxInfluences
 };
 
 /// Weight corrections (eq. 4.13–4.15): per vertex, the convex weights w + e^W over its
@@ -41,9 +42,10 @@ struct WeightCorrectionOptions {
 /// (Σ (w + e) = 1, w + e ≥ 0) are imposed exactly: solveSimplexLeastSquares on the
 /// Cholesky-like factor of the candidate Gram matrix (the difference columns Q_b 𝐯 − 𝐯, in
 /// which the sum-to-one constraint makes the right-hand side vanish, so no cancellation).
-/// More than 4 non-zero weights: the 4 largest are kept and solved again. A vertex keeps
-/// its old weights unless the new ones are strictly better in this objective. The result
-/// is convex to 1e-12 with ≤ 4 influences per vertex.
+/// More than options.limit non-zero weights: the largest are kept and solved again. A
+/// vertex keeps its old weights unless the new ones are strictly better in this objective
+/// (or the old ones exceed the limit). The result is convex to 1e-12 with ≤ options.limit
+/// influences per vertex.
 /// Progress stage "weight corrections"; parallel over vertices, deterministic.
 [[nodiscard]] SkinningWeights correctedWeights(const SkinningModel& model, const std::vector<PosePositions>& poses,
                                                const VertexGraph& graph, const WeightCorrectionOptions& options = {},

@@ -59,8 +59,8 @@ std::vector<RigidJointPose> toJoints(const std::vector<Affine3>& matrices)
 
 // Σ over poses and vertices of the squared distance, summed per chunk in chunk order.
 double squaredError(const std::vector<PosePositions>& poses, const std::vector<glm::dvec3>& rest,
-                    const SkinningWeights& weights, const std::vector<std::vector<Affine3>>& matrices,
-                    unsigned threads, const TaskControl& control)
+                    const SkinningWeights& weights, const std::vector<std::vector<Affine3>>& matrices, unsigned threads,
+                    const TaskControl& control)
 {
     const std::size_t chunks = detail::chunkCount(rest.size());
     std::vector<double> partial(chunks, 0.0);
@@ -115,7 +115,8 @@ void improveFromNeighbourPoses(std::vector<std::vector<Affine3>>& transforms, co
         std::vector<RigidJointPose> own = toJoints(transforms[t]);
         const double ownError = solver.solve(own, poses[t], 0);
         std::vector<RigidJointPose> neighbour = toJoints(transforms[t > restPose ? t - 1 : t + 1]);
-        const std::vector<RigidJointPose>& best = solver.solve(neighbour, poses[t], sweeps) < ownError ? neighbour : own;
+        const std::vector<RigidJointPose>& best =
+            solver.solve(neighbour, poses[t], sweeps) < ownError ? neighbour : own;
         for (std::size_t b = 0; b < best.size(); ++b)
             transforms[t][b] = toMatrix(best[b]);
     }
@@ -166,8 +167,9 @@ std::vector<std::uint32_t> candidateBones(const SkinningWeights& weights, const 
 }
 
 // Gram matrix of the columns M_b^t v_j − y_j^t, stacked over every pose.
-Eigen::MatrixXd predictionGram(const std::vector<PosePositions>& poses, const std::vector<std::vector<Affine3>>& matrices,
-                               const glm::dvec3& v, std::size_t j, const std::vector<std::uint32_t>& bones)
+Eigen::MatrixXd predictionGram(const std::vector<PosePositions>& poses,
+                               const std::vector<std::vector<Affine3>>& matrices, const glm::dvec3& v, std::size_t j,
+                               const std::vector<std::uint32_t>& bones)
 {
     const auto m = Eigen::Index(bones.size());
     Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(m, m);
@@ -316,7 +318,8 @@ std::size_t reseedWeakBones(SkinningDecomposition& d, const std::vector<PosePosi
     std::vector<std::uint32_t> order(errors.size());
     for (std::uint32_t j = 0; j < order.size(); ++j)
         order[j] = j;
-    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return errors[a] > errors[b]; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return errors[a] > errors[b]; });
     std::vector<char> taken(errors.size(), 0);
     std::size_t next = 0;
     for (std::uint32_t b : weak) {
@@ -385,8 +388,8 @@ SkinningDecomposition decomposeSkinning(const std::vector<PosePositions>& poses,
         else
             updateAffineTransforms(d.transforms, poses, restPose, d.restPositions, d.weights, options.threads, inner);
         if (iteration == 0)
-            d.firstFitERms = eRmsOf(squaredError(poses, d.restPositions, d.weights, d.transforms, options.threads, inner),
-                                    n, poses.size());
+            d.firstFitERms = eRmsOf(
+                squaredError(poses, d.restPositions, d.weights, d.transforms, options.threads, inner), n, poses.size());
         if (options.updateWeights)
             updateWeights(d.weights, poses, d.restPositions, d.transforms, graph, options.maxInfluences,
                           options.threads, inner);
@@ -422,9 +425,8 @@ SkinningDecomposition decomposeSkinning(const std::vector<PosePositions>& poses,
                               options.finalJointSweeps);
         } else
             updateAffineTransforms(d.transforms, poses, restPose, d.restPositions, d.weights, options.threads, inner);
-        d.eRmsHistory.push_back(
-            eRmsOf(squaredError(poses, d.restPositions, d.weights, d.transforms, options.threads, inner), n,
-                   poses.size()));
+        d.eRmsHistory.push_back(eRmsOf(
+            squaredError(poses, d.restPositions, d.weights, d.transforms, options.threads, inner), n, poses.size()));
     }
     control.report("fit", iterations, iterations);
     return d;
@@ -433,9 +435,9 @@ SkinningDecomposition decomposeSkinning(const std::vector<PosePositions>& poses,
 SkinningModel decomposedSkinningModel(const SkinningDecomposition& decomposition, std::size_t restPose,
                                       std::vector<glm::uvec3> triangles)
 {
-    SkinningModel model = identitySkinningModel(SkinningMethod::Lbs, SkinningChain::RestToPose,
-                                                decomposition.transforms.size(), restPose, decomposition.restPositions,
-                                                decomposition.weights, std::move(triangles));
+    SkinningModel model =
+        identitySkinningModel(SkinningMethod::Lbs, SkinningChain::RestToPose, decomposition.transforms.size(), restPose,
+                              decomposition.restPositions, decomposition.weights, std::move(triangles));
     model.affine = decomposition.transforms;
     return model;
 }

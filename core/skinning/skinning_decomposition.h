@@ -1,8 +1,9 @@
 #pragma once
 /// \file
 /// Skinning decomposition: fitting bone transforms, weights and rest positions together by
-/// alternating exact block updates (issue 21: "fit what is exported"), in the manner of
-/// Le & Deng's SSDR (2012, the method behind Electronic Arts' Dem Bones). It minimises
+/// alternating exact block updates, so that the exported skin plays what was fitted, in
+/// the manner of Le & Deng's SSDR (2012, the method behind Electronic Arts' Dem Bones).
+/// It minimises
 ///     E = Σ_t Σ_j ‖Σ_b w_bj M_b^t v_j − y_j^t‖²
 /// (rest positions v_j, convex weights w_bj — 4 per vertex unless asked for up to 8 —,
 /// target poses y^t) where M_b^t maps the rest pose to pose t and is either
@@ -51,33 +52,33 @@
 namespace trimlab {
 
 struct SkinningDecompositionOptions {
-    bool rigidJoints = true;          ///< rigid transforms (the glTF skin) or affine ones
-    unsigned maxIterations = 100;     ///< transform + weight + rest updates
-    double minRelativeGain = 3e-4;    ///< stop when an iteration lowers E by less than this fraction
-    bool updateWeights = true;        ///< block 2 (the weight corrections)
+    bool rigidJoints = true;       ///< rigid transforms (the glTF skin) or affine ones
+    unsigned maxIterations = 100;  ///< transform + weight + rest updates
+    double minRelativeGain = 3e-4; ///< stop when an iteration lowers E by less than this fraction
+    bool updateWeights = true;     ///< block 2 (the weight corrections)
     /// Influences per vertex the weight block may use: 4 (kDefaultInfluences) plays in every
     /// engine; up to 8 (kMaxInfluences) are exported as JOINTS_1/WEIGHTS_1 and lower the
     /// error where parts blend over wide regions (cloth), but not every viewer reads them.
     std::size_t maxInfluences = kDefaultInfluences;
-    bool updateRestPositions = true;  ///< block 3 (the vertex corrections)
+    bool updateRestPositions = true; ///< block 3 (the vertex corrections)
     /// During the first `reseedIterations` iterations (with weight updates), bones whose
     /// support is below `minBoneSupport` × (#V / B) are re-seeded (file comment).
     unsigned reseedIterations = 10;
     double minBoneSupport = 0.5;
-    unsigned firstJointSweeps = 30;   ///< rigid: Procrustes sweeps of the first block (from the identity)
-    unsigned jointSweeps = 1;         ///< rigid: sweeps of later blocks (warm-started)
-    unsigned finalJointSweeps = 8;    ///< rigid: sweeps of the transform block after the last iteration
-    unsigned threads = 0;             ///< 0 = hardware; results do not depend on it
+    unsigned firstJointSweeps = 30; ///< rigid: Procrustes sweeps of the first block (from the identity)
+    unsigned jointSweeps = 1;       ///< rigid: sweeps of later blocks (warm-started)
+    unsigned finalJointSweeps = 8;  ///< rigid: sweeps of the transform block after the last iteration
+    unsigned threads = 0;           ///< 0 = hardware; results do not depend on it
 };
 
 struct SkinningDecomposition {
-    std::vector<glm::dvec3> restPositions;           ///< #V, the bind pose
-    SkinningWeights weights;                         ///< #V, convex, ≤ maxInfluences influences
-    std::vector<std::vector<Affine3>> transforms;    ///< #P × B rest-to-pose (rigid when rigidJoints)
+    std::vector<glm::dvec3> restPositions;        ///< #V, the bind pose
+    SkinningWeights weights;                      ///< #V, convex, ≤ maxInfluences influences
+    std::vector<std::vector<Affine3>> transforms; ///< #P × B rest-to-pose (rigid when rigidJoints)
     /// E_RMS (1000·√(E / 3nk), skinning_error.h) after each iteration and after the last
     /// transform block; back() is the result's.
     std::vector<double> eRmsHistory;
-    double firstFitERms = 0.0; ///< after the first transform block, before any weight or rest update
+    double firstFitERms = 0.0;     ///< after the first transform block, before any weight or rest update
     std::size_t iterations = 0;    ///< iterations run (the last transform block not counted)
     std::size_t reseededBones = 0; ///< bone re-seedings done (a bone can be moved more than once)
 };

@@ -90,8 +90,8 @@ void positionJacobian(const Dq8& b, const glm::dvec3& s, double out[3][8])
     for (int k = 0; k < 4; ++k) {
         glm::dquat e(0.0, 0.0, 0.0, 0.0);
         (k == 0 ? e.w : k == 1 ? e.x : k == 2 ? e.y : e.z) = 1.0;
-        const glm::dvec3 dr = (2.0 * vectorPart(e * shrc) + 2.0 * vectorPart(d * glm::conjugate(e))) / n2 -
-                              2.0 * rk[k] * p / n2;
+        const glm::dvec3 dr =
+            (2.0 * vectorPart(e * shrc) + 2.0 * vectorPart(d * glm::conjugate(e))) / n2 - 2.0 * rk[k] * p / n2;
         const glm::dvec3 dd = 2.0 * vectorPart(e * rc) / n2;
         for (int row = 0; row < 3; ++row) {
             out[row][k] = dr[row];
@@ -115,9 +115,8 @@ Dq8 vertexBlend(const VertexInfluences& in, const std::vector<DualQuaternion>& q
     return sum;
 }
 
-double chunkCost(std::span<const glm::dvec3> source, std::span<const glm::dvec3> target,
-                 const SkinningWeights& weights, const std::vector<DualQuaternion>& q, std::size_t begin,
-                 std::size_t end)
+double chunkCost(std::span<const glm::dvec3> source, std::span<const glm::dvec3> target, const SkinningWeights& weights,
+                 const std::vector<DualQuaternion>& q, std::size_t begin, std::size_t end)
 {
     double cost = 0.0;
     std::array<double, 4> signs{};
@@ -128,8 +127,8 @@ double chunkCost(std::span<const glm::dvec3> source, std::span<const glm::dvec3>
     return cost;
 }
 
-double totalCost(std::span<const glm::dvec3> source, std::span<const glm::dvec3> target,
-                 const SkinningWeights& weights, const std::vector<DualQuaternion>& q, unsigned threads)
+double totalCost(std::span<const glm::dvec3> source, std::span<const glm::dvec3> target, const SkinningWeights& weights,
+                 const std::vector<DualQuaternion>& q, unsigned threads)
 {
     const std::size_t chunks = detail::chunkCount(source.size());
     std::vector<double> partial(chunks, 0.0);
@@ -170,8 +169,8 @@ void addVertexTerms(detail::BoneBlockSystem& system, std::size_t j, const glm::d
     system.addVertex(in, j, 3, jacobian.data(), residual);
 }
 
-std::vector<DualQuaternion> kabschInitialisation(std::span<const glm::dvec3> source,
-                                                 std::span<const glm::dvec3> target, const SkinningWeights& weights)
+std::vector<DualQuaternion> kabschInitialisation(std::span<const glm::dvec3> source, std::span<const glm::dvec3> target,
+                                                 const SkinningWeights& weights)
 {
     std::vector<DualQuaternion> result(weights.boneCount);
     std::vector<std::vector<std::size_t>> members(weights.boneCount);

@@ -46,12 +46,10 @@ struct BonePairPattern;
                                             std::span<const double> omega);
 
 namespace detail {
-[[nodiscard]] std::vector<DualQuaternion> fitRigidBoneTransforms(std::span<const glm::dvec3> source,
-                                                                 std::span<const glm::dvec3> target,
-                                                                 const SkinningWeights& weights,
-                                                                 const BonePairPattern& pattern,
-                                                                 std::span<const DualQuaternion> initial,
-                                                                 const PoseFitOptions& options);
+[[nodiscard]] std::vector<DualQuaternion>
+fitRigidBoneTransforms(std::span<const glm::dvec3> source, std::span<const glm::dvec3> target,
+                       const SkinningWeights& weights, const BonePairPattern& pattern,
+                       std::span<const DualQuaternion> initial, const PoseFitOptions& options);
 }
 
 } // namespace trimlab

@@ -25,12 +25,12 @@
 namespace trimlab {
 
 struct SkinningError {
-    double eRms = 0.0;         ///< 1000·‖A − A′‖_F / √(3nk), thousandths of a length unit
-    double eRmsDiagonal = 0.0; ///< eRms / (rest-pose bounding-box diagonal)
-    double rmse = 0.0;         ///< ‖A − A′‖_F / √(nk), length units (Dem Bones' RMSE)
-    double frobenius = 0.0;    ///< ‖A − A′‖_F, length units
-    double maxDistance = 0.0;  ///< largest ‖v − v′‖ over all poses and vertices
-    double diagonal = 0.0;     ///< the rest pose's bounding-box diagonal used above
+    double eRms = 0.0;             ///< 1000·‖A − A′‖_F / √(3nk), thousandths of a length unit
+    double eRmsDiagonal = 0.0;     ///< eRms / (rest-pose bounding-box diagonal)
+    double rmse = 0.0;             ///< ‖A − A′‖_F / √(nk), length units (Dem Bones' RMSE)
+    double frobenius = 0.0;        ///< ‖A − A′‖_F, length units
+    double maxDistance = 0.0;      ///< largest ‖v − v′‖ over all poses and vertices
+    double diagonal = 0.0;         ///< the rest pose's bounding-box diagonal used above
     std::vector<double> perPose;   ///< #P values 1000·‖A_t − A′_t‖_F / √(3n)
     std::vector<double> perVertex; ///< #V values √(Σ_t ‖v_j^t − v′_j^t‖² / k): a heat map
 };

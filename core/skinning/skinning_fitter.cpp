@@ -52,7 +52,8 @@ void applyWeightCorrections(SkinningFitResult& result, const MeshAnimation& anim
     const auto start = Clock::now();
     const VertexGraph graph = buildVertexGraph(animation.vertexCount(), animation.triangles);
     SkinningWeights weights =
-        correctedWeights(result.model, poses, graph, {options.neighbourBones, options.threads}, control);
+        correctedWeights(result.model, poses, graph,
+                         {options.neighbourBones, options.threads, options.decomposition.maxInfluences}, control);
     double ignored = 0.0;
     SkinningModel refit =
         fitModel(animation, poses, result.model.restPositions, std::move(weights), options, control, ignored);
@@ -115,8 +116,9 @@ SkinningFitResult fitDecomposition(const MeshAnimation& animation, const std::ve
 
 bool usesDecomposition(const SkinningFitOptions& options)
 {
-    return options.fitExported || (options.method == SkinningMethod::Lbs && options.chain == SkinningChain::RestToPose &&
-                                   (options.weightCorrections || options.vertexCorrections));
+    return options.fitExported ||
+           (options.method == SkinningMethod::Lbs && options.chain == SkinningChain::RestToPose &&
+            (options.weightCorrections || options.vertexCorrections));
 }
 
 SkinningFitResult fitSkinning(const MeshAnimation& animation, SkinningWeights weights,
@@ -125,14 +127,15 @@ SkinningFitResult fitSkinning(const MeshAnimation& animation, SkinningWeights we
     const auto start = Clock::now();
     requireWellFormed(animation);
     const std::vector<PosePositions> poses = animationPositions(animation);
+    weights = limitedInfluences(std::move(weights), options.decomposition.maxInfluences);
     if (usesDecomposition(options)) {
         SkinningFitResult result = fitDecomposition(animation, poses, std::move(weights), options, control);
         result.times.totalMs = msSince(start);
         return result;
     }
     SkinningFitResult result;
-    result.model = fitModel(animation, poses, poses[animation.restPose], std::move(weights), options, control,
-                            result.times.fitMs);
+    result.model =
+        fitModel(animation, poses, poses[animation.restPose], std::move(weights), options, control, result.times.fitMs);
     result.error = evaluate(result.model, poses, result.times.errorMs);
     result.uncorrectedError = result.error;
     if (options.weightCorrections)

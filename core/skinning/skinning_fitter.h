@@ -53,13 +53,13 @@ struct SkinningStageTimes {
     double fitMs = 0.0;              ///< the first fit of every pose
     double weightCorrectionMs = 0.0; ///< new weights + the refit with them
     double vertexCorrectionMs = 0.0;
-    double errorMs = 0.0;            ///< every reconstruction and E_RMS evaluation
+    double errorMs = 0.0; ///< every reconstruction and E_RMS evaluation
     double totalMs = 0.0;
 };
 
 struct SkinningFitResult {
     SkinningModel model;
-    SkinningError error;            ///< of `model`, after the corrections that were kept
+    SkinningError error; ///< of `model`, after the corrections that were kept
     /// After the first fit, before any correction. For fitExported only the scalars eRms,
     /// eRmsDiagonal, rmse and diagonal are set (after the first joint block).
     SkinningError uncorrectedError;
@@ -79,7 +79,8 @@ struct SkinningFitResult {
 [[nodiscard]] bool usesDecomposition(const SkinningFitOptions& options);
 
 /// Fits `animation` (requireWellFormed) with the given initial weights (#V, convex; one
-/// bone per proxy joint). The rest pose is animation.restPose. Progress stages "fit",
+/// bone per proxy joint), first cut to options.decomposition.maxInfluences per vertex,
+/// which every later step keeps. The rest pose is animation.restPose. Progress stages "fit",
 /// "weight corrections", "vertex corrections"; OperationCancelled leaves nothing behind.
 /// Throws std::invalid_argument for a malformed animation or weights that do not match.
 [[nodiscard]] SkinningFitResult fitSkinning(const MeshAnimation& animation, SkinningWeights weights,

@@ -71,10 +71,10 @@ tinygltf::Model meshModel(const SkinningModel& skinning)
     model.buffers.emplace_back();
     tinygltf::Primitive primitive;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
-    primitive.attributes["POSITION"] = addGltfVec3Accessor(
-        model, skinning_gltf::toFloat(skinning.restPositions), TINYGLTF_TARGET_ARRAY_BUFFER, true);
-    primitive.indices = addGltfTriangleIndices(model, skinning.triangles);
-    addGltfSingleMeshScene(model, primitive, "skinned mesh");
+    primitive.attributes["POSITION"] = io::addGltfVec3Accessor(model, skinning_gltf::toFloat(skinning.restPositions),
+                                                               TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    primitive.indices = io::addGltfTriangleIndices(model, skinning.triangles);
+    io::addGltfSingleMeshScene(model, primitive, "skinned mesh");
     return model;
 }
 
@@ -125,7 +125,7 @@ ExportedSkin exportSkinnedGltf(const SkinningModel& model, const std::filesystem
                                const SkinExportOptions& options)
 {
     SkinnedGltf gltf = skinnedGltf(model, fps, hasGlbExtension(path), options);
-    timeline::writeFileAtomically(path, gltf.bytes);
+    io::writeFileAtomically(path, gltf.bytes);
     return std::move(gltf.report);
 }
 

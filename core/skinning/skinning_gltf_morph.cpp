@@ -21,7 +21,8 @@ void addTargets(tinygltf::Model& model, const std::vector<PosePositions>& poses,
             displacement[j] = glm::vec3(poses[t][j] - glm::dvec3(base[j]));
             exported[t][j] = glm::dvec3(base[j]) + glm::dvec3(displacement[j]);
         }
-        primitive.targets.push_back({{"POSITION", addGltfVec3Accessor(model, displacement, TINYGLTF_TARGET_ARRAY_BUFFER, true)}});
+        primitive.targets.push_back(
+            {{"POSITION", io::addGltfVec3Accessor(model, displacement, TINYGLTF_TARGET_ARRAY_BUFFER, true)}});
         model.meshes[0].weights.push_back(0.0);
     }
 }
@@ -33,7 +34,7 @@ ExportedSkin addMorphTargets(tinygltf::Model& model, const SkinningModel& skinni
     ExportedSkin report;
     report.kind = SkinExportKind::MorphTargets;
     addTargets(model, reconstructPoses(skinning), toFloat(skinning.restPositions), report.positions);
-    addGltfMorphStepAnimation(model, "poses", times, 0);
+    io::addGltfMorphStepAnimation(model, "poses", times, 0);
     return report;
 }
 

@@ -60,14 +60,14 @@ void addJointAttributes(tinygltf::Model& model, const SkinningWeights& written)
                 weights.push_back(float(in.weights[i]));
             }
         const std::string suffix = std::to_string(set);
-        const int jointView = addGltfBufferView(model, joints.data(), joints.size() * sizeof(std::uint16_t),
-                                                TINYGLTF_TARGET_ARRAY_BUFFER);
-        primitive.attributes["JOINTS_" + suffix] = addGltfAccessor(
+        const int jointView = io::addGltfBufferView(model, joints.data(), joints.size() * sizeof(std::uint16_t),
+                                                    TINYGLTF_TARGET_ARRAY_BUFFER);
+        primitive.attributes["JOINTS_" + suffix] = io::addGltfAccessor(
             model, jointView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC4, written.vertices.size());
         const int weightView =
-            addGltfBufferView(model, weights.data(), weights.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
-        primitive.attributes["WEIGHTS_" + suffix] = addGltfAccessor(model, weightView, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                                                    TINYGLTF_TYPE_VEC4, written.vertices.size());
+            io::addGltfBufferView(model, weights.data(), weights.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+        primitive.attributes["WEIGHTS_" + suffix] = io::addGltfAccessor(
+            model, weightView, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, written.vertices.size());
     }
 }
 
@@ -84,10 +84,11 @@ void addSkeleton(tinygltf::Model& model, const std::vector<glm::vec3>& pivots)
         const int node = int(model.nodes.size() + 1 + b);
         root.children.push_back(node);
         skin.joints.push_back(node);
-        const std::array<float, 16> m = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -pivots[b].x, -pivots[b].y, -pivots[b].z, 1};
+        const std::array<float, 16> m = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -pivots[b].x, -pivots[b].y, -pivots[b].z,
+                                         1};
         inverseBind.insert(inverseBind.end(), m.begin(), m.end());
     }
-    skin.inverseBindMatrices = addGltfFloatAccessor(model, inverseBind, TINYGLTF_TYPE_MAT4, false);
+    skin.inverseBindMatrices = io::addGltfFloatAccessor(model, inverseBind, TINYGLTF_TYPE_MAT4, false);
     model.scenes[0].nodes.push_back(int(model.nodes.size()));
     model.nodes.push_back(root);
     for (std::size_t b = 0; b < pivots.size(); ++b) {
@@ -124,8 +125,10 @@ JointTracks jointTracks(const RigidJointAnimation& joints, const std::vector<glm
             const glm::dvec3 pivot(pivots[b]);
             const glm::vec3 node(q * pivot + joints.poses[t][b].translation);
             if (!std::isfinite(glm::dot(node, node)) || !std::isfinite(glm::dot(q, q)))
-                throw std::runtime_error("skinned glTF export: bone " + std::to_string(b) + " has no finite rigid "
-                                         "motion at pose " + std::to_string(t));
+                throw std::runtime_error("skinned glTF export: bone " + std::to_string(b) +
+                                         " has no finite rigid "
+                                         "motion at pose " +
+                                         std::to_string(t));
             const glm::quat qf(q);
             tracks.translations[b].insert(tracks.translations[b].end(), {node.x, node.y, node.z});
             tracks.rotations[b].insert(tracks.rotations[b].end(), {qf.x, qf.y, qf.z, qf.w});
@@ -140,11 +143,11 @@ void addAnimation(tinygltf::Model& model, const JointTracks& tracks, const std::
 {
     tinygltf::Animation animation;
     animation.name = "skinning";
-    const int input = addGltfFloatAccessor(model, times, TINYGLTF_TYPE_SCALAR, true);
+    const int input = io::addGltfFloatAccessor(model, times, TINYGLTF_TYPE_SCALAR, true);
     auto channel = [&](int node, const char* path, const std::vector<float>& values, int type) {
         tinygltf::AnimationSampler sampler;
         sampler.input = input;
-        sampler.output = addGltfFloatAccessor(model, values, type, false);
+        sampler.output = io::addGltfFloatAccessor(model, values, type, false);
         sampler.interpolation = step ? "STEP" : "LINEAR";
         tinygltf::AnimationChannel c;
         c.sampler = int(animation.samplers.size());

@@ -34,11 +34,9 @@ struct BonePairPattern;
 
 namespace detail {
 /// The same with the bone-pair pattern of `weights` computed once by the caller.
-[[nodiscard]] std::vector<Affine3> fitAffineBoneTransforms(std::span<const glm::dvec3> source,
-                                                           std::span<const glm::dvec3> target,
-                                                           const SkinningWeights& weights,
-                                                           const BonePairPattern& pattern,
-                                                           const PoseFitOptions& options);
+[[nodiscard]] std::vector<Affine3>
+fitAffineBoneTransforms(std::span<const glm::dvec3> source, std::span<const glm::dvec3> target,
+                        const SkinningWeights& weights, const BonePairPattern& pattern, const PoseFitOptions& options);
 
 /// Weighted centroid and RMS radius of each bone's source vertices (weights w_{b,j}); a
 /// bone without vertices gets the centroid of all vertices and radius 1.

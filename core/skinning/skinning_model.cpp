@@ -61,6 +61,19 @@ VertexInfluences sparseInfluences(std::vector<std::pair<std::uint32_t, double>> 
     return result;
 }
 
+SkinningWeights limitedInfluences(SkinningWeights weights, std::size_t limit)
+{
+    for (VertexInfluences& in : weights.vertices) {
+        if (in.count <= limit || in.count > kMaxInfluences) // malformed ones are reported by the fit
+            continue;
+        std::vector<std::pair<std::uint32_t, double>> influences;
+        for (std::uint32_t i = 0; i < in.count; ++i)
+            influences.emplace_back(in.bones[i], in.weights[i]);
+        in = sparseInfluences(std::move(influences), in.bones[0], limit);
+    }
+    return weights;
+}
+
 std::size_t SkinningModel::previousPose(std::size_t pose) const
 {
     if (chain == SkinningChain::RestToPose || pose == restPose)

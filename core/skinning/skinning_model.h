@@ -59,6 +59,10 @@ void requireConvexWeights(const SkinningWeights& weights, double tolerance = 1e-
 [[nodiscard]] VertexInfluences sparseInfluences(std::vector<std::pair<std::uint32_t, double>> influences,
                                                 std::uint32_t fallbackBone, std::size_t limit = kDefaultInfluences);
 
+/// `weights` with every vertex cut to its `limit` (1 … kMaxInfluences) largest influences,
+/// rescaled to sum 1 (sparseInfluences); vertices within the limit are unchanged.
+[[nodiscard]] SkinningWeights limitedInfluences(SkinningWeights weights, std::size_t limit);
+
 enum class SkinningMethod {
     Lbs, ///< linear blend skinning with affine bone transforms (eq. 2.4, 4.7)
     Dqs, ///< dual quaternion skinning with rigid bone transforms (eq. 2.5, 4.8)
@@ -91,10 +95,7 @@ struct SkinningModel {
 
     [[nodiscard]] std::size_t vertexCount() const { return restPositions.size(); }
     [[nodiscard]] std::size_t boneCount() const { return weights.boneCount; }
-    [[nodiscard]] std::size_t poseCount() const
-    {
-        return method == SkinningMethod::Lbs ? affine.size() : rigid.size();
-    }
+    [[nodiscard]] std::size_t poseCount() const { return method == SkinningMethod::Lbs ? affine.size() : rigid.size(); }
     /// The pose whose vertices transforms[pose] act on (t−1 in eq. 4.7 for poses after the
     /// rest pose, t+1 before it; the rest pose for RestToPose and for the rest pose itself).
     [[nodiscard]] std::size_t previousPose(std::size_t pose) const;

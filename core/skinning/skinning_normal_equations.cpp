@@ -32,14 +32,15 @@ BonePairPattern bonePairPattern(const SkinningWeights& weights)
         const VertexInfluences& in = weights.vertices[v];
         for (std::uint32_t i = 0; i < in.count; ++i)
             for (std::uint32_t k = 0; k < in.count; ++k)
-                pattern.vertexPairs[v][i * kMaxInfluences + k] = index.at(
-                    {std::min(in.bones[i], in.bones[k]), std::max(in.bones[i], in.bones[k])});
+                pattern.vertexPairs[v][i * kMaxInfluences + k] =
+                    index.at({std::min(in.bones[i], in.bones[k]), std::max(in.bones[i], in.bones[k])});
     }
     return pattern;
 }
 
 BoneBlockSystem::BoneBlockSystem(const BonePairPattern& pattern, int blockSize, int rhsColumns)
-    : m_pattern(&pattern), m_block(blockSize),
+    : m_pattern(&pattern),
+      m_block(blockSize),
       m_blocks(pattern.pairs.size() * std::size_t(blockSize * blockSize), 0.0),
       m_rhs(Eigen::MatrixXd::Zero(Eigen::Index(pattern.boneCount) * blockSize, rhsColumns))
 {
@@ -57,8 +58,8 @@ void BoneBlockSystem::addVertex(const VertexInfluences& in, std::size_t vertex, 
             // goes in as is when bone_i ≤ bone_k, and the mirrored pair supplies the rest.
             if (in.bones[i] > in.bones[k])
                 continue;
-            double* block = &m_blocks[std::size_t(m_pattern->vertexPairs[vertex][i * kMaxInfluences + k]) *
-                                      std::size_t(bs * bs)];
+            double* block =
+                &m_blocks[std::size_t(m_pattern->vertexPairs[vertex][i * kMaxInfluences + k]) * std::size_t(bs * bs)];
             for (int r = 0; r < rows; ++r) {
                 const double* row = jacobian + r * width;
                 for (int p = 0; p < bs; ++p)

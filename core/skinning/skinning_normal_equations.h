@@ -21,7 +21,7 @@ namespace trimlab::detail {
 /// The bone-pair pattern of a weight set: computed once, shared by every system.
 struct BonePairPattern {
     std::size_t boneCount = 0;
-    std::vector<std::array<std::uint32_t, 2>> pairs;                   ///< (lo, hi) bone pairs, lo ≤ hi
+    std::vector<std::array<std::uint32_t, 2>> pairs; ///< (lo, hi) bone pairs, lo ≤ hi
     std::vector<std::array<std::uint32_t, kMaxInfluences * kMaxInfluences>> vertexPairs; ///< [i·4+k] → pair index
 };
 

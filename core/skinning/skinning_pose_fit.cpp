@@ -40,8 +40,8 @@ void requireMatchingPoses(const SkinningModel& model, const std::vector<PosePosi
                                         std::to_string(model.vertexCount()));
 }
 
-void fitPoseToPoseChain(SkinningModel& model, const std::vector<PosePositions>& poses,
-                        const SkinningPoseFitter& fitter, const TaskControl& control)
+void fitPoseToPoseChain(SkinningModel& model, const std::vector<PosePositions>& poses, const SkinningPoseFitter& fitter,
+                        const TaskControl& control)
 {
     const std::vector<std::size_t> order = chainOrder(model.poseCount(), model.restPose);
     PosePositions previous;
@@ -63,8 +63,8 @@ void fitPoseToPoseChain(SkinningModel& model, const std::vector<PosePositions>& 
 
 } // namespace
 
-void fitSkinningTransforms(SkinningModel& model, const std::vector<PosePositions>& poses,
-                           const PoseFitOptions& options, const TaskControl& control)
+void fitSkinningTransforms(SkinningModel& model, const std::vector<PosePositions>& poses, const PoseFitOptions& options,
+                           const TaskControl& control)
 {
     requireMatchingPoses(model, poses);
     if (model.chain == SkinningChain::PoseToPose) {

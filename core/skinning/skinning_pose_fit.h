@@ -51,7 +51,7 @@ private:
 /// Progress stage "fit", one item per pose; cancellable between poses (OperationCancelled,
 /// `model` is then left partly fitted — callers work on a copy). Throws
 /// std::invalid_argument when `poses` does not match the model's size.
-void fitSkinningTransforms(SkinningModel& model, const std::vector<PosePositions>& poses,
-                           const PoseFitOptions& options, const TaskControl& control = {});
+void fitSkinningTransforms(SkinningModel& model, const std::vector<PosePositions>& poses, const PoseFitOptions& options,
+                           const TaskControl& control = {});
 
 } // namespace trimlab

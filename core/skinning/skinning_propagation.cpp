@@ -55,8 +55,7 @@ SkinningModel editPose(const SkinningModel& model, std::size_t pose, std::span<c
     return edited;
 }
 
-SkinningModel setBoneTransform(const SkinningModel& model, std::size_t pose, std::size_t bone,
-                               const Affine3& transform)
+SkinningModel setBoneTransform(const SkinningModel& model, std::size_t pose, std::size_t bone, const Affine3& transform)
 {
     requireBone(model, pose, bone);
     if (model.method != SkinningMethod::Lbs)

@@ -61,7 +61,8 @@ RigidJointSolver::RigidJointSolver(const SkinningWeights& weights, std::span<con
         for (std::uint32_t i = 0; i < in.count; ++i)
             m_boneVertices[in.bones[i]].emplace_back(std::uint32_t(j), in.weights[i]);
     }
-    m_gram = std::make_shared<const NormalMatrix>(NormalMatrix{Eigen::LDLT<Eigen::MatrixXd>(regularisedGram(weights, m_lambda))});
+    m_gram = std::make_shared<const NormalMatrix>(
+        NormalMatrix{Eigen::LDLT<Eigen::MatrixXd>(regularisedGram(weights, m_lambda))});
 }
 
 std::vector<glm::dvec3> RigidJointSolver::skinned(const std::vector<RigidJointPose>& joints) const

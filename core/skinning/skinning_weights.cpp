@@ -117,7 +117,8 @@ SkinningWeights sparseWeightsFromDense(std::span<const double> dense, std::size_
         for (std::size_t b = 0; b < boneCount; ++b) {
             const double w = dense[v * boneCount + b];
             if (!std::isfinite(w))
-                throw std::invalid_argument("skinning weights: vertex " + std::to_string(v) + " has a weight that is not finite");
+                throw std::invalid_argument("skinning weights: vertex " + std::to_string(v) +
+                                            " has a weight that is not finite");
             row.emplace_back(std::uint32_t(b), w);
         }
         weights.vertices[v] = sparseInfluences(std::move(row), 0);

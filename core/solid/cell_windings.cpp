@@ -12,8 +12,14 @@ namespace trimlab::solid {
 namespace {
 
 // Face side ids: 2f is the front of face f, 2f + 1 its back.
-std::size_t frontSide(std::size_t f) { return 2 * f; }
-std::size_t backSide(std::size_t f) { return 2 * f + 1; }
+std::size_t frontSide(std::size_t f)
+{
+    return 2 * f;
+}
+std::size_t backSide(std::size_t f)
+{
+    return 2 * f + 1;
+}
 
 ExactVector faceNormal(const RefinedSoup& soup, std::size_t f)
 {
@@ -114,7 +120,8 @@ std::optional<std::vector<int>> rayWindings(const RefinedSoup& soup, std::size_t
 {
     const auto& v = soup.faces[start].vertices;
     const ExactPoint p = CGAL::centroid(soup.points[v[0]], soup.points[v[1]], soup.points[v[2]]);
-    const ExactKernel::FT largest = std::max({CGAL::abs(direction.x()), CGAL::abs(direction.y()), CGAL::abs(direction.z())});
+    const ExactKernel::FT largest =
+        std::max({CGAL::abs(direction.x()), CGAL::abs(direction.y()), CGAL::abs(direction.z())});
     const ExactPoint q = p + direction * (reach / largest);
     std::vector<int> windings(soup.faces[start].delta.size(), 0);
     for (std::size_t g = 0; g < soup.faces.size(); ++g) {
@@ -156,7 +163,8 @@ std::vector<int> absoluteFront(const RefinedSoup& soup, std::size_t start, const
     const ExactKernel::FT scale = std::max({CGAL::abs(n.x()), CGAL::abs(n.y()), CGAL::abs(n.z())});
     // The normal first, then tilted ever so slightly in irregular ways; all look to the front.
     for (int k = 0; k < 64; ++k) {
-        const ExactVector tilt(scale * k * 37 / 1000, scale * k * 53 / 1000 * ((k % 2) ? 1 : -1), scale * k * 71 / 1000);
+        const ExactVector tilt(scale * k * 37 / 1000, scale * k * 53 / 1000 * ((k % 2) ? 1 : -1),
+                               scale * k * 71 / 1000);
         const ExactVector direction = n * 8 + tilt / 8;
         if (!CGAL::is_positive(direction * n))
             continue;

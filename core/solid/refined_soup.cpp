@@ -41,7 +41,9 @@ std::vector<InputTriangle> worldTriangles(const Scene& scene)
 bool isDegenerate(const InputTriangle& t)
 {
     using P = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-    const auto p = [&](int k) { return P(t.corners[std::size_t(k)].x, t.corners[std::size_t(k)].y, t.corners[std::size_t(k)].z); };
+    const auto p = [&](int k) {
+        return P(t.corners[std::size_t(k)].x, t.corners[std::size_t(k)].y, t.corners[std::size_t(k)].z);
+    };
     return CGAL::collinear(p(0), p(1), p(2));
 }
 
@@ -75,7 +77,8 @@ std::vector<Stack> stackTriangles(const std::vector<InputTriangle>& triangles, s
     for (const InputTriangle& t : triangles) {
         std::array<std::array<double, 3>, 3> corners;
         for (int k = 0; k < 3; ++k)
-            corners[std::size_t(k)] = {t.corners[std::size_t(k)].x, t.corners[std::size_t(k)].y, t.corners[std::size_t(k)].z};
+            corners[std::size_t(k)] = {t.corners[std::size_t(k)].x, t.corners[std::size_t(k)].y,
+                                       t.corners[std::size_t(k)].z};
         bool reversed = false;
         const auto [it, inserted] = index.emplace(unorientedKey(corners, reversed), stacks.size());
         if (inserted)
@@ -92,7 +95,8 @@ bool cancels(const std::vector<int>& delta)
 }
 
 // The stacks that do not cancel, as exact triangles, with the index of their stack.
-std::vector<std::array<ExactPoint, 3>> exactTriangles(const std::vector<Stack>& stacks, std::vector<std::size_t>& stackOf)
+std::vector<std::array<ExactPoint, 3>> exactTriangles(const std::vector<Stack>& stacks,
+                                                      std::vector<std::size_t>& stackOf)
 {
     std::vector<std::array<ExactPoint, 3>> triangles;
     for (std::size_t s = 0; s < stacks.size(); ++s) {

@@ -36,7 +36,7 @@ struct RefinedSoup {
 
 /// Refines the scene's triangles (model matrices applied in double precision; those
 /// doubles are the exact input). Reports progress through `control` and throws
-/// TaskCanceled when canceled.
+/// OperationCancelled when cancelled.
 [[nodiscard]] RefinedSoup refineScene(const Scene& scene, const TaskControl& control);
 
 } // namespace trimlab::solid

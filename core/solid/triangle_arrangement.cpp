@@ -50,18 +50,26 @@ std::vector<std::pair<std::size_t, std::size_t>> overlappingBoxes(const std::vec
     for (std::size_t i = 0; i < triangles.size(); ++i) // exact boxes: the corners are doubles
         boxes.emplace_back(triangles[i][0].bbox() + triangles[i][1].bbox() + triangles[i][2].bbox(), i);
     std::vector<std::pair<std::size_t, std::size_t>> pairs;
-    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
-        pairs.emplace_back(a.info(), b.info());
-    });
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(),
+                                  [&](const Box& a, const Box& b) { pairs.emplace_back(a.info(), b.info()); });
     return pairs;
 }
 
 // The side of the plane of `t` that `p` lies on.
-CGAL::Orientation sideOf(const Corners& t, const ExactPoint& p) { return CGAL::orientation(t[0], t[1], t[2], p); }
+CGAL::Orientation sideOf(const Corners& t, const ExactPoint& p)
+{
+    return CGAL::orientation(t[0], t[1], t[2], p);
+}
 
 // Two corners strictly on one side of a plane, or strictly on opposite sides.
-bool oneSide(CGAL::Orientation x, CGAL::Orientation y) { return x != CGAL::COPLANAR && x == y; }
-bool oppositeSides(CGAL::Orientation x, CGAL::Orientation y) { return x != CGAL::COPLANAR && x == -y; }
+bool oneSide(CGAL::Orientation x, CGAL::Orientation y)
+{
+    return x != CGAL::COPLANAR && x == y;
+}
+bool oppositeSides(CGAL::Orientation x, CGAL::Orientation y)
+{
+    return x != CGAL::COPLANAR && x == -y;
+}
 
 // Where the segment from p to q crosses the plane of `t` (p and q strictly on opposite
 // sides), as lazy exact arithmetic: its interval approximation usually decides the
@@ -69,7 +77,9 @@ bool oppositeSides(CGAL::Orientation x, CGAL::Orientation y) { return x != CGAL:
 ExactPoint segmentCrossing(const ExactPoint& p, const ExactPoint& q, const Corners& t)
 {
     const Plane3 plane(t[0], t[1], t[2]);
-    const auto height = [&](const ExactPoint& x) { return plane.a() * x.x() + plane.b() * x.y() + plane.c() * x.z() + plane.d(); };
+    const auto height = [&](const ExactPoint& x) {
+        return plane.a() * x.x() + plane.b() * x.y() + plane.c() * x.z() + plane.d();
+    };
     const FT hp = height(p);
     const FT along = hp / (hp - height(q));
     return p + (q - p) * along;
@@ -91,8 +101,8 @@ bool meetOnlyAtSharedCorners(const Corners& a, const Corners& b)
             }
     const auto next = [](std::size_t k, std::size_t step) { return (k + step) % 3; };
     if (shared == 1) {
-        const std::size_t i = std::size_t(std::find_if(matchInB.begin(), matchInB.end(),
-                                                       [](std::size_t m) { return m != none; }) - matchInB.begin());
+        const std::size_t i = std::size_t(
+            std::find_if(matchInB.begin(), matchInB.end(), [](std::size_t m) { return m != none; }) - matchInB.begin());
         const std::size_t j = matchInB[i];
         const ExactPoint& v = a[i];
         const ExactPoint &a1 = a[next(i, 1)], &a2 = a[next(i, 2)], &b1 = b[next(j, 1)], &b2 = b[next(j, 2)];
@@ -117,7 +127,8 @@ bool meetOnlyAtSharedCorners(const Corners& a, const Corners& b)
             return false;
         // In one plane (a fan in a flat region): the two corners at v are convex sectors,
         // which meet only at v iff a line along one of their four edges separates them.
-        const auto beyond = [&](const ExactPoint& edge, const ExactPoint& own, const ExactPoint& p, const ExactPoint& q) {
+        const auto beyond = [&](const ExactPoint& edge, const ExactPoint& own, const ExactPoint& p,
+                                const ExactPoint& q) {
             return CGAL::coplanar_orientation(v, edge, own, p) == CGAL::NEGATIVE &&
                    CGAL::coplanar_orientation(v, edge, own, q) == CGAL::NEGATIVE;
         };
@@ -190,7 +201,8 @@ struct Projection {
         std::array<FT, 3> xyz;
         xyz[std::size_t(u)] = q.x();
         xyz[std::size_t(v)] = q.y();
-        xyz[std::size_t(axis)] = -(n[std::size_t(u)] * q.x() + n[std::size_t(v)] * q.y() + plane.d()) / n[std::size_t(axis)];
+        xyz[std::size_t(axis)] =
+            -(n[std::size_t(u)] * q.x() + n[std::size_t(v)] * q.y() + plane.d()) / n[std::size_t(axis)];
         return {xyz[0], xyz[1], xyz[2]};
     }
 };

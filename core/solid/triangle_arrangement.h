@@ -32,7 +32,7 @@ struct ArrangedTriangle {
 
 /// Splits non-degenerate `triangles` along their intersections. Every output piece lies
 /// in its source triangle and runs the same way round; the pieces of one source tile it.
-/// Checks `control` for cancellation (throws TaskCanceled).
+/// Checks `control` for cancellation (throws OperationCancelled).
 [[nodiscard]] std::vector<ArrangedTriangle> arrangeTriangles(const std::vector<std::array<ExactPoint, 3>>& triangles,
                                                              const TaskControl& control);
 

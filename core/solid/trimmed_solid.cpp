@@ -67,9 +67,8 @@ TriangleMesh roundedMesh(const solid::RefinedSoup& soup, const std::vector<std::
                 const solid::ExactPoint& p = soup.points[v[std::size_t(k)]];
                 const glm::vec3 rounded(float(CGAL::to_double(p.x())), float(CGAL::to_double(p.y())),
                                         float(CGAL::to_double(p.z())));
-                const auto [it, inserted] =
-                    byPosition.emplace(std::array<float, 3>{rounded.x, rounded.y, rounded.z},
-                                       std::uint32_t(mesh.positions.size()));
+                const auto [it, inserted] = byPosition.emplace(std::array<float, 3>{rounded.x, rounded.y, rounded.z},
+                                                               std::uint32_t(mesh.positions.size()));
                 if (inserted)
                     mesh.positions.push_back(rounded);
                 index = it->second;

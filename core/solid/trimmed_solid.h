@@ -30,9 +30,9 @@ struct TrimmedSolidStats {
     /// the kept faces that collapsed with them (dropped).
     std::size_t roundingMergedVertices = 0;
     std::size_t roundingDroppedFaces = 0;
-    std::size_t nonManifoldEdges = 0;    ///< edges of the result with more than two faces
-    std::size_t openEdges = 0;           ///< edges of the result with one face (0: closed)
-    double signedVolume = 0.0;           ///< of the result as written (float positions), in world units³
+    std::size_t nonManifoldEdges = 0; ///< edges of the result with more than two faces
+    std::size_t openEdges = 0;        ///< edges of the result with one face (0: closed)
+    double signedVolume = 0.0;        ///< of the result as written (float positions), in world units³
     double refineMs = 0.0;
     double windingMs = 0.0;
 };
@@ -49,6 +49,7 @@ struct TrimmedSolid {
 /// (TrimSettings::objectRule). Clipping, caps and highlights play no part. Throws
 /// std::invalid_argument when trimming is off (no rule: no solid), OperationCancelled
 /// when `control` asks.
-[[nodiscard]] TrimmedSolid trimmedSolid(const Scene& scene, const TrimSettings& settings, const TaskControl& control = {});
+[[nodiscard]] TrimmedSolid trimmedSolid(const Scene& scene, const TrimSettings& settings,
+                                        const TaskControl& control = {});
 
 } // namespace trimlab

@@ -33,7 +33,7 @@ private:
     [[nodiscard]] std::size_t lineOf(const std::optional<CageElement>& element) const;
 
     SubdivisionCage m_cage;
-    std::vector<std::size_t> m_faceLines;  // line of each face
+    std::vector<std::size_t> m_faceLines;   // line of each face
     std::vector<std::size_t> m_creaseLines; // line of each crease
     std::vector<std::size_t> m_cornerLines; // line of each corner
 };
@@ -87,11 +87,13 @@ void CageObjParser::parseTag(std::string_view rest)
             floats.push_back(value);
     }
     if (n[2] != 0 || nextToken(rest, token))
-        fail("tag '" + std::string(name) + "' has more values than its counts declare (string arguments are not supported)");
+        fail("tag '" + std::string(name) +
+             "' has more values than its counts declare (string arguments are not supported)");
     addTag(name, ints, floats);
 }
 
-void CageObjParser::addTag(std::string_view name, const std::vector<std::int64_t>& ints, const std::vector<double>& floats)
+void CageObjParser::addTag(std::string_view name, const std::vector<std::int64_t>& ints,
+                           const std::vector<double>& floats)
 {
     const bool crease = name == "crease";
     if (!crease && name != "corner")
@@ -109,8 +111,7 @@ void CageObjParser::addTag(std::string_view name, const std::vector<std::int64_t
             fail("tag vertex " + std::to_string(v) + " is invalid; tag indices count from 0");
     for (std::size_t e = 0; e < elements; ++e) {
         const double s = floats.size() == 1 ? floats[0] : floats[e];
-        if (!std::isfinite(s) || s < 0.0)
-        {
+        if (!std::isfinite(s) || s < 0.0) {
             char text[32];
             std::snprintf(text, sizeof text, "%g", s);
             fail("sharpness " + std::string(text) + " is invalid; use a number >= 0 (10 or more is infinitely sharp)");
@@ -135,9 +136,10 @@ SubdivisionCage CageObjParser::finish()
     for (std::size_t f = 0; f < m_cage.faceCount(); ++f) {
         for (std::size_t k = start; k < start + m_cage.faceSizes[f]; ++k) {
             if (m_cage.faceIndices[k] >= m_cage.positions.size())
-                throw MeshLoadError(name(), "face " + std::to_string(f + 1) + " references vertex " +
-                                                std::to_string(std::uint64_t(m_cage.faceIndices[k]) + 1) + ", but " +
-                                                vertexCountPhrase(m_cage.positions.size(), false),
+                throw MeshLoadError(name(),
+                                    "face " + std::to_string(f + 1) + " references vertex " +
+                                        std::to_string(std::uint64_t(m_cage.faceIndices[k]) + 1) + ", but " +
+                                        vertexCountPhrase(m_cage.positions.size(), false),
                                     {.line = m_faceLines[f], .element = {}});
         }
         start += m_cage.faceSizes[f];
@@ -155,9 +157,12 @@ std::size_t CageObjParser::lineOf(const std::optional<CageElement>& element) con
     if (!element)
         return 0;
     switch (element->kind) {
-    case CageElement::Kind::Face: return m_faceLines[element->index];
-    case CageElement::Kind::Crease: return m_creaseLines[element->index];
-    case CageElement::Kind::Corner: return m_cornerLines[element->index];
+    case CageElement::Kind::Face:
+        return m_faceLines[element->index];
+    case CageElement::Kind::Crease:
+        return m_creaseLines[element->index];
+    case CageElement::Kind::Corner:
+        return m_cornerLines[element->index];
     }
     return 0;
 }

@@ -77,16 +77,16 @@ std::optional<KnotVectorProblem> findClampProblem(std::span<const double> knots,
 std::optional<KnotVectorProblem> findKnotVectorProblem(std::span<const double> knots, int degree, std::size_t count)
 {
     if (degree < 1 || degree > kMaxNurbsDegree)
-        return problem(std::nullopt, "degree " + std::to_string(degree) + " is outside 1.." +
-                                         std::to_string(kMaxNurbsDegree));
+        return problem(std::nullopt,
+                       "degree " + std::to_string(degree) + " is outside 1.." + std::to_string(kMaxNurbsDegree));
     if (count < std::size_t(degree) + 1)
         return problem(std::nullopt, std::to_string(count) + " control points are too few for degree " +
-                                         std::to_string(degree) + "; use at least degree+1 = " +
-                                         std::to_string(degree + 1));
+                                         std::to_string(degree) +
+                                         "; use at least degree+1 = " + std::to_string(degree + 1));
     if (knots.size() != count + std::size_t(degree) + 1)
         return problem(std::nullopt, std::to_string(knots.size()) + " knots, but " + std::to_string(count) +
-                                         " control points of degree " + std::to_string(degree) + " need count+degree+1 = " +
-                                         std::to_string(count + std::size_t(degree) + 1));
+                                         " control points of degree " + std::to_string(degree) +
+                                         " need count+degree+1 = " + std::to_string(count + std::size_t(degree) + 1));
     if (auto order = findOrderProblem(knots, degree))
         return order;
     return findClampProblem(knots, degree);

@@ -12,15 +12,15 @@ namespace trimlab {
 
 namespace {
 
+using io::indexPath;
+using io::JsonPathError;
 using nlohmann::json;
-using timeline::indexPath;
-using timeline::JsonPathError;
 
 json surfaceJson(const NurbsSurface& s)
 {
     json points = json::array();
     for (const glm::dvec3& p : s.points)
-        points.push_back(timeline::dvec3Json(p));
+        points.push_back(io::dvec3Json(p));
     json object = json::object();
     object["name"] = s.name;
     object["degreeU"] = s.degreeU;
@@ -39,7 +39,7 @@ json surfaceJson(const NurbsSurface& s)
 bool booleanValue(const json& value, const std::string& path)
 {
     if (!value.is_boolean())
-        throw JsonPathError(path, "must be true or false, not " + timeline::jsonTypeText(value));
+        throw JsonPathError(path, "must be true or false, not " + io::jsonTypeText(value));
     return value.get<bool>();
 }
 
@@ -47,9 +47,9 @@ bool booleanValue(const json& value, const std::string& path)
 const json& sizedArray(const json& object, const char* key, std::size_t expected, const std::string& what,
                        const std::string& path)
 {
-    const std::string at = timeline::fieldPath(path, key);
-    const json& array = timeline::requiredField(object, key, path);
-    timeline::requireArray(array, at);
+    const std::string at = io::fieldPath(path, key);
+    const json& array = io::requiredField(object, key, path);
+    io::requireArray(array, at);
     if (array.size() != expected)
         throw JsonPathError(at, std::to_string(array.size()) + " entries, but " + what + " = " +
                                     std::to_string(expected) + "; give exactly that many");
@@ -61,7 +61,7 @@ std::vector<double> numbers(const json& array, const std::string& path)
     std::vector<double> values;
     values.reserve(array.size());
     for (std::size_t k = 0; k < array.size(); ++k)
-        values.push_back(timeline::finiteNumber(array[k], indexPath(path, k)));
+        values.push_back(io::finiteNumber(array[k], indexPath(path, k)));
     return values;
 }
 
@@ -70,8 +70,7 @@ std::vector<double> numbers(const json& array, const std::string& path)
 void readShape(const json& object, const std::string& path, NurbsSurface& s)
 {
     const auto integer = [&](const char* key, std::int64_t low, std::int64_t high) {
-        return int(timeline::integerInRange(timeline::requiredField(object, key, path), low, high,
-                                            timeline::fieldPath(path, key)));
+        return int(io::integerInRange(io::requiredField(object, key, path), low, high, io::fieldPath(path, key)));
     };
     s.degreeU = integer("degreeU", 1, kMaxNurbsDegree);
     s.degreeV = integer("degreeV", 1, kMaxNurbsDegree);
@@ -79,55 +78,55 @@ void readShape(const json& object, const std::string& path, NurbsSurface& s)
     s.countV = integer("countV", 2, std::int64_t(kMaxNurbsControlPoints));
     const std::size_t total = std::size_t(s.countU) * std::size_t(s.countV);
     if (total > kMaxNurbsControlPoints)
-        throw JsonPathError(timeline::fieldPath(path, "countV"),
+        throw JsonPathError(io::fieldPath(path, "countV"),
                             "countU·countV = " + std::to_string(total) + " control points are more than the limit of " +
                                 std::to_string(kMaxNurbsControlPoints) + "; split the surface");
-    if (const json* name = timeline::optionalField(object, "name"))
-        s.name = timeline::stringValue(*name, timeline::fieldPath(path, "name"));
-    if (const json* closed = timeline::optionalField(object, "closedU"))
-        s.closedU = booleanValue(*closed, timeline::fieldPath(path, "closedU"));
-    if (const json* closed = timeline::optionalField(object, "closedV"))
-        s.closedV = booleanValue(*closed, timeline::fieldPath(path, "closedV"));
+    if (const json* name = io::optionalField(object, "name"))
+        s.name = io::stringValue(*name, io::fieldPath(path, "name"));
+    if (const json* closed = io::optionalField(object, "closedU"))
+        s.closedU = booleanValue(*closed, io::fieldPath(path, "closedU"));
+    if (const json* closed = io::optionalField(object, "closedV"))
+        s.closedV = booleanValue(*closed, io::fieldPath(path, "closedV"));
 }
 
 NurbsSurface readSurface(const json& object, const std::string& path)
 {
-    timeline::requireObject(object, path);
-    timeline::rejectUnknownFields(object, {"name", "degreeU", "degreeV", "countU", "countV", "closedU", "closedV",
-                                           "knotsU", "knotsV", "points", "weights"},
-                                  path);
+    io::requireObject(object, path);
+    io::rejectUnknownFields(object,
+                            {"name", "degreeU", "degreeV", "countU", "countV", "closedU", "closedV", "knotsU", "knotsV",
+                             "points", "weights"},
+                            path);
     NurbsSurface s;
     readShape(object, path, s);
     const std::size_t total = std::size_t(s.countU) * std::size_t(s.countV);
     s.knotsU = numbers(sizedArray(object, "knotsU", std::size_t(s.countU + s.degreeU + 1), "countU+degreeU+1", path),
-                       timeline::fieldPath(path, "knotsU"));
+                       io::fieldPath(path, "knotsU"));
     s.knotsV = numbers(sizedArray(object, "knotsV", std::size_t(s.countV + s.degreeV + 1), "countV+degreeV+1", path),
-                       timeline::fieldPath(path, "knotsV"));
+                       io::fieldPath(path, "knotsV"));
     const json& points = sizedArray(object, "points", total, "countU·countV", path);
     s.points.reserve(total);
     for (std::size_t k = 0; k < total; ++k)
-        s.points.push_back(timeline::dvec3Value(points[k], indexPath(timeline::fieldPath(path, "points"), k)));
-    s.weights = numbers(sizedArray(object, "weights", total, "countU·countV", path), timeline::fieldPath(path, "weights"));
+        s.points.push_back(io::dvec3Value(points[k], indexPath(io::fieldPath(path, "points"), k)));
+    s.weights = numbers(sizedArray(object, "weights", total, "countU·countV", path), io::fieldPath(path, "weights"));
     if (const auto problem = findNurbsProblem(s))
-        throw JsonPathError(timeline::fieldPath(path, problem->where), problem->reason);
+        throw JsonPathError(io::fieldPath(path, problem->where), problem->reason);
     return s;
 }
 
 std::vector<NurbsSurface> readDocument(const json& document)
 {
-    timeline::requireObject(document, "");
-    const json* format = timeline::optionalField(document, "format");
+    io::requireObject(document, "");
+    const json* format = io::optionalField(document, "format");
     if (!format || !format->is_string() || format->get<std::string>() != kNurbsFormatName)
-        throw JsonPathError("format", "not a TrimLab NURBS file (\"format\" is not \"" + std::string(kNurbsFormatName) +
-                                          "\")");
-    const auto version =
-        timeline::integerInRange(timeline::requiredField(document, "version", ""), 1, 1'000'000, "version");
+        throw JsonPathError("format",
+                            "not a TrimLab NURBS file (\"format\" is not \"" + std::string(kNurbsFormatName) + "\")");
+    const auto version = io::integerInRange(io::requiredField(document, "version", ""), 1, 1'000'000, "version");
     if (version > kNurbsFormatVersion)
         throw JsonPathError("version", "version " + std::to_string(version) + " is newer than this TrimLab (" +
                                            std::to_string(kNurbsFormatVersion) + "); update TrimLab to open it");
-    timeline::rejectUnknownFields(document, {"format", "version", "generator", "surfaces"}, "");
-    const json& list = timeline::requiredField(document, "surfaces", "");
-    timeline::requireArray(list, "surfaces");
+    io::rejectUnknownFields(document, {"format", "version", "generator", "surfaces"}, "");
+    const json& list = io::requiredField(document, "surfaces", "");
+    io::requireArray(list, "surfaces");
     if (list.empty() || list.size() > kMaxNurbsSurfacesPerFile)
         throw JsonPathError("surfaces", "must hold 1 to " + std::to_string(kMaxNurbsSurfacesPerFile) +
                                             " surfaces, not " + std::to_string(list.size()));
@@ -159,20 +158,20 @@ std::string nurbsJson(std::span<const NurbsSurface> surfaces)
 
 void saveNurbsJson(const std::filesystem::path& path, std::span<const NurbsSurface> surfaces)
 {
-    timeline::writeFileAtomically(path, nurbsJson(surfaces));
+    io::writeFileAtomically(path, nurbsJson(surfaces));
 }
 
 std::vector<NurbsSurface> parseNurbsJson(std::string_view text, const std::string& displayName)
 {
-    return timeline::readJsonDocument<NurbsFileError>(text, displayName,
-                                                      [](const json& document) { return readDocument(document); });
+    return io::readJsonDocument<NurbsFileError>(text, displayName,
+                                                [](const json& document) { return readDocument(document); });
 }
 
 std::vector<NurbsSurface> loadNurbsJson(const std::filesystem::path& path)
 {
     std::string text;
     try {
-        text = timeline::readFileBytes(path, kMaxNurbsFileBytes);
+        text = io::readFileBytes(path, kMaxNurbsFileBytes);
     } catch (const std::runtime_error& error) {
         throw NurbsFileError(path.string(), "", error.what());
     }

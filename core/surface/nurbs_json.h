@@ -41,7 +41,7 @@ inline constexpr std::size_t kMaxNurbsSurfacesPerFile = 1024;
 /// A NURBS file could not be read. `what()` reads `FILE: [WHERE: ]REASON`, WHERE being a
 /// JSON path such as "surfaces[0].knotsU[3]", e.g.
 /// `hull.json: surfaces[0].knotsU[3]: knots must not decrease (0.5 after 0.75); sort the knot vector`.
-class NurbsFileError : public DocumentFileError {
+class NurbsFileError : public io::DocumentFileError {
 public:
     using DocumentFileError::DocumentFileError;
 };
@@ -50,7 +50,7 @@ public:
 /// surface is invalid (requireValidNurbs) or there are more than kMaxNurbsSurfacesPerFile.
 [[nodiscard]] std::string nurbsJson(std::span<const NurbsSurface> surfaces);
 
-/// Writes nurbsJson atomically (timeline::writeFileAtomically). Throws as nurbsJson, and
+/// Writes nurbsJson atomically (io::writeFileAtomically). Throws as nurbsJson, and
 /// std::runtime_error naming the file when it cannot be written.
 void saveNurbsJson(const std::filesystem::path& path, std::span<const NurbsSurface> surfaces);
 

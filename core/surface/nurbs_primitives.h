@@ -45,7 +45,6 @@ namespace trimlab {
 /// uniformly over [center.x ± sizeX/2] × [center.z ± sizeZ/2] in the plane y = center.y,
 /// with uniform clamped knots on [0, 1] and weights 1. u runs along +x, v along −z, so the
 /// normal is +y. Its tessellation has one boundary loop.
-[[nodiscard]] NurbsSurface makeNurbsPatch(const glm::dvec3& center, double sizeX, double sizeZ, int countU,
-                                          int countV);
+[[nodiscard]] NurbsSurface makeNurbsPatch(const glm::dvec3& center, double sizeX, double sizeZ, int countU, int countV);
 
 } // namespace trimlab

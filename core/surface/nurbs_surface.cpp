@@ -28,20 +28,22 @@ std::optional<NurbsProblem> findShapeProblem(const NurbsSurface& s)
                                            std::to_string(kMaxNurbsDegree)};
     if (s.countU < s.degreeU + 1)
         return NurbsProblem{"countU", std::to_string(s.countU) + " control points per row are too few for degree " +
-                                          std::to_string(s.degreeU) + "; use at least " + std::to_string(s.degreeU + 1)};
+                                          std::to_string(s.degreeU) + "; use at least " +
+                                          std::to_string(s.degreeU + 1)};
     if (s.countV < s.degreeV + 1)
         return NurbsProblem{"countV", std::to_string(s.countV) + " control points per column are too few for degree " +
-                                          std::to_string(s.degreeV) + "; use at least " + std::to_string(s.degreeV + 1)};
+                                          std::to_string(s.degreeV) + "; use at least " +
+                                          std::to_string(s.degreeV + 1)};
     const std::size_t total = std::size_t(s.countU) * std::size_t(s.countV);
     if (total > kMaxNurbsControlPoints)
         return NurbsProblem{"countV", std::to_string(total) + " control points are more than the limit of " +
                                           std::to_string(kMaxNurbsControlPoints) + "; split the surface"};
     if (s.points.size() != total)
-        return NurbsProblem{"points", std::to_string(s.points.size()) + " control points, but countU·countV = " +
-                                          std::to_string(total)};
+        return NurbsProblem{"points", std::to_string(s.points.size()) +
+                                          " control points, but countU·countV = " + std::to_string(total)};
     if (s.weights.size() != total)
-        return NurbsProblem{"weights", std::to_string(s.weights.size()) + " weights, but countU·countV = " +
-                                           std::to_string(total)};
+        return NurbsProblem{"weights", std::to_string(s.weights.size()) +
+                                           " weights, but countU·countV = " + std::to_string(total)};
     return std::nullopt;
 }
 
@@ -223,9 +225,7 @@ bool isPole(const NurbsSurface& s, NurbsSide side)
     const bool alongV = side == NurbsSide::UBegin || side == NurbsSide::UEnd; // a column
     if (alongV ? s.closedU : s.closedV)
         return false;
-    const int fixed = side == NurbsSide::UBegin || side == NurbsSide::VBegin ? 0
-                      : alongV                                               ? s.countU - 1
-                                                                             : s.countV - 1;
+    const int fixed = side == NurbsSide::UBegin || side == NurbsSide::VBegin ? 0 : alongV ? s.countU - 1 : s.countV - 1;
     const int n = alongV ? s.countV : s.countU;
     const glm::dvec3 first = s.points[alongV ? s.index(fixed, 0) : s.index(0, fixed)];
     for (int k = 1; k < n; ++k)
@@ -290,8 +290,8 @@ std::vector<std::size_t> linkedControlPoints(const NurbsSurface& surface, std::s
 void moveControlPoint(NurbsSurface& surface, std::size_t index, const glm::dvec3& position)
 {
     if (index >= surface.points.size())
-        throw std::out_of_range("moveControlPoint: control point " + std::to_string(index) + " does not exist (the net has " +
-                                std::to_string(surface.points.size()) + ")");
+        throw std::out_of_range("moveControlPoint: control point " + std::to_string(index) +
+                                " does not exist (the net has " + std::to_string(surface.points.size()) + ")");
     if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z))
         throw std::invalid_argument("moveControlPoint: the new position is not finite");
     for (const std::size_t k : linkedControlPoints(surface, index))
@@ -301,8 +301,8 @@ void moveControlPoint(NurbsSurface& surface, std::size_t index, const glm::dvec3
 void setControlWeight(NurbsSurface& surface, std::size_t index, double weight)
 {
     if (index >= surface.weights.size())
-        throw std::out_of_range("setControlWeight: control point " + std::to_string(index) + " does not exist (the net has " +
-                                std::to_string(surface.weights.size()) + ")");
+        throw std::out_of_range("setControlWeight: control point " + std::to_string(index) +
+                                " does not exist (the net has " + std::to_string(surface.weights.size()) + ")");
     if (!std::isfinite(weight) || !(weight > 0.0))
         throw std::invalid_argument("setControlWeight: weights must be finite and > 0");
     // Only seam twins share weights; pole points keep theirs.

@@ -43,17 +43,17 @@ inline constexpr std::size_t kMaxNurbsControlPoints = 1'000'000;
 /// checked with findNurbsProblem / requireValidNurbs (evaluation assumes a valid
 /// surface and does not re-check it per call).
 struct NurbsSurface {
-    std::string name;                ///< shown in the UI and written to files; may be empty
-    int degreeU = 3;                 ///< p, 1..kMaxNurbsDegree
-    int degreeV = 3;                 ///< q, 1..kMaxNurbsDegree
-    int countU = 0;                  ///< control points per row (along u), >= degreeU+1
-    int countV = 0;                  ///< control points per column (along v), >= degreeV+1
-    std::vector<double> knotsU;      ///< countU+degreeU+1 knots, clamped, non-decreasing
-    std::vector<double> knotsV;      ///< countV+degreeV+1 knots, clamped, non-decreasing
-    std::vector<glm::dvec3> points;  ///< countU·countV positions P_ij at index(i, j) (scene units)
-    std::vector<double> weights;     ///< countU·countV weights w_ij > 0 at index(i, j)
-    bool closedU = false;            ///< column countU−1 repeats column 0 (seam along u)
-    bool closedV = false;            ///< row countV−1 repeats row 0 (seam along v)
+    std::string name;               ///< shown in the UI and written to files; may be empty
+    int degreeU = 3;                ///< p, 1..kMaxNurbsDegree
+    int degreeV = 3;                ///< q, 1..kMaxNurbsDegree
+    int countU = 0;                 ///< control points per row (along u), >= degreeU+1
+    int countV = 0;                 ///< control points per column (along v), >= degreeV+1
+    std::vector<double> knotsU;     ///< countU+degreeU+1 knots, clamped, non-decreasing
+    std::vector<double> knotsV;     ///< countV+degreeV+1 knots, clamped, non-decreasing
+    std::vector<glm::dvec3> points; ///< countU·countV positions P_ij at index(i, j) (scene units)
+    std::vector<double> weights;    ///< countU·countV weights w_ij > 0 at index(i, j)
+    bool closedU = false;           ///< column countU−1 repeats column 0 (seam along u)
+    bool closedV = false;           ///< row countV−1 repeats row 0 (seam along v)
 
     /// j·countU + i (no range check).
     [[nodiscard]] std::size_t index(int i, int j) const

@@ -31,7 +31,7 @@
 ///  - cylinder (closedU, open v):             #V = cu·(cv+1),    #F = 2·cu·cv;
 ///  - patch (open):                           #V = (cu+1)(cv+1), #F = 2·cu·cv.
 /// The closed primitives give closed, manifold, consistently oriented meshes with
-/// positive signed volume (tests/core/tst_nurbs_tessellation.cpp checks it).
+/// positive signed volume (tests/core/surface/tst_nurbs_tessellation.cpp checks it).
 ///
 /// Fast re-evaluation. The constructor runs the span search and the basis recursion once
 /// per sample parameter and keeps a sparse table in tensor-product form: for each u
@@ -148,9 +148,9 @@ private:
     // index of its span and the degree+1 basis values and derivatives there; for each
     // control index the contiguous range of samples whose span includes it.
     struct DirectionTable {
-        std::size_t width = 0;                  // degree + 1
-        std::vector<std::uint32_t> first;       // per sample
-        std::vector<double> basis, derivative;  // per sample × width
+        std::size_t width = 0;                             // degree + 1
+        std::vector<std::uint32_t> first;                  // per sample
+        std::vector<double> basis, derivative;             // per sample × width
         std::vector<std::uint32_t> sampleBegin, sampleEnd; // per control index
     };
     // A pole vertex and the samples merged into it, in order along the side.
@@ -192,8 +192,8 @@ private:
     std::vector<glm::dvec3> m_sampleDu, m_sampleDv; // per sample
     std::vector<std::uint8_t> m_sampleMark;         // scratch of update(changed)
     double m_derivativeFloor = 0.0;
-    std::vector<glm::dvec3> m_positions;            // per vertex
-    std::vector<glm::vec3> m_normals;               // per vertex
+    std::vector<glm::dvec3> m_positions; // per vertex
+    std::vector<glm::vec3> m_normals;    // per vertex
     TriangleMesh m_mesh;
 };
 

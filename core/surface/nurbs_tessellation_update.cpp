@@ -21,8 +21,7 @@ glm::dvec3 normalizedOrZero(const glm::dvec3& v)
 
 } // namespace
 
-void NurbsTessellation::storeSample(std::size_t sample, const glm::dvec4& a, const glm::dvec4& au,
-                                    const glm::dvec4& av)
+void NurbsTessellation::storeSample(std::size_t sample, const glm::dvec4& a, const glm::dvec4& au, const glm::dvec4& av)
 {
     // Rational quotient rule, written exactly as evaluateNurbs writes it.
     const glm::dvec3 position = glm::dvec3(a) / a.w;

@@ -21,9 +21,15 @@ std::span<const std::uint32_t> SubdivisionCage::face(std::size_t f) const
 
 namespace {
 
-std::string str(std::size_t value) { return std::to_string(value); }
+std::string str(std::size_t value)
+{
+    return std::to_string(value);
+}
 
-CageElement faceElement(std::size_t f) { return {CageElement::Kind::Face, f}; }
+CageElement faceElement(std::size_t f)
+{
+    return {CageElement::Kind::Face, f};
+}
 
 std::string sharpnessText(double sharpness)
 {
@@ -48,7 +54,8 @@ void requireFaces(const SubdivisionCage& cage)
         start += cage.faceSizes[f];
         if (face.size() < 3)
             throw SubdivisionError("cage face " + str(f) + " has " + str(face.size()) +
-                                       " corners; a face needs at least 3", faceElement(f));
+                                       " corners; a face needs at least 3",
+                                   faceElement(f));
         for (std::size_t i = 0; i < face.size(); ++i) {
             if (face[i] >= cage.vertexCount())
                 throw SubdivisionError("cage face " + str(f) + " references vertex " + str(face[i]) +
@@ -71,7 +78,8 @@ void requireFinitePositions(const SubdivisionCage& cage)
     for (std::size_t v = 0; v < cage.vertexCount(); ++v) {
         const glm::dvec3& p = cage.positions[v];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-            throw SubdivisionError("cage vertex " + str(v) + " has a non-finite coordinate; coordinates must be finite numbers");
+            throw SubdivisionError("cage vertex " + str(v) +
+                                   " has a non-finite coordinate; coordinates must be finite numbers");
     }
 }
 

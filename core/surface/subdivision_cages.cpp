@@ -85,9 +85,7 @@ SubdivisionCage torusCage(int ringSegments, int tubeSegments, double majorRadius
             cage.positions.emplace_back(r * std::cos(phi), r * std::sin(phi), minorRadius * std::sin(theta));
         }
     }
-    const auto id = [&](int i, int j) {
-        return std::uint32_t((i % ringSegments) * tubeSegments + (j % tubeSegments));
-    };
+    const auto id = [&](int i, int j) { return std::uint32_t((i % ringSegments) * tubeSegments + (j % tubeSegments)); };
     // Going +phi then +theta is counter-clockwise seen from outside the tube.
     for (int i = 0; i < ringSegments; ++i)
         for (int j = 0; j < tubeSegments; ++j)
@@ -146,8 +144,7 @@ SubdivisionCage builtInCage(const std::string& name)
         return tetrahedronCage();
     if (name == "octahedron")
         return octahedronCage();
-    throw std::invalid_argument("no built-in cage '" + name +
-                                "'; use cube, torus, t-shape, tetrahedron or octahedron");
+    throw std::invalid_argument("no built-in cage '" + name + "'; use cube, torus, t-shape, tetrahedron or octahedron");
 }
 
 } // namespace trimlab

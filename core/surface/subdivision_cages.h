@@ -17,8 +17,8 @@ namespace trimlab {
 /// radius `majorRadius`, tube radius `minorRadius` (< majorRadius), Catmull–Clark.
 /// Throws std::invalid_argument for segment counts < 3 or radii that are not
 /// 0 < minorRadius < majorRadius.
-[[nodiscard]] SubdivisionCage torusCage(int ringSegments = 16, int tubeSegments = 8,
-                                        double majorRadius = 1.0, double minorRadius = 0.35);
+[[nodiscard]] SubdivisionCage torusCage(int ringSegments = 16, int tubeSegments = 8, double majorRadius = 1.0,
+                                        double minorRadius = 0.35);
 
 /// A "T" made of 5 unit cubes (a bar of 3 along x on top of a stem of 2 along -y), as
 /// one closed quad cage of 22 quads; Catmull–Clark. Has valence-3 and valence-5 vertices.

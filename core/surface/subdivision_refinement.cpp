@@ -23,9 +23,8 @@ namespace Far = OpenSubdiv::Far;
 
 void appendStencilRow(SubdivisionSurface::StencilRows& rows, std::vector<StencilWeight>& row)
 {
-    std::sort(row.begin(), row.end(), [](const StencilWeight& a, const StencilWeight& b) {
-        return a.cageVertex < b.cageVertex;
-    });
+    std::sort(row.begin(), row.end(),
+              [](const StencilWeight& a, const StencilWeight& b) { return a.cageVertex < b.cageVertex; });
     for (std::size_t i = 0; i < row.size();) {
         StencilWeight merged = row[i];
         for (++i; i < row.size() && row[i].cageVertex == merged.cageVertex; ++i)

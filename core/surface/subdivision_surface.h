@@ -153,12 +153,12 @@ private:
     SubdivisionScheme m_scheme = SubdivisionScheme::CatmullClark;
     std::size_t m_cageVertexCount = 0;
     StencilRows m_position;
-    StencilRows m_tangentU; // limit mode only
-    StencilRows m_tangentV; // limit mode only
+    StencilRows m_tangentU;                    // limit mode only
+    StencilRows m_tangentV;                    // limit mode only
     std::vector<std::size_t> m_supportOffsets; // cage vertex c: m_support[offsets[c] .. offsets[c+1])
     std::vector<std::uint32_t> m_support;
     std::vector<std::size_t> m_vertexTriangleOffsets; // uniform mode: triangles around each output vertex
-    std::vector<std::uint32_t> m_vertexTriangles;      // (ascending, as vertexNormals sums them)
+    std::vector<std::uint32_t> m_vertexTriangles;     // (ascending, as vertexNormals sums them)
     std::vector<LimitLocation> m_locations;
     TriangleMesh m_mesh;
     std::vector<glm::dvec3> m_positions;

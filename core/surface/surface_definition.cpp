@@ -33,8 +33,8 @@ std::optional<std::string> nurbsProblem(const NurbsDefinition& definition)
 {
     if (const std::optional<NurbsProblem> problem = findNurbsProblem(definition.surface))
         return "NURBS: " + problem->where + ": " + problem->reason;
-    for (const auto& [name, segments] : {std::pair{"segmentsU", definition.segmentsU},
-                                        std::pair{"segmentsV", definition.segmentsV}}) {
+    for (const auto& [name, segments] :
+         {std::pair{"segmentsU", definition.segmentsU}, std::pair{"segmentsV", definition.segmentsV}}) {
         if (segments < 1 || segments > kMaxTessellationSegments)
             return std::string("NURBS: ") + name + " " + std::to_string(segments) + " is outside 1 to " +
                    std::to_string(kMaxTessellationSegments);

@@ -46,7 +46,7 @@ inline constexpr int kDefaultNurbsSegmentsV = 24;
 
 /// A NURBS surface and how finely it is tessellated.
 struct NurbsDefinition {
-    NurbsSurface surface;                  ///< must pass requireValidNurbs
+    NurbsSurface surface;                   ///< must pass requireValidNurbs
     int segmentsU = kDefaultNurbsSegmentsU; ///< 1..kMaxTessellationSegments
     int segmentsV = kDefaultNurbsSegmentsV; ///< 1..kMaxTessellationSegments
 

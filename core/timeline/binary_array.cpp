@@ -12,6 +12,13 @@
 
 namespace trimlab::timeline {
 
+using io::fieldPath;
+using io::integerInRange;
+using io::JsonPathError;
+using io::requiredField;
+using io::requireObject;
+using io::stringValue;
+
 namespace {
 
 std::uint32_t crc32Of(std::span<const std::uint8_t> bytes)
@@ -42,7 +49,9 @@ nlohmann::json arrayJson(std::string_view type, std::span<const std::uint32_t> w
         for (int shift = 0; shift < 32; shift += 8)
             bytes.push_back(std::uint8_t((w >> shift) & 0xff)); // little-endian on every host
     }
-    return nlohmann::json{{"type", type}, {"count", words.size() / wordsPerValue}, {"crc32", crc32Of(bytes)},
+    return nlohmann::json{{"type", type},
+                          {"count", words.size() / wordsPerValue},
+                          {"crc32", crc32Of(bytes)},
                           {"base64", base64Encode(bytes)}};
 }
 
@@ -53,13 +62,14 @@ std::vector<std::uint32_t> readWords(const nlohmann::json& value, std::string_vi
     requireObject(value, path);
     const std::string actualType = stringValue(requiredField(value, "type", path), fieldPath(path, "type"));
     if (actualType != type)
-        throw JsonPathError(fieldPath(path, "type"), "must be \"" + std::string(type) + "\", not \"" + actualType + "\"");
-    const auto count = std::size_t(integerInRange(requiredField(value, "count", path), 0,
-                                                  std::numeric_limits<std::int64_t>::max() / std::int64_t(4 * wordsPerValue),
-                                                  fieldPath(path, "count")));
+        throw JsonPathError(fieldPath(path, "type"),
+                            "must be \"" + std::string(type) + "\", not \"" + actualType + "\"");
+    const auto count = std::size_t(integerInRange(
+        requiredField(value, "count", path), 0,
+        std::numeric_limits<std::int64_t>::max() / std::int64_t(4 * wordsPerValue), fieldPath(path, "count")));
     const std::size_t byteCount = count * 4 * wordsPerValue;
-    const auto storedCrc = std::uint32_t(integerInRange(requiredField(value, "crc32", path), 0, 0xffffffffLL,
-                                                        fieldPath(path, "crc32")));
+    const auto storedCrc =
+        std::uint32_t(integerInRange(requiredField(value, "crc32", path), 0, 0xffffffffLL, fieldPath(path, "crc32")));
     const std::string text = stringValue(requiredField(value, "base64", path), fieldPath(path, "base64"));
     std::vector<std::uint8_t> bytes;
     try {
@@ -68,8 +78,8 @@ std::vector<std::uint32_t> readWords(const nlohmann::json& value, std::string_vi
         throw JsonPathError(fieldPath(path, "base64"), std::string("damaged base64: ") + error.what());
     }
     if (bytes.size() != byteCount)
-        throw JsonPathError(path, "holds " + std::to_string(bytes.size()) + " bytes, but count " + std::to_string(count) +
-                                      " needs " + std::to_string(byteCount));
+        throw JsonPathError(path, "holds " + std::to_string(bytes.size()) + " bytes, but count " +
+                                      std::to_string(count) + " needs " + std::to_string(byteCount));
     const std::uint32_t actualCrc = crc32Of(bytes);
     if (actualCrc != storedCrc)
         throw JsonPathError(path, "CRC mismatch: stored " + hex(storedCrc) + ", data " + hex(actualCrc) +
@@ -142,8 +152,8 @@ std::vector<glm::dvec3> readDvec3Array(const nlohmann::json& value, const std::s
 {
     const std::vector<double> values = readDoubleArray(value, path);
     if (values.size() % 3 != 0)
-        throw JsonPathError(fieldPath(path, "count"), "must be a multiple of 3 for points, not " +
-                                                          std::to_string(values.size()));
+        throw JsonPathError(fieldPath(path, "count"),
+                            "must be a multiple of 3 for points, not " + std::to_string(values.size()));
     std::vector<glm::dvec3> points(values.size() / 3);
     for (std::size_t i = 0; i < points.size(); ++i)
         points[i] = {values[3 * i], values[3 * i + 1], values[3 * i + 2]};
@@ -168,8 +178,8 @@ std::vector<glm::vec3> readPositionArray(const nlohmann::json& value, const std:
 {
     const std::vector<float> values = readFloatArray(value, path);
     if (values.size() % 3 != 0)
-        throw JsonPathError(fieldPath(path, "count"), "must be a multiple of 3 for positions, not " +
-                                                          std::to_string(values.size()));
+        throw JsonPathError(fieldPath(path, "count"),
+                            "must be a multiple of 3 for positions, not " + std::to_string(values.size()));
     std::vector<glm::vec3> positions(values.size() / 3);
     for (std::size_t i = 0; i < positions.size(); ++i)
         positions[i] = {values[3 * i], values[3 * i + 1], values[3 * i + 2]};

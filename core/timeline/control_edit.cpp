@@ -30,17 +30,18 @@ std::map<std::uint32_t, glm::dvec3> expandTargets(const EditableSurface& surface
                                         std::to_string(target.index) + " does not exist (the surface has " +
                                         std::to_string(surface.controlPointCount()) + ")");
         if (!isFinite(target.position))
-            throw std::invalid_argument("controlEditFrame: target " + std::to_string(k) + ": the position of control point " +
-                                        std::to_string(target.index) + " is not finite");
+            throw std::invalid_argument("controlEditFrame: target " + std::to_string(k) +
+                                        ": the position of control point " + std::to_string(target.index) +
+                                        " is not finite");
         for (const std::uint32_t c : surface.tiedPoints(target.index)) {
             const auto [it, inserted] = wanted.emplace(c, target.position);
-            if (!inserted && !timeline::sameBits(it->second, target.position))
+            if (!inserted && !sameBits(it->second, target.position))
                 throw std::invalid_argument("controlEditFrame: control point " + std::to_string(c) +
                                             " is given two different positions (directly or through a tied point)");
         }
     }
     for (auto it = wanted.begin(); it != wanted.end();) {
-        if (timeline::sameBits(it->second, surface.controlPoints()[it->first]))
+        if (sameBits(it->second, surface.controlPoints()[it->first]))
             it = wanted.erase(it);
         else
             ++it;
@@ -50,7 +51,7 @@ std::map<std::uint32_t, glm::dvec3> expandTargets(const EditableSurface& surface
 
 bool sameFloatBits(const glm::vec3& a, const glm::vec3& b)
 {
-    return timeline::sameBits(a, b);
+    return sameBits(a, b);
 }
 
 } // namespace
@@ -113,7 +114,7 @@ timeline::Frame appendControlEdit(timeline::Timeline& history, EditableSurface& 
         throw std::invalid_argument("appendControlEdit: the history has no surface definition");
     bool same = current.size() == surface.controlPointCount();
     for (std::size_t c = 0; same && c < current.size(); ++c)
-        same = timeline::sameBits(current[c], surface.controlPoints()[c]);
+        same = sameBits(current[c], surface.controlPoints()[c]);
     if (!same)
         surface.setControlPoints(current);
     const std::vector<glm::dvec3> previous = surface.controlPoints();

@@ -5,6 +5,11 @@
 
 namespace trimlab::timeline {
 
+using io::fieldPath;
+using io::JsonPathError;
+using io::requiredField;
+using io::requireObject;
+
 using nlohmann::json;
 
 json meshJson(const TriangleMesh& mesh)
@@ -24,8 +29,8 @@ TriangleMesh readMesh(const json& value, const std::string& path)
     const std::string trianglesPath = fieldPath(path, "triangles");
     const std::vector<std::uint32_t> indices = readUint32Array(requiredField(value, "triangles", path), trianglesPath);
     if (indices.size() % 3 != 0)
-        throw JsonPathError(fieldPath(trianglesPath, "count"), "must be a multiple of 3, not " +
-                                                                   std::to_string(indices.size()));
+        throw JsonPathError(fieldPath(trianglesPath, "count"),
+                            "must be a multiple of 3, not " + std::to_string(indices.size()));
     mesh.triangles.resize(indices.size() / 3);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
         mesh.triangles[t] = {indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]};

@@ -20,7 +20,7 @@ namespace {
 
 int addBasePositions(tinygltf::Model& model, const std::vector<glm::vec3>& positions)
 {
-    return addGltfVec3Accessor(model, positions, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    return io::addGltfVec3Accessor(model, positions, TINYGLTF_TARGET_ARRAY_BUFFER, true);
 }
 
 // Keyframe f at f/fps shows frame f: the base, then morph target f−1 alone.
@@ -29,7 +29,7 @@ void addAnimation(tinygltf::Model& model, int frameCount, double fps)
     std::vector<float> times(static_cast<std::size_t>(frameCount));
     for (int f = 0; f < frameCount; ++f)
         times[std::size_t(f)] = float(f / fps);
-    addGltfMorphStepAnimation(model, "frames", times, 1);
+    io::addGltfMorphStepAnimation(model, "frames", times, 1);
 }
 
 void addMorphTargets(tinygltf::Model& model, const Timeline& timeline, tinygltf::Primitive& primitive,
@@ -44,7 +44,7 @@ void addMorphTargets(tinygltf::Model& model, const Timeline& timeline, tinygltf:
             positions[frame.vertices[k]] = frame.after[k];
         for (std::size_t v = 0; v < base.size(); ++v)
             displacement[v] = positions[v] - base[v];
-        primitive.targets.push_back({{"POSITION", addGltfSparseVec3Accessor(model, displacement)}});
+        primitive.targets.push_back({{"POSITION", io::addGltfSparseVec3Accessor(model, displacement)}});
         mesh.weights.push_back(0.0);
     }
 }
@@ -57,7 +57,7 @@ tinygltf::Model buildModel(const Timeline& timeline, double fps)
     tinygltf::Primitive primitive;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
     primitive.attributes["POSITION"] = addBasePositions(model, timeline.base().positions);
-    primitive.indices = addGltfTriangleIndices(model, timeline.base().triangles);
+    primitive.indices = io::addGltfTriangleIndices(model, timeline.base().triangles);
     tinygltf::Mesh mesh;
     mesh.name = "timeline";
     addMorphTargets(model, timeline, primitive, mesh);
@@ -101,7 +101,7 @@ std::string morphGltf(const Timeline& timeline, double fps, bool binary)
 
 void exportMorphGltf(const Timeline& timeline, const std::filesystem::path& path, double fps)
 {
-    writeFileAtomically(path, morphGltf(timeline, fps, hasGlbExtension(path)));
+    io::writeFileAtomically(path, morphGltf(timeline, fps, hasGlbExtension(path)));
 }
 
 } // namespace trimlab::timeline

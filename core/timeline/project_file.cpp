@@ -10,6 +10,7 @@
 #include "core/io/json_fields.h"
 #include "core/timeline/stroke_json.h"
 #include "core/timeline/surface_json.h"
+#include "core/timeline/view_settings_json.h"
 #include "core/util/memory_budget.h"
 
 #include <nlohmann/json.hpp>
@@ -18,6 +19,24 @@
 #include <stdexcept>
 
 namespace trimlab::timeline {
+
+using io::dvec3Json;
+using io::dvec3Value;
+using io::fieldPath;
+using io::finiteNumber;
+using io::indexPath;
+using io::integerInRange;
+using io::JsonPathError;
+using io::JsonSyntaxError;
+using io::jsonTypeText;
+using io::optionalField;
+using io::parseJsonText;
+using io::readFileBytes;
+using io::requireArray;
+using io::requiredField;
+using io::requireObject;
+using io::stringValue;
+using io::writeFileAtomically;
 
 namespace {
 
@@ -73,6 +92,8 @@ void writeExtras(json& document, const ProjectExtras& extras)
         document["view"] = viewJson(*extras.view);
     if (extras.staticRule)
         document["static_rule"] = ruleName(*extras.staticRule);
+    if (extras.viewSettings)
+        document["view_settings"] = viewSettingsJson(*extras.viewSettings);
 }
 
 // The rules beyond the thesis's three arrived with version 3.
@@ -90,11 +111,12 @@ bool needsVersion3(const ProjectExtras& extras)
 std::int64_t checkFormat(const json& document)
 {
     if (!document.is_object())
-        throw JsonPathError("", "not a TrimLab project (the document is " + jsonTypeText(document) +
-                                    ", not an object)");
+        throw JsonPathError("",
+                            "not a TrimLab project (the document is " + jsonTypeText(document) + ", not an object)");
     const json* format = optionalField(document, "format");
     if (!format || !format->is_string() || format->get<std::string>() != kProjectFormatName)
-        throw JsonPathError("", "not a TrimLab project (\"format\" is not \"" + std::string(kProjectFormatName) + "\")");
+        throw JsonPathError("",
+                            "not a TrimLab project (\"format\" is not \"" + std::string(kProjectFormatName) + "\")");
     const std::int64_t version =
         integerInRange(requiredField(document, "version", ""), 1, std::numeric_limits<std::int32_t>::max(), "version");
     if (version > kProjectFormatVersion)
@@ -123,10 +145,10 @@ std::vector<DeformationSet> readSets(const json& value, const std::string& path)
         DeformationSet set;
         set.rule = readRule(requiredField(item, "rule", setPath), fieldPath(setPath, "rule"));
         const std::int64_t maxInt = std::numeric_limits<std::int32_t>::max();
-        set.firstFrame = int(integerInRange(requiredField(item, "first_frame", setPath), 1, maxInt,
-                                            fieldPath(setPath, "first_frame")));
-        set.frameCount = int(integerInRange(requiredField(item, "frame_count", setPath), 0, maxInt,
-                                            fieldPath(setPath, "frame_count")));
+        set.firstFrame = int(
+            integerInRange(requiredField(item, "first_frame", setPath), 1, maxInt, fieldPath(setPath, "first_frame")));
+        set.frameCount = int(
+            integerInRange(requiredField(item, "frame_count", setPath), 0, maxInt, fieldPath(setPath, "frame_count")));
         sets.push_back(set);
     }
     return sets;
@@ -183,6 +205,8 @@ ProjectExtras readExtras(const json& document)
             throw JsonPathError("static_rule",
                                 "unknown static rule '" + name + "' (known: " + staticRuleNamesHelp() + ")");
     }
+    if (const json* settings = optionalField(document, "view_settings"))
+        extras.viewSettings = readViewSettings(*settings, "view_settings");
     return extras;
 }
 
@@ -252,11 +276,12 @@ Project parseProject(std::string_view bytes, const std::string& displayName)
     try {
         document = parseJsonText(bytes);
     } catch (const JsonSyntaxError& error) {
-        const std::string at = "line " + std::to_string(error.position().line) + ", column " +
-                               std::to_string(error.position().column);
+        const std::string at =
+            "line " + std::to_string(error.position().line) + ", column " + std::to_string(error.position().column);
         if (error.truncated())
-            throw ProjectFileError(displayName, "", "truncated: the JSON document ends early (" + at + ", byte " +
-                                                        std::to_string(bytes.size()) + "): " + error.reason());
+            throw ProjectFileError(displayName, "",
+                                   "truncated: the JSON document ends early (" + at + ", byte " +
+                                       std::to_string(bytes.size()) + "): " + error.reason());
         throw ProjectFileError(displayName, "", "not a TrimLab project: invalid JSON at " + at + ": " + error.reason());
     }
     try {
@@ -297,13 +322,19 @@ bool isSceneProject(const std::filesystem::path& path)
     }
 }
 
-Timeline loadProject(const std::filesystem::path& path)
+Project readHistoryProject(const std::filesystem::path& path)
 {
     Project project = readProject(path);
     if (project.scene)
-        throw ProjectFileError(path.string(), "scene", "a scene of " + std::to_string(project.scene->objects.size()) +
-                                                           " object(s), not a deformation history");
-    return std::move(project.timeline);
+        throw ProjectFileError(path.string(), "scene",
+                               "a scene of " + std::to_string(project.scene->objects.size()) +
+                                   " object(s), not a deformation history");
+    return project;
+}
+
+Timeline loadProject(const std::filesystem::path& path)
+{
+    return std::move(readHistoryProject(path).timeline);
 }
 
 } // namespace trimlab::timeline

@@ -9,6 +9,7 @@
 #include "core/timeline/project_file_error.h"
 #include "core/timeline/project_scene.h"
 #include "core/timeline/timeline.h"
+#include "core/timeline/view_settings.h"
 #include "core/trim/static_rule.h"
 
 #include <glm/vec3.hpp>
@@ -46,6 +47,8 @@ struct ProjectView {
 struct ProjectExtras {
     std::optional<ProjectView> view;
     std::optional<StaticRule> staticRule;
+    /// The rest of the document's view settings (view_settings.h), relative to its bounds.
+    std::optional<StoredViewSettings> viewSettings;
 
     friend bool operator==(const ProjectExtras&, const ProjectExtras&) = default;
 };
@@ -93,8 +96,10 @@ void saveSceneProject(const ProjectScene& scene, const std::filesystem::path& pa
 /// anything unreadable, which the full read then reports.
 [[nodiscard]] bool isSceneProject(const std::filesystem::path& path);
 
-/// readProject(path).timeline. Throws ProjectFileError for a scene project (it has no
+/// readProject(path) of a design: throws ProjectFileError for a scene project (it has no
 /// history), saying so.
+[[nodiscard]] Project readHistoryProject(const std::filesystem::path& path);
+/// readHistoryProject(path).timeline.
 [[nodiscard]] Timeline loadProject(const std::filesystem::path& path);
 
 } // namespace trimlab::timeline

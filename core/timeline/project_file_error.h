@@ -11,7 +11,7 @@ namespace trimlab::timeline {
 /// damaged)`, `scene.trimlab: truncated: the JSON document ends early (at byte 812 of
 /// 812)` or `old.trimlab: version 7 is newer than this TrimLab (1)`. Thrown for every
 /// problem caused by file contents or by reading the file; never for programmer errors.
-class ProjectFileError : public DocumentFileError {
+class ProjectFileError : public io::DocumentFileError {
 public:
     /// `where` is a JSON path such as "frames[3].after" or "" for the file as a whole.
     using DocumentFileError::DocumentFileError;

@@ -13,6 +13,16 @@
 
 namespace trimlab::timeline {
 
+using io::fieldPath;
+using io::finiteNumber;
+using io::indexPath;
+using io::JsonPathError;
+using io::optionalField;
+using io::requireArray;
+using io::requiredField;
+using io::requireObject;
+using io::stringValue;
+
 using nlohmann::json;
 
 namespace {
@@ -123,7 +133,8 @@ json sceneJson(const ProjectScene& scene)
             throw std::invalid_argument(what + "model matrix " + problem);
         if (const std::string problem = triangleIndexProblem(object.mesh); !problem.empty())
             throw std::invalid_argument(what + "mesh: " + problem);
-        json item{{"name", object.name}, {"mesh", meshJson(object.mesh)}, {"model_matrix", matrixJson(object.modelMatrix)}};
+        json item{
+            {"name", object.name}, {"mesh", meshJson(object.mesh)}, {"model_matrix", matrixJson(object.modelMatrix)}};
         if (id < scene.csg.objectRules.size() && scene.csg.objectRules[id])
             item["rule"] = ruleName(*scene.csg.objectRules[id]);
         objects.push_back(std::move(item));

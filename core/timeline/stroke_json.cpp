@@ -8,6 +8,18 @@
 
 namespace trimlab::timeline {
 
+using io::dvec3Json;
+using io::dvec3Value;
+using io::fieldPath;
+using io::finiteNumber;
+using io::integerInRange;
+using io::JsonPathError;
+using io::optionalField;
+using io::rejectUnknownFields;
+using io::requiredField;
+using io::requireObject;
+using io::stringValue;
+
 namespace {
 
 deform::FalloffProfile readProfile(const nlohmann::json& value, const std::string& path)
@@ -33,8 +45,7 @@ void readSmoothing(const nlohmann::json& value, const std::string& path, bool re
     if (rejectUnknown)
         rejectUnknownFields(value, {"iterations", "weights", "step"}, path);
     if (const nlohmann::json* v = optionalField(value, "iterations"))
-        brush.smoothingIterations =
-            int(integerInRange(*v, 0, kMaxSmoothingIterations, fieldPath(path, "iterations")));
+        brush.smoothingIterations = int(integerInRange(*v, 0, kMaxSmoothingIterations, fieldPath(path, "iterations")));
     if (const nlohmann::json* v = optionalField(value, "weights"))
         brush.smoothingWeights = readWeights(*v, fieldPath(path, "weights"));
     if (const nlohmann::json* v = optionalField(value, "step")) {
@@ -87,8 +98,8 @@ deform::Stroke readStrokeJson(const nlohmann::json& value, const std::string& pa
     deform::Stroke stroke;
     stroke.anchor = dvec3Value(requiredField(value, "anchor", path), fieldPath(path, "anchor"));
     if (const nlohmann::json* v = optionalField(value, "triangle"))
-        stroke.anchorTriangle =
-            std::uint32_t(integerInRange(*v, 0, std::numeric_limits<std::uint32_t>::max(), fieldPath(path, "triangle")));
+        stroke.anchorTriangle = std::uint32_t(
+            integerInRange(*v, 0, std::numeric_limits<std::uint32_t>::max(), fieldPath(path, "triangle")));
     stroke.drag = dvec3Value(requiredField(value, "drag", path), fieldPath(path, "drag"));
     readBrush(value, path, rejectUnknown, stroke.brush);
     return stroke;

@@ -9,6 +9,9 @@
 
 namespace trimlab::timeline {
 
+using io::fieldPath;
+using io::indexPath;
+
 namespace {
 
 // Applies `stroke` to `positions` and returns the frame that records it. The whole array

@@ -13,6 +13,21 @@
 
 namespace trimlab::timeline {
 
+using io::fieldPath;
+using io::indexPath;
+using io::integerInRange;
+using io::JsonPathError;
+using io::JsonSyntaxError;
+using io::optionalField;
+using io::parseJsonText;
+using io::readFileBytes;
+using io::rejectUnknownFields;
+using io::requireArray;
+using io::requiredField;
+using io::requireObject;
+using io::stringValue;
+using io::writeFileAtomically;
+
 namespace {
 
 using nlohmann::json;
@@ -91,8 +106,12 @@ std::size_t StrokeScript::strokeCount() const
 
 StrokeScriptError::StrokeScriptError(std::string source, std::string path, std::string reason, std::size_t line,
                                      std::size_t column)
-    : std::runtime_error(errorText(source, line, column, path, reason)), m_source(std::move(source)),
-      m_path(std::move(path)), m_reason(std::move(reason)), m_line(line), m_column(column)
+    : std::runtime_error(errorText(source, line, column, path, reason)),
+      m_source(std::move(source)),
+      m_path(std::move(path)),
+      m_reason(std::move(reason)),
+      m_line(line),
+      m_column(column)
 {
 }
 
@@ -144,9 +163,8 @@ std::string strokeScriptJson(const StrokeScript& script)
             strokes.push_back(strokeJson(stroke));
         sets.push_back(json{{"rule", std::string(dynamicRuleName(set.rule))}, {"strokes", std::move(strokes)}});
     }
-    const json document{{"format", std::string(kStrokeScriptFormatName)},
-                        {"version", kStrokeScriptVersion},
-                        {"sets", std::move(sets)}};
+    const json document{
+        {"format", std::string(kStrokeScriptFormatName)}, {"version", kStrokeScriptVersion}, {"sets", std::move(sets)}};
     return document.dump(2) + "\n";
 }
 

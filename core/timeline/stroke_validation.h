@@ -14,9 +14,10 @@ namespace trimlab::timeline {
 /// typo in a hand-written script cannot stall a replay for hours.
 inline constexpr std::int64_t kMaxSmoothingIterations = 10000;
 
-/// "" when `stroke` is valid, otherwise the first problem ("radius must be > 0",
-/// "drag is not finite", "smoothing step must be in (0, 1]", "smoothing iterations must
-/// be in [0, 10000]", ...).
+/// "" when `stroke` is valid, otherwise the first problem, checked in this order: "the
+/// anchor is not finite", "the drag is not finite", "the radius must be finite and > 0",
+/// "the strength is not finite", "the smoothing step must be in (0, 1]", "the smoothing
+/// iterations must be in [0, 10000]".
 [[nodiscard]] std::string strokeProblem(const deform::Stroke& stroke);
 
 } // namespace trimlab::timeline

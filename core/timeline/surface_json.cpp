@@ -9,6 +9,16 @@
 
 namespace trimlab::timeline {
 
+using io::fieldPath;
+using io::finiteNumber;
+using io::indexPath;
+using io::integerInRange;
+using io::JsonPathError;
+using io::requireArray;
+using io::requiredField;
+using io::requireObject;
+using io::stringValue;
+
 namespace {
 
 using nlohmann::json;
@@ -73,10 +83,10 @@ NurbsDefinition readNurbs(const json& value, const std::string& path)
         throw JsonPathError(fieldPath(nurbsPath, "surfaces"),
                             "must hold exactly one surface, not " + std::to_string(surfaces.size()));
     NurbsDefinition definition{std::move(surfaces.front())};
-    definition.segmentsU = int(integerInRange(requiredField(value, "segments_u", path), 1, kMaxInt,
-                                              fieldPath(path, "segments_u")));
-    definition.segmentsV = int(integerInRange(requiredField(value, "segments_v", path), 1, kMaxInt,
-                                              fieldPath(path, "segments_v")));
+    definition.segmentsU =
+        int(integerInRange(requiredField(value, "segments_u", path), 1, kMaxInt, fieldPath(path, "segments_u")));
+    definition.segmentsV =
+        int(integerInRange(requiredField(value, "segments_v", path), 1, kMaxInt, fieldPath(path, "segments_v")));
     return definition;
 }
 
@@ -134,17 +144,15 @@ SubdivisionDefinition readSubdivision(const json& value, const std::string& path
 {
     SubdivisionDefinition definition;
     SubdivisionCage& cage = definition.cage;
-    cage.scheme = readName<SubdivisionScheme>(value, "scheme", path,
-                                              {{"catmull-clark", SubdivisionScheme::CatmullClark},
-                                               {"loop", SubdivisionScheme::Loop}});
+    cage.scheme = readName<SubdivisionScheme>(
+        value, "scheme", path, {{"catmull-clark", SubdivisionScheme::CatmullClark}, {"loop", SubdivisionScheme::Loop}});
     cage.boundary = readName<BoundaryInterpolation>(value, "boundary", path,
                                                     {{"edges-only", BoundaryInterpolation::EdgesOnly},
                                                      {"edges-and-corners", BoundaryInterpolation::EdgesAndCorners}});
     definition.settings.level = int(integerInRange(requiredField(value, "level", path), 0,
                                                    SubdivisionSurface::kMaxLevel, fieldPath(path, "level")));
-    definition.settings.mode = readName<SubdivisionMode>(value, "mode", path,
-                                                         {{"uniform", SubdivisionMode::Uniform},
-                                                          {"limit", SubdivisionMode::Limit}});
+    definition.settings.mode = readName<SubdivisionMode>(
+        value, "mode", path, {{"uniform", SubdivisionMode::Uniform}, {"limit", SubdivisionMode::Limit}});
     cage.positions = readDvec3Array(requiredField(value, "positions", path), fieldPath(path, "positions"));
     cage.faceSizes = readUint32Array(requiredField(value, "face_sizes", path), fieldPath(path, "face_sizes"));
     cage.faceIndices = readUint32Array(requiredField(value, "face_indices", path), fieldPath(path, "face_indices"));
@@ -165,9 +173,8 @@ json surfaceDefinitionJson(const SurfaceDefinition& definition)
 SurfaceDefinition readSurfaceDefinition(const json& value, const std::string& path)
 {
     requireObject(value, path);
-    const SurfaceKind kind = readName<SurfaceKind>(value, "kind", path,
-                                                   {{"nurbs", SurfaceKind::Nurbs},
-                                                    {"subdivision", SurfaceKind::Subdivision}});
+    const SurfaceKind kind = readName<SurfaceKind>(
+        value, "kind", path, {{"nurbs", SurfaceKind::Nurbs}, {"subdivision", SurfaceKind::Subdivision}});
     SurfaceDefinition definition = kind == SurfaceKind::Nurbs ? SurfaceDefinition{readNurbs(value, path)}
                                                               : SurfaceDefinition{readSubdivision(value, path)};
     if (const std::optional<std::string> problem = findSurfaceDefinitionProblem(definition))
@@ -185,8 +192,8 @@ json controlMovesJson(const std::vector<ControlPointMove>& moves)
         before.push_back(move.before);
         after.push_back(move.after);
     }
-    return json{{"indices", uint32ArrayJson(indices)}, {"before", dvec3ArrayJson(before)},
-                {"after", dvec3ArrayJson(after)}};
+    return json{
+        {"indices", uint32ArrayJson(indices)}, {"before", dvec3ArrayJson(before)}, {"after", dvec3ArrayJson(after)}};
 }
 
 std::vector<ControlPointMove> readControlMoves(const json& value, const std::string& path)
@@ -194,14 +201,15 @@ std::vector<ControlPointMove> readControlMoves(const json& value, const std::str
     requireObject(value, path);
     const std::vector<std::uint32_t> indices =
         readUint32Array(requiredField(value, "indices", path), fieldPath(path, "indices"));
-    const std::vector<glm::dvec3> before = readDvec3Array(requiredField(value, "before", path), fieldPath(path, "before"));
+    const std::vector<glm::dvec3> before =
+        readDvec3Array(requiredField(value, "before", path), fieldPath(path, "before"));
     const std::vector<glm::dvec3> after = readDvec3Array(requiredField(value, "after", path), fieldPath(path, "after"));
     if (indices.empty())
         throw JsonPathError(fieldPath(path, "indices"), "must list at least one control point");
     if (before.size() != indices.size() || after.size() != indices.size())
         throw JsonPathError(path, "lists " + std::to_string(indices.size()) + " control points but " +
-                                      std::to_string(before.size()) + " 'before' and " +
-                                      std::to_string(after.size()) + " 'after' points");
+                                      std::to_string(before.size()) + " 'before' and " + std::to_string(after.size()) +
+                                      " 'after' points");
     std::vector<ControlPointMove> moves(indices.size());
     for (std::size_t k = 0; k < moves.size(); ++k)
         moves[k] = {indices[k], before[k], after[k]};

@@ -144,8 +144,8 @@ const Frame& Timeline::frame(int f) const
 int Timeline::setOfFrame(int f) const
 {
     if (f < 0 || f >= frameCount())
-        throw std::out_of_range("Timeline::setOfFrame: frame " + std::to_string(f) + " does not exist (the timeline has " +
-                                std::to_string(frameCount()) + " frames)");
+        throw std::out_of_range("Timeline::setOfFrame: frame " + std::to_string(f) +
+                                " does not exist (the timeline has " + std::to_string(frameCount()) + " frames)");
     for (std::size_t s = 0; s < m_sets.size(); ++s) {
         const DeformationSet& set = m_sets[s];
         if (f >= set.firstFrame && f < set.firstFrame + set.frameCount)
@@ -157,8 +157,8 @@ int Timeline::setOfFrame(int f) const
 std::vector<glm::vec3> Timeline::positionsAt(int f) const
 {
     if (f < 0 || f >= frameCount())
-        throw std::out_of_range("Timeline::positionsAt: frame " + std::to_string(f) + " does not exist (the timeline has " +
-                                std::to_string(frameCount()) + " frames)");
+        throw std::out_of_range("Timeline::positionsAt: frame " + std::to_string(f) +
+                                " does not exist (the timeline has " + std::to_string(frameCount()) + " frames)");
     if (f == frameCount() - 1)
         return m_current;
     std::vector<glm::vec3> positions = m_base.positions;
@@ -199,8 +199,8 @@ void Timeline::checkControlMoves(const Frame& frame) const
         const ControlPointMove& move = moves[k];
         if (move.index >= m_currentControl.size())
             throw std::invalid_argument(where + "control point " + std::to_string(move.index) +
-                                        " is out of range (the surface has " +
-                                        std::to_string(m_currentControl.size()) + " control points)");
+                                        " is out of range (the surface has " + std::to_string(m_currentControl.size()) +
+                                        " control points)");
         if (k > 0 && move.index <= moves[k - 1].index)
             throw std::invalid_argument(where + "the control points are not sorted ascending and unique: " +
                                         std::to_string(moves[k - 1].index) + " is followed by " +
@@ -211,8 +211,8 @@ void Timeline::checkControlMoves(const Frame& frame) const
                                         " differs from its current position " +
                                         dvec3Text(m_currentControl[move.index]));
         if (!std::isfinite(move.after.x) || !std::isfinite(move.after.y) || !std::isfinite(move.after.z))
-            throw std::invalid_argument(where + "the 'after' position of control point " +
-                                        std::to_string(move.index) + " is not finite");
+            throw std::invalid_argument(where + "the 'after' position of control point " + std::to_string(move.index) +
+                                        " is not finite");
     }
     checkTies(*m_surface, m_currentControl, moves);
 }

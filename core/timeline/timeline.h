@@ -48,10 +48,10 @@ struct ControlPointMove {
 ///   default stroke passes nor saved).
 /// In both, `vertices`/`before`/`after` are the mesh vertices whose bits changed.
 struct Frame {
-    deform::Stroke stroke;                  ///< resolved (anchorTriangle set); unused by control edits
-    std::vector<std::uint32_t> vertices;    ///< moved vertices, sorted ascending, unique
-    std::vector<glm::vec3> before;          ///< their positions in the previous frame
-    std::vector<glm::vec3> after;           ///< their positions in this frame
+    deform::Stroke stroke;               ///< resolved (anchorTriangle set); unused by control edits
+    std::vector<std::uint32_t> vertices; ///< moved vertices, sorted ascending, unique
+    std::vector<glm::vec3> before;       ///< their positions in the previous frame
+    std::vector<glm::vec3> after;        ///< their positions in this frame
     /// Control-point edits only: the moved control points, sorted ascending by index,
     /// unique, `before` equal (bits) to the previous frame's control points, `after`
     /// finite. Tied NURBS points (tiedControlPoints) are listed each, with equal values.
@@ -98,7 +98,8 @@ public:
     /// `surface`: the editable surface's definition, or nullopt for a plain mesh history
     /// (then no frame may be a control edit: "frames[2]: a control-point edit needs a
     /// surface definition"). Control moves are checked like appendFrame's.
-    [[nodiscard]] static Timeline restore(TriangleMesh base, std::vector<Frame> frames, std::vector<DeformationSet> sets,
+    [[nodiscard]] static Timeline restore(TriangleMesh base, std::vector<Frame> frames,
+                                          std::vector<DeformationSet> sets,
                                           std::optional<SurfaceDefinition> surface = std::nullopt);
 
     [[nodiscard]] const TriangleMesh& base() const { return m_base; }
@@ -107,7 +108,7 @@ public:
     [[nodiscard]] bool hasSurface() const { return m_surface.has_value(); }
     /// Number of frames including frame 0 (the base): strokes + 1.
     [[nodiscard]] int frameCount() const { return int(m_frames.size()) + 1; }
-    [[nodiscard]] const Frame& frame(int f) const;   ///< 1 <= f < frameCount(); else std::out_of_range
+    [[nodiscard]] const Frame& frame(int f) const; ///< 1 <= f < frameCount(); else std::out_of_range
     [[nodiscard]] const std::vector<DeformationSet>& sets() const { return m_sets; }
     /// The set frame f belongs to (frame 0 and a set's reference belong to the set before,
     /// except frame 0 which belongs to set 0).

@@ -122,8 +122,8 @@ std::optional<ClipSet> parseClipSet(const std::vector<std::string>& texts, std::
 {
     if (texts.size() > std::size_t(kMaxClipPlanes)) {
         if (error)
-            *error = "at most " + std::to_string(kMaxClipPlanes) + " clipping planes, got " +
-                     std::to_string(texts.size());
+            *error =
+                "at most " + std::to_string(kMaxClipPlanes) + " clipping planes, got " + std::to_string(texts.size());
         return std::nullopt;
     }
     ClipSet set;

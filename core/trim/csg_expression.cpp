@@ -131,7 +131,8 @@ private:
             id = id * 10 + (m_text[m_position++] - '0');
         if (id >= kMaxCsgOperands) {
             m_position = begin;
-            return fail("object id " + std::to_string(id) + " is out of range (a CSG expression addresses objects 0 to " +
+            return fail("object id " + std::to_string(id) +
+                        " is out of range (a CSG expression addresses objects 0 to " +
                         std::to_string(kMaxCsgOperands - 1) + ")");
         }
         return CsgExpression::operand(int(id));

@@ -71,7 +71,10 @@ public:
     /// The nodes in pre-order; nodes()[0] is the root.
     [[nodiscard]] const std::vector<CsgNode>& nodes() const { return m_nodes; }
     /// The root's operation.
-    [[nodiscard]] CsgOperation operation() const { return m_nodes.empty() ? CsgOperation::Operand : m_nodes[0].operation; }
+    [[nodiscard]] CsgOperation operation() const
+    {
+        return m_nodes.empty() ? CsgOperation::Operand : m_nodes[0].operation;
+    }
 
     friend bool operator==(const CsgExpression&, const CsgExpression&) = default;
 

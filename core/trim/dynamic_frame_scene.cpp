@@ -14,8 +14,7 @@ bool sameBits(const glm::vec3& a, const glm::vec3& b)
     return std::memcmp(&a, &b, sizeof(glm::vec3)) == 0;
 }
 
-bool triangleMoved(const glm::uvec3& t, const std::vector<glm::vec3>& reference,
-                   const std::vector<glm::vec3>& current)
+bool triangleMoved(const glm::uvec3& t, const std::vector<glm::vec3>& reference, const std::vector<glm::vec3>& current)
 {
     for (int corner = 0; corner < 3; ++corner) {
         if (!sameBits(reference[t[corner]], current[t[corner]]))
@@ -36,8 +35,8 @@ SceneObject namedObject(const char* name, const std::vector<glm::vec3>& position
 } // namespace
 
 DynamicFrameScene makeDynamicFrameScene(const std::vector<glm::uvec3>& triangles,
-                                        const std::vector<glm::vec3>& reference,
-                                        const std::vector<glm::vec3>& current, const glm::dmat4& modelMatrix)
+                                        const std::vector<glm::vec3>& reference, const std::vector<glm::vec3>& current,
+                                        const glm::dmat4& modelMatrix)
 {
     if (reference.size() != current.size())
         throw std::invalid_argument("the reference frame has " + std::to_string(reference.size()) +

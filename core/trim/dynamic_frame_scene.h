@@ -38,8 +38,14 @@ inline constexpr int kDynamicObjectReferenceOnly = 2;
            : objectId == kDynamicObjectCurrentOnly ? FrameClass::CurrentOnly
                                                    : FrameClass::ReferenceOnly;
 }
-[[nodiscard]] inline bool inReference(FrameClass c) { return c != FrameClass::CurrentOnly; }
-[[nodiscard]] inline bool inCurrent(FrameClass c) { return c != FrameClass::ReferenceOnly; }
+[[nodiscard]] inline bool inReference(FrameClass c)
+{
+    return c != FrameClass::CurrentOnly;
+}
+[[nodiscard]] inline bool inCurrent(FrameClass c)
+{
+    return c != FrameClass::ReferenceOnly;
+}
 
 struct DynamicFrameScene {
     Scene scene; ///< exactly three objects, in the order above (some may be empty)

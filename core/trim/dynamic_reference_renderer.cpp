@@ -43,7 +43,8 @@ ReferenceResult DynamicReferenceRenderer::render(const Camera& camera, int width
                                  bool& unresolved) {
         std::vector<RayHit> scratch;
         const PixelRay ray = pixelRay(camera, width, height, x, y);
-        const PartitionCharacterization characterization = referenceOfLevel(last, ray, camera.zNear, camera.zFar, scratch);
+        const PartitionCharacterization characterization =
+            referenceOfLevel(last, ray, camera.zNear, camera.zFar, scratch);
         const ReferenceClassification reference{last == 0 ? nullptr : &characterization, m_baseRule};
         const DynamicWalkResult result = walkDynamicRay(sortedHits, span, settings, m_rules[last], reference);
         unresolved = result.unresolved;

@@ -18,8 +18,8 @@ ReferenceResult DynamicReferenceSequence::renderNext(const DynamicChainLevel& le
     const ReferenceRenderer renderer(level.frame.scene);
     const bool first = m_levels == 0;
     const auto referenceAt = [&](int x, int y) {
-        return ReferenceClassification{first ? nullptr : &m_carried[std::size_t(y) * std::size_t(m_width) + std::size_t(x)],
-                                       m_baseRule};
+        return ReferenceClassification{
+            first ? nullptr : &m_carried[std::size_t(y) * std::size_t(m_width) + std::size_t(x)], m_baseRule};
     };
     const RayWalker walker = [&](int x, int y, std::span<const RayHit> sortedHits, const KeptSpan& span,
                                  bool& unresolved) {
@@ -39,7 +39,8 @@ ReferenceResult DynamicReferenceSequence::renderNext(const DynamicChainLevel& le
             const PixelRay ray = pixelRay(m_camera, m_width, m_height, x, y);
             renderer.bvh().intersectAll(ray, m_camera.zNear, m_camera.zFar, hits);
             std::sort(hits.begin(), hits.end(), walkOrder);
-            next[row * std::size_t(m_width) + std::size_t(x)] = characterizeDynamicRay(hits, level.rule, referenceAt(x, y));
+            next[row * std::size_t(m_width) + std::size_t(x)] =
+                characterizeDynamicRay(hits, level.rule, referenceAt(x, y));
         }
     });
     m_carried = std::move(next);

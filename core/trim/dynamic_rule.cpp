@@ -42,9 +42,9 @@ std::string_view dynamicRuleName(DynamicRule rule)
 
 std::optional<DynamicRule> parseDynamicRule(std::string_view name)
 {
-    for (DynamicRule rule : {DynamicRule::ConstructiveAdditive, DynamicRule::ConstructiveSubtractive,
-                             DynamicRule::ConstructiveIntersection, DynamicRule::Confluent,
-                             DynamicRule::HomogeneousConfluent}) {
+    for (DynamicRule rule :
+         {DynamicRule::ConstructiveAdditive, DynamicRule::ConstructiveSubtractive,
+          DynamicRule::ConstructiveIntersection, DynamicRule::Confluent, DynamicRule::HomogeneousConfluent}) {
         if (name == dynamicRuleName(rule))
             return rule;
     }

@@ -18,7 +18,10 @@ struct DynamicRegisters {
     bool unresolved = false;
 };
 
-int crossing(const RayHit& hit) { return hit.facing > 0 ? 1 : -1; }
+int crossing(const RayHit& hit)
+{
+    return hit.facing > 0 ? 1 : -1;
+}
 
 bool referenceClass(const ReferenceClassification& reference, const DynamicRegisters& r, bool& unresolved)
 {
@@ -74,9 +77,8 @@ bool step(DynamicRegisters& r, const RayHit& hit, DynamicRule rule, const Refere
 
 } // namespace
 
-DynamicWalkResult walkDynamicRay(std::span<const RayHit> sortedHits, const KeptSpan& span,
-                                 const TrimSettings& settings, DynamicRule rule,
-                                 const ReferenceClassification& reference)
+DynamicWalkResult walkDynamicRay(std::span<const RayHit> sortedHits, const KeptSpan& span, const TrimSettings& settings,
+                                 DynamicRule rule, const ReferenceClassification& reference)
 {
     DynamicWalkResult result;
     TrimWalk& walk = result.walk;

@@ -37,8 +37,8 @@ struct ReferenceClassification {
 };
 
 struct DynamicWalkResult {
-    TrimWalk walk;            ///< windingAtStart is the current index w_c at the span start
-    bool unresolved = false;  ///< the reference characterization overflowed where it was needed
+    TrimWalk walk;           ///< windingAtStart is the current index w_c at the span start
+    bool unresolved = false; ///< the reference characterization overflowed where it was needed
 };
 
 /// Walks one ray for display (with the user's clip plane in `span`).

@@ -68,10 +68,10 @@ void FastWindingNumber::summarize(std::size_t node)
     const Cluster& r = m_clusters[right];
     cluster.normalSum = l.normalSum + r.normalSum;
     cluster.area = l.area + r.area;
-    cluster.center = cluster.area > 0.0 ? (l.area * l.center + r.area * r.center) / cluster.area
-                                        : 0.5 * (l.center + r.center);
-    cluster.radius = std::max(glm::length(l.center - cluster.center) + l.radius,
-                              glm::length(r.center - cluster.center) + r.radius);
+    cluster.center =
+        cluster.area > 0.0 ? (l.area * l.center + r.area * r.center) / cluster.area : 0.5 * (l.center + r.center);
+    cluster.radius =
+        std::max(glm::length(l.center - cluster.center) + l.radius, glm::length(r.center - cluster.center) + r.radius);
 }
 
 double FastWindingNumber::at(const glm::dvec3& p) const

@@ -79,8 +79,7 @@ EdgeFunction edgeFunction(const ShearedVertex& from, const ShearedVertex& to)
 // Whether the three exact signs describe a hit and, if so, the facing (+1 / -1).
 // Zero edges are decided by ownsZeroEdge on the edge oriented as in the normalised
 // triangle (inside positive): the edge itself for facing +1, reversed for facing -1.
-int hitFacing(const EdgeFunction (&e)[3], const ShearedVertex* const (&from)[3],
-              const ShearedVertex* const (&to)[3])
+int hitFacing(const EdgeFunction (&e)[3], const ShearedVertex* const (&from)[3], const ShearedVertex* const (&to)[3])
 {
     const bool anyPositive = e[0].sign > 0 || e[1].sign > 0 || e[2].sign > 0;
     const bool anyNegative = e[0].sign < 0 || e[1].sign < 0 || e[2].sign < 0;

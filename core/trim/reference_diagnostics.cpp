@@ -26,7 +26,7 @@ double pixelDepthMargin(std::span<const RayHit> sortedHits, const KeptSpan& span
     if (std::isfinite(span.endRunnerUp))
         scratch.push_back(span.endRunnerUp);
     std::sort(scratch.begin(), scratch.end());
-    const double deciding = walk.capPlane >= 0       ? span.tStart
+    const double deciding = walk.capPlane >= 0     ? span.tStart
                             : walk.shownIndex >= 0 ? sortedHits[std::size_t(walk.shownIndex)].t
                                                    : span.tEnd;
     auto first = std::lower_bound(scratch.begin(), scratch.end(), span.tStart);

@@ -35,8 +35,11 @@ struct ReferenceDiagnostics {
 
     ReferenceDiagnostics() = default;
     ReferenceDiagnostics(int w, int h)
-        : width(w), height(h), edgeDistancePx(size(), std::numeric_limits<float>::infinity()),
-          depthMargin(size(), std::numeric_limits<float>::infinity()), hitCount(size(), 0)
+        : width(w),
+          height(h),
+          edgeDistancePx(size(), std::numeric_limits<float>::infinity()),
+          depthMargin(size(), std::numeric_limits<float>::infinity()),
+          hitCount(size(), 0)
     {
     }
     [[nodiscard]] std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
@@ -53,8 +56,8 @@ private:
 /// Returns the smallest |a − b| / max(a, b) over consecutive depths of that window: 0 for
 /// exact ties (coincident surfaces, a hit exactly on the clip plane), +inf for an empty
 /// span or a window of one depth. `scratch` is reused storage.
-[[nodiscard]] double pixelDepthMargin(std::span<const RayHit> sortedHits, const KeptSpan& span,
-                                      const TrimWalk& walk, std::vector<double>& scratch);
+[[nodiscard]] double pixelDepthMargin(std::span<const RayHit> sortedHits, const KeptSpan& span, const TrimWalk& walk,
+                                      std::vector<double>& scratch);
 
 /// Distance in pixels from the centre of pixel (x, y) of a width×height image to the
 /// nearest edge of world triangle `corners` projected with `camera` (the projection of

@@ -111,7 +111,8 @@ glm::vec3 ReferenceRenderer::xrayPixel(RowContext& context, const PixelRay& ray,
         const bool shown = std::ptrdiff_t(layer.index) == walk.shownIndex;
         const glm::vec3 color = shadeHit(hit, ray, shown ? pixel : TrimPixel{});
         const double cosine = std::abs(glm::dot(hitNormal(hit, toViewer), toViewer));
-        context.fragments.push_back({hit.t * rayLength, layer.boundary, layer.interiorBefore, glm::dvec3(color), cosine});
+        context.fragments.push_back(
+            {hit.t * rayLength, layer.boundary, layer.interiorBefore, glm::dvec3(color), cosine});
     }
     return glm::vec3(compositeXray(context.settings.transparency, span.tStart * rayLength, cap, context.fragments,
                                    glm::dvec3(kBackgroundColor)));
@@ -152,9 +153,9 @@ void ReferenceRenderer::renderRow(RowContext& context, int y) const
             const RayHit& hit = context.hits[std::size_t(walk.shownIndex)];
             const ObjectGeometry& object = m_objects[std::size_t(hit.objectId)];
             const glm::uvec3 t = object.triangles[std::size_t(hit.primitiveId)];
-            diagnostics.edgeDistancePx[index] = float(edgeDistancePixels(
-                camera, context.width, context.height, x, y,
-                {object.positions[t[0]], object.positions[t[1]], object.positions[t[2]]}));
+            diagnostics.edgeDistancePx[index] =
+                float(edgeDistancePixels(camera, context.width, context.height, x, y,
+                                         {object.positions[t[0]], object.positions[t[1]], object.positions[t[2]]}));
             if (!context.settings.xray())
                 color = shadeHit(hit, ray, pixel);
             ++context.stats.coveredPixels;
@@ -195,7 +196,8 @@ ReferenceResult ReferenceRenderer::render(const Camera& camera, int width, int h
     std::atomic<int> nextBlock{0};
     std::vector<ReferenceStats> partial(threads);
     auto work = [&](unsigned worker) {
-        RowContext context{camera, width, height, settings, settings.clipSet(), walker ? &walker : nullptr, result, {}, {}, {}, {}, {}};
+        RowContext context{camera, width, height, settings, settings.clipSet(), walker ? &walker : nullptr, result, {},
+                           {},     {},    {},     {}};
         for (int block = nextBlock++; block < blockCount; block = nextBlock++) {
             const int rowEnd = std::min(height, (block + 1) * kRowsPerBlock);
             for (int y = block * kRowsPerBlock; y < rowEnd; ++y)

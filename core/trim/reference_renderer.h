@@ -27,7 +27,7 @@ namespace trimlab {
 
 /// Counts over one render.
 struct ReferenceStats {
-    std::uint64_t totalHits = 0;    ///< hits with zNear <= t <= zFar, summed over pixels
+    std::uint64_t totalHits = 0; ///< hits with zNear <= t <= zFar, summed over pixels
     std::int32_t maxHitsPerPixel = 0;
     std::uint64_t coveredPixels = 0; ///< pixels that show a surface point
     double wallMs = 0.0;             ///< wall-clock time of render()
@@ -59,8 +59,8 @@ struct PixelTrace {
 /// Decides one pixel from its sorted hits and kept span, in place of walkTrimRay (the
 /// dynamic rules supply one). Sets `unresolved` when the pixel cannot be decided. Called
 /// concurrently from several threads.
-using RayWalker = std::function<TrimWalk(int x, int y, std::span<const RayHit> sortedHits, const KeptSpan& span,
-                                         bool& unresolved)>;
+using RayWalker =
+    std::function<TrimWalk(int x, int y, std::span<const RayHit> sortedHits, const KeptSpan& span, bool& unresolved)>;
 
 class ReferenceRenderer {
 public:

@@ -1,11 +1,11 @@
 #pragma once
 /// \file
-/// Temporal coherence of a trimmed animation, measured (issue 19). The thesis wants trims
-/// "coherent over time" (chapter 8, introduction; 8.1.1: graphics designers "expect
-/// continuity during deformation sequences") and argues that the dynamic rules, which
-/// carry the classification from a reference frame (8.1.1 "Dynamic Rules", 8.1.2
-/// Algorithms 8.11–8.13), give it where the static rules do not. This file counts where a
-/// trim is not coherent.
+/// Temporal coherence of a trimmed animation, measured. The thesis wants trims "coherent
+/// over time" (chapter 8, introduction; 8.1.1: graphics designers "expect continuity during
+/// deformation sequences") and argues that the dynamic rules, which carry the
+/// classification from a reference frame (8.1.1 "Dynamic Rules", 8.1.2 Algorithms
+/// 8.11–8.13), give it where the static rules do not. This file counts where a trim is not
+/// coherent.
 ///
 /// Definition. Frames t−1 and t are rendered from one camera; each pixel ray's fragments
 /// of the shown frame carry the class of the space on their two sides

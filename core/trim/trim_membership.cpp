@@ -46,7 +46,8 @@ std::vector<bool> pointsOnTrim(const DynamicReferenceRenderer& chain, std::span<
         for (std::size_t i = next++; i < points.size(); i = next++)
             result[i] = pointOnTrim(chain, points[i], normals[i], epsilon, hits) ? 1 : 0;
     };
-    const unsigned threads = std::clamp(unsigned(points.size() / 16), 1u, std::max(1u, std::thread::hardware_concurrency()));
+    const unsigned threads =
+        std::clamp(unsigned(points.size() / 16), 1u, std::max(1u, std::thread::hardware_concurrency()));
     std::vector<std::thread> pool;
     for (unsigned t = 1; t < threads; ++t)
         pool.emplace_back(work);

@@ -20,8 +20,7 @@ namespace trimlab {
 /// ray that starts just inside the point (offset `epsilon` against the normal) and leaves
 /// through it: on the trim iff the first current-frame hit the dynamic walk meets there
 /// changes the class. Multithreaded over points.
-[[nodiscard]] std::vector<bool> pointsOnTrim(const DynamicReferenceRenderer& chain,
-                                             std::span<const glm::dvec3> points,
+[[nodiscard]] std::vector<bool> pointsOnTrim(const DynamicReferenceRenderer& chain, std::span<const glm::dvec3> points,
                                              std::span<const glm::dvec3> normals, double epsilon);
 
 } // namespace trimlab

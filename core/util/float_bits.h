@@ -8,7 +8,7 @@
 #include <bit>
 #include <cstdint>
 
-namespace trimlab::timeline {
+namespace trimlab {
 
 /// True when every component of `a` has the same 32-bit pattern as in `b`.
 [[nodiscard]] inline bool sameBits(const glm::vec3& a, const glm::vec3& b)
@@ -26,4 +26,4 @@ namespace trimlab::timeline {
            std::bit_cast<std::uint64_t>(a.z) == std::bit_cast<std::uint64_t>(b.z);
 }
 
-} // namespace trimlab::timeline
+} // namespace trimlab

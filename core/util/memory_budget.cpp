@@ -22,11 +22,19 @@ std::uint64_t budgetFromEnvironment()
         return 0;
     double scale = 1.0;
     switch (std::toupper(static_cast<unsigned char>(*end))) {
-    case 'K': scale = 1024.0; break;
-    case 'M': scale = 1024.0 * 1024.0; break;
-    case 'G': scale = 1024.0 * 1024.0 * 1024.0; break;
-    case '\0': break;
-    default: return 0;
+    case 'K':
+        scale = 1024.0;
+        break;
+    case 'M':
+        scale = 1024.0 * 1024.0;
+        break;
+    case 'G':
+        scale = 1024.0 * 1024.0 * 1024.0;
+        break;
+    case '\0':
+        break;
+    default:
+        return 0;
     }
     return std::uint64_t(value * scale);
 }

@@ -11,7 +11,6 @@ namespace trimlab {
 
 /// Parses exactly `count` finite, comma-separated numbers ("1,2.5,-3e2"). On failure
 /// returns nullopt and writes a one-line reason to `error` (if given).
-[[nodiscard]] std::optional<std::vector<double>> parseNumberList(std::string_view text, int count,
-                                                                 std::string* error);
+[[nodiscard]] std::optional<std::vector<double>> parseNumberList(std::string_view text, int count, std::string* error);
 
 } // namespace trimlab

@@ -94,8 +94,8 @@ std::string formatCamera(const Camera& c)
 {
     std::ostringstream s;
     s.precision(9);
-    s << c.eye.x << ',' << c.eye.y << ',' << c.eye.z << ',' << c.target.x << ',' << c.target.y << ','
-      << c.target.z << ',' << c.up.x << ',' << c.up.y << ',' << c.up.z << ',' << c.fovyDegrees;
+    s << c.eye.x << ',' << c.eye.y << ',' << c.eye.z << ',' << c.target.x << ',' << c.target.y << ',' << c.target.z
+      << ',' << c.up.x << ',' << c.up.y << ',' << c.up.z << ',' << c.fovyDegrees;
     return s.str();
 }
 

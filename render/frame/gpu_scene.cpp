@@ -29,10 +29,12 @@ void validateSceneLimits(const Scene& scene)
 {
     if (scene.objects.size() > Scene::maxObjects)
         throw std::invalid_argument("The scene has " + std::to_string(scene.objects.size()) +
-                                    " objects; the renderer supports at most " + std::to_string(Scene::maxObjects) + ".");
+                                    " objects; the renderer supports at most " + std::to_string(Scene::maxObjects) +
+                                    ".");
     for (const SceneObject& object : scene.objects) {
         if (object.mesh.triangleCount() > kMaxTrianglesPerObject)
-            throw std::invalid_argument("Object '" + object.name + "' has " + std::to_string(object.mesh.triangleCount()) +
+            throw std::invalid_argument("Object '" + object.name + "' has " +
+                                        std::to_string(object.mesh.triangleCount()) +
                                         " triangles; the renderer supports at most 16,777,216 per object. "
                                         "Split or decimate the mesh.");
     }
@@ -77,13 +79,16 @@ void GpuScene::upload(const Scene& scene)
     m_triangleCount = triangles.size();
 
     m_gl.glBindVertexArray(m_vao.id());
-    uploadBuffer(m_gl, m_positions.id(), GL_ARRAY_BUFFER, positions.data(), positions.size() * sizeof(glm::vec3), "vertex positions");
+    uploadBuffer(m_gl, m_positions.id(), GL_ARRAY_BUFFER, positions.data(), positions.size() * sizeof(glm::vec3),
+                 "vertex positions");
     m_gl.glEnableVertexAttribArray(0);
     m_gl.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    uploadBuffer(m_gl, m_normals.id(), GL_ARRAY_BUFFER, normals.data(), normals.size() * sizeof(glm::vec3), "vertex normals");
+    uploadBuffer(m_gl, m_normals.id(), GL_ARRAY_BUFFER, normals.data(), normals.size() * sizeof(glm::vec3),
+                 "vertex normals");
     m_gl.glEnableVertexAttribArray(1);
     m_gl.glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    uploadBuffer(m_gl, m_indices.id(), GL_ELEMENT_ARRAY_BUFFER, triangles.data(), triangles.size() * sizeof(glm::uvec3), "triangle indices");
+    uploadBuffer(m_gl, m_indices.id(), GL_ELEMENT_ARRAY_BUFFER, triangles.data(), triangles.size() * sizeof(glm::uvec3),
+                 "triangle indices");
     m_gl.glBindVertexArray(0);
     uploadBuffer(m_gl, m_objectTable.id(), GL_SHADER_STORAGE_BUFFER, nullptr,
                  std::max<std::size_t>(1, m_objects.size()) * sizeof(GpuObjectEntry), "object table");
@@ -98,9 +103,10 @@ void GpuScene::updatePositions(std::size_t objectIndex, const std::vector<glm::v
 {
     const WideVectorStateScope wideVectorState; // the driver may leave it in use (wide_vector_state.h)
     if (objectIndex >= m_objects.size() || positions.size() != m_objects[objectIndex].vertexCount)
-        throw std::invalid_argument("updatePositions: object " + std::to_string(objectIndex) + " has " +
-                                    std::to_string(objectIndex < m_objects.size() ? m_objects[objectIndex].vertexCount : 0) +
-                                    " vertices, got " + std::to_string(positions.size()) + ".");
+        throw std::invalid_argument(
+            "updatePositions: object " + std::to_string(objectIndex) + " has " +
+            std::to_string(objectIndex < m_objects.size() ? m_objects[objectIndex].vertexCount : 0) +
+            " vertices, got " + std::to_string(positions.size()) + ".");
     const ObjectRange& object = m_objects[objectIndex];
     const std::vector<glm::vec3> normals = vertexNormals(TriangleMesh{positions, object.triangles});
     const auto offset = GLintptr(std::size_t(object.baseVertex) * sizeof(glm::vec3));
@@ -185,7 +191,8 @@ void GpuScene::setView(const glm::dmat4& view)
     if (entries.empty())
         return;
     m_gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_objectTable.id());
-    m_gl.glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(entries.size() * sizeof(GpuObjectEntry)), entries.data());
+    m_gl.glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(entries.size() * sizeof(GpuObjectEntry)),
+                         entries.data());
 }
 
 void GpuScene::draw(GLuint program, const glm::dmat4& projection)

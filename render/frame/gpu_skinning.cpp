@@ -149,10 +149,22 @@ SkinningModel chainShape(SkinningChain chain, std::size_t restPose)
 } // namespace
 
 GpuSkinning::GpuSkinning(GlFunctions& gl, const SkinningModel& model)
-    : m_gl(gl), m_shaders(std::make_unique<ShaderLibrary>(gl)), m_method(model.method), m_chain(model.chain),
-      m_restPose(model.restPose), m_restPoseMoves(restPoseMoves(model)), m_vertexCount(model.vertexCount()),
-      m_triangleCount(model.triangles.size()), m_boneCount(model.boneCount()), m_poseCount(model.poseCount()),
-      m_stride(0), m_rest(gl), m_influences(gl), m_weights(gl), m_chainState(gl), m_transforms(gl),
+    : m_gl(gl),
+      m_shaders(std::make_unique<ShaderLibrary>(gl)),
+      m_method(model.method),
+      m_chain(model.chain),
+      m_restPose(model.restPose),
+      m_restPoseMoves(restPoseMoves(model)),
+      m_vertexCount(model.vertexCount()),
+      m_triangleCount(model.triangles.size()),
+      m_boneCount(model.boneCount()),
+      m_poseCount(model.poseCount()),
+      m_stride(0),
+      m_rest(gl),
+      m_influences(gl),
+      m_weights(gl),
+      m_chainState(gl),
+      m_transforms(gl),
       m_normals(gl, model.triangles, model.vertexCount())
 {
     requireEvaluable(model);

@@ -51,9 +51,10 @@ GpuVertexNormals::GpuVertexNormals(GlFunctions& gl, const std::vector<glm::uvec3
 void GpuVertexNormals::recompute(ShaderLibrary& shaders, const GpuObjectGeometry& object)
 {
     if (object.vertexCount != m_vertexCount || object.triangleCount != m_triangleCount)
-        throw std::invalid_argument("GPU normals: the object has " + std::to_string(object.vertexCount) + " vertices and " +
-                                    std::to_string(object.triangleCount) + " triangles, the one-ring was built for " +
-                                    std::to_string(m_vertexCount) + " and " + std::to_string(m_triangleCount) + ".");
+        throw std::invalid_argument("GPU normals: the object has " + std::to_string(object.vertexCount) +
+                                    " vertices and " + std::to_string(object.triangleCount) +
+                                    " triangles, the one-ring was built for " + std::to_string(m_vertexCount) +
+                                    " and " + std::to_string(m_triangleCount) + ".");
     const GLuint program = shaders.program(QStringLiteral("vertex_normals"));
     m_gl.glUseProgram(program);
     m_gl.glUniform1ui(m_gl.glGetUniformLocation(program, "u_vertexCount"), GLuint(m_vertexCount));

@@ -17,7 +17,7 @@ constexpr std::uint32_t kBackFacingBit = 1u << 9;
 constexpr std::uint32_t kOverflowedBit = 1u << 10;
 constexpr std::uint32_t kUnresolvedBit = 1u << 11;
 constexpr std::uint32_t kCollisionBit = 1u << 12;
-constexpr int kCapShift = 13;     // 3 bits: cap plane + 1
+constexpr int kCapShift = 13;      // 3 bits: cap plane + 1
 constexpr int kCoplanarShift = 16; // 8 bits
 
 void allocateTexture(GlFunctions& gl, GLuint texture, GLenum internalFormat, int width, int height)
@@ -50,7 +50,9 @@ TrimPixel decodeInfo(const std::uint32_t* texel)
 
 } // namespace
 
-RenderTarget::RenderTarget(GlFunctions& gl) : m_gl(gl), m_framebuffer(gl), m_emptyVao(gl) {}
+RenderTarget::RenderTarget(GlFunctions& gl) : m_gl(gl), m_framebuffer(gl), m_emptyVao(gl)
+{
+}
 
 void RenderTarget::drawFullscreenTriangle()
 {
@@ -82,8 +84,9 @@ void RenderTarget::resize(int width, int height)
     m_gl.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m_depth.id(), 0);
     const GLenum status = m_gl.glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw GlError("The render target framebuffer is incomplete (status 0x" + QString::number(status, 16).toStdString() +
-                      ") at " + std::to_string(width) + "x" + std::to_string(height) + ".");
+        throw GlError("The render target framebuffer is incomplete (status 0x" +
+                      QString::number(status, 16).toStdString() + ") at " + std::to_string(width) + "x" +
+                      std::to_string(height) + ".");
     m_width = width;
     m_height = height;
 }

@@ -14,14 +14,14 @@
 namespace trimlab::render::binding {
 
 // Image units: a method binds only those it uses; the numbers never change meaning.
-inline constexpr GLuint kCounterImage = 0;    ///< r32ui: fragments counted or held per pixel
-inline constexpr GLuint kSemaphoreImage = 1;  ///< r32ui: per-pixel spin-lock (0 = free)
-inline constexpr GLuint kWindingImage = 2;    ///< r32i: winding index at the start of the kept span
-inline constexpr GLuint kOverflowImage = 3;   ///< r32ui: 1 once a pixel lost fragments to a capacity limit
-inline constexpr GLuint kFragmentsImage = 4;  ///< rg32ui 2D array: per-pixel fragment slots (k⁺, AB_FP)
-inline constexpr GLuint kHeadImage = 5;       ///< r32ui: head/offset into a node buffer (AB_LL, S-buffer, K⁺B-SB)
-inline constexpr GLuint kPeelDepthImage = 6;  ///< r32ui 2D array: peeling cursor, one field per layer
-inline constexpr GLuint kWalkImage = 7;       ///< rgba32ui 2D array: trim walks carried between peeling passes
+inline constexpr GLuint kCounterImage = 0;   ///< r32ui: fragments counted or held per pixel
+inline constexpr GLuint kSemaphoreImage = 1; ///< r32ui: per-pixel spin-lock (0 = free)
+inline constexpr GLuint kWindingImage = 2;   ///< r32i: winding index at the start of the kept span
+inline constexpr GLuint kOverflowImage = 3;  ///< r32ui: 1 once a pixel lost fragments to a capacity limit
+inline constexpr GLuint kFragmentsImage = 4; ///< rg32ui 2D array: per-pixel fragment slots (k⁺, AB_FP)
+inline constexpr GLuint kHeadImage = 5;      ///< r32ui: head/offset into a node buffer (AB_LL, S-buffer, K⁺B-SB)
+inline constexpr GLuint kPeelDepthImage = 6; ///< r32ui 2D array: peeling cursor, one field per layer
+inline constexpr GLuint kWalkImage = 7;      ///< rgba32ui 2D array: trim walks carried between peeling passes
 
 // Shader storage blocks: the scene's (GpuScene) ...
 inline constexpr GLuint kSceneColorsStorage = 0;    ///< uint colors[]: optional per-vertex RGBA8
@@ -30,13 +30,13 @@ inline constexpr GLuint kSceneNormalsStorage = 2;   ///< float normals[]: xyz pe
 inline constexpr GLuint kSceneIndicesStorage = 3;   ///< uint indices[]: three per triangle
 inline constexpr GLuint kSceneObjectsStorage = 4;   ///< SceneObject objects[]: matrices and offsets
 // ... and the methods'.
-inline constexpr GLuint kNodesStorage = 5;                ///< uvec2 nodes[] of node-buffer methods
-inline constexpr GLuint kLinksStorage = 6;                ///< uint next[] of linked lists
-inline constexpr GLuint kSharedCountersStorage = 7;       ///< S-buffer's memory referencing; AB_LL's node counter
-inline constexpr GLuint kDynamicStateStorage = 8;         ///< dynamic rules: per-pixel reference index
-inline constexpr GLuint kReferenceBitsStorage = 9;        ///< dynamic rules: the reference frame's bit vectors
+inline constexpr GLuint kNodesStorage = 5;                 ///< uvec2 nodes[] of node-buffer methods
+inline constexpr GLuint kLinksStorage = 6;                 ///< uint next[] of linked lists
+inline constexpr GLuint kSharedCountersStorage = 7;        ///< S-buffer's memory referencing; AB_LL's node counter
+inline constexpr GLuint kDynamicStateStorage = 8;          ///< dynamic rules: per-pixel reference index
+inline constexpr GLuint kReferenceBitsStorage = 9;         ///< dynamic rules: the reference frame's bit vectors
 inline constexpr GLuint kCharacterizationBitsStorage = 10; ///< dynamic rules: the bit vectors a level writes
-inline constexpr GLuint kObjectWindingsStorage = 11;      ///< CSG, collisions: per-object winding per pixel
+inline constexpr GLuint kObjectWindingsStorage = 11;       ///< CSG, collisions: per-object winding per pixel
 // ... and the compute passes that rewrite an object's geometry in place (frame/gpu_skinning.h,
 // frame/gpu_vertex_normals.h), which bind the scene's positions and normals beside these.
 inline constexpr GLuint kSkinningSourceStorage = 12;     ///< double positions[]: the rest pose or the chain's last pose

@@ -52,7 +52,8 @@ ContextResetWatch::ContextResetWatch(QOpenGLContext& context) : m_context(&conte
     if (unsigned(strategy) != kLoseContextOnReset)
         return;
     // The core name (4.5), else the extensions' (a 4.3 context may offer only these).
-    for (const char* name : {"glGetGraphicsResetStatus", "glGetGraphicsResetStatusKHR", "glGetGraphicsResetStatusARB"}) {
+    for (const char* name :
+         {"glGetGraphicsResetStatus", "glGetGraphicsResetStatusKHR", "glGetGraphicsResetStatusARB"}) {
         if (const QFunctionPointer function = context.getProcAddress(name)) {
             m_status = reinterpret_cast<StatusFunction>(function);
             return;

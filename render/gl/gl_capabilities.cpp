@@ -63,7 +63,8 @@ std::optional<QString> missingRequirements(const GlCapabilities& caps)
         return std::nullopt;
     return QStringLiteral("TrimLab needs %1, but the OpenGL driver (%2) does not provide it. Update the graphics "
                           "driver, or use Mesa's llvmpipe (package libgl1-mesa-dri; headless: run under xvfb-run).")
-        .arg(missing.join(QStringLiteral(" and ")), caps.renderer.isEmpty() ? QStringLiteral("unknown") : caps.renderer);
+        .arg(missing.join(QStringLiteral(" and ")),
+             caps.renderer.isEmpty() ? QStringLiteral("unknown") : caps.renderer);
 }
 
 } // namespace trimlab::render

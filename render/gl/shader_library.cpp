@@ -29,9 +29,14 @@ const std::vector<ProgramDescription>& programCatalog()
           {{"KPLUS_HEAP", "KPLUS_INTERLOCK_ARB"}, "GL_ARB_fragment_shader_interlock"}}},
         {"kplus_resolve",
          {"fullscreen.vert", "kplus_resolve.frag"},
-         {{{"K_MAX 1"}}, {{"K_MAX 16"}}, {{"K_MAX 64"}}, {{"K_MAX 16", "DYNAMIC_RULES"}},
-          {{"K_MAX 16", "DYNAMIC_RULES", "DYNAMIC_CHARACTERIZE"}}, {{"K_MAX 16", "CAPPING"}},
-          {{"K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}}, {{"K_MAX 16", "TRANSPARENCY"}},
+         {{{"K_MAX 1"}},
+          {{"K_MAX 16"}},
+          {{"K_MAX 64"}},
+          {{"K_MAX 16", "DYNAMIC_RULES"}},
+          {{"K_MAX 16", "DYNAMIC_RULES", "DYNAMIC_CHARACTERIZE"}},
+          {{"K_MAX 16", "CAPPING"}},
+          {{"K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}},
+          {{"K_MAX 16", "TRANSPARENCY"}},
           {{"K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT", "TRANSPARENCY"}}}},
         // buffer methods (S-buffer, K+B-SB, AB_FP, AB_LL)
         {"fragment_count", {"scene.vert", "fragment_count.frag"}, {{}, {{"DYNAMIC_RULES"}}, {{"OBJECT_WINDINGS 3"}}}},
@@ -41,29 +46,41 @@ const std::vector<ProgramDescription>& programCatalog()
         {"sbuffer_store", {"scene.vert", "sbuffer_store.frag"}, {{}}},
         {"sbuffer_resolve",
          {"fullscreen.vert", "sbuffer_resolve.frag"},
-         {{{"LIST_MAX 256"}}, {{"LIST_MAX 256", "DYNAMIC_RULES"}}, {{"LIST_MAX 256", "DYNAMIC_RULES", "DYNAMIC_CHARACTERIZE"}},
+         {{{"LIST_MAX 256"}},
+          {{"LIST_MAX 256", "DYNAMIC_RULES"}},
+          {{"LIST_MAX 256", "DYNAMIC_RULES", "DYNAMIC_CHARACTERIZE"}},
           {{"LIST_MAX 256", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}},
           {{"LIST_MAX 256", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT", "TRANSPARENCY"}}}},
         {"kplus_sbuffer_store",
          {"scene.vert", "kplus_store.frag"},
-         {{{"KPLUS_NODE_REGION"}},
-          {{"KPLUS_INTERLOCK_ARB", "KPLUS_NODE_REGION"}, "GL_ARB_fragment_shader_interlock"}}},
+         {{{"KPLUS_NODE_REGION"}}, {{"KPLUS_INTERLOCK_ARB", "KPLUS_NODE_REGION"}, "GL_ARB_fragment_shader_interlock"}}},
         {"kplus_sbuffer_resolve",
          {"fullscreen.vert", "kplus_resolve.frag"},
-         {{{"KPLUS_NODE_REGION", "K_MAX 1"}}, {{"KPLUS_NODE_REGION", "K_MAX 16"}}, {{"KPLUS_NODE_REGION", "K_MAX 64"}},
+         {{{"KPLUS_NODE_REGION", "K_MAX 1"}},
+          {{"KPLUS_NODE_REGION", "K_MAX 16"}},
+          {{"KPLUS_NODE_REGION", "K_MAX 64"}},
           {{"KPLUS_NODE_REGION", "K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}},
           {{"KPLUS_NODE_REGION", "K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT", "TRANSPARENCY"}}}},
-        {"abuffer_fixed_store", {"scene.vert", "abuffer_fixed_store.frag"}, {{}, {{"DYNAMIC_RULES"}}, {{"OBJECT_WINDINGS 3"}}}},
+        {"abuffer_fixed_store",
+         {"scene.vert", "abuffer_fixed_store.frag"},
+         {{}, {{"DYNAMIC_RULES"}}, {{"OBJECT_WINDINGS 3"}}}},
         {"abuffer_fixed_resolve",
          {"fullscreen.vert", "abuffer_fixed_resolve.frag"},
-         {{{"K_MAX 1"}}, {{"K_MAX 16"}}, {{"K_MAX 64"}}, {{"K_MAX 16", "DYNAMIC_RULES", "DYNAMIC_CHARACTERIZE"}},
+         {{{"K_MAX 1"}},
+          {{"K_MAX 16"}},
+          {{"K_MAX 64"}},
+          {{"K_MAX 16", "DYNAMIC_RULES", "DYNAMIC_CHARACTERIZE"}},
           {{"K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}},
           {{"K_MAX 16", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT", "TRANSPARENCY"}}}},
         {"head_clear", {"head_clear.comp"}, {{}}},
-        {"abuffer_list_store", {"scene.vert", "abuffer_list_store.frag"}, {{}, {{"DYNAMIC_RULES"}}, {{"OBJECT_WINDINGS 3"}}}},
+        {"abuffer_list_store",
+         {"scene.vert", "abuffer_list_store.frag"},
+         {{}, {{"DYNAMIC_RULES"}}, {{"OBJECT_WINDINGS 3"}}}},
         {"abuffer_list_resolve",
          {"fullscreen.vert", "abuffer_list_resolve.frag"},
-         {{{"LIST_MAX 256"}}, {{"LIST_MAX 256", "DYNAMIC_RULES"}}, {{"LIST_MAX 256", "DYNAMIC_RULES", "DYNAMIC_CHARACTERIZE"}},
+         {{{"LIST_MAX 256"}},
+          {{"LIST_MAX 256", "DYNAMIC_RULES"}},
+          {{"LIST_MAX 256", "DYNAMIC_RULES", "DYNAMIC_CHARACTERIZE"}},
           {{"LIST_MAX 256", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT"}},
           {{"LIST_MAX 256", "CAPPING", "OBJECT_WINDINGS 3", "COPLANAR_COUNT", "TRANSPARENCY"}}}},
         // peeling methods (F2B, DUAL, two-pass)
@@ -113,8 +130,9 @@ QList<int> reportedLines(const QString& log)
 
 QString compileReport(const AssembledShader& shader, const QString& log, const QStringList& defines)
 {
-    QString report = QStringLiteral("Shader '%1' (defines: %2) failed to compile:\n%3\n")
-                         .arg(shader.file, defines.isEmpty() ? QStringLiteral("none") : defines.join(", "), log.trimmed());
+    QString report =
+        QStringLiteral("Shader '%1' (defines: %2) failed to compile:\n%3\n")
+            .arg(shader.file, defines.isEmpty() ? QStringLiteral("none") : defines.join(", "), log.trimmed());
     for (int line : reportedLines(log))
         report += QStringLiteral("\n") + shader.excerpt(line);
     return report;
@@ -133,7 +151,9 @@ QString infoLog(GlFunctions& gl, GLuint object, bool isProgram)
 
 } // namespace
 
-ShaderLibrary::ShaderLibrary(GlFunctions& gl) : m_gl(gl) {}
+ShaderLibrary::ShaderLibrary(GlFunctions& gl) : m_gl(gl)
+{
+}
 
 ShaderLibrary::~ShaderLibrary()
 {

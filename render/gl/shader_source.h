@@ -21,8 +21,8 @@ struct SourceOrigin {
 };
 
 struct AssembledShader {
-    QString file;      ///< e.g. "kplus_store.frag"
-    QByteArray text;   ///< the complete source handed to glShaderSource
+    QString file;                      ///< e.g. "kplus_store.frag"
+    QByteArray text;                   ///< the complete source handed to glShaderSource
     std::vector<SourceOrigin> origins; ///< origins[i] is line i+1 of `text`
 
     /// The assembled lines `line-context … line+context`, numbered, each with its origin,

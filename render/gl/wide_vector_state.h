@@ -1,15 +1,14 @@
 #pragma once
 /// \file
 /// The CPU's wide-vector state after a call into the OpenGL driver. Some drivers (NVIDIA's
-/// 580 on an H200 machine, 2026-11-28) return from GL calls with the upper halves of the
-/// 256-bit vector registers still in use; TrimLab's own code is compiled for baseline x86-64
-/// (SSE2, no AVX), and on Intel CPUs every SSE instruction then pays for merging those upper
-/// halves. Measured there: vertexNormals of 32,768 vertices 36-48 ms in a process that had
-/// loaded the driver, 4.3 ms after one `vzeroupper` (the same code takes 3.3 ms on the 2-core
-/// machine with Mesa, where nothing is left in use). The render layer therefore ends that
-/// state wherever control goes back from the driver to CPU work: around every TrimRenderer and
+/// 580 series) return from GL calls with the upper halves of the 256-bit vector registers
+/// still in use; TrimLab's own code is compiled for baseline x86-64 (SSE2, no AVX), and on
+/// Intel CPUs every SSE instruction then pays for merging those upper halves, which makes
+/// CPU work after a frame several times slower (Mesa leaves nothing in use; the
+/// measurements are in docs/gpu-results.md). The render layer therefore ends that state
+/// wherever control goes back from the driver to CPU work: around every TrimRenderer and
 /// GpuScene call that talks to the driver, after making a context current, and in the GUI
-/// after each viewport paint and swap and whenever the event loop wakes (docs/gpu-results.md).
+/// after each viewport paint and swap and whenever the event loop wakes.
 
 #include <optional>
 

@@ -12,10 +12,11 @@ namespace trimlab::render {
 
 namespace {
 
-
 } // namespace
 
-ABufferFixed::ABufferFixed(GlFunctions& gl) : m_gl(gl), m_state(gl), m_slots(gl) {}
+ABufferFixed::ABufferFixed(GlFunctions& gl) : m_gl(gl), m_state(gl), m_slots(gl)
+{
+}
 
 std::optional<std::size_t> ABufferFixed::estimateBytes(int width, int height, const MethodParameters& parameters) const
 {

@@ -40,7 +40,8 @@ void ABufferLinkedList::allocate(const TrimFrame& frame)
         checkAllocation(m_gl, "AB_LL node counter", sizeof(GLuint));
     }
     if (m_nodes.capacity() == 0) {
-        const std::uint64_t guess = std::uint64_t(frame.width) * std::uint64_t(frame.height) * kInitialFragmentsPerPixel;
+        const std::uint64_t guess =
+            std::uint64_t(frame.width) * std::uint64_t(frame.height) * kInitialFragmentsPerPixel;
         // Links and nodes share the budget: half each.
         const std::size_t budget = frame.parameters.memoryBudgetBytes / 2;
         setNodeCapacity(std::min(guess, m_nodes.maxNodes(frame.capabilities, budget)), frame.capabilities);
@@ -72,8 +73,8 @@ void ABufferLinkedList::render(TrimFrame& frame)
     resolvePass(frame);
     // Per-pixel passes: clears (state and heads) per store, resolve.
     m_stats = {1 + regrowths, 2 * (1 + regrowths) + 1,
-               m_state.memoryBytes() + m_head.memoryBytes() + m_nodes.bytes() + m_links.bytes() + sizeof(GLuint),
-               false, regrowths};
+               m_state.memoryBytes() + m_head.memoryBytes() + m_nodes.bytes() + m_links.bytes() + sizeof(GLuint), false,
+               regrowths};
 }
 
 std::uint64_t ABufferLinkedList::storePass(TrimFrame& frame)
@@ -109,8 +110,8 @@ std::uint64_t ABufferLinkedList::storePass(TrimFrame& frame)
 
 void ABufferLinkedList::resolvePass(TrimFrame& frame)
 {
-    const GLuint program = trimProgram(frame, QStringLiteral("abuffer_list_resolve"),
-                                                 {QStringLiteral("LIST_MAX %1").arg(kRegisterList)});
+    const GLuint program =
+        trimProgram(frame, QStringLiteral("abuffer_list_resolve"), {QStringLiteral("LIST_MAX %1").arg(kRegisterList)});
     m_gl.glUseProgram(program);
     setTrimWalkUniforms(frame, program);
     setOutputUniforms(frame, program);

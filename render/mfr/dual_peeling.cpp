@@ -2,7 +2,9 @@
 
 namespace trimlab::render {
 
-DualPeeling::DualPeeling(GlFunctions& gl) : m_state(gl, true), m_passes(gl) {}
+DualPeeling::DualPeeling(GlFunctions& gl) : m_state(gl, true), m_passes(gl)
+{
+}
 
 void DualPeeling::render(TrimFrame& frame)
 {

@@ -2,7 +2,9 @@
 
 namespace trimlab::render {
 
-F2BPeeling::F2BPeeling(GlFunctions& gl) : m_state(gl, false), m_passes(gl) {}
+F2BPeeling::F2BPeeling(GlFunctions& gl) : m_state(gl, false), m_passes(gl)
+{
+}
 
 void F2BPeeling::render(TrimFrame& frame)
 {

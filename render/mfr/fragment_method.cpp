@@ -13,7 +13,8 @@ const std::vector<MethodInfo>& fragmentMethods()
         {FragmentMethodKind::SBuffer, "s-buffer", "S-buffer", false, false, true, true, true},
         {FragmentMethodKind::KPlusSBuffer, "kplus-sbuffer", "K⁺B-SB", true, true, true, true, true},
         {FragmentMethodKind::ABufferFixed, "abuffer-fixed", "AB_FP (fixed arrays)", true, true, false, true, true},
-        {FragmentMethodKind::ABufferLinkedList, "abuffer-linked-list", "AB_LL (linked lists)", false, false, false, true, true},
+        {FragmentMethodKind::ABufferLinkedList, "abuffer-linked-list", "AB_LL (linked lists)", false, false, false,
+         true, true},
         // peeling methods (F2B, DUAL, two-pass)
         {FragmentMethodKind::PeelingF2B, "peeling-f2b", "F2B depth peeling", false, false, false, false, false},
         {FragmentMethodKind::PeelingDual, "peeling-dual", "Dual depth peeling", false, false, false, false, false},

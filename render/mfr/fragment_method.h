@@ -67,17 +67,23 @@ struct MethodParameters {
     /// scene buffers come on top (FrameStats::bufferMegabytes shows the total).
     std::size_t memoryBudgetBytes = 0;
 
+    /// The limits of the user's choices; their ranges, defaults and help are the rows of
+    /// method_parameter_table.h, which read these.
     static constexpr int kMaxK = 128;
+    static constexpr int kMaxSharedCounters = 1 << 20;        ///< the prefix pass is linear in S
+    static constexpr int kMaxMemoryBudgetMegabytes = 1 << 20; ///< 1 TB: no real limit
+
+    friend bool operator==(const MethodParameters&, const MethodParameters&) = default;
 };
 
 /// What a frame cost the method beyond the shared frame counters.
 struct MethodStats {
-    int geometryPasses = 0;     ///< times the scene was rasterised
-    int fullscreenPasses = 0;   ///< resolve / referencing passes
-    std::size_t bytes = 0;      ///< GPU memory the method holds
-    bool interlock = false;     ///< the critical section used fragment shader interlock
-    int regrowths = 0;          ///< times the storage grew and the frame was rendered again (AB_LL)
-    bool usesLock = false;      ///< the method has a per-pixel critical section (k⁺-buffer family)
+    int geometryPasses = 0;   ///< times the scene was rasterised
+    int fullscreenPasses = 0; ///< resolve / referencing passes
+    std::size_t bytes = 0;    ///< GPU memory the method holds
+    bool interlock = false;   ///< the critical section used fragment shader interlock
+    int regrowths = 0;        ///< times the storage grew and the frame was rendered again (AB_LL)
+    bool usesLock = false;    ///< the method has a per-pixel critical section (k⁺-buffer family)
 };
 
 /// "spin-lock", "fragment shader interlock" or "none" for a frame's stats.

@@ -5,7 +5,9 @@
 
 namespace trimlab::render {
 
-HeadImage::HeadImage(GlFunctions& gl) : m_gl(gl) {}
+HeadImage::HeadImage(GlFunctions& gl) : m_gl(gl)
+{
+}
 
 void HeadImage::allocate(int width, int height)
 {

@@ -7,7 +7,6 @@
 #include "render/mfr/trim_frame.h"
 #include "render/mfr/trim_pass_state.h"
 
-
 namespace trimlab::render {
 
 namespace {
@@ -35,7 +34,9 @@ QStringList kplusStoreDefines(KPlusLock lock, bool heap)
     return defines;
 }
 
-KPlusBuffer::KPlusBuffer(GlFunctions& gl, bool heap) : m_gl(gl), m_heap(heap), m_state(gl), m_slots(gl) {}
+KPlusBuffer::KPlusBuffer(GlFunctions& gl, bool heap) : m_gl(gl), m_heap(heap), m_state(gl), m_slots(gl)
+{
+}
 
 FragmentMethodKind KPlusBuffer::kind() const
 {
@@ -80,7 +81,8 @@ void KPlusBuffer::storePass(TrimFrame& frame, KPlusLock lock)
 
 void KPlusBuffer::resolvePass(TrimFrame& frame)
 {
-    const GLuint program = trimProgram(frame, QStringLiteral("kplus_resolve"), {QStringLiteral("K_MAX %1").arg(m_slots.k())});
+    const GLuint program =
+        trimProgram(frame, QStringLiteral("kplus_resolve"), {QStringLiteral("K_MAX %1").arg(m_slots.k())});
     m_gl.glUseProgram(program);
     setTrimWalkUniforms(frame, program);
     setOutputUniforms(frame, program);

@@ -42,6 +42,7 @@ public:
 
     /// Per-pixel fragments held (≤ k) and overflow flags of the last frame.
     [[nodiscard]] std::optional<PixelOccupancy> readOccupancy() override { return m_state.readOccupancy(); }
+
 private:
     void storePass(TrimFrame& frame, KPlusLock lock);
     void resolvePass(TrimFrame& frame);

@@ -5,6 +5,7 @@
 #include "render/frame/gpu_scene.h"
 #include "render/gl/bindings.h"
 #include "render/mfr/kplus_buffer.h"
+#include "render/mfr/method_parameter_table.h"
 #include "render/mfr/trim_frame.h"
 #include "render/mfr/trim_pass_state.h"
 
@@ -33,9 +34,7 @@ std::optional<std::size_t> KPlusSBuffer::estimateBytes(int, int, const MethodPar
 void KPlusSBuffer::render(TrimFrame& frame)
 {
     m_k = frame.parameters.k;
-    if (m_k < 1 || m_k > MethodParameters::kMaxK)
-        throw std::invalid_argument("k must be between 1 and " + std::to_string(MethodParameters::kMaxK) + " (got " +
-                                    std::to_string(m_k) + ").");
+    requireParameterValue(method_parameters::kK, m_k);
     const KPlusLock lock = chooseKPlusLock(frame.capabilities, frame.parameters.allowInterlock);
     m_state.allocate(frame.width, frame.height);
     m_head.allocate(frame.width, frame.height);
@@ -43,8 +42,7 @@ void KPlusSBuffer::render(TrimFrame& frame)
     m_referencing.countPass(frame, m_state);
     m_countedTotal =
         m_referencing.reference(frame, m_state, m_head, frame.parameters.sharedCounters, std::uint32_t(m_k));
-    m_nodes.reserve(m_countedTotal, frame.capabilities, frame.width, frame.height,
-                    frame.parameters.memoryBudgetBytes);
+    m_nodes.reserve(m_countedTotal, frame.capabilities, frame.width, frame.height, frame.parameters.memoryBudgetBytes);
     storePass(frame, lock);
     m_gl.glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
                          GL_ATOMIC_COUNTER_BARRIER_BIT);
@@ -78,7 +76,7 @@ void KPlusSBuffer::storePass(TrimFrame& frame, KPlusLock lock)
 void KPlusSBuffer::resolvePass(TrimFrame& frame)
 {
     const GLuint program = trimProgram(frame, QStringLiteral("kplus_sbuffer_resolve"),
-                                                 {QStringLiteral("KPLUS_NODE_REGION"), QStringLiteral("K_MAX %1").arg(m_k)});
+                                       {QStringLiteral("KPLUS_NODE_REGION"), QStringLiteral("K_MAX %1").arg(m_k)});
     m_gl.glUseProgram(program);
     setTrimWalkUniforms(frame, program);
     setOutputUniforms(frame, program);

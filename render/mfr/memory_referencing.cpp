@@ -6,6 +6,7 @@
 #include "render/frame/frame_counters.h"
 #include "render/gl/bindings.h"
 #include "render/mfr/head_image.h"
+#include "render/mfr/method_parameter_table.h"
 #include "render/mfr/pixel_state.h"
 #include "render/mfr/trim_frame.h"
 #include "render/mfr/trim_pass_state.h"
@@ -15,7 +16,9 @@
 
 namespace trimlab::render {
 
-MemoryReferencing::MemoryReferencing(GlFunctions& gl) : m_gl(gl) {}
+MemoryReferencing::MemoryReferencing(GlFunctions& gl) : m_gl(gl)
+{
+}
 
 void MemoryReferencing::countPass(TrimFrame& frame, PixelState& state)
 {
@@ -32,10 +35,7 @@ void MemoryReferencing::countPass(TrimFrame& frame, PixelState& state)
 
 void MemoryReferencing::allocateCounters(int sharedCounters)
 {
-    if (sharedCounters < 1 || sharedCounters > kMaxSharedCounters)
-        throw std::invalid_argument("the number of shared counters must be between 1 and " +
-                                    std::to_string(kMaxSharedCounters) + " (got " + std::to_string(sharedCounters) +
-                                    ").");
+    requireParameterValue(method_parameters::kSharedCounters, sharedCounters);
     if (sharedCounters == m_sharedCounters)
         return;
     m_sharedCounters = 0;

@@ -32,17 +32,14 @@ struct TrimFrame;
 
 class MemoryReferencing {
 public:
-    /// The most shared counters accepted (the prefix pass is linear in S).
-    static constexpr int kMaxSharedCounters = 1 << 20;
-
     explicit MemoryReferencing(GlFunctions& gl);
 
     /// The fragment count pass. `state` must be cleared; its counter, winding and the
     /// frame counters are bound here.
     void countPass(TrimFrame& frame, PixelState& state);
 
-    /// Referencing for `sharedCounters` = S counters (1..kMaxSharedCounters, else
-    /// std::invalid_argument). Returns Σ_p n(p), the nodes the frame needs, read back to
+    /// Referencing for `sharedCounters` = S counters (in the range of
+    /// method_parameters::kSharedCounters, else std::invalid_argument). Returns Σ_p n(p), the nodes the frame needs, read back to
     /// the CPU: this waits for the GPU to finish the count and referencing passes (the
     /// one CPU–GPU synchronisation of a counted method's frame, needed to size the node
     /// buffer). Afterwards the head image holds each pixel's region start.

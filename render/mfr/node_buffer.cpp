@@ -33,9 +33,9 @@ void NodeBuffer::reallocate(std::uint64_t nodes, const GlCapabilities& capabilit
     const std::uint64_t limit = maxNodes(capabilities, budgetBytes);
     const double bytes = double(std::max<std::uint64_t>(nodes, 1)) * double(m_bytesPerNode);
     const bool budgetBinds = budgetBytes > 0 && limit < maxNodes(capabilities);
-    const std::string needs = "The " + m_what + " needs " + std::to_string(nodes) + " fragments (" + megabytesText(bytes) +
-                              ")" +
-                              (width > 0 ? " at " + std::to_string(width) + "x" + std::to_string(height) : std::string());
+    const std::string needs =
+        "The " + m_what + " needs " + std::to_string(nodes) + " fragments (" + megabytesText(bytes) + ")" +
+        (width > 0 ? " at " + std::to_string(width) + "x" + std::to_string(height) : std::string());
     if (nodes > limit && budgetBinds)
         throw GpuMemoryError(needs + ", above the GPU memory budget of " + megabytesText(double(budgetBytes)) +
                              ". Raise the budget, lower the image size or pick a bounded method (k+-buffer, K+B-SB, "

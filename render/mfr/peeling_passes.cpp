@@ -27,7 +27,9 @@ void setFirstPass(GlFunctions& gl, GLuint program, bool first)
 
 } // namespace
 
-PeelingPasses::PeelingPasses(GlFunctions& gl) : m_gl(gl) {}
+PeelingPasses::PeelingPasses(GlFunctions& gl) : m_gl(gl)
+{
+}
 
 MethodStats PeelingPasses::render(TrimFrame& frame, PeelingState& state, const PeelingPrograms& programs)
 {

@@ -14,8 +14,14 @@ constexpr std::size_t kPixelStateBytes = 16; // PixelState: four R32 images
 constexpr std::size_t kCursorFieldBytes = 4; // R32UI
 constexpr std::size_t kWalkBytes = 16;       // RGBA32UI
 
-int cursorLayers(bool dual) { return dual ? kCursorLayersDual : kCursorLayersF2B; }
-int walkLayers(bool dual) { return dual ? 2 : 1; }
+int cursorLayers(bool dual)
+{
+    return dual ? kCursorLayersDual : kCursorLayersF2B;
+}
+int walkLayers(bool dual)
+{
+    return dual ? 2 : 1;
+}
 
 void allocateArray(GlFunctions& gl, GlTexture& texture, GLenum format, int width, int height, int layers)
 {
@@ -26,7 +32,9 @@ void allocateArray(GlFunctions& gl, GlTexture& texture, GLenum format, int width
 
 } // namespace
 
-PeelingState::PeelingState(GlFunctions& gl, bool dual) : m_gl(gl), m_dual(dual), m_pixels(gl) {}
+PeelingState::PeelingState(GlFunctions& gl, bool dual) : m_gl(gl), m_dual(dual), m_pixels(gl)
+{
+}
 
 std::size_t PeelingState::bytesPerPixel(bool dual)
 {

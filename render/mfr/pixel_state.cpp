@@ -33,7 +33,9 @@ std::vector<std::uint32_t> readImageTopDown(GlFunctions& gl, GLuint texture, int
     return topDown;
 }
 
-PixelState::PixelState(GlFunctions& gl) : m_gl(gl) {}
+PixelState::PixelState(GlFunctions& gl) : m_gl(gl)
+{
+}
 
 std::size_t PixelState::bytesFor(int width, int height)
 {

@@ -30,8 +30,7 @@ void SBuffer::render(TrimFrame& frame)
     m_referencing.countPass(frame, m_state);
     m_countedTotal = m_referencing.reference(frame, m_state, m_head, frame.parameters.sharedCounters,
                                              std::numeric_limits<std::uint32_t>::max());
-    m_nodes.reserve(m_countedTotal, frame.capabilities, frame.width, frame.height,
-                    frame.parameters.memoryBudgetBytes);
+    m_nodes.reserve(m_countedTotal, frame.capabilities, frame.width, frame.height, frame.parameters.memoryBudgetBytes);
     storePass(frame);
     m_gl.glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
                          GL_ATOMIC_COUNTER_BARRIER_BIT);

@@ -2,6 +2,7 @@
 
 #include "render/gl/bindings.h"
 #include "render/mfr/fragment_method.h"
+#include "render/mfr/method_parameter_table.h"
 
 #include <stdexcept>
 #include <string>
@@ -12,7 +13,9 @@ namespace {
 constexpr std::size_t kBytesPerSlot = 8; // RG32UI, fragment_pack.glsl
 }
 
-SlotArray::SlotArray(GlFunctions& gl) : m_gl(gl) {}
+SlotArray::SlotArray(GlFunctions& gl) : m_gl(gl)
+{
+}
 
 std::size_t SlotArray::slotBytes(int width, int height, int k)
 {
@@ -21,9 +24,7 @@ std::size_t SlotArray::slotBytes(int width, int height, int k)
 
 void SlotArray::allocate(int width, int height, int k, const char* owner)
 {
-    if (k < 1 || k > MethodParameters::kMaxK)
-        throw std::invalid_argument("k must be between 1 and " + std::to_string(MethodParameters::kMaxK) + " (got " +
-                                    std::to_string(k) + ").");
+    requireParameterValue(method_parameters::kK, k);
     if (width == m_width && height == m_height && k == m_k)
         return;
     m_width = m_height = m_k = 0;

@@ -38,7 +38,9 @@ float depthScale(double zFar)
 
 } // namespace
 
-TwoPassTrim::TwoPassTrim(GlFunctions& gl) : m_gl(gl), m_state(gl) {}
+TwoPassTrim::TwoPassTrim(GlFunctions& gl) : m_gl(gl), m_state(gl)
+{
+}
 
 std::size_t TwoPassTrim::requiredBytes(int width, int height)
 {

@@ -9,7 +9,9 @@
 
 namespace trimlab::render {
 
-ObjectWindingBuffer::ObjectWindingBuffer(GlFunctions& gl) : m_gl(gl), m_buffer(gl) {}
+ObjectWindingBuffer::ObjectWindingBuffer(GlFunctions& gl) : m_gl(gl), m_buffer(gl)
+{
+}
 
 std::size_t ObjectWindingBuffer::bytesFor(int width, int height, int objects)
 {

@@ -38,10 +38,11 @@ QStringList tableRows(const QString& out, const QString& scene)
     return rows;
 }
 
-const QStringList kMeasuredFields = {"msPerFrame",     "timeSource",       "wallMsMedian",     "geometryPasses",
-                                     "megabytes",      "fragmentsInSpan",  "fragmentsStored",  "fragmentsLost",
-                                     "overflowPixels", "unresolvedPixels", "agreementPercent", "worstViewAgreementPercent",
-                                     "comparedPixels", "excludedPercent",  "ratioToF2B",       "ratioToABLL"};
+const QStringList kMeasuredFields = {
+    "msPerFrame",     "timeSource",       "wallMsMedian",     "geometryPasses",
+    "megabytes",      "fragmentsInSpan",  "fragmentsStored",  "fragmentsLost",
+    "overflowPixels", "unresolvedPixels", "agreementPercent", "worstViewAgreementPercent",
+    "comparedPixels", "excludedPercent",  "ratioToF2B",       "ratioToABLL"};
 
 } // namespace
 
@@ -69,8 +70,8 @@ void TestBenchVerb::initTestCase()
 {
     QVERIFY(m_dir.isValid());
     const QString json = m_dir.filePath(QStringLiteral("bench.json"));
-    const Run run = runBench({"bench", "--scenes", "demo:pushed-sphere", "--size", "160x120", "--repeat", "1",
-                                "--json", json});
+    const Run run =
+        runBench({"bench", "--scenes", "demo:pushed-sphere", "--size", "160x120", "--repeat", "1", "--json", json});
     if (run.exitCode != 0 && run.err.contains(QStringLiteral("OpenGL")) && !glRequired())
         QSKIP(qPrintable("no OpenGL for the bench: " + run.err));
     QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
@@ -128,11 +129,12 @@ void TestBenchVerb::restrictedMethodsGiveNotAvailableRatios()
 {
     const QString json = m_dir.filePath(QStringLiteral("one.json"));
     const Run run = runBench({"bench", "--scenes", "demo:sphere", "--size", "96x64", "--repeat", "1", "--views", "2",
-                                "--methods", "kplus-array", "--k", "8", "--json", json});
+                              "--methods", "kplus-array", "--k", "8", "--json", json});
     QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
     const QStringList rows = tableRows(run.out, QStringLiteral("demo:sphere"));
     QCOMPARE(rows.size(), 1);
-    QVERIFY2(rows[0].contains(QStringLiteral("kplus-array")) && rows[0].contains(QRegularExpression(QStringLiteral("n/a\\s+n/a$"))),
+    QVERIFY2(rows[0].contains(QStringLiteral("kplus-array")) &&
+                 rows[0].contains(QRegularExpression(QStringLiteral("n/a\\s+n/a$"))),
              qPrintable(rows[0]));
     QFile file(json);
     QVERIFY(file.open(QIODevice::ReadOnly));
@@ -154,10 +156,10 @@ void TestBenchVerb::badArgumentsExitWithTwo_data()
     QTest::newRow("bad repeat") << QStringList{"bench", "--repeat", "0"} << "--repeat";
     QTest::newRow("bad locks") << QStringList{"bench", "--locks", "sometimes"} << "--locks";
     QTest::newRow("bad shared counters") << QStringList{"bench", "--shared-counters", "0"} << "--shared-counters";
-    QTest::newRow("rule without sources") << QStringList{"bench", "--rule", "nonzero"}
-                                          << "--rule applies to the scene of the positional sources";
-    QTest::newRow("bad object transform") << QStringList{"bench", "demo:sphere", "--object-transform", "0=a,b,c"}
-                                          << "is not a finite number";
+    QTest::newRow("rule without sources")
+        << QStringList{"bench", "--rule", "nonzero"} << "--rule applies to the scene of the positional sources";
+    QTest::newRow("bad object transform")
+        << QStringList{"bench", "demo:sphere", "--object-transform", "0=a,b,c"} << "is not a finite number";
 }
 
 void TestBenchVerb::badArgumentsExitWithTwo()
@@ -175,7 +177,7 @@ void TestBenchVerb::missingSharedDataSkipsTheScene()
 {
     const QString json = m_dir.filePath(QStringLiteral("skipped.json"));
     const Run run = runBench({"bench", "--scenes", "bunny-cube-50", "--data", m_dir.filePath("no-such-folder"),
-                                "--size", "64x48", "--repeat", "1", "--json", json});
+                              "--size", "64x48", "--repeat", "1", "--json", json});
     QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
     QVERIFY2(run.err.contains(QStringLiteral("skipping bunny-cube-50")) && run.err.contains(QStringLiteral("missing")),
              qPrintable(run.err));
@@ -220,7 +222,7 @@ void TestBenchVerb::csgGoalSceneSkipsPeelingAndAgrees()
 {
     const QString json = m_dir.filePath(QStringLiteral("csg3.json"));
     const Run run = runBench({"bench", "--scenes", "csg3-500k", "--size", "96x72", "--repeat", "1", "--views", "2",
-                                "--methods", "kplus-array,peeling-dual", "--locks", "both", "--json", json});
+                              "--methods", "kplus-array,peeling-dual", "--locks", "both", "--json", json});
     QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
     QVERIFY2(run.err.contains(QStringLiteral("csg3-500k (544,302 triangles, 3 objects)")), qPrintable(run.err));
     QFile file(json);
@@ -253,7 +255,7 @@ void TestBenchVerb::spinLocksOnlyMeasuresTheSpinLock()
 {
     const QString json = m_dir.filePath(QStringLiteral("spin.json"));
     const Run run = runBench({"bench", "--scenes", "demo:sphere", "--size", "64x48", "--repeat", "1", "--views", "1",
-                                "--methods", "kplus-array,kplus-sbuffer", "--locks", "spin", "--json", json});
+                              "--methods", "kplus-array,kplus-sbuffer", "--locks", "spin", "--json", json});
     QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
     QFile file(json);
     QVERIFY(file.open(QIODevice::ReadOnly));
@@ -268,9 +270,9 @@ void TestBenchVerb::spinLocksOnlyMeasuresTheSpinLock()
 void TestBenchVerb::positionalSourcesMakeOneScene()
 {
     const QString json = m_dir.filePath(QStringLiteral("composed.json"));
-    const Run run = runBench({"bench", "demo:pushed-sphere", "demo:sphere", "--object-transform", "1=0,-0.6,0,0,0,0,0.5",
-                              "--csg", "0 - 1", "--rule", "nonzero", "--size", "64x48", "--repeat", "1", "--views", "2",
-                              "--methods", "abuffer-linked-list", "--json", json});
+    const Run run = runBench({"bench", "demo:pushed-sphere", "demo:sphere", "--object-transform",
+                              "1=0,-0.6,0,0,0,0,0.5", "--csg", "0 - 1", "--rule", "nonzero", "--size", "64x48",
+                              "--repeat", "1", "--views", "2", "--methods", "abuffer-linked-list", "--json", json});
     QVERIFY2(run.exitCode == 0, qPrintable(run.out + run.err));
     QFile file(json);
     QVERIFY(file.open(QIODevice::ReadOnly));

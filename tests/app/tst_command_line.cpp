@@ -40,8 +40,8 @@ QString data(const QString& relative)
     return QString::fromStdString(test::testDataPath(relative.toStdString()).string());
 }
 
-const QStringList kPushedSphereView = {"render", "demo:pushed-sphere", "--rule", "alternating-border", "--clip", "0,0,-1,0",
-                                       "--size", "256x192"};
+const QStringList kPushedSphereView = {"render", "demo:pushed-sphere", "--rule", "alternating-border",
+                                       "--clip", "0,0,-1,0",           "--size", "256x192"};
 
 } // namespace
 
@@ -84,8 +84,9 @@ void TestCommandLine::badArgumentsExitWithTwo_data()
                                 << "--camera";
     QTest::newRow("bad method") << QStringList{"render", "demo:sphere", "--method", "z-buffer", "-o", "x.png"}
                                 << "--method 'z-buffer'";
-    QTest::newRow("bad shared counters")
-        << QStringList{"render", "demo:sphere", "--shared-counters", "0", "-o", "x.png"} << "--shared-counters";
+    QTest::newRow("bad shared counters") << QStringList{"render", "demo:sphere", "--shared-counters",
+                                                        "0",      "-o",          "x.png"}
+                                         << "--shared-counters";
     QTest::newRow("bad backend") << QStringList{"render", "demo:sphere", "--backend", "vulkan", "-o", "x.png"}
                                  << "--backend";
     QTest::newRow("unknown option") << QStringList{"render", "demo:sphere", "--frobnicate", "-o", "x.png"}
@@ -93,9 +94,9 @@ void TestCommandLine::badArgumentsExitWithTwo_data()
     QTest::newRow("info without source") << QStringList{"info"} << "at least one source";
     QTest::newRow("frame without a design") << QStringList{"render", "demo:sphere", "--frame", "1", "-o", "x.png"}
                                             << "--frame and --classification need --script";
-    QTest::newRow("bad classification")
-        << QStringList{"render", "demo:sphere", "--script", "s.json", "--classification", "winding", "-o", "x.png"}
-        << "--classification 'winding'";
+    QTest::newRow("bad classification") << QStringList{"render",           "demo:sphere", "--script", "s.json",
+                                                       "--classification", "winding",     "-o",       "x.png"}
+                                        << "--classification 'winding'";
     QTest::newRow("dynamic rules without a base rule")
         << QStringList{"render", "demo:sphere", "--script", "s.json", "--rule", "none", "-o", "x.png"}
         << "--rule none cannot classify";
@@ -117,12 +118,13 @@ void TestCommandLine::badInputsExitWithOne_data()
     QTest::newRow("missing file") << QStringList{"info", "/nonexistent/mesh.obj"} << "/nonexistent/mesh.obj";
     QTest::newRow("broken file") << QStringList{"info", data("broken/nan.obj")} << "nan.obj";
     QTest::newRow("missing stroke script")
-        << QStringList{"render", "demo:sphere", "--script", "/nonexistent/strokes.json", "--backend", "reference", "-o",
-                       "x.png"}
+        << QStringList{"render",    "demo:sphere", "--script", "/nonexistent/strokes.json",
+                       "--backend", "reference",   "-o",       "x.png"}
         << "/nonexistent/strokes.json";
     QTest::newRow("frame beyond the last")
-        << QStringList{"render", "demo:sphere", "--script", data("scripts/fig8_7_extended_tip.json"), "--frame", "9",
-                       "--backend", "reference", "-o", "x.png"}
+        << QStringList{"render",  "demo:sphere", "--script",  data("scripts/fig8_7_extended_tip.json"),
+                       "--frame", "9",           "--backend", "reference",
+                       "-o",      "x.png"}
         << "beyond the last frame";
     QTest::newRow("trim asked on an open mesh")
         << QStringList{"render", data("meshes/open_square.obj"), "--rule", "parity", "--backend", "reference", "-o",
@@ -153,8 +155,8 @@ void TestCommandLine::infoPrintsTheValidationReport()
 // world extent after --object-transform (the unit cube [0,1]^3 doubled, moved 10 in x).
 void TestCommandLine::infoNumbersTheObjectsOfSeveralSources()
 {
-    const Run run = runTrimlab({"info", data("meshes/open_square.obj"), data("meshes/cube.obj"), "--object-transform",
-                                "1=10,0,0,0,0,0,2"});
+    const Run run = runTrimlab(
+        {"info", data("meshes/open_square.obj"), data("meshes/cube.obj"), "--object-transform", "1=10,0,0,0,0,0,2"});
     QCOMPARE(run.exitCode, 0);
     QVERIFY2(run.out.contains("object 0: open_square.obj") && run.out.contains("object 1: cube.obj"),
              qPrintable(run.out));
@@ -184,8 +186,8 @@ void TestCommandLine::helpListsEveryBuiltInDemo()
 void TestCommandLine::openMeshRendersUntrimmedByDefault()
 {
     const QString out = m_dir.filePath("open.png");
-    const Run run = runTrimlab({"render", data("meshes/open_square.obj"), "--backend", "reference", "--size", "64x48",
-                                "-o", out});
+    const Run run =
+        runTrimlab({"render", data("meshes/open_square.obj"), "--backend", "reference", "--size", "64x48", "-o", out});
     QCOMPARE(run.exitCode, 0);
     QVERIFY2(run.err.contains("note: rendering without trimming"), qPrintable(run.err));
     QVERIFY(!QImage(out).isNull());
@@ -207,7 +209,7 @@ void TestCommandLine::referenceBackendMatchesInProcessReference()
     settings.clip = ClipPlane{true, {0.0, 0.0, -1.0}, 0.0};
     const ReferenceResult reference = ReferenceRenderer(loaded.scene).render(camera, 256, 192, settings);
     const TrimImage fromFile = decodeIdsPng(QImage(ids));
-    const FloatImage distances = readPfm(depth.toStdString());
+    const io::FloatImage distances = io::readPfm(depth.toStdString());
     int idMismatches = 0;
     int depthMismatches = 0;
     for (int y = 0; y < 192; ++y) {
@@ -215,8 +217,8 @@ void TestCommandLine::referenceBackendMatchesInProcessReference()
             const TrimPixel& r = reference.trim.at(x, y);
             idMismatches += fromFile.at(x, y).primitiveId == r.primitiveId ? 0 : 1;
             const float d = distances.values[std::size_t(y) * 256 + x];
-            const double expected = r.covered() ? double(r.viewDepth) * glm::length(pixelRay(camera, 256, 192, x, y).direction)
-                                                : INFINITY;
+            const double expected =
+                r.covered() ? double(r.viewDepth) * glm::length(pixelRay(camera, 256, 192, x, y).direction) : INFINITY;
             depthMismatches += (r.covered() ? std::abs(d - expected) <= 1e-5 * expected : std::isinf(d)) ? 0 : 1;
         }
     }
@@ -243,7 +245,8 @@ void TestCommandLine::kplusBackendAgreesWithReference()
     const test::TrimComparison comparison =
         test::compareTrimImages(decodeIdsPng(QImage(gpuIds)), idsOnly(reference.trim), reference.diagnostics);
     qInfo("%s", qPrintable(comparison.summary()));
-    QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05, qPrintable(comparison.summary()));
+    QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05,
+             qPrintable(comparison.summary()));
 }
 
 // --method picks any method of the build; the statistics line names it and reports its
@@ -254,11 +257,13 @@ void TestCommandLine::everyMethodRendersAndReportsItsStatistics()
     for (const render::MethodInfo& info : render::fragmentMethods()) {
         const QString id = QString::fromLatin1(info.id.data(), qsizetype(info.id.size()));
         const QString out = m_dir.filePath(id + ".png");
-        const Run run = runTrimlab(kPushedSphereView + QStringList{"--method", id, "--shared-counters", "64", "-o", out});
+        const Run run =
+            runTrimlab(kPushedSphereView + QStringList{"--method", id, "--shared-counters", "64", "-o", out});
         QVERIFY2(run.exitCode == 0, qPrintable(id + ": " + run.err));
         QVERIFY2(run.out.contains(QString::fromUtf8(info.displayName.data(), qsizetype(info.displayName.size()))),
                  qPrintable(run.out));
-        QVERIFY2(run.out.contains(QRegularExpression(QStringLiteral("[1-9]\\d* geometry passes"))), qPrintable(run.out));
+        QVERIFY2(run.out.contains(QRegularExpression(QStringLiteral("[1-9]\\d* geometry passes"))),
+                 qPrintable(run.out));
         QVERIFY2(run.out.contains(QRegularExpression(QStringLiteral("\\d+ stored, \\d+ lost"))), qPrintable(run.out));
         QCOMPARE(run.out.contains(QStringLiteral("S = 64")), info.usesSharedCounters);
         QVERIFY(!QImage(out).isNull());
@@ -272,17 +277,17 @@ void TestCommandLine::scriptReplayRendersTheDynamicRulesLikeTheReference()
     TRIMLAB_SKIP_WITHOUT_GL();
     const QString script = data("scripts/fig8_7_extended_tip.json");
     const QString ids = m_dir.filePath("design-ids.png");
-    const Run run = runTrimlab({"render", "demo:sphere", "--script", script, "--frame", "2", "--clip", "0,0,-1,0",
-                                "--size", "200x150", "--method", "abuffer-linked-list", "--ids", ids, "-o",
-                                m_dir.filePath("design.png")});
+    const Run run =
+        runTrimlab({"render", "demo:sphere", "--script", script, "--frame", "2", "--clip", "0,0,-1,0", "--size",
+                    "200x150", "--method", "abuffer-linked-list", "--ids", ids, "-o", m_dir.filePath("design.png")});
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
     QVERIFY2(run.out.contains("frame 2 of 2") && run.out.contains("dynamic: alternating-border on the base mesh, then "
                                                                   "confluent, confluent"),
              qPrintable(run.out));
 
     const LoadedScene loaded = loadScene("demo:sphere");
-    const timeline::Timeline design = timeline::replayStrokeScript(
-        loaded.scene.objects.front().mesh, timeline::loadStrokeScript(script.toStdString()));
+    const timeline::Timeline design = timeline::replayStrokeScript(loaded.scene.objects.front().mesh,
+                                                                   timeline::loadStrokeScript(script.toStdString()));
     const DynamicChain chain = timeline::frameChain(design, 2, StaticRule::AlternatingBorder);
     const Camera camera = fitCamera(timeline::chainBounds(chain), 200.0 / 150.0);
     TrimSettings settings;
@@ -293,7 +298,8 @@ void TestCommandLine::scriptReplayRendersTheDynamicRulesLikeTheReference()
         test::compareTrimImages(decodeIdsPng(QImage(ids)), idsOnly(expected), reference.diagnostics);
     qInfo("%s", qPrintable(comparison.summary()));
     QVERIFY(comparison.coveredPixels > 2000);
-    QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05, qPrintable(comparison.summary()));
+    QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05,
+             qPrintable(comparison.summary()));
 }
 
 // A project saved before the first edit has a base mesh and no frames. Under the

@@ -49,9 +49,10 @@ TrimSettings trioSettings()
     return s;
 }
 
-const QStringList kTrioView = {"render", "demo:csg-trio", "--rule", "positive-index", "--clip", "0,0,-1,0.2",
-                               "--clip", "0,-1,0,0.5", "--cap", "--csg", "0 | 1 - 2", "--object-rule",
-                               "0=alternating-border", "--highlight", "collisions", "--size", "160x120"};
+const QStringList kTrioView = {
+    "render",     "demo:csg-trio", "--rule", "positive-index", "--clip",        "0,0,-1,0.2",           "--clip",
+    "0,-1,0,0.5", "--cap",         "--csg",  "0 | 1 - 2",      "--object-rule", "0=alternating-border", "--highlight",
+    "collisions", "--size",        "160x120"};
 
 ReferenceResult trioReference(Camera* cameraOut = nullptr)
 {
@@ -89,17 +90,20 @@ void TestInspectCli::badArgumentsExitWithTwo_data()
     QTest::newRow("cap without clip") << base + QStringList{"--cap"} << "--cap needs at least one --clip";
     QStringList seven = base;
     for (int i = 0; i < 7; ++i)
-        seven << "--clip" << "1,0,0,0";
+        seven << "--clip"
+              << "1,0,0,0";
     QTest::newRow("seven planes") << seven << "at most 6 clipping planes";
     QTest::newRow("bad second plane") << base + QStringList{"--clip", "1,0,0,0", "--clip", "0,0,0,1"}
                                       << "--clip: plane 2";
     QTest::newRow("bad csg") << base + QStringList{"--csg", "0 | | 1"} << "--csg '0 | | 1': at character 5";
     QTest::newRow("csg id out of range") << base + QStringList{"--csg", "0 - 9"} << "object id 9 is out of range";
-    QTest::newRow("csg object missing") << QStringList{"render", "demo:sphere", "--csg", "0 & 1", "-o", "x.png",
-                                                       "--backend", "reference"}
+    QTest::newRow("csg object missing") << QStringList{"render", "demo:sphere", "--csg",     "0 & 1",
+                                                       "-o",     "x.png",       "--backend", "reference"}
                                         << "--csg refers to object 1, but the scene has 1 object(s)";
-    QTest::newRow("bad object rule") << base + QStringList{"--object-rule", "1:parity"} << "--object-rule must look like";
-    QTest::newRow("unknown object rule") << base + QStringList{"--object-rule", "1=winding"} << "unknown rule 'winding'";
+    QTest::newRow("bad object rule") << base + QStringList{"--object-rule", "1:parity"}
+                                     << "--object-rule must look like";
+    QTest::newRow("unknown object rule") << base + QStringList{"--object-rule", "1=winding"}
+                                         << "unknown rule 'winding'";
     QTest::newRow("bad highlight") << base + QStringList{"--highlight", "collisions,ghosts"}
                                    << "unknown --highlight 'ghosts'";
     QTest::newRow("csg without a rule") << base + QStringList{"--rule", "none", "--csg", "0 | 1"}
@@ -108,14 +112,15 @@ void TestInspectCli::badArgumentsExitWithTwo_data()
                                      << "unknown --cap-pattern 'dots'";
     QTest::newRow("bad transparency") << base + QStringList{"--transparency", "glass"}
                                       << "unknown --transparency 'glass'";
-    QTest::newRow("alpha without transparency") << base + QStringList{"--ghost-alpha", "0.5"}
-                                                << "--ghost-alpha needs --transparency";
+    QTest::newRow("alpha without transparency")
+        << base + QStringList{"--ghost-alpha", "0.5"} << "--ghost-alpha needs --transparency";
     QTest::newRow("alpha out of range") << base + QStringList{"--transparency", "opaque", "--layer-alpha", "1.5"}
                                         << "--layer-alpha must be a number from 0 to 1";
     QTest::newRow("negative density") << base + QStringList{"--transparency", "translucent", "--density", "-1"}
                                       << "--density must be a number from 0";
-    QTest::newRow("transparency with two-pass") << base + QStringList{"--transparency", "opaque", "--method", "two-pass"}
-                                                << "--method two-pass cannot render --transparency";
+    QTest::newRow("transparency with two-pass")
+        << base + QStringList{"--transparency", "opaque", "--method", "two-pass"}
+        << "--method two-pass cannot render --transparency";
     QTest::newRow("csg with a peeling method") << base + QStringList{"--csg", "0 | 1", "--method", "peeling-dual"}
                                                << "--method peeling-dual cannot render --csg";
 }
@@ -142,16 +147,16 @@ void TestInspectCli::referenceBackendWritesCapsAndCsg()
     Camera camera;
     const ReferenceResult reference = trioReference(&camera);
     const TrimImage fromFile = decodeIdsPng(QImage(ids));
-    const FloatImage distances = readPfm(depth.toStdString());
+    const io::FloatImage distances = io::readPfm(depth.toStdString());
     int idMismatches = 0, depthMismatches = 0, caps = 0;
     for (int y = 0; y < kHeight; ++y) {
         for (int x = 0; x < kWidth; ++x) {
             const TrimPixel& r = reference.trim.at(x, y);
             idMismatches += fromFile.at(x, y).primitiveId == r.primitiveId ? 0 : 1;
             const float d = distances.values[std::size_t(y) * kWidth + x];
-            const double expected = r.covered() ? double(r.viewDepth) *
-                                                      glm::length(pixelRay(camera, kWidth, kHeight, x, y).direction)
-                                                : INFINITY;
+            const double expected =
+                r.covered() ? double(r.viewDepth) * glm::length(pixelRay(camera, kWidth, kHeight, x, y).direction)
+                            : INFINITY;
             depthMismatches += (r.covered() ? std::abs(d - expected) <= 1e-5 * expected : std::isinf(d)) ? 0 : 1;
             caps += r.isCap() ? 1 : 0;
         }
@@ -170,8 +175,9 @@ void TestInspectCli::gpuBackendAgreesWithReference()
     for (const char* method : {"abuffer-linked-list", "kplus-array"}) {
         const QString ids = m_dir.filePath(QStringLiteral("%1-ids.png").arg(method));
         const QString depth = m_dir.filePath(QStringLiteral("%1.pfm").arg(method));
-        const Run run = runTrimlab(kTrioView + QStringList{"--method", method, "--k", "32", "--ids", ids, "--depth",
-                                                           depth, "-o", m_dir.filePath(QStringLiteral("%1.png").arg(method))});
+        const Run run =
+            runTrimlab(kTrioView + QStringList{"--method", method, "--k", "32", "--ids", ids, "--depth", depth, "-o",
+                                               m_dir.filePath(QStringLiteral("%1.png").arg(method))});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         QVERIFY2(run.out.contains("0 overflowed pixels") && run.out.contains("cap pixels"), qPrintable(run.out));
         // The shown surfaces, by their ids (a cap has none: it is empty in the ids image).
@@ -183,7 +189,7 @@ void TestInspectCli::gpuBackendAgreesWithReference()
                  qPrintable(comparison.summary()));
         // The caps, by the depth image: where the reference shows a cap, the file holds the
         // distance to the clipping plane (float rounding: 1e-4 relative) and no ids.
-        const FloatImage distances = readPfm(depth.toStdString());
+        const io::FloatImage distances = io::readPfm(depth.toStdString());
         const TrimImage fromIds = decodeIdsPng(QImage(ids));
         int caps = 0, capsAgreeing = 0;
         for (int y = 0; y < kHeight; ++y) {
@@ -209,8 +215,13 @@ void TestInspectCli::gpuBackendAgreesWithReference()
 // pixels whose ray hits anything (tests/render/tst_transparency_methods.cpp says why).
 void TestInspectCli::transparencyColorsAgreeWithReference()
 {
-    const QStringList view = {"render", "demo:pushed-sphere", "--transparency", "translucent", "--layer-alpha", "0.3",
-                              "--ghost-alpha", "0.2", "--density", "0.8", "--fresnel", "2", "--size", "160x120"};
+    const QStringList view = {"render",         "demo:pushed-sphere",
+                              "--transparency", "translucent",
+                              "--layer-alpha",  "0.3",
+                              "--ghost-alpha",  "0.2",
+                              "--density",      "0.8",
+                              "--fresnel",      "2",
+                              "--size",         "160x120"};
     const Scene scene = loadScene("demo:pushed-sphere").scene;
     TrimSettings settings;
     settings.transparency = {true, TrimDisplay::Translucent, 0.3, 0.2, 0.8, 2.0};
@@ -282,13 +293,13 @@ void TestInspectCli::severalSourcesBadIds_data()
     const QStringList two = {"render", "demo:sphere", "demo:pushed-sphere", "--backend", "reference", "-o", "x.png"};
     QTest::newRow("transform of a missing object") << two + QStringList{"--object-transform", "2=1,0,0"}
                                                    << "--object-transform names object 2, but the scene has 2";
-    QTest::newRow("rule of a missing object") << two + QStringList{"--object-rule", "3=parity"}
-                                              << "--object-rule refers to object 3";
+    QTest::newRow("rule of a missing object")
+        << two + QStringList{"--object-rule", "3=parity"} << "--object-rule refers to object 3";
     QTest::newRow("csg of a missing object") << two + QStringList{"--csg", "0 - 2"} << "--csg refers to object 2";
-    QTest::newRow("transform needs 3, 6 or 7 numbers") << two + QStringList{"--object-transform", "1=1,2"}
-                                                       << "3, 6 or 7 numbers";
-    QTest::newRow("transform with a zero scale") << two + QStringList{"--object-transform", "1=0,0,0,0,0,0,0"}
-                                                 << "the scale must be positive";
+    QTest::newRow("transform needs 3, 6 or 7 numbers")
+        << two + QStringList{"--object-transform", "1=1,2"} << "3, 6 or 7 numbers";
+    QTest::newRow("transform with a zero scale")
+        << two + QStringList{"--object-transform", "1=0,0,0,0,0,0,0"} << "the scale must be positive";
     QTest::newRow("project among several sources")
         << QStringList{"render", "demo:sphere", "a.trimlab", "-o", "x.png"} << "take exactly one source";
 }

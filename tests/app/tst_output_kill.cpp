@@ -54,7 +54,7 @@ QString problemOf(const Output& output)
         return QImage::fromData(bytes, "PNG").isNull() ? QStringLiteral("not a whole PNG") : QString();
     case Kind::Pfm:
         try {
-            (void)trimlab::readPfm(output.path.toStdString());
+            (void)trimlab::io::readPfm(output.path.toStdString());
         } catch (const std::exception& e) {
             return QString::fromUtf8(e.what());
         }
@@ -62,7 +62,8 @@ QString problemOf(const Output& output)
     case Kind::Json: {
         QJsonParseError error;
         (void)QJsonDocument::fromJson(bytes, &error);
-        return error.error == QJsonParseError::NoError ? QString() : QStringLiteral("not whole JSON: ") + error.errorString();
+        return error.error == QJsonParseError::NoError ? QString()
+                                                       : QStringLiteral("not whole JSON: ") + error.errorString();
     }
     case Kind::Csv: {
         // Every row has the header's number of fields, and the file ends with a line break.
@@ -80,8 +81,9 @@ QString problemOf(const Output& output)
             return QStringLiteral("no GLB header");
         quint32 length = 0;
         std::memcpy(&length, bytes.constData() + 8, 4);
-        return length == quint32(bytes.size()) ? QString()
-                                               : QStringLiteral("GLB declares %1 bytes, file has %2").arg(length).arg(bytes.size());
+        return length == quint32(bytes.size())
+                   ? QString()
+                   : QStringLiteral("GLB declares %1 bytes, file has %2").arg(length).arg(bytes.size());
     }
     }
     return {};
@@ -119,21 +121,29 @@ void TestOutputKill::killedVerbsLeaveWholeOutputs_data()
     QTest::addColumn<QList<int>>("kinds");
     const QString d = m_dir.path() + QLatin1Char('/');
     QTest::newRow("render -o --depth --ids")
-        << QStringList{"render", "demo:pushed-sphere", "--size", "480x360", "-o", d + "r.png", "--depth", d + "r.pfm",
-                       "--ids", d + "r-ids.png"}
-        << QStringList{d + "r.png", d + "r.pfm", d + "r-ids.png"} << QList<int>{int(Kind::Png), int(Kind::Pfm), int(Kind::Png)};
-    QTest::newRow("segment -o .json") << QStringList{"segment", animation("bar"), "--clusters", "2", "--h", "0.2", "-o", d + "s.json"}
+        << QStringList{"render",  "demo:pushed-sphere", "--size", "480x360",      "-o", d + "r.png",
+                       "--depth", d + "r.pfm",          "--ids",  d + "r-ids.png"}
+        << QStringList{d + "r.png", d + "r.pfm", d + "r-ids.png"}
+        << QList<int>{int(Kind::Png), int(Kind::Pfm), int(Kind::Png)};
+    QTest::newRow("segment -o .json") << QStringList{"segment", animation("bar"), "--clusters", "2", "--h", "0.2",
+                                                     "-o",      d + "s.json"}
                                       << QStringList{d + "s.json"} << QList<int>{int(Kind::Json)};
-    QTest::newRow("segment -o .csv") << QStringList{"segment", animation("bar"), "--clusters", "2", "--h", "0.2", "-o", d + "s.csv"}
+    QTest::newRow("segment -o .csv") << QStringList{"segment", animation("bar"), "--clusters", "2", "--h", "0.2",
+                                                    "-o",      d + "s.csv"}
                                      << QStringList{d + "s.csv"} << QList<int>{int(Kind::Csv)};
-    QTest::newRow("segment -o .gltf") << QStringList{"segment", animation("bar"), "--clusters", "2", "--h", "0.2", "-o", d + "s.gltf"}
+    QTest::newRow("segment -o .gltf") << QStringList{"segment", animation("bar"), "--clusters", "2", "--h", "0.2",
+                                                     "-o",      d + "s.gltf"}
                                       << QStringList{d + "s.gltf"} << QList<int>{int(Kind::Json)};
-    QTest::newRow("skin -o .glb") << QStringList{"skin", animation("bar"), "--bones", "2", "--method", "dqs", "-o", d + "k.glb"}
+    QTest::newRow("skin -o .glb") << QStringList{"skin", animation("bar"), "--bones", "2", "--method", "dqs",
+                                                 "-o",   d + "k.glb"}
                                   << QStringList{d + "k.glb"} << QList<int>{int(Kind::Glb)};
-    QTest::newRow("skeleton -o --json") << QStringList{"skeleton", "demo:sphere", "-o", d + "t.glb", "--json", d + "t.json"}
-                                        << QStringList{d + "t.glb", d + "t.json"} << QList<int>{int(Kind::Glb), int(Kind::Json)};
-    QTest::newRow("bench --json") << QStringList{"bench", "--scenes", "demo:sphere", "--size", "96x64", "--views", "1",
-                                                 "--repeat", "1", "--methods", "kplus-array", "--json", d + "b.json"}
+    QTest::newRow("skeleton -o --json") << QStringList{"skeleton",  "demo:sphere", "-o",
+                                                       d + "t.glb", "--json",      d + "t.json"}
+                                        << QStringList{d + "t.glb", d + "t.json"}
+                                        << QList<int>{int(Kind::Glb), int(Kind::Json)};
+    QTest::newRow("bench --json") << QStringList{"bench",       "--scenes", "demo:sphere", "--size", "96x64",
+                                                 "--views",     "1",        "--repeat",    "1",      "--methods",
+                                                 "kplus-array", "--json",   d + "b.json"}
                                   << QStringList{d + "b.json"} << QList<int>{int(Kind::Json)};
 }
 
@@ -170,17 +180,17 @@ void TestOutputKill::killedVerbsLeaveWholeOutputs()
         QVERIFY(process.waitForFinished(30000));
         for (const Output& output : outputs) {
             const QString problem = problemOf(output);
-            QVERIFY2(problem.isEmpty(),
-                     qPrintable(QStringLiteral("%1 after a kill at %2 ms (of a %3 ms run): %4")
-                                    .arg(output.path)
-                                    .arg(delayMs)
-                                    .arg(runMs)
-                                    .arg(problem)));
+            QVERIFY2(problem.isEmpty(), qPrintable(QStringLiteral("%1 after a kill at %2 ms (of a %3 ms run): %4")
+                                                       .arg(output.path)
+                                                       .arg(delayMs)
+                                                       .arg(runMs)
+                                                       .arg(problem)));
         }
     }
     // Not vacuous: most kills landed while the verb was still running.
     QVERIFY2(killedBeforeTheEnd >= kKillsPerVerb / 2,
-             qPrintable(QStringLiteral("only %1 of %2 kills hit a running verb").arg(killedBeforeTheEnd).arg(kKillsPerVerb)));
+             qPrintable(
+                 QStringLiteral("only %1 of %2 kills hit a running verb").arg(killedBeforeTheEnd).arg(kKillsPerVerb)));
 }
 
 void TestOutputKill::outputPathsAreCheckedFirst_data()

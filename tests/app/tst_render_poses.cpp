@@ -9,7 +9,6 @@
 #include "test_paths.h"
 #include "trim_comparison.h"
 
-
 #include "app/pose_frames.h"
 #include "core/animation/animation_chain.h"
 #include "core/animation/animation_loader.h"
@@ -99,35 +98,40 @@ void TestRenderPoses::badSelectionsFailFast_data()
     QTest::addColumn<QString>("message");
     QTest::addColumn<int>("exitCode"); // 2: the command line; 1: the input
     const QString box = animation("folding_box");
-    QTest::newRow("both") << QStringList{"render", box, "--pose", "1", "--poses", "0:2", "-o", "f_%d.png"}
-                          << "not both" << 2;
+    QTest::newRow("both") << QStringList{"render", box, "--pose", "1", "--poses", "0:2", "-o", "f_%d.png"} << "not both"
+                          << 2;
     QTest::newRow("no number in -o") << QStringList{"render", box, "--poses", "0:2", "-o", "f.png"}
                                      << "f.png' needs the pose number" << 2;
-    QTest::newRow("no number in --ids")
-        << QStringList{"render", box, "--poses", "0:2", "-o", "f_%d.png", "--ids", "ids.png"} << "ids.png' needs the pose number" << 2;
-    QTest::newRow("backwards") << QStringList{"render", box, "--poses", "2:0", "-o", "f_%d.png"} << "runs backwards" << 2;
-    QTest::newRow("not a range") << QStringList{"render", box, "--poses", "0-2", "-o", "f_%d.png"}
-                                 << "not a range A:B" << 2;
+    QTest::newRow("no number in --ids") << QStringList{"render", box,        "--poses", "0:2",
+                                                       "-o",     "f_%d.png", "--ids",   "ids.png"}
+                                        << "ids.png' needs the pose number" << 2;
+    QTest::newRow("backwards") << QStringList{"render", box, "--poses", "2:0", "-o", "f_%d.png"} << "runs backwards"
+                               << 2;
+    QTest::newRow("not a range") << QStringList{"render", box, "--poses", "0-2", "-o", "f_%d.png"} << "not a range A:B"
+                                 << 2;
     QTest::newRow("negative") << QStringList{"render", box, "--pose", "-1", "-o", "f.png"} << "not a pose number" << 2;
     QTest::newRow("two sources") << QStringList{"render", box, box, "--pose", "0", "-o", "f.png"}
                                  << "one mesh animation source" << 2;
     QTest::newRow("csg") << QStringList{"render", box, "--pose", "0", "--csg", "0 - 1", "-o", "f.png"}
                          << "an animation is one object" << 2;
-    QTest::newRow("pose beyond the last") << QStringList{"render", box, "--pose", "3", "-o", "f.png", "--backend",
-                                                         "reference"}
-                                          << "has 3 poses (0 to 2); pose 3 does not exist" << 2;
+    QTest::newRow("pose beyond the last")
+        << QStringList{"render", box, "--pose", "3", "-o", "f.png", "--backend", "reference"}
+        << "has 3 poses (0 to 2); pose 3 does not exist" << 2;
     QTest::newRow("sets not after the rest pose")
-        << QStringList{"render", box, "--poses", "0:2", "--sets", "2:confluent", "-o", "f_%d.png", "--backend", "reference"}
+        << QStringList{"render",      box,  "--poses",  "0:2",       "--sets",
+                       "2:confluent", "-o", "f_%d.png", "--backend", "reference"}
         << "the first set must start right after the rest pose 0, at pose 1, not 2" << 2;
     QTest::newRow("sets with a dynamic rule")
-        << QStringList{"render", box, "--poses", "0:2", "--sets", "1:confluent", "--dynamic-rule", "additive", "-o",
-                       "f_%d.png"}
+        << QStringList{"render",         box,        "--poses", "0:2",     "--sets", "1:confluent",
+                       "--dynamic-rule", "additive", "-o",      "f_%d.png"}
         << "leave out --dynamic-rule" << 2;
     QTest::newRow("sets with a bad rule")
         << QStringList{"render", box, "--poses", "0:2", "--sets", "1:union", "-o", "f_%d.png"}
         << "--sets: unknown rule 'union'" << 2;
     QTest::newRow("poses of different sizes")
-        << QStringList{"render", animation("mismatched_vertices/mesh_%04d.obj"), "--pose", "0", "-o", "f.png",
+        << QStringList{"render",    animation("mismatched_vertices/mesh_%04d.obj"),
+                       "--pose",    "0",
+                       "-o",        "f.png",
                        "--backend", "reference"}
         << "mesh_0001.obj" << 1;
 }
@@ -155,9 +159,10 @@ void TestRenderPoses::badSelectionsFailFast()
 void TestRenderPoses::posesAgreeWithTheReference()
 {
     TRIMLAB_SKIP_WITHOUT_GL();
-    const Run run = runTrimlab({"render", animation("folding_box"), "--poses", "0:1", "--rule", "alternating-border",
-                                "--method", "abuffer-linked-list", "--size", QStringLiteral("%1x%2").arg(kWidth).arg(kHeight),
-                                "--ids", m_dir.filePath("ids_%d.png"), "-o", m_dir.filePath("frame_%03d.png")});
+    const Run run =
+        runTrimlab({"render", animation("folding_box"), "--poses", "0:1", "--rule", "alternating-border", "--method",
+                    "abuffer-linked-list", "--size", QStringLiteral("%1x%2").arg(kWidth).arg(kHeight), "--ids",
+                    m_dir.filePath("ids_%d.png"), "-o", m_dir.filePath("frame_%03d.png")});
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
     QVERIFY2(run.out.contains("folding_box, pose 1 of 2") && run.out.contains("frame_001.png"), qPrintable(run.out));
     QVERIFY(!QFileInfo::exists(m_dir.filePath("frame_002.png")));
@@ -195,8 +200,8 @@ void TestRenderPoses::posesAgreeWithTheReference()
 void TestRenderPoses::onePoseOnTheReferenceBackend()
 {
     const QString out = m_dir.filePath("one.png");
-    const Run run = runTrimlab({"render", animation("bar"), "--pose", "1", "--backend", "reference", "--size", "64x48",
-                                "-o", out});
+    const Run run =
+        runTrimlab({"render", animation("bar"), "--pose", "1", "--backend", "reference", "--size", "64x48", "-o", out});
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
     QVERIFY2(run.out.contains("bar, pose 1 of") && run.out.contains("reference ray caster"), qPrintable(run.out));
     QVERIFY(!QImage(out).isNull());
@@ -206,9 +211,12 @@ void TestRenderPoses::dynamicRulesOverTheAnimation_data()
 {
     QTest::addColumn<QString>("rule");
     QTest::addColumn<QString>("reference");
-    QTest::newRow("additive, rest") << "additive" << "rest";
-    QTest::newRow("confluent, previous") << "confluent" << "previous";
-    QTest::newRow("subtractive, previous") << "subtractive" << "previous";
+    QTest::newRow("additive, rest") << "additive"
+                                    << "rest";
+    QTest::newRow("confluent, previous") << "confluent"
+                                         << "previous";
+    QTest::newRow("subtractive, previous") << "subtractive"
+                                           << "previous";
 }
 
 // Two balls of one mesh that move into each other over three poses (apart, touching
@@ -228,24 +236,42 @@ void TestRenderPoses::dynamicRulesOverTheAnimation()
         QVERIFY(test::writeMeetingBalls(folder));
     const QString tag = rule + QLatin1Char('-') + reference;
     const QString size = QStringLiteral("%1x%2").arg(kWidth).arg(kHeight);
-    const Run run = runTrimlab({"render", folder, "--poses", "0:2", "--rule", "parity", "--clip", "0,0,-1,0",
-                                "--dynamic-rule", rule,
-                                "--reference", reference, "--method", "abuffer-linked-list", "--size", size, "--ids",
-                                m_dir.filePath(tag + "-ids_%d.png"), "-o", m_dir.filePath(tag + "_%d.png")});
+    const Run run = runTrimlab({"render",
+                                folder,
+                                "--poses",
+                                "0:2",
+                                "--rule",
+                                "parity",
+                                "--clip",
+                                "0,0,-1,0",
+                                "--dynamic-rule",
+                                rule,
+                                "--reference",
+                                reference,
+                                "--method",
+                                "abuffer-linked-list",
+                                "--size",
+                                size,
+                                "--ids",
+                                m_dir.filePath(tag + "-ids_%d.png"),
+                                "-o",
+                                m_dir.filePath(tag + "_%d.png")});
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
-    QVERIFY2(run.out.contains(QStringLiteral("%1 against the %2 pose (parity on the rest pose 0)").arg(rule, reference)),
-             qPrintable(run.out));
+    QVERIFY2(
+        run.out.contains(QStringLiteral("%1 against the %2 pose (parity on the rest pose 0)").arg(rule, reference)),
+        qPrintable(run.out));
     // Against the previous pose, pose 2's history is pose 1's plus a set: only that set is
     // characterized (the viewport's timeline carries the classification the same way).
     if (reference == QLatin1String("previous"))
-        QVERIFY2(QRegularExpression(QStringLiteral("pose 2 of 2: .*dynamic rules: 2 sets, [0-9.]+ ms to characterize 1 of them"))
+        QVERIFY2(QRegularExpression(
+                     QStringLiteral("pose 2 of 2: .*dynamic rules: 2 sets, [0-9.]+ ms to characterize 1 of them"))
                      .match(run.out)
                      .hasMatch(),
                  qPrintable(run.out));
     // The same poses under parity alone (the same camera: fitted to the same poses).
-    const Run still = runTrimlab({"render", folder, "--poses", "0:2", "--rule", "parity", "--clip", "0,0,-1,0", "--method",
-                                  "abuffer-linked-list", "--size", size, "--ids", m_dir.filePath("static-ids_%d.png"),
-                                  "-o", m_dir.filePath("static_%d.png")});
+    const Run still = runTrimlab({"render", folder, "--poses", "0:2", "--rule", "parity", "--clip", "0,0,-1,0",
+                                  "--method", "abuffer-linked-list", "--size", size, "--ids",
+                                  m_dir.filePath("static-ids_%d.png"), "-o", m_dir.filePath("static_%d.png")});
     QVERIFY2(still.exitCode == 0, qPrintable(still.err));
 
     const MeshAnimation balls = loadAnimation(folder.toStdString());
@@ -257,7 +283,8 @@ void TestRenderPoses::dynamicRulesOverTheAnimation()
                                        .value();
         QCOMPARE(chain.levels.size(), reference == QLatin1String("rest") ? std::size_t(1) : pose);
         const ReferenceResult expected = DynamicReferenceRenderer(chain).render(camera, kWidth, kHeight, settings);
-        const TrimImage fromFile = test::decodeIdsPng(QImage(m_dir.filePath(tag + QStringLiteral("-ids_%1.png").arg(pose))));
+        const TrimImage fromFile =
+            test::decodeIdsPng(QImage(m_dir.filePath(tag + QStringLiteral("-ids_%1.png").arg(pose))));
         const test::TrimComparison comparison = test::compareTrimImages(
             fromFile, test::idsOnly(withMeshIds(expected.trim, chain.levels.back().frame)), expected.diagnostics);
         qInfo("pose %zu: %s", pose, qPrintable(comparison.summary()));
@@ -294,10 +321,11 @@ void TestRenderPoses::poseSetsOverTheAnimation()
     QVERIFY2(run.out.contains(QStringLiteral("subtractive against pose 1 (set 2 of 2 in 1:additive,2:subtractive; "
                                              "parity on the rest pose 0)")),
              qPrintable(run.out));
-    QVERIFY2(QRegularExpression(QStringLiteral("pose 2 of 2: .*dynamic rules: 2 sets, [0-9.]+ ms to characterize 1 of them"))
-                 .match(run.out)
-                 .hasMatch(),
-             qPrintable(run.out));
+    QVERIFY2(
+        QRegularExpression(QStringLiteral("pose 2 of 2: .*dynamic rules: 2 sets, [0-9.]+ ms to characterize 1 of them"))
+            .match(run.out)
+            .hasMatch(),
+        qPrintable(run.out));
     const MeshAnimation balls = loadAnimation(folder.toStdString());
     const Camera camera = camerasOfAllPoses(balls);
     const TrimSettings settings = parityCutOpen();
@@ -317,9 +345,11 @@ void TestRenderPoses::poseSetsOverTheAnimation()
     }
     // The second set's rule shows: not the picture of the additive rule over both poses.
     const DynamicChain additive =
-        animationChain(balls, 2, PoseReference::Previous, DynamicRule::ConstructiveAdditive, StaticRule::Parity).value();
-    const TrimImage additiveIds = withMeshIds(
-        DynamicReferenceRenderer(additive).render(camera, kWidth, kHeight, settings).trim, additive.levels.back().frame);
+        animationChain(balls, 2, PoseReference::Previous, DynamicRule::ConstructiveAdditive, StaticRule::Parity)
+            .value();
+    const TrimImage additiveIds =
+        withMeshIds(DynamicReferenceRenderer(additive).render(camera, kWidth, kHeight, settings).trim,
+                    additive.levels.back().frame);
     const TrimImage setsIds = test::decodeIdsPng(QImage(m_dir.filePath("sets-ids_2.png")));
     int differing = 0;
     for (std::size_t p = 0; p < setsIds.pixels.size(); ++p)

@@ -50,7 +50,8 @@ void writeObj(const TriangleMesh& mesh, const QString& path, std::size_t dropTri
     for (const glm::vec3& p : mesh.positions)
         out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
     for (std::size_t f = dropTriangles; f < mesh.triangleCount(); ++f)
-        out << "f " << mesh.triangles[f].x + 1 << ' ' << mesh.triangles[f].y + 1 << ' ' << mesh.triangles[f].z + 1 << '\n';
+        out << "f " << mesh.triangles[f].x + 1 << ' ' << mesh.triangles[f].y + 1 << ' ' << mesh.triangles[f].z + 1
+            << '\n';
 }
 
 } // namespace
@@ -143,7 +144,8 @@ void TestSkeletonVerb::writesValidGlbAndJson()
     QCOMPARE(document.rig.bones.size() + 1, document.rig.joints.size());
     QCOMPARE(document.rig.vertexJoint.size(), capsule().vertexCount());
     QVERIFY(document.curve.has_value());
-    QVERIFY2(run.out.contains(QStringLiteral("skeleton: %1 joints").arg(document.rig.joints.size())), qPrintable(run.out));
+    QVERIFY2(run.out.contains(QStringLiteral("skeleton: %1 joints").arg(document.rig.joints.size())),
+             qPrintable(run.out));
 }
 
 void TestSkeletonVerb::loopSubdivisionRaisesTheVertexCount()

@@ -75,15 +75,16 @@ void TestSkinVerb::badArgumentsExitWithTwo_data()
     QTest::newRow("no animation") << (QStringList{"skin", "--bones", "2", "--method", "lbs"} + tail)
                                   << "exactly one animation";
     QTest::newRow("no bones") << (QStringList{"skin", bar, "--method", "lbs"} + tail) << "skin needs --bones B";
-    QTest::newRow("chain of the rigid fit") << (QStringList{"skin", bar, "--bones", "2", "--chain", "pose-to-pose"} + tail)
-                                            << "--chain applies to --method lbs or dqs";
+    QTest::newRow("chain of the rigid fit")
+        << (QStringList{"skin", bar, "--bones", "2", "--chain", "pose-to-pose"} + tail)
+        << "--chain applies to --method lbs or dqs";
     QTest::newRow("zero bones") << (QStringList{"skin", bar, "--bones", "0", "--method", "lbs"} + tail)
                                 << "--bones must be an integer from 1 to 65535";
     QTest::newRow("text bones") << (QStringList{"skin", bar, "--bones", "many", "--method", "lbs"} + tail)
                                 << "--bones must be an integer";
     // Output paths are checked before any work (app/output_paths.h): exit 2, not 1.
-    QTest::newRow("unwritable output") << QStringList{"skin", bar, "--bones", "2", "--method", "dqs", "-o",
-                                                      "/nonexistent/x.glb"}
+    QTest::newRow("unwritable output") << QStringList{"skin",     bar,   "--bones", "2",
+                                                      "--method", "dqs", "-o",      "/nonexistent/x.glb"}
                                        << "-o /nonexistent/x.glb: the folder /nonexistent does not exist";
     QTest::newRow("too many influences") << (QStringList{"skin", bar, "--bones", "2", "--influences", "9"} + tail)
                                          << "--influences";
@@ -94,20 +95,22 @@ void TestSkinVerb::badArgumentsExitWithTwo_data()
                                 << "unknown --method 'sad' (use rigid, lbs or dqs)";
     QTest::newRow("bad chain") << (QStringList{"skin", bar, "--bones", "2", "--method", "lbs", "--chain", "x"} + tail)
                                << "unknown --chain 'x'";
-    QTest::newRow("bad corrections") << (QStringList{"skin", bar, "--bones", "2", "--method", "lbs", "--corrections",
-                                                     "v,x"} + tail)
-                                     << "unknown --corrections 'v,x'";
+    QTest::newRow("bad corrections")
+        << (QStringList{"skin", bar, "--bones", "2", "--method", "lbs", "--corrections", "v,x"} + tail)
+        << "unknown --corrections 'v,x'";
     QTest::newRow("bad fps") << (QStringList{"skin", bar, "--bones", "2", "--method", "lbs", "--fps", "0"} + tail)
                              << "--fps must be a number";
-    QTest::newRow("bad export") << (QStringList{"skin", bar, "--bones", "2", "--method", "lbs", "--export", "fbx"} + tail)
+    QTest::newRow("bad export") << (QStringList{"skin", bar, "--bones", "2", "--method", "lbs", "--export", "fbx"} +
+                                    tail)
                                 << "unknown --export 'fbx'";
-    QTest::newRow("bad interpolation") << (QStringList{"skin", bar, "--bones", "2", "--method", "lbs",
-                                                       "--interpolation", "cubic"} + tail)
-                                       << "unknown --interpolation";
+    QTest::newRow("bad interpolation")
+        << (QStringList{"skin", bar, "--bones", "2", "--method", "lbs", "--interpolation", "cubic"} + tail)
+        << "unknown --interpolation";
     QTest::newRow("no output") << QStringList{"skin", bar, "--bones", "2", "--method", "lbs"} << "-o out.glb";
     QTest::newRow("bad output") << QStringList{"skin", bar, "--bones", "2", "--method", "lbs", "-o", "x.obj"}
                                 << ".glb or .gltf";
-    QTest::newRow("unknown option") << (QStringList{"skin", bar, "--bones", "2", "--method", "lbs", "--frobnicate"} + tail)
+    QTest::newRow("unknown option") << (QStringList{"skin", bar, "--bones", "2", "--method", "lbs", "--frobnicate"} +
+                                        tail)
                                     << "frobnicate";
 }
 
@@ -126,8 +129,8 @@ void TestSkinVerb::badInputsExitWithOne_data()
     QTest::newRow("missing folder") << (QStringList{"skin", "/nonexistent/poses"} + tail) << "/nonexistent/poses";
     QTest::newRow("poses disagree (faces)") << (QStringList{"skin", animation("mismatched_faces")} + tail)
                                             << "mesh_0002.obj: face 5 is (2, 8, 9) but the first pose has (2, 8, 7)";
-    QTest::newRow("poses disagree (vertices)") << (QStringList{"skin", animation("mismatched_vertices")} + tail)
-                                               << "mesh_0001.obj: has 11 vertices";
+    QTest::newRow("poses disagree (vertices)")
+        << (QStringList{"skin", animation("mismatched_vertices")} + tail) << "mesh_0001.obj: has 11 vertices";
     QTest::newRow("broken pose") << (QStringList{"skin", animation("broken_pose")} + tail) << "mesh_0001.obj:9:";
     QTest::newRow("more bones than vertices")
         << QStringList{"skin", animation("bar"), "--bones", "11", "--method", "lbs", "-o", m_dir.filePath("b.glb")}
@@ -146,13 +149,13 @@ void TestSkinVerb::writesValidRigidGlb()
 {
     const QString out = m_dir.filePath("box.glb");
     const QString source = animation("folding_box");
-    const Run run = runTrimlab({"skin", source, "--bones", "2", "--method", "dqs", "--corrections", "v,w", "--threads",
-                                "2", "-o", out});
+    const Run run = runTrimlab(
+        {"skin", source, "--bones", "2", "--method", "dqs", "--corrections", "v,w", "--threads", "2", "-o", out});
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
-    for (const char* line : {"3 poses, ", " vertices, ", "bones: 2 ", "method: DQS, pose-to-pose; corrections: v (",
-                             ", w (", "E_RMS fit: ", "E_RMS/diagonal ", "E_RMS exported: ", "rigid transforms, 2 joints",
-                             "times (ms): load ", "segmentation ", "weights ", "fit ", "corrections ", "export ",
-                             "wrote "})
+    for (const char* line :
+         {"3 poses, ", " vertices, ", "bones: 2 ", "method: DQS, pose-to-pose; corrections: v (", ", w (",
+          "E_RMS fit: ", "E_RMS/diagonal ", "E_RMS exported: ", "rigid transforms, 2 joints", "times (ms): load ",
+          "segmentation ", "weights ", "fit ", "corrections ", "export ", "wrote "})
         QVERIFY2(run.out.contains(QString::fromLatin1(line)), qPrintable(QString(line) + " missing in\n" + run.out));
     QFile file(out);
     QVERIFY(file.open(QIODevice::ReadOnly));
@@ -165,8 +168,8 @@ void TestSkinVerb::writesMorphTargets()
 {
     const QString out = m_dir.filePath("box.gltf");
     const QString source = animation("folding_box");
-    const Run run = runTrimlab({"skin", source, "--bones", "3", "--method", "lbs", "--chain", "rest-to-pose", "--export",
-                                "morph", "--fps", "12", "-o", out});
+    const Run run = runTrimlab({"skin", source, "--bones", "3", "--method", "lbs", "--chain", "rest-to-pose",
+                                "--export", "morph", "--fps", "12", "-o", out});
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
     QVERIFY2(run.out.contains("method: LBS, rest-to-pose; corrections: none") && run.out.contains("morph targets"),
              qPrintable(run.out));
@@ -180,7 +183,8 @@ void TestSkinVerb::skinsGltfAnimation()
 {
     const QString out = m_dir.filePath("bar.glb");
     const QString source = animation("skinned_bar.gltf");
-    const Run run = runTrimlab({"skin", source, "--bones", "2", "--method", "lbs", "--interpolation", "step", "-o", out});
+    const Run run =
+        runTrimlab({"skin", source, "--bones", "2", "--method", "lbs", "--interpolation", "step", "-o", out});
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
     QVERIFY2(run.out.contains("bones: 2 ") && run.out.contains("rigid approximation of an affine fit"),
              qPrintable(run.out));
@@ -198,27 +202,30 @@ void TestSkinVerb::defaultsNeedOnlyTheBoneCount()
     const QString out = m_dir.filePath("default.glb");
     const Run run = runTrimlab({"skin", source, "--bones", "2", "-o", out});
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
-    for (const char* line : {"method: rigid joints blended linearly (the glTF skin), rest-to-pose; corrections: v (kept), "
-                             "w (kept); ", " iterations", "rigid transforms, 2 joints", "RMSE exported: ",
-                             "segment sizes (vertices): smallest "})
+    for (const char* line :
+         {"method: rigid joints blended linearly (the glTF skin), rest-to-pose; corrections: v (kept), "
+          "w (kept); ",
+          " iterations", "rigid transforms, 2 joints", "RMSE exported: ", "segment sizes (vertices): smallest "})
         QVERIFY2(run.out.contains(QString::fromLatin1(line)), qPrintable(QString(line) + " missing in\n" + run.out));
     test::requireValidGltf(out.toStdString());
     requireExportedErrorMatchesFile(source, out, run.out);
     const double exported = printedNumber(run.out, "E_RMS exported:");
     QVERIFY(exported <= printedNumber(run.out, "E_RMS fit:") + 1e-3);
-    for (const QStringList& other : {QStringList{"--method", "lbs"},
-                                     QStringList{"--method", "dqs", "--chain", "rest-to-pose", "--corrections", "v,w"}}) {
-        const Run before = runTrimlab(QStringList{"skin", source, "--bones", "2", "-o", m_dir.filePath("other.glb")} + other);
+    for (const QStringList& other :
+         {QStringList{"--method", "lbs"},
+          QStringList{"--method", "dqs", "--chain", "rest-to-pose", "--corrections", "v,w"}}) {
+        const Run before =
+            runTrimlab(QStringList{"skin", source, "--bones", "2", "-o", m_dir.filePath("other.glb")} + other);
         QVERIFY2(before.exitCode == 0, qPrintable(before.err));
         QVERIFY2(exported <= printedNumber(before.out, "E_RMS exported:") + 1e-4,
                  qPrintable(other.join(' ') + ": " + before.out + "\ndefault: " + run.out));
     }
 }
 
-// Issue 21's anchor: Electronic Arts' Dem Bones on its own sample (754 vertices, 400
-// frames) prints RMSE 0.026754 at 5 bones with its defaults (8 weights per vertex; the
-// upstream log, ../shared/data/SOURCES.md 1.7). The default export, measured from the
-// written file loaded back by the glTF importer, must not be worse.
+// The anchor of the skinning fit: Electronic Arts' Dem Bones on its own sample (754
+// vertices, 400 frames) prints RMSE 0.026754 at 5 bones with its defaults (8 weights per
+// vertex; the upstream log, ../shared/data/SOURCES.md 1.7). The default export, measured
+// from the written file loaded back by the glTF importer, must not be worse.
 void TestSkinVerb::defaultsBeatDemBonesOnItsSample()
 {
     const std::filesystem::path frames = test::sharedDataPath("anim/dem-bones/frames");
@@ -232,7 +239,8 @@ void TestSkinVerb::defaultsBeatDemBonesOnItsSample()
     const MeshAnimation written = loadAnimation(out.toStdString());
     const SkinningError error = measureSkinningError(animationPositions(original), animationPositions(written));
     constexpr double demBonesRmse = 0.026754;
-    QVERIFY2(error.rmse <= demBonesRmse, qPrintable(QString("RMSE %1 > Dem Bones' %2").arg(error.rmse).arg(demBonesRmse)));
+    QVERIFY2(error.rmse <= demBonesRmse,
+             qPrintable(QString("RMSE %1 > Dem Bones' %2").arg(error.rmse).arg(demBonesRmse)));
     QVERIFY(std::abs(printedNumber(run.out, "RMSE exported:") - error.rmse) <= 1e-3 * error.rmse);
 }
 
@@ -240,7 +248,8 @@ void TestSkinVerb::helpExitsWithZero()
 {
     const Run run = runTrimlab({"skin", "--help"});
     QCOMPARE(run.exitCode, 0);
-    QVERIFY2(run.out.contains("Usage: trimlab skin") && run.out.contains("--bones") && run.out.contains("--corrections"),
+    QVERIFY2(run.out.contains("Usage: trimlab skin") && run.out.contains("--bones") &&
+                 run.out.contains("--corrections"),
              qPrintable(run.out));
 }
 

@@ -5,7 +5,7 @@ library only, deterministic). Rerun after changing it and commit its output:
     python3 tests/data/make_animation_files.py
 
 Every file is a .gltf with one embedded (base64 data URI) buffer. The motions are chosen
-so that the sampled poses can be written down by hand (tests/core/tst_animation_gltf.cpp).
+so that the sampled poses can be written down by hand (tests/core/animation/tst_animation_gltf.cpp).
 """
 import base64
 import json

@@ -1,15 +1,15 @@
-// Issue 19's acceptance, measured: every pose of mesh animations rendered on the GPU under
-// a static rule and under two dynamic rules against the previous pose, on every method
-// that runs the dynamic rules (the buffer methods), each frame compared with the exact CPU
-// reference by the render tests' criteria (method_check.h: >= 99.9 % of compared pixels,
-// <= 5 % excluded, bounded methods compared where they report no overflow). The dynamic
-// frames are played as the Timeline plays them, one set appended per pose
-// (DynamicTrimRenderer::appendLevel); their reference carries each pixel's
-// characterization from pose to pose the same way (core/trim/dynamic_reference_sequence.h),
-// which equals DynamicReferenceRenderer over the pose's whole chain (core.dynamic_rules).
-// One camera fitted to all poses; a clip plane through each pose's centre, facing the
-// camera, so that the interiors the rules decide are seen. Not a test: prints a table, exits 1 when
-// a frame fails the criteria.
+// The agreement of the animation rules with the reference, measured: every pose of mesh
+// animations rendered on the GPU under a static rule and under two dynamic rules against
+// the previous pose, on every method that runs the dynamic rules (the buffer methods), each
+// frame compared with the exact CPU reference by the render tests' criteria
+// (method_check.h: >= 99.9 % of compared pixels, <= 5 % excluded, bounded methods compared
+// where they report no overflow). The dynamic frames are played as the Timeline plays them,
+// one set appended per pose (DynamicTrimRenderer::appendLevel); their reference carries
+// each pixel's characterization from pose to pose the same way
+// (core/trim/dynamic_reference_sequence.h), which equals DynamicReferenceRenderer over the
+// pose's whole chain (core.dynamic_rules). One camera fitted to all poses; a clip plane
+// through each pose's centre, facing the camera, so that the interiors the rules decide are
+// seen. Not a test: prints a table, exits 1 when a frame fails the criteria.
 //
 //   xvfb-run -a build/tests/render/bench_animation_agreement [--size WxH] [--step N] [ANIMATION...]
 //   (default: ../shared/data/anim/samba and ../shared/data/anim/horse-gallop, closed by fans;
@@ -119,7 +119,8 @@ long comparedOf(const QString& summary)
 double agreementOf(const QString& summary)
 {
     const qsizetype at = summary.indexOf(QStringLiteral("agreement "));
-    return at < 0 ? 0.0 : summary.mid(at + 10, summary.indexOf(QLatin1Char('%'), at) - at - 10).trimmed().toDouble() / 100.0;
+    return at < 0 ? 0.0
+                  : summary.mid(at + 10, summary.indexOf(QLatin1Char('%'), at) - at - 10).trimmed().toDouble() / 100.0;
 }
 
 void record(MethodRun& run, const test::MethodCase& testCase, const ReferenceResult& reference, double ms,
@@ -166,7 +167,8 @@ bool measureAnimation(const std::string& source, const Options& options, QOpenGL
         std::vector<MethodRun> runs;
         for (const render::MethodInfo& info : render::fragmentMethods())
             if (info.dynamicRules) {
-                MethodRun run{info.kind, std::string(info.id), std::make_unique<render::TrimRenderer>(context), nullptr};
+                MethodRun run{info.kind, std::string(info.id), std::make_unique<render::TrimRenderer>(context),
+                              nullptr};
                 run.renderer->setMethod(info.kind);
                 run.renderer->setParameters(parameters);
                 if (mode.rule)
@@ -179,12 +181,16 @@ bool measureAnimation(const std::string& source, const Options& options, QOpenGL
         std::size_t previous = animation.restPose;
         for (std::size_t pose = animation.restPose + 1; pose < animation.poseCount(); pose += options.step) {
             settings.clip = centreCut(camera, animation.poses[pose]); // the characterizations ignore it
-            const test::MethodCase testCase{QStringLiteral("%1-%2-pose-%3")
-                                                .arg(QString::fromStdString(name))
-                                                .arg(mode.rule ? QString::fromLatin1(dynamicRuleName(*mode.rule).data())
-                                                               : QStringLiteral("static"))
-                                                .arg(pose),
-                                            camera, settings, parameters, options.width, options.height};
+            const test::MethodCase testCase{
+                QStringLiteral("%1-%2-pose-%3")
+                    .arg(QString::fromStdString(name))
+                    .arg(mode.rule ? QString::fromLatin1(dynamicRuleName(*mode.rule).data()) : QStringLiteral("static"))
+                    .arg(pose),
+                camera,
+                settings,
+                parameters,
+                options.width,
+                options.height};
             referenceClock.start();
             std::optional<DynamicChainLevel> level;
             ReferenceResult reference;
@@ -195,8 +201,8 @@ bool measureAnimation(const std::string& source, const Options& options, QOpenGL
                     *mode.rule};
                 reference = sequence.renderNext(*level, settings);
             } else {
-                reference = ReferenceRenderer(poseScene(animation, pose)).render(camera, options.width, options.height,
-                                                                                  settings);
+                reference = ReferenceRenderer(poseScene(animation, pose))
+                                .render(camera, options.width, options.height, settings);
             }
             referenceMs += double(referenceClock.nsecsElapsed()) * 1e-6;
             for (MethodRun& run : runs) {
@@ -220,8 +226,8 @@ bool measureAnimation(const std::string& source, const Options& options, QOpenGL
             std::printf("%-14s %-28s %-20s %6d %9ld %7d %9.3f %9.3f %7d %7d %9.1f %9.1f\n", name.c_str(),
                         mode.name.c_str(), run.id.c_str(), run.frames, run.compared / std::max(run.frames, 1),
                         run.sparse, 100.0 * run.worst, 100.0 * run.sum / std::max(run.frames, 1), run.failing,
-                        run.overflowed,
-                        run.milliseconds / std::max(run.frames, 1), referenceMs / std::max(run.frames, 1));
+                        run.overflowed, run.milliseconds / std::max(run.frames, 1),
+                        referenceMs / std::max(run.frames, 1));
             allPass = allPass && run.failing == 0;
         }
         std::fflush(stdout);
@@ -257,8 +263,7 @@ int main(int argc, char** argv)
     }
     render::OffscreenGlContext context;
     std::printf("%s; %dx%d, every %zu. pose, k = 32, clip plane through each pose's centre\n",
-                context.capabilities().summary().toUtf8().constData(), options.width,
-                options.height, options.step);
+                context.capabilities().summary().toUtf8().constData(), options.width, options.height, options.step);
     std::printf("%-14s %-28s %-20s %6s %9s %7s %9s %9s %7s %7s %9s %9s\n", "animation", "rule", "method", "poses",
                 "compared", "sparse", "worst %", "mean %", "failing", "overfl.", "gpu ms", "ref ms");
     bool allPass = true;

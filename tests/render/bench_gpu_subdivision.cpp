@@ -64,8 +64,7 @@ struct EditTimes {
 std::uint32_t applyEdit(std::vector<glm::dvec3>& points, int e)
 {
     const std::uint32_t moved = std::uint32_t(e) % std::uint32_t(points.size());
-    points[moved] +=
-        (e / int(points.size())) % 2 == 0 ? glm::dvec3(0.05, 0.08, -0.03) : glm::dvec3(-0.05, -0.08, 0.03);
+    points[moved] += (e / int(points.size())) % 2 == 0 ? glm::dvec3(0.05, 0.08, -0.03) : glm::dvec3(-0.05, -0.08, 0.03);
     return moved;
 }
 

@@ -68,8 +68,8 @@ Agreement viewAgreement(render::TrimRenderer& renderer, const Scene& scene, cons
     renderer.setMethod(render::FragmentMethodKind::ABufferLinkedList);
     Agreement agreement;
     for (int i = 0; i < kViews; ++i) {
-        const Camera camera = fitCamera(scene.worldBounds(), double(kWidth) / kHeight,
-                                        test::fibonacciDirection(i, kViews));
+        const Camera camera =
+            fitCamera(scene.worldBounds(), double(kWidth) / kHeight, test::fibonacciDirection(i, kViews));
         renderer.setScene(scene);
         renderer.render(camera, settings, kWidth, kHeight);
         const TrimImage a = renderer.readTrimImage();
@@ -109,7 +109,8 @@ int main(int argc, char** argv)
         sources = defaultSources();
     render::OffscreenGlContext gl;
     render::TrimRenderer renderer(gl.context());
-    std::printf("rule %s; %s\n", ruleName(settings.rule).c_str(), renderer.capabilities().summary().toUtf8().constData());
+    std::printf("rule %s; %s\n", ruleName(settings.rule).c_str(),
+                renderer.capabilities().summary().toUtf8().constData());
     std::printf("%-34s %9s %9s %9s %6s %10s %10s %8s %9s %s\n", "mesh", "triangles", "refined", "kept", "nm-e",
                 "export ms", "frame ms", "ratio", "agree %", "pixels");
     for (const std::string& source : sources) {
@@ -135,7 +136,8 @@ int main(int argc, char** argv)
             std::printf("%-34s %9zu %9zu %9zu %6zu %10.0f %10.2f %8.0f %9.3f %ld\n", name.c_str(),
                         solid.stats.inputTriangles, solid.stats.refinedFaces, solid.stats.keptFaces,
                         solid.stats.nonManifoldEdges, exportMs, frameMs, exportMs / frameMs,
-                        100.0 * double(agreement.agreeing) / double(std::max(agreement.covered, 1L)), agreement.covered);
+                        100.0 * double(agreement.agreeing) / double(std::max(agreement.covered, 1L)),
+                        agreement.covered);
         } catch (const std::exception& e) {
             std::printf("%-34s failed: %s\n", name.c_str(), e.what());
         }

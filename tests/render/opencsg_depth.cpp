@@ -81,9 +81,9 @@ std::vector<float> readDepth(int width, int height)
 
 } // namespace
 
-std::vector<float> renderOpenCsgDepth(const std::vector<OpenCsgSolid>& solids, const std::vector<OpenCsgProduct>& products,
-                                      const glm::dmat4& view, const glm::dmat4& projection, int width, int height,
-                                      std::string* error)
+std::vector<float> renderOpenCsgDepth(const std::vector<OpenCsgSolid>& solids,
+                                      const std::vector<OpenCsgProduct>& products, const glm::dmat4& view,
+                                      const glm::dmat4& projection, int width, int height, std::string* error)
 {
     glewExperimental = GL_TRUE;
     if (const GLenum status = glewInit(); status != GLEW_OK) {

@@ -35,8 +35,8 @@ struct OpenCsgProduct {
 /// fixed-function pipeline); initializes GLEW on it. Returns an empty vector and sets
 /// `error` when GLEW or the framebuffer cannot be set up.
 [[nodiscard]] std::vector<float> renderOpenCsgDepth(const std::vector<OpenCsgSolid>& solids,
-                                                    const std::vector<OpenCsgProduct>& products,
-                                                    const glm::dmat4& view, const glm::dmat4& projection, int width,
-                                                    int height, std::string* error);
+                                                    const std::vector<OpenCsgProduct>& products, const glm::dmat4& view,
+                                                    const glm::dmat4& projection, int width, int height,
+                                                    std::string* error);
 
 } // namespace trimlab::test

@@ -102,9 +102,9 @@ SkinningModel chosenTransformModel(const MeshAnimation& animation, std::size_t b
     const double diagonal = 2.0 * computeBounds(restMesh).radius();
     const std::vector<glm::dvec3> centres = segmentCentres(rest, nearestSeedLabels(rest, bones));
     const std::size_t restPose = std::min(animation.restPose, poseCount - 1);
-    SkinningModel model = identitySkinningModel(method, chain, poseCount, restPose, toDoublePositions(rest),
-                                                nearestBoneWeights(rest, centres, influences, diagonal),
-                                                animation.triangles);
+    SkinningModel model =
+        identitySkinningModel(method, chain, poseCount, restPose, toDoublePositions(rest),
+                              nearestBoneWeights(rest, centres, influences, diagonal), animation.triangles);
     std::mt19937 random(seed);
     for (std::size_t t = 0; t < poseCount; ++t) {
         if (t == restPose)

@@ -53,8 +53,14 @@ Scene nestedSpheres()
 
 // Submission slot s of the layered scene holds layer (s · 7919) mod layers (7919 is a
 // prime that divides no layer count used here, so this permutes).
-int layerAtSlot(int slot, int layers) { return int((std::int64_t(slot) * 7919) % layers); }
-int layerOfPrimitive(int primitiveId, int layers) { return layerAtSlot(primitiveId / 2, layers); }
+int layerAtSlot(int slot, int layers)
+{
+    return int((std::int64_t(slot) * 7919) % layers);
+}
+int layerOfPrimitive(int primitiveId, int layers)
+{
+    return layerAtSlot(primitiveId / 2, layers);
+}
 
 // `layers` quads at depths 1 + 0.001·i reaching far beyond the frustum, in shuffled
 // order. The first `leading` layers are back-facing, the rest alternate front/back
@@ -70,7 +76,8 @@ Scene layeredScene(int layers, int leading)
         const float depth = 1.0f + 0.001f * float(layer);
         const float s = 10.0f * depth;
         const auto base = static_cast<unsigned>(mesh.positions.size());
-        mesh.positions.insert(mesh.positions.end(), {{-s, -s, -depth}, {s, -s, -depth}, {s, s, -depth}, {-s, s, -depth}});
+        mesh.positions.insert(mesh.positions.end(),
+                              {{-s, -s, -depth}, {s, -s, -depth}, {s, s, -depth}, {-s, s, -depth}});
         const bool front = layer >= leading && (layer - leading) % 2 == 0;
         if (front) // counter-clockwise seen from the eye at the origin
             mesh.triangles.insert(mesh.triangles.end(), {{base, base + 1, base + 2}, {base, base + 2, base + 3}});
@@ -205,7 +212,8 @@ void TestBufferMethods::initTestCase()
     m_nested = nestedSpheres();
     m_camera = fitCamera(m_nested.worldBounds(), double(kWidth) / kHeight);
     m_renderer->setScene(m_nested);
-    m_reference = ReferenceRenderer(m_nested).render(m_camera, kWidth, kHeight, unclipped(StaticRule::AlternatingBorder));
+    m_reference =
+        ReferenceRenderer(m_nested).render(m_camera, kWidth, kHeight, unclipped(StaticRule::AlternatingBorder));
 }
 
 void TestBufferMethods::renderNested(FragmentMethodKind method, const MethodParameters& parameters)

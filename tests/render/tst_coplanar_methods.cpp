@@ -52,8 +52,9 @@ Scene sceneNamed(const QString& name)
     if (name == "duplicated sphere")
         return duplicated(makeIcosphere(glm::dvec3(0.0), 1.0, 3));
     if (name == "duplicated spot")
-        return duplicated(
-            loadScene(test::sharedDataPath("static/odedstein-spot_low_resolution.obj.gz").string()).scene.objects[0].mesh);
+        return duplicated(loadScene(test::sharedDataPath("static/odedstein-spot_low_resolution.obj.gz").string())
+                              .scene.objects[0]
+                              .mesh);
     return twoBoxes();
 }
 
@@ -63,8 +64,8 @@ Camera jittered(const Camera& camera, double dx, double dy)
     const glm::dvec3 forward = glm::normalize(camera.target - camera.eye);
     const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.up));
     const glm::dvec3 up = glm::cross(right, forward);
-    const double pixel = 2.0 * std::tan(glm::radians(camera.fovyDegrees) * 0.5) *
-                         glm::length(camera.target - camera.eye) / kHeight;
+    const double pixel =
+        2.0 * std::tan(glm::radians(camera.fovyDegrees) * 0.5) * glm::length(camera.target - camera.eye) / kHeight;
     Camera moved = camera;
     const glm::dvec3 shift = (dx * right + dy * up) * pixel;
     moved.eye += shift;
@@ -142,7 +143,11 @@ void TestCoplanarMethods::stableUnderJitter()
     int tieAgreeing = 0;
     for (int frame = 0; frame < kFrames; ++frame) {
         test::MethodCase testCase{QStringLiteral("%1-frame%2").arg(QTest::currentDataTag()).arg(frame),
-                                  jittered(base, subPixel(random), subPixel(random)), {}, {}, kWidth, kHeight};
+                                  jittered(base, subPixel(random), subPixel(random)),
+                                  {},
+                                  {},
+                                  kWidth,
+                                  kHeight};
         // Cut open, so the coincident back faces inside decide the trim (the ray starts
         // inside the solid, where the tie order matters for every rule).
         const glm::dvec3 n = glm::normalize(glm::dvec3(0.2, 0.1, -1.0));
@@ -153,8 +158,8 @@ void TestCoplanarMethods::stableUnderJitter()
         test::MethodCriteria criteria;
         criteria.allowTies = !exactTies;
         QString summary;
-        const auto failure = test::checkMethodAgainstReference(*m_renderer, method, testCase, reference, expected,
-                                                               &summary, criteria);
+        const auto failure =
+            test::checkMethodAgainstReference(*m_renderer, method, testCase, reference, expected, &summary, criteria);
         QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
         const TrimImage first = m_renderer->readTrimImage();
         m_renderer->render(testCase.camera, testCase.settings, kWidth, kHeight);
@@ -168,7 +173,8 @@ void TestCoplanarMethods::stableUnderJitter()
         } else {
             TrimImage plain = first;
             for (TrimPixel& p : plain.pixels)
-                p.coplanarCount = firsts[std::size_t(frame)].pixels[std::size_t(&p - plain.pixels.data())].coplanarCount;
+                p.coplanarCount =
+                    firsts[std::size_t(frame)].pixels[std::size_t(&p - plain.pixels.data())].coplanarCount;
             QVERIFY2(sameImage(firsts[std::size_t(frame)], plain, true),
                      qPrintable(QStringLiteral("frame %1 differs from the first method's").arg(frame)));
         }

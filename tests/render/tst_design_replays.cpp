@@ -59,7 +59,8 @@ struct Replayed {
 Replayed replay(const Replay& r)
 {
     const LoadedScene loaded = loadScene(r.source);
-    const timeline::StrokeScript script = timeline::loadStrokeScript(test::testDataPath(std::string("scripts/") + r.script));
+    const timeline::StrokeScript script =
+        timeline::loadStrokeScript(test::testDataPath(std::string("scripts/") + r.script));
     Replayed result{timeline::replayStrokeScript(loaded.scene.objects.front().mesh, script), {}, {}};
     const int last = result.timeline.frameCount() - 1;
     result.chain = timeline::frameChain(result.timeline, last, r.settings.rule);

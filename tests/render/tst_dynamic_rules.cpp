@@ -177,8 +177,7 @@ void TestDynamicRulesGpu::agreesWithReference()
     m_dynamic->setChain(makeChain(m_sphere, chainCase));
     m_dynamic->render(testCase.camera, testCase.settings, kWidth, kHeight);
     QString summary;
-    const auto failure =
-        test::checkFrameAgainstReference(*m_renderer, testCase, referenceFor(chainCase), {}, &summary);
+    const auto failure = test::checkFrameAgainstReference(*m_renderer, testCase, referenceFor(chainCase), {}, &summary);
     if (failure)
         QFAIL(qPrintable(*failure));
     qInfo("%s", qPrintable(summary));
@@ -194,7 +193,8 @@ void TestDynamicRulesGpu::dynamicDiffersFromStaticWhereTheSweptRegionIsKept()
     const DynamicChain chain = makeChain(m_sphere, c);
     const ReferenceResult dynamic = referenceFor(c);
     Scene current;
-    current.objects.push_back({"current", {chain.levels.back().frame.scene.objects[0].mesh.positions, m_sphere.triangles}, glm::dmat4(1.0)});
+    current.objects.push_back(
+        {"current", {chain.levels.back().frame.scene.objects[0].mesh.positions, m_sphere.triangles}, glm::dmat4(1.0)});
     const ReferenceResult staticResult =
         ReferenceRenderer(current).render(chainCamera(), kWidth, kHeight, chainSettings(c));
     const auto& movedTriangles = chain.levels.back().frame.meshTriangle[kDynamicObjectCurrentOnly];
@@ -204,7 +204,10 @@ void TestDynamicRulesGpu::dynamicDiffersFromStaticWhereTheSweptRegionIsKept()
     for (std::size_t i = 0; i < dynamic.trim.pixels.size(); ++i) {
         const TrimPixel& d = dynamic.trim.pixels[i];
         const TrimPixel& s = staticResult.trim.pixels[i];
-        const int dMesh = d.covered() ? int(chain.levels.back().frame.meshTriangle[std::size_t(d.objectId)][std::size_t(d.primitiveId)]) : -1;
+        const int dMesh =
+            d.covered()
+                ? int(chain.levels.back().frame.meshTriangle[std::size_t(d.objectId)][std::size_t(d.primitiveId)])
+                : -1;
         if (dMesh == s.primitiveId)
             continue;
         ++differing;
@@ -265,9 +268,9 @@ void TestDynamicRulesGpu::appendedLevelsCarryTheCharacterization()
     const Camera camera = chainCamera();
     for (std::size_t shown = 1; shown < frames.size(); ++shown) {
         const std::vector<std::vector<glm::vec3>> prefix(frames.begin(), frames.begin() + std::ptrdiff_t(shown) + 1);
-        const DynamicChain whole = makeDynamicChain(m_sphere.triangles, prefix,
-                                                    std::vector<DynamicRule>(shown, DynamicRule::Confluent),
-                                                    StaticRule::AlternatingBorder);
+        const DynamicChain whole =
+            makeDynamicChain(m_sphere.triangles, prefix, std::vector<DynamicRule>(shown, DynamicRule::Confluent),
+                             StaticRule::AlternatingBorder);
         if (shown == 1) {
             m_dynamic->setChain(whole);
         } else {
@@ -279,7 +282,8 @@ void TestDynamicRulesGpu::appendedLevelsCarryTheCharacterization()
         const TrimImage appended = m_renderer->readTrimImage();
 
         test::MethodCase testCase{QStringLiteral("frame %1").arg(shown), camera, TrimSettings{}, {}, kWidth, kHeight};
-        const ReferenceResult reference = DynamicReferenceRenderer(whole).render(camera, kWidth, kHeight, TrimSettings{});
+        const ReferenceResult reference =
+            DynamicReferenceRenderer(whole).render(camera, kWidth, kHeight, TrimSettings{});
         QString summary;
         if (const auto failure = test::checkFrameAgainstReference(*m_renderer, testCase, reference, {}, &summary))
             QFAIL(qPrintable(*failure));

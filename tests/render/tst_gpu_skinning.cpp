@@ -130,8 +130,8 @@ const SkinningModel& TestGpuSkinning::model(const ModelCase& c)
     auto it = m_models.find(c.name);
     if (it == m_models.end()) {
         SkinningModel made = c.fitted ? seedBoneModel(m_samba, kBones, c.method, c.chain)
-                                      : test::chosenTransformModel(m_samba, kBones, c.influences, c.method, c.chain,
-                                                                   5, 19u + unsigned(c.influences));
+                                      : test::chosenTransformModel(m_samba, kBones, c.influences, c.method, c.chain, 5,
+                                                                   19u + unsigned(c.influences));
         it = m_models.emplace(c.name, std::move(made)).first;
     }
     return it->second;
@@ -172,7 +172,8 @@ void TestGpuSkinning::positionsAndNormalsMatchCpu()
         const double normalError = largestDistance(normals, expected);
         // The GPU's angles are double-precision too (vertex_normals.comp), so the normals
         // agree to float rounding even where a crumpled vertex's face normals nearly cancel.
-        QVERIFY2(normalError <= 1e-6, qPrintable(QString("pose %1: GPU normals differ by %2").arg(pose).arg(normalError)));
+        QVERIFY2(normalError <= 1e-6,
+                 qPrintable(QString("pose %1: GPU normals differ by %2").arg(pose).arg(normalError)));
         worstPosition = std::max(worstPosition, distance / diagonal);
         worstNormal = std::max(worstNormal, normalError);
         largestMotion = std::max(largestMotion, largestDistance(positions, skinned.restPositions));
@@ -207,24 +208,23 @@ void TestGpuSkinning::longChainsDoNotDrift()
 {
     std::vector<std::size_t> first24(24);
     std::iota(first24.begin(), first24.end(), std::size_t(0));
-    const MeshAnimation samba = test::selectedPoses(test::sharedDataPath("anim/samba/mesh_00??.obj.gz").string(),
-                                                    first24, 0);
+    const MeshAnimation samba =
+        test::selectedPoses(test::sharedDataPath("anim/samba/mesh_00??.obj.gz").string(), first24, 0);
     for (SkinningMethod method : {SkinningMethod::Lbs, SkinningMethod::Dqs}) {
         const SkinningModel skinned = seedBoneModel(samba, kBones, method, SkinningChain::PoseToPose);
         const std::vector<PosePositions> cpu = reconstructPoses(skinned);
         const double diagonal = 2.0 * computeBounds(poseMesh(skinned, skinned.restPositions)).radius();
         m_renderer->setScene(sceneOf(poseMesh(skinned, skinned.restPositions)));
         GpuSkinning skinning(m_renderer->gl(), skinned);
-            double worst = 0.0;
+        double worst = 0.0;
         for (std::size_t pose : chainOrder(skinned.poseCount(), skinned.restPose)) {
             skinning.skinPose(m_renderer->gpuScene(), 0, pose);
-            const double distance = largestDistance(
-                m_renderer->gpuScene().readPositions(0), cpu[pose]);
+            const double distance = largestDistance(m_renderer->gpuScene().readPositions(0), cpu[pose]);
             QVERIFY2(distance <= 1e-5 * diagonal, qPrintable(QString("pose %1 differs by %2").arg(pose).arg(distance)));
             worst = std::max(worst, distance / diagonal);
         }
-        qInfo("%s, 24 poses: worst position error %.3g of the diagonal",
-              method == SkinningMethod::Lbs ? "LBS" : "DQS", worst);
+        qInfo("%s, 24 poses: worst position error %.3g of the diagonal", method == SkinningMethod::Lbs ? "LBS" : "DQS",
+              worst);
     }
 }
 

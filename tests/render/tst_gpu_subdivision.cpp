@@ -15,6 +15,7 @@
 #include "render/frame/gpu_scene.h"
 #include "render/frame/gpu_subdivision.h"
 #include "render/frame/subdivision_stencils.h"
+#include "render/content_publisher.h"
 #include "render/viewport_renderer.h"
 
 #include "core/surface/subdivision_cages.h"
@@ -280,7 +281,7 @@ std::optional<QString> viewportAgrees(ViewportRenderer& view, const Camera& came
     if (!view.render(camera, size, 0, [](const std::string&) {}))
         return QString("no GPU frame");
     const ReferenceResult expected =
-        ReferenceRenderer(*view.posedScene()).render(camera, size.width(), size.height(), TrimSettings{});
+        ReferenceRenderer(*view.content()->posedScene()).render(camera, size.width(), size.height(), TrimSettings{});
     const test::MethodCase testCase{name, camera, TrimSettings{}, view.methodParameters(), size.width(), size.height()};
     std::optional<QString> failure = test::checkFrameAgainstReference(view.renderer(), testCase, expected, {});
     if (failure) {
@@ -313,16 +314,17 @@ void TestGpuSubdivision::viewportEvaluatesEditsOnTheGpu()
     const ViewportEdit edit;
     const auto& [cage, scene, stencils, otherLevel, edited, camera, cpu] = edit;
 
-    ViewportRenderer view;
-    view.setScene(scene);
+    const auto content = std::make_shared<ShownContent>();
+    ViewportRenderer view(content);
+    content->setScene(scene);
+    ContentPublisher shown(content, ContentOwner::DesignHistory);
     const auto agrees = [&](const QString& name) { return viewportAgrees(view, camera, kSize, name, cpu); };
     m_context->makeCurrent();
     view.initialize(m_context->context());
-    view.showSubdivisionPose(stencils, edited, cpu);
+    shown.showSubdivisionPose(stencils, edited, cpu);
     std::optional<QString> failure = agrees("viewport_gpu_subdivision");
     QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
-    QVERIFY(view.poseSubdividedOnGpu());
-    QVERIFY(!view.poseSkinnedOnGpu());
+    QCOMPARE(view.lastPoseEvaluation(), PoseEvaluation::GpuSubdivision);
 
     view.release();
     {
@@ -330,18 +332,18 @@ void TestGpuSubdivision::viewportEvaluatesEditsOnTheGpu()
         view.initialize(second.context());
         failure = agrees("viewport_gpu_subdivision_again");
         QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
-        QVERIFY(view.poseSubdividedOnGpu());
+        QCOMPARE(view.lastPoseEvaluation(), PoseEvaluation::GpuSubdivision);
         view.release();
     }
     m_context->makeCurrent();
     view.initialize(m_context->context());
 
     // Stencils of the same cage at another level: the GPU path fails, the CPU's positions show.
-    view.showSubdivisionPose(otherLevel, edited, cpu);
+    shown.showSubdivisionPose(otherLevel, edited, cpu);
     failure = agrees("viewport_gpu_subdivision_fallback");
     QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
-    QVERIFY(!view.poseSubdividedOnGpu());
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, view.showSubdivisionPose(stencils, {glm::dvec3(0.0)}, cpu));
+    QCOMPARE(view.lastPoseEvaluation(), PoseEvaluation::Uploaded);
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, shown.showSubdivisionPose(stencils, {glm::dvec3(0.0)}, cpu));
     view.release();
 }
 
@@ -353,14 +355,16 @@ void TestGpuSubdivision::viewportFallsBackToTheCpusPositions()
     const ViewportEdit edit;
     const auto& [cage, scene, stencils, otherLevel, edited, camera, cpu] = edit;
 
-    ViewportRenderer view;
-    view.setScene(scene);
+    const auto content = std::make_shared<ShownContent>();
+    ViewportRenderer view(content);
+    content->setScene(scene);
+    ContentPublisher shown(content, ContentOwner::DesignHistory);
     m_context->makeCurrent();
     view.initialize(m_context->context());
-    view.showSubdivisionPose(otherLevel, edited, cpu);
+    shown.showSubdivisionPose(otherLevel, edited, cpu);
     const std::optional<QString> failure = viewportAgrees(view, camera, kSize, "viewport_fallback_alone", cpu);
     QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
-    QVERIFY(!view.poseSubdividedOnGpu());
+    QCOMPARE(view.lastPoseEvaluation(), PoseEvaluation::Uploaded);
     view.release();
 }
 
@@ -372,16 +376,18 @@ void TestGpuSubdivision::viewportEvaluatesAgainInTheSameContext()
     const ViewportEdit edit;
     const auto& [cage, scene, stencils, otherLevel, edited, camera, cpu] = edit;
 
-    ViewportRenderer view;
-    view.setScene(scene);
+    const auto content = std::make_shared<ShownContent>();
+    ViewportRenderer view(content);
+    content->setScene(scene);
+    ContentPublisher shown(content, ContentOwner::DesignHistory);
     m_context->makeCurrent();
     for (int round = 0; round < 2; ++round) {
         view.initialize(m_context->context());
-        view.showSubdivisionPose(stencils, edited, cpu);
+        shown.showSubdivisionPose(stencils, edited, cpu);
         const std::optional<QString> failure =
             viewportAgrees(view, camera, kSize, QString("viewport_same_context_%1").arg(round), cpu);
         QVERIFY2(!failure, failure ? qPrintable(QString("round %1: %2").arg(round).arg(*failure)) : "");
-        QVERIFY(view.poseSubdividedOnGpu());
+        QCOMPARE(view.lastPoseEvaluation(), PoseEvaluation::GpuSubdivision);
         view.release();
     }
 }

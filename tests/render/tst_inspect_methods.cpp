@@ -66,7 +66,8 @@ TrimSettings caseSettings(const QString& which, const Bounds& bounds)
         p.offset = -glm::dot(p.normal, c) + shift * r;
         return p;
     };
-    const ClipSet box = ClipSet::box(c - glm::dvec3(0.45 * r, 0.5 * r, 0.6 * r), c + glm::dvec3(0.35 * r, 0.4 * r, 0.1 * r));
+    const ClipSet box =
+        ClipSet::box(c - glm::dvec3(0.45 * r, 0.5 * r, 0.6 * r), c + glm::dvec3(0.35 * r, 0.4 * r, 0.1 * r));
     if (which == "box") {
         s.setClipSet(box);
     } else if (which == "box capped") {
@@ -143,22 +144,18 @@ void TestInspectMethods::agreesWithReference_data()
         bool perObject; // needs a buffer method
     };
     const Case cases[] = {
-        {"pushed-sphere", "box", false},
-        {"pushed-sphere", "box capped", false},
-        {"crossing-loop", "plane capped", false},
-        {"csg-trio", "union capped", true},
-        {"csg-trio", "intersection", true},
-        {"csg-trio", "difference capped", true},
-        {"csg-trio", "tree box capped", true},
-        {"csg-trio", "tree per-object rules", true},
-        {"csg-trio", "collisions", true},
-        {"two-spots", "difference capped", true},
+        {"pushed-sphere", "box", false},          {"pushed-sphere", "box capped", false},
+        {"crossing-loop", "plane capped", false}, {"csg-trio", "union capped", true},
+        {"csg-trio", "intersection", true},       {"csg-trio", "difference capped", true},
+        {"csg-trio", "tree box capped", true},    {"csg-trio", "tree per-object rules", true},
+        {"csg-trio", "collisions", true},         {"two-spots", "difference capped", true},
         {"two-spots", "intersection", true},
     };
     for (const Case& c : cases)
         for (const MethodInfo& info : fragmentMethods())
             if (info.inspection || !c.perObject)
-                QTest::newRow(qPrintable(QString("%1 %2 %3").arg(QString::fromLatin1(info.id.data()), c.scene, c.settings)))
+                QTest::newRow(
+                    qPrintable(QString("%1 %2 %3").arg(QString::fromLatin1(info.id.data()), c.scene, c.settings)))
                     << QString(c.scene) << QString(c.settings) << info.kind;
 }
 
@@ -193,8 +190,8 @@ void TestInspectMethods::peelingMethodsRefuseThePerObjectWalk()
     const Camera camera = fitCamera(prepare("csg-trio").scene.worldBounds(), double(kWidth) / kHeight);
     TrimSettings settings;
     settings.csg.expression = expression("0 | 1");
-    for (FragmentMethodKind kind : {FragmentMethodKind::PeelingF2B, FragmentMethodKind::PeelingDual,
-                                    FragmentMethodKind::TwoPass}) {
+    for (FragmentMethodKind kind :
+         {FragmentMethodKind::PeelingF2B, FragmentMethodKind::PeelingDual, FragmentMethodKind::TwoPass}) {
         m_renderer->setMethod(kind);
         const std::string name(methodInfo(kind).displayName);
         try {

@@ -17,16 +17,25 @@ constexpr int kLayers = 64;
 constexpr int kWidth = 256;
 constexpr int kHeight = 192;
 
-double layerDepth(int layer) { return 1.0 + 0.01 * layer; }
+double layerDepth(int layer)
+{
+    return 1.0 + 0.01 * layer;
+}
 
 // Layers 0..7 (nearest) are back-facing, the rest alternate front/back. Seen from the
 // eye, the winding index at the near plane is then (8 + 28) - 28 = 8, and walking front
 // to back it falls 8, 7, ..., 0: under the positive index rule the trim point is exactly
 // layer 7, the 8th nearest fragment.
-bool layerFrontFacing(int layer) { return layer >= 8 && layer % 2 == 0; }
+bool layerFrontFacing(int layer)
+{
+    return layer >= 8 && layer % 2 == 0;
+}
 
 // Submission slot s holds layer shuffled(s); 37 is coprime with 64, so this permutes.
-int layerAtSlot(int slot) { return (slot * 37) % kLayers; }
+int layerAtSlot(int slot)
+{
+    return (slot * 37) % kLayers;
+}
 
 Scene layeredScene()
 {
@@ -58,7 +67,10 @@ Camera layerCamera()
     return camera;
 }
 
-int layerOfPrimitive(int primitiveId) { return layerAtSlot(primitiveId / 2); }
+int layerOfPrimitive(int primitiveId)
+{
+    return layerAtSlot(primitiveId / 2);
+}
 
 } // namespace
 
@@ -103,7 +115,8 @@ void TestKPlusOccupancy::keepsNearestKAndCountsExactly()
     for (int i = 0; i < kWidth * kHeight; ++i) {
         const TrimPixel& p = trim.pixels[std::size_t(i)];
         const bool exact = occupancy.held[std::size_t(i)] == 8 && occupancy.overflowed[std::size_t(i)] == 1 &&
-                           p.windingAtStart == 8 && p.covered() && layerOfPrimitive(p.primitiveId) == 0 && p.facing == -1;
+                           p.windingAtStart == 8 && p.covered() && layerOfPrimitive(p.primitiveId) == 0 &&
+                           p.facing == -1;
         wrong += exact ? 0 : 1;
     }
     QCOMPARE(wrong, 0);
@@ -205,7 +218,8 @@ void TestKPlusOccupancy::lockChoiceIsMadeAndReported()
     const MethodStats& stats = m_renderer->lastStats().methodStats;
     QVERIFY(stats.usesLock);
     QCOMPARE(stats.interlock, driverHasInterlock);
-    QCOMPARE(QString(lockDescription(stats)), driverHasInterlock ? QString("fragment shader interlock") : QString("spin-lock"));
+    QCOMPARE(QString(lockDescription(stats)),
+             driverHasInterlock ? QString("fragment shader interlock") : QString("spin-lock"));
     qInfo("lock on this driver: %s", lockDescription(stats));
 }
 

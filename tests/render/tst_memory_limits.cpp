@@ -194,8 +194,8 @@ void TestMemoryLimits::fallbackFrameAgreesWithTheReference()
     m_renderer->setMethod(FragmentMethodKind::KPlusArray);
     m_renderer->setParameters(MethodParameters{});
     const std::size_t budget = *m_renderer->estimateMethodBytes(kWidth, kHeight) / 4;
-    test::MethodCase testCase{QStringLiteral("fallback under budget"), m_camera, {}, withBudget(budget), kWidth,
-                              kHeight};
+    test::MethodCase testCase{
+        QStringLiteral("fallback under budget"), m_camera, {}, withBudget(budget), kWidth, kHeight};
     m_renderer->setParameters(testCase.parameters);
     QVERIFY(!memoryErrorOf(*m_renderer, m_camera, testCase.settings, kWidth, kHeight).isEmpty());
     const ReferenceRenderer reference(m_scene);

@@ -104,10 +104,10 @@ void TestMethodMatrix::agreesWithReference_data()
     QTest::addColumn<int>("plane");
     QTest::addColumn<FragmentMethodKind>("method");
     const auto addRow = [](const char* scene, StaticRule rule, int plane, const MethodInfo& info) {
-        QTest::newRow(qPrintable(QString("%1 %2 %3 plane %4")
-                                     .arg(QString::fromLatin1(info.id.data()), scene,
-                                          QString::fromStdString(ruleName(rule)))
-                                     .arg(plane)))
+        QTest::newRow(
+            qPrintable(QString("%1 %2 %3 plane %4")
+                           .arg(QString::fromLatin1(info.id.data()), scene, QString::fromStdString(ruleName(rule)))
+                           .arg(plane)))
             << QString(scene) << rule << plane << info.kind;
     };
     for (const char* scene : {"pushed-sphere", "doubly-covered", "nested-17"})
@@ -140,8 +140,8 @@ void TestMethodMatrix::agreesWithReference()
     QFETCH(FragmentMethodKind, method);
     const test::ReferenceSceneCache::Entry& prepared = m_scenes.prepare(*m_renderer, scene.toStdString());
     const Bounds bounds = prepared.scene.worldBounds();
-    test::MethodCase testCase{QTest::currentDataTag(), fitCamera(bounds, double(kWidth) / kHeight), {}, {}, kWidth,
-                              kHeight};
+    test::MethodCase testCase{
+        QTest::currentDataTag(), fitCamera(bounds, double(kWidth) / kHeight), {}, {}, kWidth, kHeight};
     testCase.settings.rule = rule;
     testCase.settings.clip = clipPlane(plane, bounds);
     const std::string key = std::string(ruleName(rule)) + std::to_string(plane);

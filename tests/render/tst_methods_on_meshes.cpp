@@ -26,9 +26,9 @@ constexpr int kHeight = 192;
 struct MeshCase {
     std::string source;
     glm::dvec3 viewDirection{-0.35, -0.45, -1.0};
-    std::optional<glm::dvec3> eye; // when set: the camera sits here looking at the centre
-    glm::dvec3 clipNormal{0.0};    // zero: no clip plane; else a plane through the centre
-    double clipShift = 0.0;        // in bounding radii along the normal
+    std::optional<glm::dvec3> eye;  // when set: the camera sits here looking at the centre
+    glm::dvec3 clipNormal{0.0};     // zero: no clip plane; else a plane through the centre
+    double clipShift = 0.0;         // in bounding radii along the normal
     std::optional<StaticRule> rule; // nullopt: trimming off
     int k = 16;
     double zoom = 1.0; // < 1 moves the fitted camera closer (thin meshes cover few pixels)
@@ -161,8 +161,8 @@ void TestMethodsOnMeshes::agreesWithReference()
     QVERIFY2(prepared.loaded.trimmable(), prepared.loaded.trimUnavailableReason().c_str());
 
     const Bounds bounds = prepared.loaded.scene.worldBounds();
-    test::MethodCase testCase{QTest::currentDataTag(), cameraFor(meshCase, bounds), settingsFor(meshCase, bounds), {},
-                              kWidth, kHeight};
+    test::MethodCase testCase{
+        QTest::currentDataTag(), cameraFor(meshCase, bounds), settingsFor(meshCase, bounds), {}, kWidth, kHeight};
     testCase.parameters.k = meshCase.k;
     const std::string tag = QTest::currentDataTag();
     const std::string key = tag.substr(tag.find(": ") + 2); // the case, shared by all methods
@@ -172,8 +172,8 @@ void TestMethodsOnMeshes::agreesWithReference()
                      .emplace(key, prepared.reference->render(testCase.camera, kWidth, kHeight, testCase.settings))
                      .first;
     QString summary;
-    const auto failure = test::checkMethodAgainstReference(*m_renderer, method, testCase, *prepared.reference,
-                                                           result->second, &summary);
+    const auto failure =
+        test::checkMethodAgainstReference(*m_renderer, method, testCase, *prepared.reference, result->second, &summary);
     qInfo("%s", qPrintable(summary));
     QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
 }

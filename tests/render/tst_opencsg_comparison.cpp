@@ -127,12 +127,18 @@ void TestOpenCsgComparison::agreesWithOpenCsg_data()
     QTest::addColumn<QString>("expression");
     QTest::addColumn<QString>("products"); // OpenCSG's sum of products: "i,i/s,s;..."
     // ball 0, ring 1, box 2. A product "a,b/c" is a ∩ b − c.
-    QTest::newRow("union") << "0 | 1" << "0/;1/";
-    QTest::newRow("intersection") << "0 & 1" << "0,1/";
-    QTest::newRow("difference") << "0 - 2" << "0/2";
-    QTest::newRow("concave difference") << "1 - 2" << "1/2";
-    QTest::newRow("tree (0 | 1) - 2") << "(0 | 1) - 2" << "0/2;1/2";
-    QTest::newRow("tree 0 & (1 | 2)") << "0 & (1 | 2)" << "0,1/;0,2/";
+    QTest::newRow("union") << "0 | 1"
+                           << "0/;1/";
+    QTest::newRow("intersection") << "0 & 1"
+                                  << "0,1/";
+    QTest::newRow("difference") << "0 - 2"
+                                << "0/2";
+    QTest::newRow("concave difference") << "1 - 2"
+                                        << "1/2";
+    QTest::newRow("tree (0 | 1) - 2") << "(0 | 1) - 2"
+                                      << "0/2;1/2";
+    QTest::newRow("tree 0 & (1 | 2)") << "0 & (1 | 2)"
+                                      << "0,1/;0,2/";
 }
 
 void TestOpenCsgComparison::agreesWithOpenCsg()
@@ -162,9 +168,9 @@ void TestOpenCsgComparison::agreesWithOpenCsg()
     }
     QVERIFY(m_legacy->makeCurrent(m_legacySurface.get()));
     std::string error;
-    const std::vector<float> window = test::renderOpenCsgDepth(
-        openCsgSolids(m_scene), sum, viewMatrix(camera), projectionMatrix(camera, double(kWidth) / kHeight), kWidth,
-        kHeight, &error);
+    const std::vector<float> window =
+        test::renderOpenCsgDepth(openCsgSolids(m_scene), sum, viewMatrix(camera),
+                                 projectionMatrix(camera, double(kWidth) / kHeight), kWidth, kHeight, &error);
     m_legacy->doneCurrent();
     m_core->makeCurrent();
     QVERIFY2(!window.empty(), error.c_str());

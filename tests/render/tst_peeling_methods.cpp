@@ -27,8 +27,14 @@ constexpr std::uint64_t kPixels = std::uint64_t(kWidth) * kHeight;
 // Full-screen quads facing the eye at the origin, layer i at view depth 1 + 0.01 i,
 // submitted in a shuffled order (slot s holds layer 37 s mod n; 37 is coprime with the
 // layer counts used here), so peeling cannot profit from submission order.
-int layerAtSlot(int slot, int layers) { return (slot * 37) % layers; }
-double layerDepth(int layer) { return 1.0 + 0.01 * layer; }
+int layerAtSlot(int slot, int layers)
+{
+    return (slot * 37) % layers;
+}
+double layerDepth(int layer)
+{
+    return 1.0 + 0.01 * layer;
+}
 
 Scene layeredScene(int layers, const std::function<bool(int)>& frontFacing)
 {
@@ -346,8 +352,7 @@ FirstLayer expectedFirstLayer(const PixelTrace& trace)
 {
     if (trace.walk.walkEnd == trace.walk.walkBegin)
         return FirstLayer::Empty;
-    return trace.walk.shownIndex == std::ptrdiff_t(trace.walk.walkBegin) ? FirstLayer::Decides
-                                                                         : FirstLayer::Unresolved;
+    return trace.walk.shownIndex == std::ptrdiff_t(trace.walk.walkBegin) ? FirstLayer::Decides : FirstLayer::Unresolved;
 }
 
 FirstLayer actualFirstLayer(const TrimPixel& p)

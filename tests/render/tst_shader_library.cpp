@@ -101,8 +101,8 @@ void TestShaderLibrary::glslangValidatorAcceptsAssembledSources()
         for (std::size_t v = 0; v < program.variants.size(); ++v) {
             for (const QString& file : program.files) {
                 QByteArray text = assembleShader(file, program.variants[v].defines).text;
-                const QString path =
-                    QString::fromStdString((test::outputDir() / (std::to_string(v) + "-" + file.toStdString())).string());
+                const QString path = QString::fromStdString(
+                    (test::outputDir() / (std::to_string(v) + "-" + file.toStdString())).string());
                 const QStringList arguments = glslangArguments(program.variants[v], text, path);
                 QFile out(path);
                 QVERIFY(out.open(QIODevice::WriteOnly));
@@ -111,8 +111,9 @@ void TestShaderLibrary::glslangValidatorAcceptsAssembledSources()
                 QProcess validator;
                 validator.start(QStringLiteral(TRIMLAB_GLSLANG_VALIDATOR), arguments);
                 QVERIFY2(validator.waitForFinished(60000), qPrintable(validator.errorString()));
-                QVERIFY2(validator.exitCode() == 0, qPrintable(file + " " + program.variants[v].defines.join(' ') + ":\n" +
-                                                               QString::fromUtf8(validator.readAllStandardOutput())));
+                QVERIFY2(validator.exitCode() == 0,
+                         qPrintable(file + " " + program.variants[v].defines.join(' ') + ":\n" +
+                                    QString::fromUtf8(validator.readAllStandardOutput())));
                 ++checked;
             }
         }

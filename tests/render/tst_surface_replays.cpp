@@ -28,7 +28,7 @@ constexpr StaticRule kStaticRule = StaticRule::Parity;
 
 struct SurfaceCase {
     const char* name;
-    int history;        // 0: fig8_13NurbsHistory, 1: subdivisionPushHistory
+    int history;          // 0: fig8_13NurbsHistory, 1: subdivisionPushHistory
     DynamicRule pushRule; // the rule of the last set
 };
 
@@ -50,7 +50,9 @@ Prepared prepare(const SurfaceCase& c)
 {
     Prepared p{c.history == 0 ? fig8_13NurbsHistory(DynamicRule::Confluent, c.pushRule)
                               : subdivisionPushHistory(c.pushRule),
-               {}, {}, {}};
+               {},
+               {},
+               {}};
     p.settings.rule = kStaticRule;
     const int last = p.history.frameCount() - 1;
     p.chain = timeline::frameChain(p.history, last, kStaticRule);
@@ -98,7 +100,8 @@ void TestSurfaceReplays::dynamicRulesAgreeWithReference_data()
         for (const MethodInfo& info : fragmentMethods()) {
             if (!info.dynamicRules)
                 continue;
-            QTest::newRow(qPrintable(QString("%1: %2").arg(all[std::size_t(i)].name, info.id.data()))) << i << info.kind;
+            QTest::newRow(qPrintable(QString("%1: %2").arg(all[std::size_t(i)].name, info.id.data())))
+                << i << info.kind;
             if (all[std::size_t(i)].history == 1)
                 break; // one method is enough for the subdivision surface
         }

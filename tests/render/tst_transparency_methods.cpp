@@ -133,7 +133,8 @@ void TestTransparencyMethods::agreesWithReference_data()
             const bool sampled =
                 info.kind == FragmentMethodKind::KPlusArray || info.kind == FragmentMethodKind::ABufferLinkedList;
             if (info.inspection && (c.everyMethod || sampled))
-                QTest::newRow(qPrintable(QString("%1 %2 %3").arg(QString::fromLatin1(info.id.data()), c.scene, c.settings)))
+                QTest::newRow(
+                    qPrintable(QString("%1 %2 %3").arg(QString::fromLatin1(info.id.data()), c.scene, c.settings)))
                     << QString(c.scene) << QString(c.settings) << info.kind;
         }
 }
@@ -145,8 +146,8 @@ void TestTransparencyMethods::agreesWithReference()
     QFETCH(FragmentMethodKind, method);
     test::ReferenceSceneCache::Entry& prepared = prepare(scene.toStdString());
     const Bounds bounds = prepared.scene.worldBounds();
-    test::MethodCase testCase{QTest::currentDataTag(), fitCamera(bounds, double(kWidth) / kHeight), {}, {}, kWidth,
-                              kHeight};
+    test::MethodCase testCase{
+        QTest::currentDataTag(), fitCamera(bounds, double(kWidth) / kHeight), {}, {}, kWidth, kHeight};
     testCase.settings = caseSettings(settings, bounds);
     QVERIFY(testCase.settings.xray());
     testCase.parameters.k = 32;
@@ -162,8 +163,8 @@ void TestTransparencyMethods::agreesWithReference()
     qInfo("%s; %s", qPrintable(summary), qPrintable(colors.summary()));
     QString name = QString::fromLatin1(methodInfo(method).id.data()) + "-xray-" + scene + "-" + settings;
     name.replace(' ', '_');
-    const auto violation = test::colorViolation(colors, color, reference.color, name, 0.999,
-                                                std::uint64_t(0.05 * kWidth * kHeight));
+    const auto violation =
+        test::colorViolation(colors, color, reference.color, name, 0.999, std::uint64_t(0.05 * kWidth * kHeight));
     QVERIFY2(!violation, violation ? qPrintable(*violation) : "");
 }
 
@@ -205,8 +206,8 @@ void TestTransparencyMethods::peelingAndTwoPassRefuse()
     const Camera camera = fitCamera(prepare("pushed-sphere").scene.worldBounds(), double(kWidth) / kHeight);
     TrimSettings settings;
     settings.transparency = xray(TrimDisplay::Translucent, 0.4, 0.2);
-    for (FragmentMethodKind kind : {FragmentMethodKind::PeelingF2B, FragmentMethodKind::PeelingDual,
-                                    FragmentMethodKind::TwoPass}) {
+    for (FragmentMethodKind kind :
+         {FragmentMethodKind::PeelingF2B, FragmentMethodKind::PeelingDual, FragmentMethodKind::TwoPass}) {
         m_renderer->setMethod(kind);
         const std::string name(methodInfo(kind).displayName);
         try {

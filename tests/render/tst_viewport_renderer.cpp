@@ -9,6 +9,7 @@
 #include "gl_test_context.h"
 #include "method_check.h"
 
+#include "render/content_publisher.h"
 #include "render/gl/gl_error.h"
 #include "render/viewport_renderer.h"
 
@@ -17,6 +18,7 @@
 #include "core/skinning/skinning_weights.h"
 #include "core/catalog/fig8_13_history.h"
 #include "core/timeline/frame_chain.h"
+#include "core/trim/dynamic_chain.h"
 #include "core/trim/dynamic_reference_renderer.h"
 #include "core/trim/reference_renderer.h"
 
@@ -67,11 +69,12 @@ SkinningModel twoBoneModel(const Scene& scene, std::size_t poses)
     halves.count = 2;
     for (const glm::vec3& p : mesh.positions)
         halves.labels.push_back(p.x < 0.0f ? 0u : 1u);
-    SkinningModel model = identitySkinningModel(SkinningMethod::Dqs, SkinningChain::PoseToPose, poses, 0,
-                                                toDoublePositions(mesh.positions), rigidWeights(halves), mesh.triangles);
+    SkinningModel model =
+        identitySkinningModel(SkinningMethod::Dqs, SkinningChain::PoseToPose, poses, 0,
+                              toDoublePositions(mesh.positions), rigidWeights(halves), mesh.triangles);
     for (std::size_t t = 1; t < poses; ++t)
-        model.rigid[t][1] = dualQuaternionFromRigid(glm::angleAxis(glm::radians(35.0), glm::dvec3(0.0, 0.0, 1.0)),
-                                                    glm::dvec3(0.0));
+        model.rigid[t][1] =
+            dualQuaternionFromRigid(glm::angleAxis(glm::radians(35.0), glm::dvec3(0.0, 0.0, 1.0)), glm::dvec3(0.0));
     return model;
 }
 
@@ -95,7 +98,9 @@ class TestViewportRenderer : public QObject {
 private slots:
     void initTestCase();
     void contentGoesIntoANewContext();
+    void layersShowTheirDominantOwner();
     void dynamicChainGoesIntoANewContext();
+    void dragThenAppendUploadsOnlyTheChange();
     void skinnedPosesAreSkinnedOnTheGpu();
     void outOfMemoryWalksTheChainWithNotices();
     void dynamicRulesOutOfMemoryAreRefused();
@@ -130,8 +135,10 @@ void TestViewportRenderer::contentGoesIntoANewContext()
 {
     auto scene = std::make_shared<const Scene>(*makeDemoScene("pushed-sphere"));
     const Camera camera = fitCamera(scene->worldBounds(), double(kSize.width()) / kSize.height());
-    ViewportRenderer view;
-    view.setScene(scene);
+    const auto content = std::make_shared<ShownContent>();
+    ViewportRenderer view(content);
+    content->setScene(scene);
+    ContentPublisher shown(content, ContentOwner::AnimationPlayback);
     m_gl->makeCurrent();
     view.initialize(m_gl->context());
     const TrimImage unposed = renderFrame(view, camera);
@@ -140,8 +147,8 @@ void TestViewportRenderer::contentGoesIntoANewContext()
     std::vector<glm::vec3> pose = scene->objects.front().mesh.positions;
     for (glm::vec3& p : pose)
         p.x += 0.25f;
-    view.showPose(pose);
-    view.setVertexColors(std::vector<std::uint32_t>(pose.size(), 0xff2080ffu));
+    shown.showPose(pose);
+    shown.showColors(std::vector<std::uint32_t>(pose.size(), 0xff2080ffu));
     const TrimImage posed = renderFrame(view, camera);
     QVERIFY(differingPixels(posed, unposed) > 100);
     const QImage posedColor = view.renderer().readColor();
@@ -156,10 +163,75 @@ void TestViewportRenderer::contentGoesIntoANewContext()
     QVERIFY(view.renderer().readColor() == posedColor);
     // What was uploaded again is the content itself: the posed scene's exact reference.
     const ReferenceResult reference =
-        ReferenceRenderer(*view.posedScene()).render(camera, kSize.width(), kSize.height(), TrimSettings{});
+        ReferenceRenderer(*content->posedScene()).render(camera, kSize.width(), kSize.height(), TrimSettings{});
     const std::optional<QString> failure =
         frameDisagreement(view, QStringLiteral("viewport_renderer_posed"), camera, TrimSettings{}, reference);
     QVERIFY2(!failure, qPrintable(failure.value_or(QString())));
+    view.release();
+}
+
+// Two owners publish poses and colours: the frame shows the last publisher's; when it
+// withdraws, the frame is again the one of the owner before it, bit for bit, and with no
+// pose left object 0 is back at the scene's own positions.
+void TestViewportRenderer::layersShowTheirDominantOwner()
+{
+    auto scene = std::make_shared<const Scene>(*makeDemoScene("pushed-sphere"));
+    const Camera camera = fitCamera(scene->worldBounds(), double(kSize.width()) / kSize.height());
+    const auto content = std::make_shared<ShownContent>();
+    ViewportRenderer view(content);
+    content->setScene(scene);
+    ContentPublisher skeleton(content, ContentOwner::Skeleton);
+    ContentPublisher design(content, ContentOwner::DesignHistory);
+    m_gl->makeCurrent();
+    view.initialize(m_gl->context());
+    const TrimImage rest = renderFrame(view, camera);
+    const QImage restColor = view.renderer().readColor();
+
+    std::vector<glm::vec3> moved = scene->objects.front().mesh.positions;
+    for (glm::vec3& p : moved)
+        p.x += 0.25f;
+    std::vector<glm::vec3> lifted = scene->objects.front().mesh.positions;
+    for (glm::vec3& p : lifted)
+        p.y += 0.3f;
+    skeleton.showPose(moved);
+    skeleton.showColors(std::vector<std::uint32_t>(moved.size(), 0xff2080ffu));
+    const TrimImage skeletonFrame = renderFrame(view, camera);
+    const QImage skeletonColor = view.renderer().readColor();
+    QVERIFY(differingPixels(skeletonFrame, rest) > 100);
+    QVERIFY(skeletonColor != restColor);
+
+    design.showPose(lifted);
+    design.showColors(std::vector<std::uint32_t>(lifted.size(), 0xff20ff20u));
+    QCOMPARE(content->poseOwner(), ContentOwner::DesignHistory);
+    QCOMPARE(content->colorOwner(), ContentOwner::DesignHistory);
+    const TrimImage designFrame = renderFrame(view, camera);
+    QVERIFY(differingPixels(designFrame, skeletonFrame) > 100);
+    QVERIFY(content->posedScene()->objects.front().mesh.positions == lifted);
+    const ReferenceResult reference =
+        ReferenceRenderer(*content->posedScene()).render(camera, kSize.width(), kSize.height(), TrimSettings{});
+    const std::optional<QString> failure =
+        frameDisagreement(view, QStringLiteral("viewport_renderer_dominant"), camera, TrimSettings{}, reference);
+    QVERIFY2(!failure, qPrintable(failure.value_or(QString())));
+
+    const std::uint64_t designVersion = content->version(ShownLayer::Pose);
+    skeleton.showPose(moved); // the skeleton published last: its pose is shown
+    QCOMPARE(content->poseOwner(), ContentOwner::Skeleton);
+    const std::uint64_t skeletonVersion = content->version(ShownLayer::Pose);
+    QVERIFY(skeletonVersion != designVersion);
+    design.withdrawPose(); // not shown: nothing changes, nothing is uploaded
+    QCOMPARE(content->version(ShownLayer::Pose), skeletonVersion);
+    design.showColors({}); // shown: the skeleton's colours come back
+    QCOMPARE(content->colorOwner(), ContentOwner::Skeleton);
+    QCOMPARE(differingPixels(renderFrame(view, camera), skeletonFrame), 0);
+    QVERIFY(view.renderer().readColor() == skeletonColor);
+
+    skeleton.withdrawPose();
+    skeleton.showColors({});
+    QCOMPARE(content->poseOwner(), ContentOwner::None);
+    QCOMPARE(content->colorOwner(), ContentOwner::None);
+    QVERIFY(content->posedScene() == content->scene());
+    QCOMPARE(differingPixels(renderFrame(view, camera), rest), 0);
+    QVERIFY(view.renderer().readColor() == restColor);
     view.release();
 }
 
@@ -172,21 +244,23 @@ void TestViewportRenderer::skinnedPosesAreSkinnedOnTheGpu()
     auto model = std::make_shared<const SkinningModel>(twoBoneModel(*scene, 3));
     const std::vector<PosePositions> cpu = reconstructPoses(*model);
     const Camera camera = fitCamera(scene->worldBounds(), double(kSize.width()) / kSize.height());
-    ViewportRenderer view;
-    view.setScene(scene);
+    const auto content = std::make_shared<ShownContent>();
+    ViewportRenderer view(content);
+    content->setScene(scene);
+    ContentPublisher shown(content, ContentOwner::Skinning);
     m_gl->makeCurrent();
     view.initialize(m_gl->context());
     const TrimImage rest = renderFrame(view, camera);
     const auto agreesWithCpuPose = [&](const char* name) {
         const ReferenceResult reference =
-            ReferenceRenderer(*view.posedScene()).render(camera, kSize.width(), kSize.height(), TrimSettings{});
+            ReferenceRenderer(*content->posedScene()).render(camera, kSize.width(), kSize.height(), TrimSettings{});
         return frameDisagreement(view, QString::fromLatin1(name), camera, TrimSettings{}, reference);
     };
 
     for (std::size_t pose : {1u, 2u}) { // playback: one chain step each
-        view.showSkinnedPose(model, pose, floatPositions(cpu[pose]));
+        shown.showSkinnedPose(model, pose, floatPositions(cpu[pose]));
         const TrimImage skinned = renderFrame(view, camera);
-        QVERIFY(view.poseSkinnedOnGpu());
+        QCOMPARE(view.lastPoseEvaluation(), PoseEvaluation::GpuSkinning);
         QVERIFY(differingPixels(skinned, rest) > 100);
         const std::optional<QString> failure = agreesWithCpuPose("viewport_renderer_skinned");
         QVERIFY2(!failure, qPrintable(failure.value_or(QString())));
@@ -197,18 +271,18 @@ void TestViewportRenderer::skinnedPosesAreSkinnedOnTheGpu()
     second.makeCurrent();
     view.initialize(second.context());
     renderFrame(view, camera);
-    QVERIFY(view.poseSkinnedOnGpu());
+    QCOMPARE(view.lastPoseEvaluation(), PoseEvaluation::GpuSkinning);
     std::optional<QString> failure = agreesWithCpuPose("viewport_renderer_skinned_again");
     QVERIFY2(!failure, qPrintable(failure.value_or(QString())));
 
     SkinningModel mismatched = *model; // not object 0's mesh: the CPU's pose is shown
     mismatched.triangles.pop_back();
-    view.showSkinnedPose(std::make_shared<const SkinningModel>(std::move(mismatched)), 1, floatPositions(cpu[1]));
+    shown.showSkinnedPose(std::make_shared<const SkinningModel>(std::move(mismatched)), 1, floatPositions(cpu[1]));
     renderFrame(view, camera);
-    QVERIFY(!view.poseSkinnedOnGpu());
+    QCOMPARE(view.lastPoseEvaluation(), PoseEvaluation::Uploaded);
     failure = agreesWithCpuPose("viewport_renderer_skinned_fallback");
     QVERIFY2(!failure, qPrintable(failure.value_or(QString())));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, view.showSkinnedPose(model, 3, floatPositions(cpu[1])));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, shown.showSkinnedPose(model, 3, floatPositions(cpu[1])));
     view.release();
 }
 
@@ -222,11 +296,12 @@ void TestViewportRenderer::dynamicChainGoesIntoANewContext()
     const Camera camera = fitCamera(timeline::chainBounds(*chain), double(kSize.width()) / kSize.height());
     TrimSettings settings;
     settings.rule = StaticRule::Parity;
-    ViewportRenderer view;
-    view.setScene(scene);
+    const auto content = std::make_shared<ShownContent>();
+    ViewportRenderer view(content);
+    content->setScene(scene);
     view.setTrimSettings(settings);
     view.setMethod(FragmentMethodKind::SBuffer);
-    view.setDynamicChain(chain);
+    ContentPublisher(content, ContentOwner::DesignHistory).showChain(chain);
     m_gl->makeCurrent();
     view.initialize(m_gl->context());
     const TrimImage first = renderFrame(view, camera);
@@ -247,14 +322,70 @@ void TestViewportRenderer::dynamicChainGoesIntoANewContext()
     view.release();
 }
 
+// A drag replaces the shown level and playback appends a level before the next frame:
+// the renderer uploads both into the chain it holds (one characterization pass for the
+// replaced level, now a reference), and the frame is the one of the whole chain, which
+// agrees with the exact reference.
+void TestViewportRenderer::dragThenAppendUploadsOnlyTheChange()
+{
+    const timeline::Timeline history = fig8_13NurbsHistory();
+    const std::vector<glm::uvec3>& triangles = history.base().triangles;
+    std::vector<std::vector<glm::vec3>> frames;
+    for (int f = 0; f < history.frameCount(); ++f)
+        frames.push_back(history.positionsAt(f));
+    QCOMPARE(frames.size(), std::size_t(5));
+    const auto chainOf = [&](std::vector<int> shown) {
+        std::vector<std::vector<glm::vec3>> positions;
+        for (int f : shown)
+            positions.push_back(frames[std::size_t(f)]);
+        return makeDynamicChain(triangles, positions,
+                                std::vector<DynamicRule>(shown.size() - 1, DynamicRule::Confluent), StaticRule::Parity);
+    };
+    const auto first = std::make_shared<const DynamicChain>(chainOf({0, 1, 2}));
+    const DynamicChain dragged = chainOf({0, 1, 3});
+    const DynamicChain whole = chainOf({0, 1, 3, 4});
+    const Camera camera = fitCamera(timeline::chainBounds(whole), double(kSize.width()) / kSize.height());
+    TrimSettings settings;
+    settings.rule = StaticRule::Parity;
+    const auto content = std::make_shared<ShownContent>();
+    ViewportRenderer view(content);
+    content->setScene(std::make_shared<const Scene>(timeline::frameScene(history, 2)));
+    view.setTrimSettings(settings);
+    view.setMethod(FragmentMethodKind::SBuffer);
+    ContentPublisher design(content, ContentOwner::DesignHistory);
+    design.showChain(first);
+    m_gl->makeCurrent();
+    view.initialize(m_gl->context());
+    QVERIFY(coveredPixels(renderFrame(view, camera)) > 500);
+    QCOMPARE(view.lastDynamicStats()->characterizedLevels, 1);
+
+    design.replaceShownLevel(std::make_shared<const DynamicChainLevel>(dragged.levels.back()));
+    design.appendLevel(std::make_shared<const DynamicChainLevel>(whole.levels.back()));
+    QCOMPARE(content->chain()->levels.size(), std::size_t(3));
+    const TrimImage appended = renderFrame(view, camera);
+    QCOMPARE(view.lastDynamicStats()->levels, 3);
+    QCOMPARE(view.lastDynamicStats()->characterizedLevels, 1); // level 0's characterization stayed
+    const ReferenceResult reference =
+        DynamicReferenceRenderer(whole).render(camera, kSize.width(), kSize.height(), settings);
+    const std::optional<QString> failure =
+        frameDisagreement(view, QStringLiteral("viewport_renderer_drag_append"), camera, settings, reference);
+    QVERIFY2(!failure, qPrintable(failure.value_or(QString())));
+
+    design.showChain(std::make_shared<const DynamicChain>(whole)); // the same chain, published whole
+    QCOMPARE(differingPixels(renderFrame(view, camera), appended), 0);
+    QCOMPARE(view.lastDynamicStats()->characterizedLevels, 2);
+    view.release();
+}
+
 // A budget no method fits: every step of the chain is announced, then the CPU still; a
 // choice without the budget renders on the GPU again.
 void TestViewportRenderer::outOfMemoryWalksTheChainWithNotices()
 {
     auto scene = std::make_shared<const Scene>(*makeDemoScene("pushed-sphere"));
     const Camera camera = fitCamera(scene->worldBounds(), double(kSize.width()) / kSize.height());
-    ViewportRenderer view;
-    view.setScene(scene);
+    const auto content = std::make_shared<ShownContent>();
+    ViewportRenderer view(content);
+    content->setScene(scene);
     MethodParameters tiny;
     tiny.memoryBudgetBytes = 1;
     view.setMethodParameters(tiny);
@@ -282,12 +413,13 @@ void TestViewportRenderer::dynamicRulesOutOfMemoryAreRefused()
     const int last = history.frameCount() - 1;
     auto chain = std::make_shared<const DynamicChain>(timeline::frameChain(history, last, StaticRule::Parity));
     const Camera camera = fitCamera(timeline::chainBounds(*chain), double(kSize.width()) / kSize.height());
-    ViewportRenderer view;
-    view.setScene(std::make_shared<const Scene>(timeline::frameScene(history, last)));
+    const auto content = std::make_shared<ShownContent>();
+    ViewportRenderer view(content);
+    content->setScene(std::make_shared<const Scene>(timeline::frameScene(history, last)));
     MethodParameters tiny;
     tiny.memoryBudgetBytes = 1;
     view.setMethodParameters(tiny);
-    view.setDynamicChain(chain);
+    ContentPublisher(content, ContentOwner::DesignHistory).showChain(chain);
     m_gl->makeCurrent();
     view.initialize(m_gl->context());
     std::vector<std::string> notices;
@@ -295,7 +427,8 @@ void TestViewportRenderer::dynamicRulesOutOfMemoryAreRefused()
         (void)view.render(camera, kSize, 0, [&](const std::string& notice) { notices.push_back(notice); });
         QFAIL("a frame no method fits rendered under the dynamic rules");
     } catch (const GpuMemoryError& e) {
-        QVERIFY2(std::string(e.what()).find("No GPU method with the dynamic rules fits") != std::string::npos, e.what());
+        QVERIFY2(std::string(e.what()).find("No GPU method with the dynamic rules fits") != std::string::npos,
+                 e.what());
     }
     QCOMPARE(notices.size(), std::size_t(1)); // k⁺-buffer → S-buffer, then the refusal
     QVERIFY(!view.policy().showsCpuStill());

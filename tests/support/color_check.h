@@ -17,11 +17,11 @@
 namespace trimlab::test {
 
 struct ColorComparison {
-    std::uint64_t compared = 0;  ///< pixels with a hit, not flagged by the GPU
-    std::uint64_t within = 0;    ///< of those, every channel within the tolerance
-    std::uint64_t flagged = 0;   ///< skipped: overflowed or unresolved on the GPU
-    int maxDifference = 0;       ///< largest channel difference over compared pixels, in 8-bit steps
-    QImage disagreementMask;     ///< Grayscale8, 255 where beyond the tolerance
+    std::uint64_t compared = 0; ///< pixels with a hit, not flagged by the GPU
+    std::uint64_t within = 0;   ///< of those, every channel within the tolerance
+    std::uint64_t flagged = 0;  ///< skipped: overflowed or unresolved on the GPU
+    int maxDifference = 0;      ///< largest channel difference over compared pixels, in 8-bit steps
+    QImage disagreementMask;    ///< Grayscale8, 255 where beyond the tolerance
 
     [[nodiscard]] double agreement() const { return compared ? double(within) / double(compared) : 0.0; }
     [[nodiscard]] QString summary() const;

@@ -17,7 +17,8 @@ void requireValidGltf(const std::filesystem::path& file)
     qInfo().noquote() << output.trimmed();
     QVERIFY2(validator.exitStatus() == QProcess::NormalExit, qPrintable("the validator crashed:\n" + output));
     QVERIFY2(validator.exitCode() != 2, qPrintable("the glTF validator could not run (exit 2); it needs Node.js, "
-                                                   "npm and a reachable npm registry on first use:\n" + output));
+                                                   "npm and a reachable npm registry on first use:\n" +
+                                                   output));
     QVERIFY2(validator.exitCode() == 0, qPrintable("the glTF validator reports errors:\n" + output));
     QVERIFY2(output.contains(": 0 errors,"), qPrintable(output));
 }

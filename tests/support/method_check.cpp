@@ -30,7 +30,8 @@ std::optional<QString> firstViolation(const TrimComparison& comparison, const re
 } // namespace
 
 std::optional<QString> checkMethodAgainstReference(render::TrimRenderer& renderer, render::FragmentMethodKind method,
-                                                   const MethodCase& testCase, const ReferenceRenderer& referenceRenderer,
+                                                   const MethodCase& testCase,
+                                                   const ReferenceRenderer& referenceRenderer,
                                                    const ReferenceResult& reference, QString* summary,
                                                    const MethodCriteria& criteria)
 {
@@ -51,12 +52,12 @@ std::optional<QString> checkFrameAgainstReference(render::TrimRenderer& renderer
     const TrimImage gpu = renderer.readTrimImage();
     const TrimComparison comparison = compareTrimImages(gpu, reference.trim, reference.diagnostics, {}, ties);
     const render::FrameStats& stats = renderer.lastStats();
-    const QString text = comparison.summary() +
-                         QStringLiteral("; %1 geometry passes, %2 fragments stored, %3 lost, %4 ms wall")
-                             .arg(stats.methodStats.geometryPasses)
-                             .arg(stats.counts.fragmentsStored)
-                             .arg(stats.counts.fragmentsLost)
-                             .arg(stats.wallMilliseconds, 0, 'f', 1);
+    const QString text =
+        comparison.summary() + QStringLiteral("; %1 geometry passes, %2 fragments stored, %3 lost, %4 ms wall")
+                                   .arg(stats.methodStats.geometryPasses)
+                                   .arg(stats.counts.fragmentsStored)
+                                   .arg(stats.counts.fragmentsLost)
+                                   .arg(stats.wallMilliseconds, 0, 'f', 1);
     if (summary)
         *summary = text;
     const bool bounded = render::methodInfo(method).bounded;

@@ -16,7 +16,7 @@
 namespace trimlab::test {
 
 struct MethodCase {
-    QString name;            ///< used for artifact file names
+    QString name; ///< used for artifact file names
     Camera camera;
     TrimSettings settings;
     render::MethodParameters parameters;
@@ -26,9 +26,9 @@ struct MethodCase {
 
 /// The acceptance criteria of the render tests.
 struct MethodCriteria {
-    double minimumAgreement = 0.999;   ///< on compared pixels
-    double maximumExcluded = 0.05;     ///< edge/depth/silhouette exclusions per covered pixel
-    double minimumCoverage = 0.05;     ///< covered pixels per image pixel: no vacuous cases
+    double minimumAgreement = 0.999; ///< on compared pixels
+    double maximumExcluded = 0.05;   ///< edge/depth/silhouette exclusions per covered pixel
+    double minimumCoverage = 0.05;   ///< covered pixels per image pixel: no vacuous cases
     /// Accept another fragment tied in depth with the reference's shown one (TieCheck).
     /// False: ties must resolve exactly as the reference's walk order (coplanar tests).
     bool allowTies = true;
@@ -42,20 +42,16 @@ struct MethodCriteria {
 /// overflowed; unbounded ones must flag none and lose no fragment. Returns nullopt on
 /// success, else the failure message (artifacts written). `summary` receives the
 /// comparison summary either way.
-[[nodiscard]] std::optional<QString> checkMethodAgainstReference(render::TrimRenderer& renderer,
-                                                                 render::FragmentMethodKind method,
-                                                                 const MethodCase& testCase,
-                                                                 const ReferenceRenderer& referenceRenderer,
-                                                                 const ReferenceResult& reference,
-                                                                 QString* summary = nullptr,
-                                                                 const MethodCriteria& criteria = {});
+[[nodiscard]] std::optional<QString>
+checkMethodAgainstReference(render::TrimRenderer& renderer, render::FragmentMethodKind method,
+                            const MethodCase& testCase, const ReferenceRenderer& referenceRenderer,
+                            const ReferenceResult& reference, QString* summary = nullptr,
+                            const MethodCriteria& criteria = {});
 
 /// The comparison half of checkMethodAgainstReference, for a frame already rendered into
 /// `renderer`'s target by other means (e.g. the dynamic rules' renderer).
-[[nodiscard]] std::optional<QString> checkFrameAgainstReference(render::TrimRenderer& renderer,
-                                                                const MethodCase& testCase,
-                                                                const ReferenceResult& reference, const TieCheck& ties,
-                                                                QString* summary = nullptr,
-                                                                const MethodCriteria& criteria = {});
+[[nodiscard]] std::optional<QString>
+checkFrameAgainstReference(render::TrimRenderer& renderer, const MethodCase& testCase, const ReferenceResult& reference,
+                           const TieCheck& ties, QString* summary = nullptr, const MethodCriteria& criteria = {});
 
 } // namespace trimlab::test

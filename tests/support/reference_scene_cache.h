@@ -41,8 +41,7 @@ public:
     /// caller names the settings and must not reuse a key for another camera, size or
     /// settings.
     const ReferenceResult& referenceResult(const std::string& name, const std::string& settingsKey,
-                                           const Camera& camera, int width, int height,
-                                           const TrimSettings& settings);
+                                           const Camera& camera, int width, int height, const TrimSettings& settings);
 
 private:
     /// The entry of `name`, building it on first use.

@@ -22,11 +22,9 @@ namespace trimlab::test {
 /// a DynamicTrimRenderer on `renderer`, and compares the frame with DynamicReferenceRenderer
 /// as checkFrameAgainstReference does (no tie allowance). Returns nullopt on success, else
 /// the failure message (artifacts written); `summary` receives the comparison summary.
-[[nodiscard]] std::optional<QString> checkDynamicChainAgainstReference(render::TrimRenderer& renderer,
-                                                                       render::FragmentMethodKind method,
-                                                                       const DynamicChain& chain,
-                                                                       const MethodCase& testCase,
-                                                                       QString* summary = nullptr);
+[[nodiscard]] std::optional<QString>
+checkDynamicChainAgainstReference(render::TrimRenderer& renderer, render::FragmentMethodKind method,
+                                  const DynamicChain& chain, const MethodCase& testCase, QString* summary = nullptr);
 
 /// The exact references of a design's last frame under both classifications, compared
 /// pixel by pixel by shown primitive (triangle index of the designed mesh).

@@ -32,11 +32,11 @@ struct Run {
 /// one line on stderr, "trimlab: error: …" containing `message` — the documented contract
 /// of bad arguments (2) and bad files (1). `run` is evaluated once, so a runTrimlab(...)
 /// call may stand there.
-#define TRIMLAB_VERIFY_ONE_LINE_ERROR(run, code, message)                                                  \
-    do {                                                                                                   \
-        const trimlab::test::Run& run_ = (run);                                                            \
-        QCOMPARE(run_.exitCode, (code));                                                                   \
-        QVERIFY2(run_.err.startsWith(QLatin1String("trimlab: error: ")) && run_.err.contains(message),     \
-                 qPrintable(run_.err));                                                                    \
-        QCOMPARE(run_.err.trimmed().count(QLatin1Char('\n')), 0);                                          \
+#define TRIMLAB_VERIFY_ONE_LINE_ERROR(run, code, message)                                                              \
+    do {                                                                                                               \
+        const trimlab::test::Run& run_ = (run);                                                                        \
+        QCOMPARE(run_.exitCode, (code));                                                                               \
+        QVERIFY2(run_.err.startsWith(QLatin1String("trimlab: error: ")) && run_.err.contains(message),                 \
+                 qPrintable(run_.err));                                                                                \
+        QCOMPARE(run_.err.trimmed().count(QLatin1Char('\n')), 0);                                                      \
     } while (false)

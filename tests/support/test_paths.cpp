@@ -10,7 +10,8 @@ namespace {
 std::filesystem::path folder(const char* variable, const char* builtIn)
 {
     const char* fromEnvironment = std::getenv(variable);
-    return fromEnvironment && *fromEnvironment ? std::filesystem::path(fromEnvironment) : std::filesystem::path(builtIn);
+    return fromEnvironment && *fromEnvironment ? std::filesystem::path(fromEnvironment)
+                                               : std::filesystem::path(builtIn);
 }
 
 } // namespace

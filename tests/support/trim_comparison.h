@@ -31,8 +31,7 @@ struct TrimComparison : TrimAgreement {
 /// Both images must have the diagnostics' size (see measureTrimAgreement).
 [[nodiscard]] TrimComparison compareTrimImages(const TrimImage& actual, const TrimImage& reference,
                                                const ReferenceDiagnostics& diagnostics,
-                                               const ComparisonTolerance& tolerance = {},
-                                               const TieCheck& ties = {});
+                                               const ComparisonTolerance& tolerance = {}, const TieCheck& ties = {});
 
 /// A false-color picture of a trim image for failure artifacts: empty pixels black,
 /// caps gray (lighter for higher plane indices), covered ones colored by primitive id,

@@ -28,7 +28,9 @@ inline std::unique_ptr<ui::MainWindow> showDemoWindow(const QString& ini, QSize 
 {
     auto window = showMainWindow(ini, viewportSize);
     const bool loaded = QTest::qWaitFor(
-        [&] { return !window->isLoading() && window->scene() && window->scene()->source == kDefaultDemo.toStdString(); },
+        [&] {
+            return !window->isLoading() && window->scene() && window->scene()->source == kDefaultDemo.toStdString();
+        },
         kDemoWaitMs);
     if (!loaded)
         qWarning("the default demo did not load");
@@ -47,8 +49,9 @@ inline std::optional<QString> lastFrameDisagreement(ui::MainWindow& window, cons
     const int width = frame.pixelSize.width();
     const int height = frame.pixelSize.height();
     const ReferenceResult expected = reference.render(frame.camera, width, height, frame.settings);
-    const TrimComparison comparison = compareTrimImages(actual, expected.trim, expected.diagnostics, {},
-                                                        referenceTieCheck(reference, frame.camera, width, height, frame.settings));
+    const TrimComparison comparison =
+        compareTrimImages(actual, expected.trim, expected.diagnostics, {},
+                          referenceTieCheck(reference, frame.camera, width, height, frame.settings));
     const bool bounded = render::methodInfo(frame.stats.method).bounded;
     const auto violation = agreementViolation(comparison, {}, bounded, frame.stats.counts.fragmentsLost);
     qInfo("%s: %s", qPrintable(name), qPrintable(comparison.summary()));

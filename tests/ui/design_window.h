@@ -1,18 +1,22 @@
 #pragma once
 /// \file
 /// The main window set up for the designer workflow, shared by the design tests
-/// (tst_design_workflow.cpp) and the drag benchmark (bench_design_drag.cpp).
+/// (tst_design_workflow.cpp), the drag benchmark (bench_design_drag.cpp) and the tests of
+/// what the window shows (window/tst_shown_frames.cpp, window/tst_mesh_statistics.cpp),
+/// with a brush stroke as a user drags it.
 
 #include "named_child.h"
 #include "plain_obj.h"
 #include "shown_main_window.h"
 
+#include "ui/design/design_session.h"
 #include "ui/design/design_workspace.h"
 #include "ui/window/main_window.h"
 #include "ui/viewport/viewport_widget.h"
 
 #include "core/mesh/triangle_mesh.h"
 
+#include <QPoint>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QString>
@@ -58,6 +62,26 @@ inline bool openDesignAndWait(ui::MainWindow& window, const QString& source)
     if (opened && !QTest::qWaitForWindowActive(&window, kWaitMs))
         qWarning("the main window is not active after opening %s; shortcuts will not reach it", qPrintable(source));
     return opened;
+}
+
+/// A left drag from `from` to `to` in `steps` moves, as QTest sends it.
+inline void brushDrag(QWidget* viewport, QPoint from, QPoint to, int steps = 6)
+{
+    QTest::mousePress(viewport, Qt::LeftButton, {}, from);
+    for (int i = 1; i <= steps; ++i)
+        QTest::mouseMove(viewport, from + (to - from) * i / steps);
+    QTest::mouseRelease(viewport, Qt::LeftButton, {}, to);
+}
+
+/// A brush drag from the viewport's centre by `offset`; true once the history has one
+/// frame more.
+inline bool strokeAtCentre(ui::MainWindow& window, QPoint offset)
+{
+    const ui::DesignSession* session = window.designWorkspace()->session();
+    const int before = session->timeline().frameCount();
+    const QPoint centre(window.viewport()->width() / 2, window.viewport()->height() / 2);
+    brushDrag(window.viewport(), centre, centre + offset);
+    return QTest::qWaitFor([&] { return session->timeline().frameCount() == before + 1; }, kWaitMs);
 }
 
 /// Waits for the viewport's next frame; adds the frames seen to `seen`.

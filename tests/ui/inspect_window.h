@@ -117,16 +117,15 @@ inline std::optional<QString> inspectDisagreement(ui::MainWindow& window, const 
     const int width = frame.pixelSize.width();
     const int height = frame.pixelSize.height();
     const ReferenceResult expected = reference.render(frame.camera, width, height, frame.settings);
-    const TrimComparison comparison = compareTrimImages(
-        actual, expected.trim, expected.diagnostics, {}, referenceTieCheck(reference, frame.camera, width, height,
-                                                                           frame.settings));
+    const TrimComparison comparison =
+        compareTrimImages(actual, expected.trim, expected.diagnostics, {},
+                          referenceTieCheck(reference, frame.camera, width, height, frame.settings));
     const bool bounded = render::methodInfo(frame.stats.method).bounded;
     const auto violation = agreementViolation(comparison, {}, bounded, frame.stats.counts.fragmentsLost);
     qInfo("%s: %s", qPrintable(name), qPrintable(comparison.summary()));
     const QString files = violation || comparison.coveredPixels < minCoveredFraction * width * height
                               ? writeComparisonArtifacts(name, trimImageToPicture(actual),
-                                                         trimImageToPicture(expected.trim),
-                                                         comparison.disagreementMask)
+                                                         trimImageToPicture(expected.trim), comparison.disagreementMask)
                               : QString();
     if (comparison.coveredPixels < minCoveredFraction * width * height)
         return QStringLiteral("%1: only %2 pixels covered; %3").arg(name).arg(comparison.coveredPixels).arg(files);

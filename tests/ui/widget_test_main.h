@@ -10,15 +10,15 @@
 #include <QtTest>
 
 /// Defines main() running the QtTest object `TestClass` (use instead of QTEST_MAIN).
-#define TRIMLAB_WIDGET_TEST_MAIN(TestClass)                                                                \
-    int main(int argc, char** argv)                                                                        \
-    {                                                                                                      \
-        if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&    \
-            qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))                                                \
-            qputenv("QT_QPA_PLATFORM", "offscreen");                                                       \
-        QApplication app(argc, argv);                                                                      \
-        app.setAttribute(Qt::AA_Use96Dpi, true);                                                           \
-        TestClass test;                                                                                    \
-        QTEST_SET_MAIN_SOURCE_PATH                                                                         \
-        return QTest::qExec(&test, argc, argv);                                                            \
+#define TRIMLAB_WIDGET_TEST_MAIN(TestClass)                                                                            \
+    int main(int argc, char** argv)                                                                                    \
+    {                                                                                                                  \
+        if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&                \
+            qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))                                                            \
+            qputenv("QT_QPA_PLATFORM", "offscreen");                                                                   \
+        QApplication app(argc, argv);                                                                                  \
+        app.setAttribute(Qt::AA_Use96Dpi, true);                                                                       \
+        TestClass test;                                                                                                \
+        QTEST_SET_MAIN_SOURCE_PATH                                                                                     \
+        return QTest::qExec(&test, argc, argv);                                                                        \
     }

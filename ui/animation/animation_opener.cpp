@@ -1,6 +1,6 @@
 #include "ui/animation/animation_opener.h"
 
-#include "ui/common/background_task.h"
+#include "ui/common/background_job.h"
 #include "ui/common/task_progress_dialog.h"
 
 #include <QFileInfo>
@@ -22,7 +22,9 @@ QString shortName(const QString& source)
 
 } // namespace
 
-AnimationOpener::AnimationOpener(QWidget* dialogParent) : QObject(dialogParent), m_dialogParent(dialogParent) {}
+AnimationOpener::AnimationOpener(QWidget* dialogParent) : QObject(dialogParent), m_dialogParent(dialogParent)
+{
+}
 
 AnimationOpener::~AnimationOpener()
 {
@@ -33,14 +35,14 @@ void AnimationOpener::open(const QString& source)
 {
     abandonTask();
     m_source = source;
-    auto result = std::make_shared<std::shared_ptr<const LoadedAnimation>>();
-    m_task = new BackgroundTask(this);
-    connect(m_task, &BackgroundTask::progressed, this, &AnimationOpener::updateProgress);
-    connect(m_task, &BackgroundTask::succeeded, this, [this, result] { finishLoad(*result); });
-    connect(m_task, &BackgroundTask::failed, this, &AnimationOpener::failLoad);
-    connect(m_task, &BackgroundTask::canceled, this, &AnimationOpener::cancel);
-    m_task->start([result, path = source.toStdString()](const TaskControl& control) {
-        *result = std::make_shared<const LoadedAnimation>(loadAnimationForDisplay(path, control));
+    auto* job = new BackgroundJob<std::shared_ptr<const LoadedAnimation>>(this);
+    m_task = job;
+    connect(job, &BackgroundJobBase::progressed, this, &AnimationOpener::updateProgress);
+    connect(job, &BackgroundJobBase::succeeded, this, [this, job] { finishLoad(job->takeResult()); });
+    connect(job, &BackgroundJobBase::failed, this, &AnimationOpener::failLoad);
+    connect(job, &BackgroundJobBase::canceled, this, &AnimationOpener::cancel);
+    job->start([path = source.toStdString()](const TaskControl& control) {
+        return std::make_shared<const LoadedAnimation>(loadAnimationForDisplay(path, control));
     });
     showProgress(source);
 }
@@ -58,21 +60,13 @@ void AnimationOpener::cancel()
     emit canceled(m_source);
 }
 
-// Stops the pending task and lets it delete itself once its worker has returned; its
+// Stops the pending job and lets it delete itself once its worker has returned; its
 // signals no longer reach this object.
 void AnimationOpener::abandonTask()
 {
     closeProgress();
-    if (!m_task)
-        return;
-    BackgroundTask* task = std::exchange(m_task, nullptr);
-    task->disconnect(this);
-    if (!task->isRunning()) {
-        task->deleteLater();
-        return;
-    }
-    connect(task, &BackgroundTask::finished, task, &QObject::deleteLater);
-    task->cancel();
+    if (m_task)
+        std::exchange(m_task, nullptr)->abandon(this);
 }
 
 void AnimationOpener::finishLoad(std::shared_ptr<const LoadedAnimation> animation)

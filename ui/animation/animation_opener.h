@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Opens mesh animations off the UI thread (BackgroundTask on loadAnimationForDisplay),
+/// Opens mesh animations off the UI thread (BackgroundJob on loadAnimationForDisplay),
 /// like SceneLoader opens meshes, but with real progress and cancel: the core loader
 /// reports one item per file (or sampled glTF pose), shown in a QProgressDialog that
 /// appears when loading takes longer than a delay, and its Cancel button stops the
@@ -20,7 +20,7 @@ class QWidget;
 
 namespace trimlab::ui {
 
-class BackgroundTask;
+class BackgroundJobBase;
 
 class AnimationOpener : public QObject {
     Q_OBJECT
@@ -61,8 +61,8 @@ private:
 
     QWidget* m_dialogParent;
     QPointer<QProgressDialog> m_progress;
-    /// The pending load's task (nullptr when idle); abandoned tasks delete themselves.
-    BackgroundTask* m_task = nullptr;
+    /// The pending load's job (nullptr when idle); abandoned jobs delete themselves.
+    BackgroundJobBase* m_task = nullptr;
     QString m_source;
     int m_progressDelayMs = kDefaultProgressDelayMs;
 };

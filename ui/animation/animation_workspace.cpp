@@ -18,7 +18,13 @@ namespace trimlab::ui {
 
 AnimationWorkspace::AnimationWorkspace(const WindowContext& context, ViewportWidget* viewport, QDockWidget* tabWith,
                                        QObject* parent)
-    : QObject(parent), m_context(context), m_viewport(viewport), m_player(viewport)
+    : QObject(parent),
+      m_context(context),
+      m_viewport(viewport),
+      m_playbackShown(viewport->content(), render::ContentOwner::AnimationPlayback),
+      m_skinningShown(viewport->content(), render::ContentOwner::Skinning),
+      m_segmentsShown(viewport->content(), render::ContentOwner::Segmentation),
+      m_player(m_playbackShown)
 {
     createDocks(tabWith);
     connectParts();
@@ -47,8 +53,9 @@ void AnimationWorkspace::connectParts()
 {
     QSettings& settings = m_context.settings();
     connect(m_timeline, &TimelinePanel::poseChanged, this, &AnimationWorkspace::showPose);
-    connect(m_timeline, &TimelinePanel::playbackChoicesChanged, this,
-            [this, &settings] { savePlaybackChoices(settings, {m_timeline->fps(), m_timeline->loops()}); });
+    connect(m_timeline, &TimelinePanel::playbackChoicesChanged, this, [this, &settings] {
+        savePlaybackChoices(settings, {m_timeline->fps(), m_timeline->loops()});
+    });
     connect(m_history, &PoseHistoryBar::choicesChanged, this, [this, &settings] {
         savePoseHistoryChoices(settings, m_history->choices());
         applyPoseHistoryChoices();
@@ -165,22 +172,25 @@ void AnimationWorkspace::clear()
     hideAnimationDocks();
 }
 
+// The pose shown, captured or approximated (skinned on the GPU where it can be), and
+// under a dynamic rule its chain; each owner's pose is published first, so the other's
+// withdrawal changes nothing shown.
 void AnimationWorkspace::showPose(int pose)
 {
     if (!m_animation || pose < 0 || std::size_t(pose) >= m_animation->animation->poseCount())
         return;
-    if (m_player.show(std::size_t(pose))) {
-        // shown under a dynamic rule
-    } else if (const std::optional<std::vector<glm::vec3>> skinned = m_skinning->panel()->shownPose(pose)) {
-        m_viewport->showSkinnedPose(m_skinning->panel()->shownModel(pose), std::size_t(pose), *skinned);
-    } else if (m_animation->fileSkin) {
-        // A skinned glTF file plays on the GPU from its own skin; the sampled pose is the
-        // CPU's answer (the still, the fallback).
-        m_viewport->showSkinnedPose(m_animation->fileSkin, std::size_t(pose),
-                                    m_animation->animation->poses[std::size_t(pose)]);
+    const auto index = std::size_t(pose);
+    if (std::optional<std::vector<glm::vec3>> skinned = m_skinning->panel()->shownPose(pose)) {
+        m_skinningShown.showSkinnedPose(m_skinning->panel()->shownModel(pose), index, std::move(*skinned));
+        m_playbackShown.withdrawPose();
     } else {
-        m_viewport->showPose(m_animation->animation->poses[std::size_t(pose)]);
+        if (m_animation->fileSkin) // a skinned glTF file plays on the GPU from its own skin
+            m_playbackShown.showSkinnedPose(m_animation->fileSkin, index, m_animation->animation->poses[index]);
+        else
+            m_playbackShown.showPose(m_animation->animation->poses[index]);
+        m_skinningShown.withdrawPose();
     }
+    m_player.show(index);
     m_segmentation->setCurrentPose(pose);
     m_skinning->panel()->setCurrentPose(pose);
 }
@@ -191,7 +201,13 @@ void AnimationWorkspace::showSegmentColors()
     if (!m_animation)
         return;
     const std::vector<std::uint32_t>& heatMap = m_skinning->panel()->displayColors();
-    m_viewport->setVertexColors(heatMap.empty() ? m_segmentation->displayColors() : heatMap);
+    if (heatMap.empty()) {
+        m_segmentsShown.showColors(m_segmentation->displayColors());
+        m_skinningShown.showColors({});
+    } else {
+        m_skinningShown.showColors(heatMap);
+        m_segmentsShown.showColors({});
+    }
 }
 
 // The Skinning panel's bones: the segmentation shown, unless it changes per pose
@@ -207,10 +223,11 @@ void AnimationWorkspace::passSegmentationToSkinning()
 
 void AnimationWorkspace::showExportSegmentationDialog()
 {
-    const QString path = m_context.askSavePath(
-        tr("Export Segmentation"),
-        {tr("Segmentation JSON (*.json)"), tr("Per-vertex labels CSV (*.csv)"), tr("glTF with segment colors (*.gltf)")},
-        m_context.sceneBaseName(QStringLiteral("animation")) + QStringLiteral("-segments.json"));
+    const QString path =
+        m_context.askSavePath(tr("Export Segmentation"),
+                              {tr("Segmentation JSON (*.json)"), tr("Per-vertex labels CSV (*.csv)"),
+                               tr("glTF with segment colors (*.gltf)")},
+                              m_context.sceneBaseName(QStringLiteral("animation")) + QStringLiteral("-segments.json"));
     if (path.isEmpty())
         return;
     QString error;

@@ -11,11 +11,19 @@
 /// Skinning docks are shown only while an animation is. Playback, pose classification and
 /// segmentation choices persist in the settings.
 ///
+/// What it shows goes into the viewport's content (render/content_publisher.h) under three
+/// owners: animation playback (the pose on the timeline, its chain under a dynamic rule),
+/// skinning (the approximation's pose and the error heat map, which take the place of the
+/// captured pose and the segment colours while shown) and segmentation (the segment
+/// colours).
+///
 /// Opening an animation (AnimationOpener, recent animations, the dialog) is the window's:
 /// it calls show() with what was loaded.
 
 #include "ui/animation/dynamic_pose_player.h"
 #include "ui/common/loaded_animation.h"
+
+#include "render/content_publisher.h"
 
 #include <QObject>
 
@@ -76,6 +84,9 @@ private:
 
     const WindowContext& m_context;
     ViewportWidget* m_viewport;
+    render::ContentPublisher m_playbackShown;
+    render::ContentPublisher m_skinningShown;
+    render::ContentPublisher m_segmentsShown;
     TimelinePanel* m_timeline = nullptr;
     PoseHistoryBar* m_history = nullptr;
     DynamicPosePlayer m_player;

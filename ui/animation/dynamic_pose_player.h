@@ -1,19 +1,26 @@
 #pragma once
 /// \file
-/// Shows the poses of a mesh animation in the viewport under a dynamic rule
+/// Shows the poses of a mesh animation under a dynamic rule
 /// (pose_history_choices.h; thesis 8.1): the animation is a deformation history whose
 /// frames are its poses. Against the rest pose every pose is one set, one level. Against
 /// the previous pose the chain of the pose shown has a set per pose from the rest pose;
 /// going further from the rest pose (playing forward, even with poses dropped to keep
-/// time) appends the steps to the viewport's chain, so each frame characterizes only the
-/// new sets and the classification is carried from pose to pose (Algorithms 8.11–8.13).
+/// time) appends the steps to the chain shown, so each frame characterizes only the
+/// new sets and the classification is carried from pose to pose (Algorithms 8.11–8.13);
+/// against the rest pose, another pose on the same side replaces only the shown level.
 /// Anything else (scrubbing back, a jump over the rest pose, another choice) builds the
-/// chain from the rest pose. Both give the same picture: the GPU characterizes the same
-/// levels either way.
+/// chain from the rest pose. Which of the three a pose takes is the core's plan
+/// (core/animation/pose_history_plan.h), the one `trimlab render --poses` follows too.
+/// All give the same picture: the GPU characterizes the same levels either way. The chain
+/// is published as animation playback's (render/content_publisher.h); the pose itself is
+/// the animation workspace's to publish.
 
 #include "ui/animation/pose_history_choices.h"
 
+#include "render/content_publisher.h"
+
 #include "core/animation/mesh_animation.h"
+#include "core/animation/pose_history_plan.h"
 #include "core/trim/static_rule.h"
 
 #include <glm/vec3.hpp>
@@ -26,14 +33,13 @@
 
 namespace trimlab::ui {
 
-class ViewportWidget;
-
 class DynamicPosePlayer {
 public:
     /// The positions of a pose as shown: the captured pose, or its skinned approximation.
     using PosePositions = std::function<std::vector<glm::vec3>(std::size_t pose)>;
 
-    explicit DynamicPosePlayer(ViewportWidget* viewport) : m_viewport(viewport) {}
+    /// Publishes its chains through `shown`.
+    explicit DynamicPosePlayer(render::ContentPublisher shown) : m_shown(std::move(shown)) {}
 
     /// The animation whose poses are shown (nullptr: none) and where their positions come
     /// from. Forgets the chain shown.
@@ -44,28 +50,29 @@ public:
     /// builds the chain again.
     void invalidate() { m_shownPose.reset(); }
 
-    /// Shows `pose` under the dynamic rule and returns true; false (nothing done) under
-    /// the static rule or without an animation: the caller shows the pose as it is.
-    /// The rest pose, which nothing has deformed yet, is shown by its static rule, without
-    /// a chain.
+    /// Shows the chain of `pose` under the dynamic rule and returns true; false (no chain)
+    /// under the static rule or without an animation. The rest pose, which nothing has
+    /// deformed yet, is shown by its static rule, without a chain (true).
     bool show(std::size_t pose);
-    /// Back to the static rule (drops the viewport's chain) if a chain is shown.
+    /// Back to the static rule (withdraws the chain) if a chain is shown.
     void stop();
 
     [[nodiscard]] const PoseHistoryChoices& choices() const { return m_choices; }
 
 private:
-    void showWholeChain(std::size_t pose);
-    void appendSteps(std::size_t pose);
-    [[nodiscard]] bool canAppend(std::size_t pose) const;
+    void updateHistory();
+    void showWholeChain(const std::vector<PoseHistoryLevel>& levels);
+    void appendSteps(const std::vector<PoseHistoryLevel>& levels);
+    void replaceShownLevel(const PoseHistoryLevel& level);
 
-    ViewportWidget* m_viewport;
+    render::ContentPublisher m_shown;
     std::shared_ptr<const MeshAnimation> m_animation;
     PosePositions m_positions;
     PoseHistoryChoices m_choices;
     StaticRule m_baseRule = StaticRule::AlternatingBorder;
-    std::optional<std::size_t> m_shownPose; ///< the pose whose chain the viewport holds
-    bool m_chainShown = false;              ///< the viewport renders a chain of ours
+    PoseHistorySets m_history;              ///< the sets of m_choices over m_animation
+    std::optional<std::size_t> m_shownPose; ///< the pose whose chain is published
+    bool m_chainShown = false;              ///< a chain of ours is published
 };
 
 } // namespace trimlab::ui

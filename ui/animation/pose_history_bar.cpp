@@ -23,8 +23,9 @@ PoseHistoryBar::PoseHistoryBar(QWidget* parent) : QWidget(parent)
     m_rule = new QComboBox;
     m_rule->setObjectName(QStringLiteral("poseRuleCombo"));
     m_rule->addItem(tr("Static rule (each pose alone)"), kStaticRule);
-    for (DynamicRule rule : {DynamicRule::Confluent, DynamicRule::HomogeneousConfluent, DynamicRule::ConstructiveAdditive,
-                             DynamicRule::ConstructiveSubtractive, DynamicRule::ConstructiveIntersection})
+    for (DynamicRule rule :
+         {DynamicRule::Confluent, DynamicRule::HomogeneousConfluent, DynamicRule::ConstructiveAdditive,
+          DynamicRule::ConstructiveSubtractive, DynamicRule::ConstructiveIntersection})
         m_rule->addItem(text(dynamicRuleDisplayName(rule)), int(rule));
     m_rule->setToolTip(tr("How the poses are classified. The static rule (Render panel) classifies each pose by "
                           "itself. A dynamic rule treats the animation as a deformation history: a part of the "

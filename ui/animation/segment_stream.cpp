@@ -1,6 +1,6 @@
 #include "ui/animation/segment_stream.h"
 
-#include "ui/common/background_task.h"
+#include "ui/common/background_job.h"
 
 #include "core/animation/segment_coloring.h"
 
@@ -17,7 +17,6 @@ struct SegmentStreamState {
     SegmenterSettings settings;
     std::shared_ptr<AnimationSegmenter> segmenter;
     StreamStep step;
-    std::shared_ptr<const SegmentationResult> result; ///< set by the completion job
 };
 
 namespace {
@@ -36,8 +35,8 @@ MeshAnimation firstPoseOf(const MeshAnimation& animation)
 }
 
 /// On a worker: adds pose `pose` to the stream's segmenter (creating it for pose 0),
-/// cleans with `h` and colors from the previous step.
-void appendStreamPose(SegmentStreamState& state, std::size_t pose, double h, const TaskControl& control)
+/// cleans with `h` and colors from the previous step; returns the step.
+StreamStep appendStreamPose(SegmentStreamState& state, std::size_t pose, double h, const TaskControl& control)
 {
     const auto start = std::chrono::steady_clock::now();
     const MeshAnimation& animation = *state.animation;
@@ -51,18 +50,21 @@ void appendStreamPose(SegmentStreamState& state, std::size_t pose, double h, con
     const AnimationSegmenter& segmenter = *state.segmenter;
     VertexLabeling labeling = segmenter.segment(h);
     StreamStep& step = state.step;
-    step.colors = step.labeling.labels.empty()
-                      ? colorSegments(segmenter.graph(), labeling, segmenter.vertexAreas())
-                      : propagateColors(segmenter.graph(), segmenter.vertexAreas(), step.labeling, step.colors, labeling);
+    step.colors = step.labeling.labels.empty() ? colorSegments(segmenter.graph(), labeling, segmenter.vertexAreas())
+                                               : propagateColors(segmenter.graph(), segmenter.vertexAreas(),
+                                                                 step.labeling, step.colors, labeling);
     step.labeling = std::move(labeling);
     step.processed = int(pose) + 1;
     step.times = segmenter.times();
     step.stepMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return step;
 }
 
 } // namespace
 
-SegmentStream::SegmentStream(QObject* parent) : QObject(parent) {}
+SegmentStream::SegmentStream(QObject* parent) : QObject(parent)
+{
+}
 
 SegmentStream::~SegmentStream() = default;
 
@@ -75,7 +77,7 @@ void SegmentStream::start(std::shared_ptr<const MeshAnimation> animation, const 
 {
     if (animation->restPose != 0)
         throw std::invalid_argument("A pose stream starts at the rest pose, which must be pose 0.");
-    abandonTask();
+    abandonJob();
     m_state = std::make_shared<SegmentStreamState>();
     m_state->animation = std::move(animation);
     m_state->settings = settings;
@@ -99,14 +101,14 @@ void SegmentStream::stop()
 {
     if (!m_state)
         return;
-    abandonTask();
+    abandonJob();
     m_state.reset();
     emit stopped();
 }
 
 void SegmentStream::startNextStep()
 {
-    if (!m_state || (m_task && m_task->isRunning()))
+    if (!m_state || (m_job && m_job->isRunning()))
         return;
     if (m_processed == poseCount()) {
         startCompletion();
@@ -114,63 +116,54 @@ void SegmentStream::startNextStep()
     }
     if (m_processed > m_reached)
         return; // wait for the timeline
-    prepareTask();
-    connect(m_task, &BackgroundTask::succeeded, this, &SegmentStream::onStepSucceeded);
+    auto* job = newJob<StreamStep>();
+    connect(job, &BackgroundJobBase::succeeded, this, [this, job] { onStepSucceeded(job->takeResult()); });
     const std::shared_ptr<SegmentStreamState> state = m_state;
     const auto pose = std::size_t(m_processed);
     const double h = m_h;
-    m_task->start([state, pose, h](const TaskControl& control) { appendStreamPose(*state, pose, h, control); });
+    job->start([state, pose, h](const TaskControl& control) { return appendStreamPose(*state, pose, h, control); });
 }
 
-void SegmentStream::onStepSucceeded()
+void SegmentStream::onStepSucceeded(const StreamStep& step)
 {
-    const StreamStep step = m_state->step; // a receiver may stop the stream
     m_processed = step.processed;
-    emit stepped(step);
+    emit stepped(step); // a receiver may stop the stream
     startNextStep();
 }
 
 void SegmentStream::startCompletion()
 {
-    prepareTask();
-    connect(m_task, &BackgroundTask::succeeded, this, [this] {
-        std::shared_ptr<const SegmentationResult> result = m_state->result;
+    auto* job = newJob<std::shared_ptr<const SegmentationResult>>();
+    connect(job, &BackgroundJobBase::succeeded, this, [this, job] {
+        std::shared_ptr<const SegmentationResult> result = job->takeResult();
         m_state.reset();
         emit finished(std::move(result));
     });
     const std::shared_ptr<SegmentStreamState> state = m_state;
-    m_task->start([state](const TaskControl& control) { state->result = completeSegmentation(state->segmenter, control); });
+    job->start([state](const TaskControl& control) { return completeSegmentation(state->segmenter, control); });
 }
 
-// The task for the next job, connected to failed() only; the caller adds the success
-// handler of its job.
-void SegmentStream::prepareTask()
+template <class T>
+BackgroundJob<T>* SegmentStream::newJob()
 {
-    if (!m_task)
-        m_task = new BackgroundTask(this);
-    m_task->disconnect(this);
-    connect(m_task, &BackgroundTask::failed, this, &SegmentStream::onFailed);
+    abandonJob();
+    auto* job = new BackgroundJob<T>(this);
+    connect(job, &BackgroundJobBase::failed, this, &SegmentStream::onFailed);
+    m_job = job;
+    return job;
 }
 
 void SegmentStream::onFailed(const QString& message)
 {
-    abandonTask();
+    abandonJob();
     m_state.reset();
     emit failed(message);
 }
 
-void SegmentStream::abandonTask()
+void SegmentStream::abandonJob()
 {
-    if (!m_task)
-        return;
-    BackgroundTask* task = std::exchange(m_task, nullptr);
-    task->disconnect(this);
-    if (!task->isRunning()) {
-        task->deleteLater();
-        return;
-    }
-    connect(task, &BackgroundTask::finished, task, &QObject::deleteLater);
-    task->cancel();
+    if (m_job)
+        std::exchange(m_job, nullptr)->abandon(this);
 }
 
 } // namespace trimlab::ui

@@ -3,7 +3,7 @@
 /// Real-time segmentation (thesis 3.2.2) on a stream of poses: it starts from the first
 /// pose and appends the next pose (AnimationSegmenter::appendPose) each time the
 /// timeline has reached it, one pose at a time, in order, each step on a worker
-/// (BackgroundTask). A step also cleans the segmentation so far with the current h and
+/// (a BackgroundJob returning the step). A step also cleans the segmentation so far with the current h and
 /// carries the colors over from the step before (propagateColors), and hands both to the
 /// UI thread as stepped(). The UI thread never touches the stream's segmenter while a
 /// step runs; after the last pose the segmenter equals a global run (the core
@@ -13,7 +13,7 @@
 /// brings them: when the timeline is ahead, steps follow each other without waiting;
 /// when the workers are slower than playback, the stream falls behind and catches up.
 
-#include "ui/animation/segmentation_result.h"
+#include "core/animation/segmentation_run.h"
 
 #include <QObject>
 #include <QString>
@@ -22,7 +22,9 @@
 
 namespace trimlab::ui {
 
-class BackgroundTask;
+class BackgroundJobBase;
+template <class T>
+class BackgroundJob;
 struct SegmentStreamState;
 
 /// What one step shows: the segmentation of poses 0 … processed−1 for the h of the step.
@@ -30,7 +32,7 @@ struct StreamStep {
     VertexLabeling labeling;
     std::vector<WheelColor> colors;
     int processed = 0;
-    double stepMs = 0.0; ///< append + cleaning + coloring, wall clock
+    double stepMs = 0.0;     ///< append + cleaning + coloring, wall clock
     SegmentationTimes times; ///< the segmenter's stages of this append
 };
 
@@ -62,22 +64,24 @@ signals:
     void stepped(const trimlab::ui::StreamStep& step);
     /// Every pose was appended; `result` holds the stream's segmenter (equal to a global
     /// run on the whole animation) and its variable segmentation.
-    void finished(std::shared_ptr<const trimlab::ui::SegmentationResult> result);
+    void finished(std::shared_ptr<const trimlab::SegmentationResult> result);
     void failed(const QString& message);
     void stopped();
 
 private:
     void startNextStep();
-    void onStepSucceeded();
+    void onStepSucceeded(const StreamStep& step);
     void startCompletion();
-    void prepareTask();
+    /// A new job for the next step (the previous one let go), connected to failed().
+    template <class T>
+    BackgroundJob<T>* newJob();
     void onFailed(const QString& message);
-    void abandonTask();
+    void abandonJob();
 
     /// The stream's animation, segmenter and last step, shared with the running step's
     /// job (which alone reads and changes it while it runs); nullptr when idle.
     std::shared_ptr<SegmentStreamState> m_state;
-    BackgroundTask* m_task = nullptr;
+    BackgroundJobBase* m_job = nullptr; ///< the running or last step's job
     double m_h = 0.0;
     int m_processed = 0;
     int m_reached = 0;

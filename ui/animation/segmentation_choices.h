@@ -6,26 +6,22 @@
 /// the mode and whether the animation is colored by segment.
 
 #include "core/animation/animation_segmenter.h"
+#include "core/animation/segmentation_parameters.h"
 
 namespace trimlab::ui {
 
-/// Thesis 3.2: one segmentation for the whole animation (global), built pose by pose as
-/// poses arrive (real-time, 3.2.2), or each pose's partition joined with the next one's
-/// (variable, 3.2.3).
-enum class SegmentationMode { Global, RealTime, Variable };
+using trimlab::SegmentationMode;
 
+/// Ranges and defaults are the rows of core/animation/segmentation_parameters.h.
 struct SegmentationChoices {
-    static constexpr int kMaxClusters = 1000;
-    static constexpr int kMaxThreads = 256;
-
-    FeatureKind feature = FeatureKind::RotationAngle;
-    ReferenceMode reference = ReferenceMode::Rest;
-    PartitionMethod method = PartitionMethod::RegionGrowing;
-    int clusters = 8;  ///< 1 … kMaxClusters
-    int threads = 0;   ///< 0 = every core
-    double h = 0.1;    ///< [0, 1]
-    SegmentationMode mode = SegmentationMode::Global;
-    bool colorBySegment = true;
+    FeatureKind feature = FeatureKind(segmentation_parameters::kFeature.defaultValue);
+    ReferenceMode reference = ReferenceMode(segmentation_parameters::kReference.defaultValue);
+    PartitionMethod method = PartitionMethod(segmentation_parameters::kMethod.defaultValue);
+    int clusters = int(segmentation_parameters::kClusters.defaultValue);
+    int threads = int(segmentation_parameters::kThreads.defaultValue); ///< 0 = every core
+    double h = segmentation_parameters::kH.defaultValue;
+    SegmentationMode mode = SegmentationMode(segmentation_parameters::kMode.defaultValue);
+    bool colorBySegment = segmentation_parameters::kColorBySegment.defaultValue != 0.0;
 
     /// The core settings these choices ask for.
     [[nodiscard]] SegmenterSettings segmenterSettings() const
@@ -39,7 +35,7 @@ struct SegmentationChoices {
         return settings;
     }
 
-    bool operator==(const SegmentationChoices&) const = default;
+    friend bool operator==(const SegmentationChoices&, const SegmentationChoices&) = default;
 };
 
 } // namespace trimlab::ui

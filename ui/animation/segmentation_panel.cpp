@@ -1,8 +1,9 @@
 #include "ui/animation/segmentation_panel.h"
 
+#include "ui/common/parameter_form.h"
 #include "ui/common/run_cancel_row.h"
 
-#include "ui/common/background_task.h"
+#include "ui/common/job_presenter.h"
 #include "ui/common/loaded_animation.h"
 #include "ui/animation/segment_stream.h"
 #include "ui/animation/segmentation_settings_form.h"
@@ -40,12 +41,11 @@ QString milliseconds(double ms)
 
 SegmentationPanel::SegmentationPanel(QWidget* parent) : QWidget(parent)
 {
-    m_task = new BackgroundTask(this);
+    m_job = new BackgroundJob<std::shared_ptr<const SegmentationResult>>(this);
     m_stream = new SegmentStream(this);
     m_form = new SegmentationSettingsForm;
     m_progress = new QProgressBar;
     m_progress->setObjectName(QStringLiteral("segmentationProgressBar"));
-    m_progress->setVisible(false);
     m_status = new QLabel;
     m_status->setObjectName(QStringLiteral("segmentationStatusLabel"));
     m_status->setWordWrap(true);
@@ -90,17 +90,18 @@ QWidget* SegmentationPanel::createCleaningGroup()
     auto* group = new QGroupBox(tr("Cleaning"));
     m_hSlider = new QSlider(Qt::Horizontal);
     m_hSlider->setObjectName(QStringLiteral("hSlider"));
-    m_hSlider->setRange(0, kHSteps);
+    m_hSlider->setRange(int(std::lround(segmentation_parameters::kH.min * kHSteps)),
+                        int(std::lround(segmentation_parameters::kH.max * kHSteps)));
     m_hSlider->setSingleStep(1);
     m_hSlider->setPageStep(kHSteps / 20);
-    m_hSlider->setToolTip(tr("h: 0 keeps the over-segmentation; larger values merge more slivers"));
+    m_hSlider->setToolTip(parameterToolTip(segmentation_parameters::kH));
     m_hLabel = new QLabel;
     m_hLabel->setObjectName(QStringLiteral("hLabel"));
     m_count = new QLabel;
     m_count->setObjectName(QStringLiteral("segmentCountLabel"));
     m_count->setWordWrap(true);
-    m_colorBySegment = new QCheckBox(tr("Color by segment"));
-    m_colorBySegment->setObjectName(QStringLiteral("colorBySegmentCheckBox"));
+    m_colorBySegment =
+        parameterCheckBox(segmentation_parameters::kColorBySegment, tr("Color by segment"), "colorBySegmentCheckBox");
     connect(m_hSlider, &QSlider::valueChanged, this, &SegmentationPanel::onHSliderMoved);
     connect(m_colorBySegment, &QCheckBox::toggled, this, &SegmentationPanel::onColorToggled);
     auto* hRow = new QHBoxLayout;
@@ -115,12 +116,13 @@ QWidget* SegmentationPanel::createCleaningGroup()
 
 void SegmentationPanel::connectJobs()
 {
-    connect(m_task, &BackgroundTask::progressed, this, &SegmentationPanel::onProgress);
-    connect(m_task, &BackgroundTask::succeeded, this, &SegmentationPanel::onRunSucceeded);
-    connect(m_task, &BackgroundTask::canceled, this, [this] {
+    m_presenter =
+        new JobPresenter(m_job, {m_run, m_cancel, m_progress, m_status}, JobPresenter::ProgressText::Count, this);
+    connect(m_job, &BackgroundJobBase::succeeded, this, &SegmentationPanel::onRunSucceeded);
+    connect(m_job, &BackgroundJobBase::canceled, this, [this] {
         onRunEnded(m_runAnimation == m_animation ? tr("Canceled; the previous segmentation is kept.") : readyStatus());
     });
-    connect(m_task, &BackgroundTask::failed, this, [this](const QString& message) {
+    connect(m_job, &BackgroundJobBase::failed, this, [this](const QString& message) {
         onRunEnded(m_runAnimation == m_animation ? tr("Segmentation failed: %1").arg(message) : readyStatus());
     });
     connect(m_stream, &SegmentStream::stepped, this, &SegmentationPanel::onStreamStep);
@@ -138,7 +140,7 @@ void SegmentationPanel::connectJobs()
 void SegmentationPanel::setAnimation(std::shared_ptr<const LoadedAnimation> animation)
 {
     m_stream->stop();
-    m_task->cancel(); // its result, should it still arrive, counts as canceled
+    m_job->cancel(); // its result, should it still arrive, counts as canceled
     m_animation = std::move(animation);
     m_result.reset();
     m_cleaned.reset();
@@ -246,16 +248,14 @@ void SegmentationPanel::run()
 
 void SegmentationPanel::startRun()
 {
-    m_pending = std::make_shared<std::shared_ptr<const SegmentationResult>>();
     m_pendingSettings = m_choices.segmenterSettings();
     m_runAnimation = m_animation;
-    m_task->start([pending = m_pending, animation = m_animation->animation,
-                   settings = m_pendingSettings](const TaskControl& control) {
-        *pending = runSegmentation(*animation, settings, control);
+    SegmentationRunOptions options;
+    options.settings = m_pendingSettings;
+    m_job->start([animation = m_animation->animation, options](const TaskControl& control) {
+        return runSegmentation(*animation, options, control);
     });
-    m_progress->setRange(0, 0);
-    m_progress->setVisible(true);
-    setStatus(tr("Segmenting…"));
+    m_presenter->showStarted(tr("Segmenting…"));
 }
 
 void SegmentationPanel::startStream()
@@ -282,26 +282,13 @@ void SegmentationPanel::cancel()
         m_stream->stop();
         return;
     }
-    if (!m_task->isRunning())
-        return;
-    m_task->cancel();
-    setStatus(tr("Canceling…"));
-    updateControls();
-}
-
-void SegmentationPanel::onProgress(const QString& stage, qint64 done, qint64 total)
-{
-    if (!m_task->isRunning() || total <= 0)
-        return; // a late report of a finished job
-    m_progress->setRange(0, int(total));
-    m_progress->setValue(int(std::min(done, total)));
-    m_progress->setFormat(tr("%1: %v / %m").arg(stage));
+    if (m_presenter->cancel())
+        updateControls();
 }
 
 void SegmentationPanel::onRunSucceeded()
 {
-    std::shared_ptr<const SegmentationResult> result = std::move(*m_pending);
-    m_pending.reset();
+    std::shared_ptr<const SegmentationResult> result = m_job->takeResult();
     // Every pose but the rest pose is partitioned: name the animation's pose count, with
     // the partitions beside it (it read "47 poses" for a 48-pose animation).
     const std::size_t poses = result->segmenter->animation().poseCount();
@@ -415,8 +402,7 @@ void SegmentationPanel::updateControls()
     const bool running = isRunning();
     m_form->setEnabled(available && !running);
     m_run->setText(m_choices.mode == SegmentationMode::RealTime ? tr("Stream poses") : tr("Run"));
-    m_run->setEnabled(available && !running);
-    m_cancel->setEnabled(m_stream->isRunning() || (m_task->isRunning() && !m_task->cancelRequested()));
+    m_presenter->updateRow(available, m_stream->isRunning());
     m_hSlider->setEnabled(available && m_choices.mode != SegmentationMode::Variable);
     m_colorBySegment->setEnabled(available);
     m_export->setEnabled(m_result != nullptr);
@@ -429,7 +415,7 @@ void SegmentationPanel::setStatus(const QString& text)
 
 bool SegmentationPanel::isRunning() const
 {
-    return m_task->isRunning() || m_stream->isRunning();
+    return m_job->isRunning() || m_stream->isRunning();
 }
 
 bool SegmentationPanel::settingsMatchResult() const

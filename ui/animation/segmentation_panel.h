@@ -2,8 +2,9 @@
 /// \file
 /// The Segmentation panel (the content of the main window's "Segmentation" dock): thesis
 /// chapter 3 on the opened animation. The settings form chooses what to compute;
-/// Run computes it on a worker (BackgroundTask on runSegmentation) with a progress bar
-/// and Cancel, which keeps the previous result; the h slider re-cleans the finished
+/// Run computes it on a worker (BackgroundJob on runSegmentation,
+/// core/animation/segmentation_run.h) with a progress bar and Cancel, which keeps the
+/// previous result (job_presenter.h); the h slider re-cleans the finished
 /// segmentation on the UI thread at every step (segment(h) + recoloring + packing take
 /// 2–5 ms on the 10k–42k-vertex samba and elephant) and recolors it from the previous
 /// h's colors (segment_colors.h) while the label shows the live segment count; "Color
@@ -21,8 +22,9 @@
 /// viewport when displayColorsChanged() is emitted.
 
 #include "core/animation/segment_colors.h"
+#include "core/animation/segmentation_run.h"
 #include "ui/animation/segmentation_choices.h"
-#include "ui/animation/segmentation_result.h"
+#include "ui/common/background_job.h"
 
 #include <QString>
 #include <QWidget>
@@ -40,7 +42,7 @@ class QSlider;
 
 namespace trimlab::ui {
 
-class BackgroundTask;
+class JobPresenter;
 class SegmentStream;
 class SegmentationSettingsForm;
 struct LoadedAnimation;
@@ -84,7 +86,7 @@ public:
     /// segmented.
     [[nodiscard]] const std::vector<std::uint32_t>& displayColors() const { return m_displayColors; }
     /// The task Run uses (its progressed() comes from the worker thread).
-    [[nodiscard]] BackgroundTask* runTask() const { return m_task; }
+    [[nodiscard]] BackgroundJobBase* runTask() const { return m_job; }
     [[nodiscard]] SegmentStream* stream() const { return m_stream; }
     /// Milliseconds of the last h change: segment(h), and recoloring + packing.
     [[nodiscard]] double lastCleaningMs() const { return m_cleaningMs; }
@@ -113,7 +115,6 @@ private:
     void startStream();
     void onRunSucceeded();
     void onRunEnded(const QString& status);
-    void onProgress(const QString& stage, qint64 done, qint64 total);
     void onStreamStep(const StreamStep& step);
     void onStreamFinished(std::shared_ptr<const SegmentationResult> result);
     void adoptResult(std::shared_ptr<const SegmentationResult> result, const SegmenterSettings& settings);
@@ -144,18 +145,18 @@ private:
     QLabel* m_times = nullptr;
     QPushButton* m_export = nullptr;
 
-    BackgroundTask* m_task = nullptr;
+    BackgroundJob<std::shared_ptr<const SegmentationResult>>* m_job = nullptr;
+    JobPresenter* m_presenter = nullptr;
     SegmentStream* m_stream = nullptr;
     std::shared_ptr<const LoadedAnimation> m_animation;
     std::shared_ptr<const LoadedAnimation> m_runAnimation; ///< what the last Run was started on
     SegmentationChoices m_choices;
-    /// What the running job writes (read in onRunSucceeded) and the settings it runs with.
-    std::shared_ptr<std::shared_ptr<const SegmentationResult>> m_pending;
+    /// The settings the running job or stream runs with.
     SegmenterSettings m_pendingSettings;
     std::shared_ptr<const SegmentationResult> m_result;
     SegmenterSettings m_resultSettings;
-    SegmentColors m_cleaned;      ///< the result's segment(h), colored
-    SegmentColors m_streamShown;  ///< the last stream step
+    SegmentColors m_cleaned;     ///< the result's segment(h), colored
+    SegmentColors m_streamShown; ///< the last stream step
     std::vector<std::uint32_t> m_displayColors;
     int m_currentPose = 0;
     double m_cleaningMs = 0.0;

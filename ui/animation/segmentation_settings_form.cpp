@@ -1,6 +1,7 @@
 #include "ui/animation/segmentation_settings_form.h"
 
 #include "ui/common/form_controls.h"
+#include "ui/common/parameter_form.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -11,32 +12,13 @@ namespace trimlab::ui {
 
 SegmentationSettingsForm::SegmentationSettingsForm(QWidget* parent) : QWidget(parent)
 {
-    m_feature = namedComboBox("featureComboBox",
-                              {{tr("Rotation angle"), int(FeatureKind::RotationAngle)},
-                               {tr("Velocity"), int(FeatureKind::Velocity)},
-                               {tr("Acceleration"), int(FeatureKind::Acceleration)}},
-                              tr("What every pose is partitioned by: the rotation angle of the deformation gradients, or "
-                                 "the vertex velocity or acceleration"));
-    m_reference = namedComboBox("referenceComboBox",
-                                {{tr("Rest pose"), int(ReferenceMode::Rest)}, {tr("Previous pose"), int(ReferenceMode::Previous)}},
-                                tr("The pose rotation angles are measured against"));
-    m_method = namedComboBox("clusteringComboBox",
-                             {{tr("Region growing"), int(PartitionMethod::RegionGrowing)},
-                              {tr("Hierarchical"), int(PartitionMethod::Hierarchical)}},
-                             tr("Region growing is fast; hierarchical splitting gives better clusters"));
-    m_clusters = new QSpinBox;
-    m_clusters->setObjectName(QStringLiteral("clustersSpinBox"));
-    m_clusters->setRange(1, SegmentationChoices::kMaxClusters);
-    m_threads = new QSpinBox;
-    m_threads->setObjectName(QStringLiteral("threadsSpinBox"));
-    m_threads->setRange(0, SegmentationChoices::kMaxThreads);
-    m_threads->setSpecialValueText(tr("all cores"));
-    m_mode = namedComboBox("modeComboBox",
-                           {{tr("Global"), int(SegmentationMode::Global)},
-                            {tr("Real-time (stream poses)"), int(SegmentationMode::RealTime)},
-                            {tr("Variable (per pose)"), int(SegmentationMode::Variable)}},
-                           tr("Global: one segmentation of the whole animation. Real-time: built pose by pose as the "
-                              "timeline plays. Variable: each pose joined with the next, shown per pose."));
+    using namespace segmentation_parameters;
+    m_feature = parameterComboBox(kFeature, "featureComboBox");
+    m_reference = parameterComboBox(kReference, "referenceComboBox");
+    m_method = parameterComboBox(kMethod, "clusteringComboBox");
+    m_clusters = parameterSpinBox(kClusters, "clustersSpinBox");
+    m_threads = parameterSpinBox(kThreads, "threadsSpinBox");
+    m_mode = parameterComboBox(kMode, "modeComboBox");
 
     auto* form = new QFormLayout(this);
     form->setContentsMargins(0, 0, 0, 0);

@@ -82,7 +82,7 @@ private:
     qint64 m_clockStep = 0;    ///< poses the clock has counted since it started, the last one shown
     int m_shownSinceStart = 0; ///< poses shown since Play
     double m_achievedFps = 0.0;
-    bool m_advancing = false;  ///< advance() is moving the slider (not the user)
+    bool m_advancing = false; ///< advance() is moving the slider (not the user)
     QStringList m_names;
 };
 

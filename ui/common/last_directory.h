@@ -21,7 +21,6 @@ void saveLastDirectory(QSettings& settings, const QString& directory);
 [[nodiscard]] QString loadSaveDirectory(const QSettings& settings);
 /// The same with `writable` deciding which folders can be written (tests stand in for a
 /// read-only mount, which permissions cannot make for the root user).
-[[nodiscard]] QString loadSaveDirectory(const QSettings& settings,
-                                        const std::function<bool(const QString&)>& writable);
+[[nodiscard]] QString loadSaveDirectory(const QSettings& settings, const std::function<bool(const QString&)>& writable);
 
 } // namespace trimlab::ui

@@ -20,7 +20,7 @@ struct LoadedAnimation {
     /// The rest pose; `source` is the animation's source, `displayName` its folder or
     /// file name, one object named like it.
     std::shared_ptr<const LoadedScene> restScene;
-    Bounds bounds;        ///< of every position of every pose
+    Bounds bounds; ///< of every position of every pose
     /// The skin a glTF file was posed with, as the GPU skinning path plays it
     /// (core/skinning/file_skin_model.h); nullptr for sequences, morphs and files whose
     /// skin the GPU path cannot blend (the viewport then uploads each sampled pose).

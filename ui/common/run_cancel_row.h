@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// The Run / Cancel row of the panels that start long work in the background
-/// (segmentation, skeleton): two buttons side by side, no margins.
+/// (segmentation, skinning, skeleton; job_presenter.h keeps it in step with the job): two
+/// buttons side by side, no margins.
 
 class QPushButton;
 class QWidget;

@@ -44,7 +44,9 @@ QString displayNameOf(const QString& source)
 
 } // namespace
 
-SceneLoader::SceneLoader(QWidget* dialogParent) : QObject(dialogParent), m_dialogParent(dialogParent) {}
+SceneLoader::SceneLoader(QWidget* dialogParent) : QObject(dialogParent), m_dialogParent(dialogParent)
+{
+}
 
 SceneLoader::~SceneLoader()
 {

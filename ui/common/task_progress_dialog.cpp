@@ -1,10 +1,10 @@
 #include "ui/common/task_progress_dialog.h"
 
-#include "ui/common/background_task.h"
+#include "ui/common/background_job.h"
 
 namespace trimlab::ui {
 
-void openTaskProgress(QPointer<QProgressDialog>& dialog, QWidget* parent, BackgroundTask* task, const QString& title,
+void openTaskProgress(QPointer<QProgressDialog>& dialog, QWidget* parent, BackgroundJobBase* task, const QString& title,
                       const QString& label)
 {
     closeProgressDialog(dialog);
@@ -12,7 +12,7 @@ void openTaskProgress(QPointer<QProgressDialog>& dialog, QWidget* parent, Backgr
     dialog->setWindowTitle(title);
     dialog->setWindowModality(Qt::WindowModal);
     dialog->setMinimumDuration(kTaskProgressDelayMs);
-    QObject::connect(dialog, &QProgressDialog::canceled, task, &BackgroundTask::cancel);
+    QObject::connect(dialog, &QProgressDialog::canceled, task, &BackgroundJobBase::cancel);
     dialog->setValue(0);
 }
 

@@ -81,8 +81,7 @@ void WindowContext::rememberDirectory(const QString& directory) const
     saveLastDirectory(m_settings, directory);
 }
 
-QString WindowContext::askSavePath(const QString& title, const QStringList& filters,
-                                   const QString& suggestedName) const
+QString WindowContext::askSavePath(const QString& title, const QStringList& filters, const QString& suggestedName) const
 {
     QString filter = filters.front();
     QString path = QFileDialog::getSaveFileName(&m_window, title, saveDirectory() + QLatin1Char('/') + suggestedName,

@@ -2,13 +2,15 @@
 /// \file
 /// What every feature workspace of the main window shares (docs/architecture.md): the
 /// window whose docks, menus, tool bars and status bar it adds to and whose dialogs it
-/// parents, the settings it keeps its choices in, and the scene host (scene_host.h) —
-/// with the few things all features do with them: show a status message or a message
-/// box, add a dock, ask for a file in the last folder used.
+/// parents, the settings it keeps its choices in, the scene host (scene_host.h) and the
+/// document shown (current_document.h: its file, view settings, undo stack, modified
+/// state) — with the few things all features do with them: show a status message or a
+/// message box, add a dock, ask for a file in the last folder used.
 ///
 /// MainWindow owns one and hands it to each workspace it composes; a workspace keeps the
 /// reference (the window outlives its workspaces).
 
+#include "ui/common/current_document.h"
 #include "ui/common/scene_host.h"
 
 #include <QMessageBox>
@@ -27,14 +29,16 @@ inline constexpr int kStatusMessageMs = 5000;
 
 class WindowContext {
 public:
-    WindowContext(QMainWindow& window, QSettings& settings, SceneHost& host)
-        : m_window(window), m_settings(settings), m_host(host)
+    WindowContext(QMainWindow& window, QSettings& settings, SceneHost& host, CurrentDocument& document)
+        : m_window(window), m_settings(settings), m_host(host), m_document(document)
     {
     }
 
     [[nodiscard]] QMainWindow& window() const { return m_window; }
     [[nodiscard]] QSettings& settings() const { return m_settings; }
     [[nodiscard]] SceneHost& host() const { return m_host; }
+    /// The document shown (its file, view settings, undo stack and modified state).
+    [[nodiscard]] CurrentDocument& document() const { return m_document; }
     /// The shown scene's display name without its extension (`fallback` without a scene):
     /// what export dialogs suggest as a file name, followed by their own ending.
     [[nodiscard]] QString sceneBaseName(const QString& fallback) const;
@@ -67,6 +71,7 @@ private:
     QMainWindow& m_window;
     QSettings& m_settings;
     SceneHost& m_host;
+    CurrentDocument& m_document;
 };
 
 } // namespace trimlab::ui

@@ -1,6 +1,7 @@
 #include "ui/design/autosave.h"
 
-#include "ui/design/design_session.h"
+#include "ui/common/current_document.h"
+#include "ui/common/document.h"
 #include "ui/design/design_workspace.h"
 
 #include "core/io/atomic_write.h"
@@ -25,10 +26,11 @@ namespace {
 constexpr int kMillisecondsPerMinute = 60 * 1000;
 const QString kPrefix = QStringLiteral("session-");
 
-QString infoJson(const QString& originalPath)
+QString infoJson(const Document& document)
 {
     QJsonObject info;
-    info.insert(QStringLiteral("projectPath"), originalPath);
+    info.insert(QStringLiteral("projectPath"), document.filePath());
+    info.insert(QStringLiteral("name"), document.title());
     info.insert(QStringLiteral("savedAt"), QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs));
     return QString::fromUtf8(QJsonDocument(info).toJson());
 }
@@ -42,6 +44,7 @@ void readInfo(RecoverableSession& session)
         return;
     const QJsonObject info = QJsonDocument::fromJson(file.readAll()).object();
     session.originalPath = info.value(QStringLiteral("projectPath")).toString();
+    session.name = info.value(QStringLiteral("name")).toString();
     session.savedAt = QDateTime::fromString(info.value(QStringLiteral("savedAt")).toString(), Qt::ISODateWithMs);
 }
 
@@ -65,10 +68,10 @@ QString Autosave::defaultDirectory()
     return QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + QStringLiteral("/recovery");
 }
 
-Autosave::Autosave(DesignWorkspace& workspace, ProjectFiles::ExtrasSource extras, QString directory, QObject* parent)
+Autosave::Autosave(DesignWorkspace& workspace, const ProjectFiles& files, QString directory, QObject* parent)
     : QObject(parent),
       m_workspace(workspace),
-      m_extras(std::move(extras)),
+      m_files(files),
       m_directory(std::move(directory)),
       m_timer(new QTimer(this))
 {
@@ -83,8 +86,7 @@ Autosave::Autosave(DesignWorkspace& workspace, ProjectFiles::ExtrasSource extras
         }
     }
     connect(m_timer, &QTimer::timeout, this, &Autosave::saveNow);
-    connect(&m_workspace, &DesignWorkspace::modifiedChanged, this, &Autosave::onModifiedChanged);
-    connect(&m_workspace, &DesignWorkspace::sessionChanged, this, [this] { onModifiedChanged(m_workspace.isModified()); });
+    connect(&m_workspace.currentDocument(), &CurrentDocument::modifiedChanged, this, &Autosave::onModifiedChanged);
     setIntervalMinutes(kDefaultIntervalMinutes);
 }
 
@@ -114,26 +116,25 @@ QString Autosave::recoveryProjectPath() const
 
 bool Autosave::saveNow()
 {
-    const DesignSession* session = m_workspace.session();
-    if (!m_lock || !session)
+    const Document* document = m_workspace.document();
+    if (!m_lock || !document || !m_files.canSave())
         return false;
-    if (!m_workspace.isModified()) {
+    if (!document->isModified()) {
         clear(); // the project file holds everything
         return false;
     }
-    if (session == m_savedSession && session->revision() == m_savedRevision)
+    if (document == m_savedDocument && document->revision() == m_savedRevision)
         return false;
     try {
-        timeline::saveProject(session->timeline(), recoveryProjectPath().toStdString(), m_extras());
-        timeline::writeFileAtomically(sessionFile(QStringLiteral(".json")).toStdString(),
-                                      infoJson(session->projectPath()).toStdString());
+        m_files.writeTo(recoveryProjectPath());
+        io::writeFileAtomically(sessionFile(QStringLiteral(".json")).toStdString(), infoJson(*document).toStdString());
     } catch (const std::exception& e) {
         m_lastError = tr("Autosave failed: %1").arg(QString::fromStdString(e.what()));
         emit failed(m_lastError);
         return false;
     }
-    m_savedSession = session;
-    m_savedRevision = session->revision();
+    m_savedDocument = document;
+    m_savedRevision = document->revision();
     emit autosaved(recoveryProjectPath());
     return true;
 }
@@ -144,7 +145,7 @@ void Autosave::clear()
         return;
     QFile::remove(recoveryProjectPath());
     QFile::remove(sessionFile(QStringLiteral(".json")));
-    m_savedSession = nullptr;
+    m_savedDocument = nullptr;
     m_savedRevision = 0;
 }
 

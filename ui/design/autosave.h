@@ -1,9 +1,10 @@
 #pragma once
 /// \file
-/// Autosave and crash recovery for the designer's work. While a design session has
-/// unsaved changes, its history is written every few minutes (and on demand) as a
-/// .trimlab project into the recovery folder, as `session-<pid>.trimlab` beside a small
-/// `session-<pid>.json` (the project file the session belongs to, when it was saved).
+/// Autosave and crash recovery for the document shown (ui/common/document.h). While it has
+/// unsaved changes, it is written every few minutes (and on demand) the way Save Project
+/// writes it (ProjectFiles::writeTo: a design's history, or a scene project) into the
+/// recovery folder, as `session-<pid>.trimlab` beside a small `session-<pid>.json` (the
+/// project file the document belongs to, when it was saved, and the name it had).
 /// A `session-<pid>.lock` (QLockFile) is held for as long as this window lives, so a
 /// recovery file whose lock can be taken belongs to a TrimLab that died: that is what
 /// recoverableSessions() offers. A normal end (the Autosave destroyed, the work saved
@@ -34,6 +35,7 @@ struct RecoverableSession {
     QString infoFile;     ///< its .json companion
     QString lockFile;     ///< its (stale) lock
     QString originalPath; ///< the project the work belonged to ("" when never saved)
+    QString name;         ///< the document's name then ("" when unknown)
     QDateTime savedAt;    ///< when it was autosaved (invalid when unknown)
 };
 
@@ -45,17 +47,17 @@ public:
     /// Default interval between autosaves.
     static constexpr int kDefaultIntervalMinutes = 3;
 
-    /// Starts watching `workspace`; creates `directory` and takes this process's lock
-    /// there (when either fails, autosave stays off and lastError() says why).
-    Autosave(DesignWorkspace& workspace, ProjectFiles::ExtrasSource extras, QString directory,
-             QObject* parent = nullptr);
+    /// Starts watching the document of `workspace`, written through `files`; creates
+    /// `directory` and takes this process's lock there (when either fails, autosave stays
+    /// off and lastError() says why).
+    Autosave(DesignWorkspace& workspace, const ProjectFiles& files, QString directory, QObject* parent = nullptr);
     ~Autosave() override;
 
     /// 0 turns the timer off (saveNow() still works).
     void setIntervalMinutes(int minutes);
     [[nodiscard]] int intervalMinutes() const { return m_intervalMinutes; }
 
-    /// Writes the session now when it has changes the last autosave does not hold; true
+    /// Writes the document now when it has changes the last autosave does not hold; true
     /// when a file was written. Removes the recovery files when there is nothing unsaved.
     bool saveNow();
     /// Removes this process's recovery files (the work was saved or dropped).
@@ -80,13 +82,13 @@ private:
     void onModifiedChanged(bool modified);
 
     DesignWorkspace& m_workspace;
-    ProjectFiles::ExtrasSource m_extras;
+    const ProjectFiles& m_files;
     QString m_directory;
     std::unique_ptr<QLockFile> m_lock;
     QTimer* m_timer;
     int m_intervalMinutes = kDefaultIntervalMinutes;
     quint64 m_savedRevision = 0;
-    const void* m_savedSession = nullptr;
+    const void* m_savedDocument = nullptr;
     QString m_lastError;
 };
 

@@ -122,7 +122,8 @@ void BrushPanel::setMeshRadius(double boundingRadius)
     if (m_meshRadius == 0.0)
         return;
     m_radius->setDecimals(decimalsFor(m_meshRadius * BrushChoices::kMinRadiusFraction));
-    m_radius->setRange(m_meshRadius * BrushChoices::kMinRadiusFraction, m_meshRadius * BrushChoices::kMaxRadiusFraction);
+    m_radius->setRange(m_meshRadius * BrushChoices::kMinRadiusFraction,
+                       m_meshRadius * BrushChoices::kMaxRadiusFraction);
     m_radius->setSingleStep(m_meshRadius * 0.01);
     m_radius->setValue(m_radiusFraction * m_meshRadius);
 }

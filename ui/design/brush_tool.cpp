@@ -52,7 +52,11 @@ std::vector<std::uint32_t> regionTint(std::size_t vertexCount, const deform::Inf
 
 } // namespace
 
-BrushTool::BrushTool(ViewportWidget* viewport, QObject* parent) : QObject(parent), m_viewport(viewport)
+BrushTool::BrushTool(ViewportWidget* viewport, QObject* parent)
+    : QObject(parent),
+      m_viewport(viewport),
+      m_shown(viewport->content(), render::ContentOwner::DesignHistory),
+      m_tint(viewport->content(), render::ContentOwner::BrushRegion)
 {
     m_hoverTimer.setSingleShot(true);
     m_hoverTimer.setInterval(kHoverIntervalMs);
@@ -101,7 +105,6 @@ void BrushTool::setDynamicRules(bool dynamic)
 {
     m_dynamic = dynamic;
     clearRegionTint(); // picked again from the next frame, whose ids are the other rules'
-
 }
 
 std::optional<QString> BrushTool::refusalBeforePick() const
@@ -122,7 +125,8 @@ std::optional<BrushPick> BrushTool::pickAt(QPointF position)
     const auto& frame = m_viewport->lastFrame();
     if (!pixel || !frame)
         return std::nullopt;
-    const DynamicChainLevel* level = m_viewport->lastDynamicStats() ? m_viewport->dynamicShownLevel() : nullptr;
+    const render::ShownChain* chain = m_viewport->content()->chain();
+    const DynamicChainLevel* level = m_viewport->lastDynamicStats() && chain ? &chain->shownLevel() : nullptr;
     const std::optional<std::uint32_t> triangle = pickedTriangle(*pixel, level ? &level->frame : nullptr);
     const std::vector<glm::uvec3>& triangles = m_session->timeline().base().triangles;
     if (!triangle || *triangle >= triangles.size() || !std::isfinite(pixel->viewDepth))
@@ -148,8 +152,8 @@ bool BrushTool::pressed(QMouseEvent& event)
     const timeline::Timeline& history = m_session->timeline();
     const DragView view{m_viewport->lastFrame()->camera, toGlm(m_viewport->lastFrame()->pixelSize)};
     try {
-        m_drag = std::make_unique<BrushDrag>(m_session->topology(), history.currentPositions(), view, *pick,
-                                             m_settings, m_session->modelMatrix());
+        m_drag = std::make_unique<BrushDrag>(m_session->topology(), history.currentPositions(), view, *pick, m_settings,
+                                             m_session->modelMatrix());
     } catch (const std::invalid_argument& e) {
         emit statusMessage(tr("The brush cannot start: %1").arg(QString::fromStdString(e.what())));
         return true;
@@ -209,14 +213,14 @@ void BrushTool::moved(QMouseEvent& event)
     m_lastUpdateMs = double(timer.nsecsElapsed()) * 1e-6;
 }
 
-// Static rule: the viewport uploads the positions at its next frame. Dynamic rules: only
-// the shown level is rebuilt; the earlier sets' characterizations stay cached.
+// The positions are the pose shown (the static path uploads them at its next frame).
+// Under the dynamic rules only the chain's shown level is rebuilt besides; the earlier
+// sets' characterizations stay cached.
 void BrushTool::showDragPositions(const std::vector<glm::vec3>& positions)
 {
-    if (m_dynamic && m_viewport->rendersDynamicRules())
-        m_viewport->setDynamicShownLevel(std::make_shared<const DynamicChainLevel>(dynamicShownLevelOf(positions)));
-    else
-        m_viewport->showPose(positions);
+    m_shown.showPose(positions);
+    if (m_dynamic && m_shown.showsChain())
+        m_shown.replaceShownLevel(std::make_shared<const DynamicChainLevel>(dynamicShownLevelOf(positions)));
 }
 
 DynamicChainLevel BrushTool::dynamicShownLevelOf(const std::vector<glm::vec3>& positions) const
@@ -254,7 +258,7 @@ void BrushTool::releaseControlDrag()
     const std::vector<ControlPointTarget> targets = drag->targets();
     m_session->syncSurface(); // back at the history's control points, where the frame starts
     if (!drag->moved() || targets.empty()) {
-        m_viewport->showPose(m_session->shownPositions());
+        m_shown.showPose(m_session->shownPositions());
         return;
     }
     if (m_session->timeline().frameCount() != m_dragFrameCount) {
@@ -267,19 +271,19 @@ void BrushTool::releaseControlDrag()
         if (m_controlGuard) {
             if (const std::optional<QString> refusal = m_controlGuard(frame)) {
                 m_session->syncSurface();
-                m_viewport->showPose(m_session->shownPositions());
+                m_shown.showPose(m_session->shownPositions());
                 emit statusMessage(*refusal);
                 return;
             }
         }
         const int points = int(frame.controlMoves.size());
-        m_session->undoStack()->push(new AppendFrameCommand(
-            *m_session, std::move(frame), tr("Brush on %1").arg(controlPointCount(points))));
+        m_session->undoStack()->push(
+            new AppendFrameCommand(*m_session, std::move(frame), tr("Brush on %1").arg(controlPointCount(points))));
         emit statusMessage(
             tr("Frame %1: the brush moved %2.").arg(m_session->lastFrame()).arg(controlPointCount(points)));
     } catch (const std::invalid_argument& e) {
         m_session->syncSurface();
-        m_viewport->showPose(m_session->shownPositions());
+        m_shown.showPose(m_session->shownPositions());
         emit statusMessage(tr("No edit recorded: %1").arg(QString::fromStdString(e.what())));
     }
 }
@@ -317,7 +321,7 @@ void BrushTool::updateHoverRegion()
     try {
         const deform::BrushStroke stroke(m_session->topology(), m_session->timeline().currentPositions(),
                                          deform::Stroke{pick->anchor, pick->triangle, glm::dvec3(0.0), m_settings});
-        m_viewport->setVertexColors(regionTint(m_session->topology().vertexCount(), stroke.region()));
+        m_tint.showColors(regionTint(m_session->topology().vertexCount(), stroke.region()));
         m_hoverTriangle = pick->triangle;
         m_tinted = true;
     } catch (const std::invalid_argument&) {
@@ -331,12 +335,13 @@ void BrushTool::clearRegionTint()
     if (!m_tinted)
         return;
     m_tinted = false;
-    m_viewport->setVertexColors({});
+    m_tint.showColors({});
 }
 
 QString BrushTool::mouseHelp() const
 {
-    return tr("Drag on the surface: deform it in the view plane (Shift: along the surface normal) · Drag on the background or Alt+drag: orbit · Right/middle drag: pan · Wheel: zoom");
+    return tr("Drag on the surface: deform it in the view plane (Shift: along the surface normal) · Drag on the "
+              "background or Alt+drag: orbit · Right/middle drag: pan · Wheel: zoom");
 }
 
 } // namespace trimlab::ui

@@ -21,6 +21,8 @@
 /// On an earlier frame than the last, or when a guard (the homogeneous confluent rule)
 /// refuses the grabbed region, the press is refused with a status message saying why.
 
+#include "render/content_publisher.h"
+
 #include "core/design/brush_drag.h"
 #include "core/deform/stroke.h"
 #include "core/trim/dynamic_chain.h"
@@ -57,8 +59,8 @@ public:
     /// Installed on the viewport while on; off clears the region tint.
     void setEnabled(bool enabled);
     [[nodiscard]] bool isEnabled() const { return m_enabled; }
-    /// Whether the viewport renders the dynamic rules (drags then replace its shown level)
-    /// and the base rule it classifies with.
+    /// Whether the design history is shown under the dynamic rules (drags then replace the
+    /// shown level of its chain).
     void setDynamicRules(bool dynamic);
     void setGuard(Guard guard) { m_guard = std::move(guard); }
     /// The guard of a brush drag on control points, judged on the finished edit's frame.
@@ -92,6 +94,8 @@ private:
     void clearRegionTint();
 
     ViewportWidget* m_viewport;
+    render::ContentPublisher m_shown; ///< drags: the design history's pose and shown level
+    render::ContentPublisher m_tint;  ///< the hovered region's colours
     QPointer<DesignSession> m_session;
     deform::BrushSettings m_settings;
     bool m_enabled = false;
@@ -100,8 +104,8 @@ private:
     ControlGuard m_controlGuard;
     std::unique_ptr<BrushDrag> m_drag;
     std::unique_ptr<ControlBrushDrag> m_controlDrag; ///< on an editable surface
-    int m_dragFrameCount = 0;                   ///< the history's frame count at the press
-    std::vector<glm::vec3> m_dragReference;     ///< dynamic: the current set's reference positions
+    int m_dragFrameCount = 0;                        ///< the history's frame count at the press
+    std::vector<glm::vec3> m_dragReference;          ///< dynamic: the current set's reference positions
     DynamicRule m_dragRule = DynamicRule::Confluent;
     double m_lastUpdateMs = 0.0;
     QTimer m_hoverTimer;

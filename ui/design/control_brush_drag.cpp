@@ -28,8 +28,8 @@ ControlBrushDrag::ControlBrushDrag(DesignSession& session, const DragView& view,
       m_view(view),
       m_pick(pick),
       m_settings(settings),
-      m_normal(triangleNormal(session.timeline().currentPositions(),
-                              session.timeline().base().triangles.at(pick.triangle))),
+      m_normal(
+          triangleNormal(session.timeline().currentPositions(), session.timeline().base().triangles.at(pick.triangle))),
       m_preview(*session.surface(), session.timeline().currentPositions())
 {
     // Checks the settings now, so that a bad radius is refused at the press.

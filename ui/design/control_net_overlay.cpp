@@ -20,7 +20,8 @@ const QColor kSelectedColor(255, 200, 0);
 
 } // namespace
 
-ControlNetOverlay::ControlNetOverlay(ViewportWidget* viewport) : ViewportOverlay(viewport, QStringLiteral("controlNetOverlay"))
+ControlNetOverlay::ControlNetOverlay(ViewportWidget* viewport)
+    : ViewportOverlay(viewport, QStringLiteral("controlNetOverlay"))
 {
 }
 

@@ -27,7 +27,10 @@
 namespace trimlab::ui {
 
 ControlPointTool::ControlPointTool(ViewportWidget* viewport, ControlNetOverlay* overlay, QObject* parent)
-    : QObject(parent), m_viewport(viewport), m_overlay(overlay)
+    : QObject(parent),
+      m_viewport(viewport),
+      m_overlay(overlay),
+      m_shown(viewport->content(), render::ContentOwner::DesignHistory)
 {
 }
 
@@ -166,8 +169,8 @@ bool ControlPointTool::startDrag(std::uint32_t grabbed, QPointF position, bool a
 
 std::vector<ControlPointTarget> ControlPointTool::targetsFor(QPointF position) const
 {
-    const glm::dvec3 drag = dragVector(m_view, m_grab, toGlm(m_viewport->devicePosition(position)), m_alongNormal, m_normal,
-                                       m_session->modelMatrix());
+    const glm::dvec3 drag = dragVector(m_view, m_grab, toGlm(m_viewport->devicePosition(position)), m_alongNormal,
+                                       m_normal, m_session->modelMatrix());
     if (!std::isfinite(drag.x) || !std::isfinite(drag.y) || !std::isfinite(drag.z))
         throw std::invalid_argument("the drag is not finite (is the grabbed point behind the eye?)");
     std::vector<ControlPointTarget> targets = m_start;
@@ -205,18 +208,20 @@ void ControlPointTool::preview(const std::vector<ControlPointTarget>& targets)
     m_overlay->setPoints(m_session->surface()->controlPoints());
 }
 
+// The preview is the pose shown (a subdivision surface evaluated on the GPU from its
+// control points where it can be); under the dynamic rules it also replaces the chain's
+// shown level.
 void ControlPointTool::showPreviewPositions(const std::vector<glm::vec3>& positions)
 {
-    if (m_dynamic && m_viewport->rendersDynamicRules()) {
-        m_viewport->setDynamicShownLevel(std::make_shared<const DynamicChainLevel>(DynamicChainLevel{
-            makeDynamicFrameScene(m_session->timeline().base().triangles, m_dragReference, positions,
-                                  m_session->modelMatrix()),
-            m_dragRule}));
-    } else if (m_gpuStencils) {
-        m_viewport->showSubdivisionPose(m_gpuStencils, m_session->surface()->controlPoints(), positions);
-    } else {
-        m_viewport->showPose(positions);
-    }
+    if (m_gpuStencils)
+        m_shown.showSubdivisionPose(m_gpuStencils, m_session->surface()->controlPoints(), positions);
+    else
+        m_shown.showPose(positions);
+    if (m_dynamic && m_shown.showsChain())
+        m_shown.replaceShownLevel(std::make_shared<const DynamicChainLevel>(
+            DynamicChainLevel{makeDynamicFrameScene(m_session->timeline().base().triangles, m_dragReference, positions,
+                                                    m_session->modelMatrix()),
+                              m_dragRule}));
 }
 
 // Stencils are copied once per surface: a drag of the same surface reuses them, and the
@@ -232,7 +237,8 @@ void ControlPointTool::updateGpuStencils()
     const SubdivisionDefinition& definition = surface.definition().subdivision();
     if (m_gpuStencils && m_gpuStencilsOf && *m_gpuStencilsOf == definition)
         return;
-    m_gpuStencils = std::make_shared<const render::SubdivisionStencils>(render::subdivisionStencils(*surface.subdivision()));
+    m_gpuStencils =
+        std::make_shared<const render::SubdivisionStencils>(render::subdivisionStencils(*surface.subdivision()));
     m_gpuStencilsOf = definition;
 }
 
@@ -277,8 +283,9 @@ void ControlPointTool::commit(const std::vector<ControlPointTarget>& targets)
         }
         const int points = int(frame.controlMoves.size());
         const int vertices = int(frame.vertices.size());
-        m_session->undoStack()->push(new AppendFrameCommand(
-            *m_session, std::move(frame), tr("Move %1").arg(countOf(points, tr("control point"), tr("control points")))));
+        m_session->undoStack()->push(
+            new AppendFrameCommand(*m_session, std::move(frame),
+                                   tr("Move %1").arg(countOf(points, tr("control point"), tr("control points")))));
         emit statusMessage(tr("Frame %1: %2 control points moved, %3 vertices changed.")
                                .arg(m_session->lastFrame())
                                .arg(points)
@@ -324,7 +331,9 @@ void ControlPointTool::left()
 
 QString ControlPointTool::mouseHelp() const
 {
-    return tr("Click a control point: select it (Shift: add to the selection) · Drag a point: move the selection (Ctrl: along the normal) · Ctrl+drag elsewhere: box select · Drag elsewhere: orbit · Right/middle drag: pan · Wheel: zoom");
+    return tr("Click a control point: select it (Shift: add to the selection) · Drag a point: move the selection "
+              "(Ctrl: along the normal) · Ctrl+drag elsewhere: box select · Drag elsewhere: orbit · Right/middle drag: "
+              "pan · Wheel: zoom");
 }
 
 } // namespace trimlab::ui

@@ -25,6 +25,7 @@
 #include "core/design/brush_drag.h"
 #include "ui/viewport/viewport_tool.h"
 
+#include "render/content_publisher.h"
 #include "render/frame/subdivision_stencils.h"
 
 #include "core/surface/surface_definition.h"
@@ -108,6 +109,7 @@ private:
 
     ViewportWidget* m_viewport;
     ControlNetOverlay* m_overlay;
+    render::ContentPublisher m_shown; ///< previews: the design history's pose and shown level
     QPointer<DesignSession> m_session;
     bool m_enabled = false;
     bool m_dynamic = false;
@@ -119,14 +121,14 @@ private:
     bool m_alongNormal = false;
     int m_dragFrameCount = 0;
     DragView m_view;
-    BrushPick m_grab;              ///< the grabbed point (object space) and press pixel
-    glm::dvec3 m_normal{0.0};      ///< the selection's average normal (object space)
+    BrushPick m_grab;                          ///< the grabbed point (object space) and press pixel
+    glm::dvec3 m_normal{0.0};                  ///< the selection's average normal (object space)
     std::vector<ControlPointTarget> m_start;   ///< the selection and its tied points at the press
     std::vector<ControlPointTarget> m_targets; ///< the last preview's
     std::unique_ptr<ControlPreview> m_preview;
     std::function<void()> m_restoreView;
     Guard m_guard;
-    std::vector<glm::vec3> m_dragReference;    ///< dynamic: the current set's reference positions
+    std::vector<glm::vec3> m_dragReference; ///< dynamic: the current set's reference positions
     DynamicRule m_dragRule = DynamicRule::Confluent;
     double m_lastUpdateMs = 0.0;
     /// The session's subdivision surface's stencils for the viewport's GPU evaluation, and

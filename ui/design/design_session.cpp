@@ -1,20 +1,17 @@
 #include "ui/design/design_session.h"
 
-#include <QUndoStack>
-
 #include <algorithm>
 
 namespace trimlab::ui {
 
-DesignSession::DesignSession(timeline::Timeline history, const glm::dmat4& modelMatrix, QString projectPath,
+DesignSession::DesignSession(timeline::Timeline history, const glm::dmat4& modelMatrix, QUndoStack& undoStack,
                              QObject* parent)
     : QObject(parent),
       m_timeline(std::move(history)),
       m_topology(std::make_unique<deform::BrushTopology>(m_timeline.base())),
       m_model(modelMatrix),
       m_baseBounds(computeBounds(m_timeline.base())),
-      m_projectPath(std::move(projectPath)),
-      m_undo(new QUndoStack(this)),
+      m_undo(&undoStack),
       m_shownFrame(m_timeline.frameCount() - 1)
 {
     if (m_timeline.hasSurface()) {

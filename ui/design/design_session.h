@@ -1,9 +1,10 @@
 #pragma once
 /// \file
-/// The designer workflow's document (thesis 8.1.1–8.2): the deformation history
+/// The designer workflow's model (thesis 8.1.1–8.2): the deformation history
 /// (timeline::Timeline) of one trimmable mesh — object 0 of the shown scene, in object
-/// space, with its model matrix —, the brush's connectivity, the frame shown and the undo
-/// stack. No widget: the window, the brush and the timeline dock read it and change it
+/// space, with its model matrix —, the brush's connectivity and the frame shown. Its
+/// edits go on the undo stack of the document it belongs to (ui/common/document.h, which
+/// also keeps the project file and the modified state). No widget: the window, the brush and the timeline dock read it and change it
 /// only through undo commands (append_frame_command.h, start_set_command.h,
 /// set_rule_command.h), which call the edit functions below.
 ///
@@ -36,9 +37,9 @@ class DesignSession : public QObject {
     Q_OBJECT
 public:
     /// Continues `history` (its base mesh must be closed and oriented: trimmable), shown
-    /// through `modelMatrix`, at its last frame, with an empty, clean undo stack.
-    /// `projectPath`: the .trimlab file it was read from ("" when new).
-    DesignSession(timeline::Timeline history, const glm::dmat4& modelMatrix, QString projectPath,
+    /// through `modelMatrix`, at its last frame; its undo commands go on `undoStack` (the
+    /// document's), which must outlive the commands the session pushes.
+    DesignSession(timeline::Timeline history, const glm::dmat4& modelMatrix, QUndoStack& undoStack,
                   QObject* parent = nullptr);
     ~DesignSession() override;
 
@@ -52,13 +53,10 @@ public:
     [[nodiscard]] const glm::dmat4& modelMatrix() const { return m_model; }
     /// Object-space bounds of the base mesh (the brush radius scales with them).
     [[nodiscard]] const Bounds& baseBounds() const { return m_baseBounds; }
+    /// The document's undo stack the session's edits are pushed on.
     [[nodiscard]] QUndoStack* undoStack() const { return m_undo; }
     /// Increases with every change of frames or sets (caches key on it).
     [[nodiscard]] quint64 revision() const { return m_revision; }
-
-    /// The .trimlab file this history was last saved to or read from ("": never saved).
-    [[nodiscard]] const QString& projectPath() const { return m_projectPath; }
-    void setProjectPath(const QString& path) { m_projectPath = path; }
 
     [[nodiscard]] int lastFrame() const { return m_timeline.frameCount() - 1; }
     [[nodiscard]] int shownFrame() const { return m_shownFrame; }
@@ -94,7 +92,6 @@ private:
     std::unique_ptr<EditableSurface> m_surface;
     glm::dmat4 m_model;
     Bounds m_baseBounds;
-    QString m_projectPath;
     QUndoStack* m_undo;
     int m_shownFrame = 0;
     std::vector<glm::vec3> m_scrubbed; ///< positions of an earlier shown frame

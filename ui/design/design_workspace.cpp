@@ -1,6 +1,7 @@
 #include "ui/design/design_workspace.h"
 
 #include "ui/common/count_text.h"
+#include "ui/common/current_document.h"
 #include "ui/common/window_context.h"
 #include "ui/design/append_frame_command.h"
 #include "ui/design/brush_panel.h"
@@ -20,6 +21,7 @@
 
 #include "core/design/control_brush.h"
 #include "core/design/session_chain.h"
+#include "core/timeline/view_settings.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -50,12 +52,24 @@ DesignWorkspace::DesignWorkspace(const WindowContext& context, ViewportWidget* v
       m_brush(new BrushTool(viewport, this)),
       m_overlay(new ControlNetOverlay(viewport)),
       m_points(new ControlPointTool(viewport, m_overlay, this)),
+      m_shown(viewport->content(), render::ContentOwner::DesignHistory),
+      m_poseWatch(viewport->content()->subscribe([this](render::ShownLayer layer) {
+          if (layer == render::ShownLayer::Pose)
+              onShownPoseChanged();
+      })),
       m_guard(std::make_unique<TrimmedRegionGuard>())
 {
     createDocks(tabWith);
     createActions();
     createFileParts();
     connectParts();
+    // Edit ▸ Undo and Redo act on the document shown.
+    connect(&m_context.document(), &CurrentDocument::replaced, this, [this] {
+        if (Document* document = m_context.document().get()) {
+            m_undoGroup->addStack(document->undoStack());
+            m_undoGroup->setActiveStack(document->undoStack());
+        }
+    });
 }
 
 DesignWorkspace::~DesignWorkspace()
@@ -107,8 +121,7 @@ void DesignWorkspace::createFileParts()
 {
     QSettings& settings = m_context.settings();
     m_projectFiles = new ProjectFiles(&m_context.window(), settings, *this, [this] { return projectExtras(); });
-    m_recovery = new SessionRecovery(&m_context.window(), settings, *this, *m_projectFiles,
-                                     [this] { return projectExtras(); });
+    m_recovery = new SessionRecovery(&m_context.window(), settings, *this, *m_projectFiles);
     m_exports = new HistoryExports(&m_context.window(), settings, *this);
 }
 
@@ -212,6 +225,12 @@ timeline::ProjectExtras DesignWorkspace::projectExtras() const
     view.fovyDegrees = camera.fovyDegrees;
     extras.view = view;
     extras.staticRule = m_baseRule;
+    if (const Document* document = m_context.document().get()) {
+        const std::shared_ptr<const LoadedScene> shown = m_context.host().shownScene();
+        const Bounds bounds = shown ? shown->scene.worldBounds() : Bounds{};
+        extras.staticRule = document->settings().trim.rule;
+        extras.viewSettings = timeline::storedViewSettings(document->settings(), bounds);
+    }
     return extras;
 }
 
@@ -220,20 +239,13 @@ double DesignWorkspace::lastTrimCheckMilliseconds() const
     return m_guard->lastCheckMilliseconds();
 }
 
-void DesignWorkspace::startSession(timeline::Timeline history, const glm::dmat4& model, const QString& projectPath)
+void DesignWorkspace::startSession(timeline::Timeline history, const glm::dmat4& model)
 {
     endSession();
-    m_session = std::make_unique<DesignSession>(std::move(history), model, projectPath);
-    QUndoStack* stack = m_session->undoStack();
-    m_undoGroup->addStack(stack);
-    m_undoGroup->setActiveStack(stack);
-    connect(stack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
+    m_session = std::make_unique<DesignSession>(std::move(history), model, *m_context.document().get()->undoStack());
     connect(m_session.get(), &DesignSession::historyChanged, this, &DesignWorkspace::onHistoryChanged);
     // Another frame shown, or the history changed: the frame replaces a foreign pose.
-    connect(m_session.get(), &DesignSession::shownFrameChanged, this, [this] {
-        m_foreignPose.clear();
-        refreshView();
-    });
+    connect(m_session.get(), &DesignSession::shownFrameChanged, this, &DesignWorkspace::refreshView);
     m_brush->setSession(m_session.get());
     m_brush->setDynamicRules(showsDynamicRules());
     m_points->setSession(m_session.get());
@@ -246,30 +258,40 @@ void DesignWorkspace::startSession(timeline::Timeline history, const glm::dmat4&
     m_viewport->setViewBounds(m_viewBounds);
     refreshView();
     emit sessionChanged();
-    emit modifiedChanged(false);
 }
 
 void DesignWorkspace::endSession()
 {
     if (!m_session)
         return;
-    m_foreignPose.clear();
     m_viewport->setFramingPoints({});
     m_brush->setSession(nullptr);
     m_points->setSession(nullptr);
     m_overlay->clearNet();
     m_guard->reset();
-    m_undoGroup->removeStack(m_session->undoStack());
+    m_session->undoStack()->clear(); // its commands edit the session ending here
     m_session.reset();
-    m_viewport->setDynamicChain(nullptr);
+    m_shown.showChain(nullptr);
+    m_shown.withdrawPose();
+    m_chainOfForeignPose = false;
     refreshTimelinePanel();
     emit sessionChanged();
-    emit modifiedChanged(false);
+}
+
+Document* DesignWorkspace::document() const
+{
+    return m_context.document().get();
+}
+
+CurrentDocument& DesignWorkspace::currentDocument() const
+{
+    return m_context.document();
 }
 
 bool DesignWorkspace::isModified() const
 {
-    return m_session && !m_session->undoStack()->isClean();
+    const Document* document = m_context.document().get();
+    return document && document->isModified();
 }
 
 void DesignWorkspace::setRenderMode(bool dynamicRules, StaticRule baseRule, bool trimEnabled)
@@ -281,7 +303,7 @@ void DesignWorkspace::setRenderMode(bool dynamicRules, StaticRule baseRule, bool
     m_trimEnabled = trimEnabled;
     m_brush->setDynamicRules(showsDynamicRules());
     m_points->setDynamicRules(showsDynamicRules());
-    refreshView();
+    refreshChain(); // the pose shown stays, whoever's it is
 }
 
 void DesignWorkspace::setBrushSettings(const deform::BrushSettings& settings)
@@ -344,7 +366,8 @@ void DesignWorkspace::moveSelectionAlongNormal(double distance)
         }
         const int points = int(frame.controlMoves.size());
         m_session->undoStack()->push(new AppendFrameCommand(
-            *m_session, std::move(frame), tr("Move %1 along the normal").arg(countOf(points, tr("control point"), tr("control points")))));
+            *m_session, std::move(frame),
+            tr("Move %1 along the normal").arg(countOf(points, tr("control point"), tr("control points")))));
     } catch (const std::invalid_argument& e) {
         m_session->syncSurface();
         emit statusMessage(tr("No edit recorded: %1").arg(QString::fromStdString(e.what())));
@@ -381,7 +404,6 @@ void DesignWorkspace::showFrame(int frame)
 
 void DesignWorkspace::onHistoryChanged()
 {
-    m_foreignPose.clear();
     const timeline::Timeline& history = m_session->timeline();
     if (history.frameCount() > 1) {
         const Bounds before = m_viewBounds;
@@ -399,8 +421,8 @@ void DesignWorkspace::extendViewBounds(const std::vector<glm::vec3>& positions)
         m_viewBounds.extend(glm::dvec3(model * glm::dvec4(glm::dvec3(p), 1.0)));
 }
 
-// The viewport always gets the shown positions (the static path and the pose the trim
-// image is picked from); under the dynamic rules also the chain to the shown frame.
+// The history's shown frame becomes the pose shown (replacing another feature's pose),
+// and under the dynamic rules the chain to it.
 void DesignWorkspace::refreshView()
 {
     refreshTimelinePanel();
@@ -410,12 +432,41 @@ void DesignWorkspace::refreshView()
         m_overlay->setPoints(surface->controlPoints());
         frameControlNet(surface->controlPoints());
     }
-    m_viewport->showPose(m_foreignPose.empty() ? m_session->shownPositions() : m_foreignPose);
-    if (!showsDynamicRules()) {
-        m_viewport->setDynamicChain(nullptr);
+    m_showingFrame = true;
+    m_shown.showPose(m_session->shownPositions());
+    m_showingFrame = false;
+    refreshChain();
+}
+
+void DesignWorkspace::refreshChain()
+{
+    if (!m_session || !showsDynamicRules()) {
+        m_shown.showChain(nullptr);
+        m_chainOfForeignPose = false;
         return;
     }
-    m_viewport->setDynamicChain(std::make_shared<const DynamicChain>(shownChain()));
+    m_chainOfForeignPose = foreignPose() != nullptr;
+    m_shown.showChain(std::make_shared<const DynamicChain>(shownChain()));
+}
+
+// Another feature posed the designed mesh (or gave the view back to the history's frame):
+// the chain must end in what is shown. The history's own drags replace the shown level
+// themselves, and refreshView builds the chain after publishing the frame.
+void DesignWorkspace::onShownPoseChanged()
+{
+    if (m_session && !m_showingFrame && (foreignPose() || m_chainOfForeignPose))
+        refreshChain();
+}
+
+// The pose shown on the designed mesh when it is another feature's, else nullptr.
+const std::vector<glm::vec3>* DesignWorkspace::foreignPose() const
+{
+    const render::ShownContent& content = *m_shown.content();
+    const render::ShownPose* pose = content.pose();
+    if (!m_session || !pose || content.poseOwner() == render::ContentOwner::DesignHistory ||
+        pose->positions.size() != m_session->timeline().base().positions.size())
+        return nullptr;
+    return &pose->positions;
 }
 
 // The chain to the shown frame; with a foreign pose its last level deforms the current
@@ -425,22 +476,13 @@ DynamicChain DesignWorkspace::shownChain() const
 {
     const timeline::Timeline& history = m_session->timeline();
     DynamicChain chain = dynamicChainTo(history, m_session->shownFrame(), m_baseRule, m_session->modelMatrix());
-    if (m_foreignPose.empty())
+    const std::vector<glm::vec3>* foreign = foreignPose();
+    if (!foreign)
         return chain;
     const timeline::Timeline::ChainLink last = history.chainTo(m_session->shownFrame()).back();
-    chain.levels.back() = dynamicShownLevel(history, history.positionsAt(last.referenceFrame), m_foreignPose,
-                                            last.rule, m_session->modelMatrix());
+    chain.levels.back() = dynamicShownLevel(history, history.positionsAt(last.referenceFrame), *foreign, last.rule,
+                                            m_session->modelMatrix());
     return chain;
-}
-
-void DesignWorkspace::showForeignPose(std::vector<glm::vec3> positions)
-{
-    if (!m_session || positions.size() != m_session->timeline().base().positions.size()) {
-        m_viewport->showPose(positions);
-        return;
-    }
-    m_foreignPose = std::move(positions);
-    refreshView();
 }
 
 void DesignWorkspace::refreshTimelinePanel()

@@ -4,11 +4,15 @@
 /// of the shown mesh, the brush tool on the viewport, the Brush dock, the Deformation
 /// timeline dock, the Edit actions (Undo, Redo, Brush B, New Set N), the project files
 /// (ProjectFiles, with autosave and recovery: SessionRecovery) and the history exports
-/// with their File menu entries — and how the viewport shows the session's shown frame:
-/// by the static rule (the frame's positions as object 0's pose) or by the dynamic rules
-/// (the chain to the frame, rebuilt when the history or the shown frame changes; a drag
-/// replaces only its shown level). Holds no algorithm: the history is core/timeline's,
-/// the chain core/design's, the rendering render/'s.
+/// with their File menu entries — and what the view shows of the session, published as
+/// the design history (render/content_publisher.h): the shown frame's positions as object
+/// 0's pose, and under the dynamic rules the chain to the frame (rebuilt when the history,
+/// the shown frame or the rules change; a drag replaces only its shown level). When
+/// another feature's pose is shown on the designed mesh (a skeleton pose), the chain's
+/// last level deforms the current set's reference into that pose, so the dynamic rules
+/// classify what the view shows; this workspace is the one place that does so. Holds no
+/// algorithm: the history is core/timeline's, the chain core/design's, the rendering
+/// render/'s.
 ///
 /// A history of an editable surface (NURBS, subdivision) also gets its control net drawn
 /// over the view (ControlNetOverlay, at the shown frame's control points) and the
@@ -18,6 +22,8 @@
 /// One undo group for the window: each session's stack becomes its active stack, so the
 /// Edit menu's Undo/Redo follow the session shown. The brush choices and the timeline's
 /// playback rate persist in the settings.
+
+#include "render/content_publisher.h"
 
 #include "core/deform/stroke.h"
 #include "core/mesh/triangle_mesh.h"
@@ -47,7 +53,9 @@ class BrushTool;
 class ControlNetOverlay;
 class ControlPointTool;
 class DeformationTimelinePanel;
+class CurrentDocument;
 class DesignSession;
+class Document;
 class HistoryExports;
 class ProjectFiles;
 class SessionRecovery;
@@ -64,11 +72,17 @@ public:
     ~DesignWorkspace() override;
 
     /// Replaces the session (the viewport must already show a scene whose object 0 is
-    /// `history`'s base mesh through `model`). Clean undo stack; shows the last frame.
-    void startSession(timeline::Timeline history, const glm::dmat4& model, const QString& projectPath);
-    /// No session (an animation or an untrimmable scene is shown).
+    /// `history`'s base mesh through `model`); its edits go on the current document's undo
+    /// stack. Shows the last frame.
+    void startSession(timeline::Timeline history, const glm::dmat4& model);
+    /// No session (an animation or an untrimmable scene is shown). The session's commands
+    /// leave the document's undo stack with it.
     void endSession();
     [[nodiscard]] DesignSession* session() const { return m_session.get(); }
+    /// The document shown (nullptr before the first), whose undo stack the session uses.
+    [[nodiscard]] Document* document() const;
+    /// Its holder (replaced() when another is shown).
+    [[nodiscard]] CurrentDocument& currentDocument() const;
     [[nodiscard]] QUndoGroup* undoGroup() const { return m_undoGroup; }
     [[nodiscard]] BrushTool* brushTool() const { return m_brush; }
     [[nodiscard]] ControlPointTool* controlPointTool() const { return m_points; }
@@ -92,14 +106,15 @@ public:
     /// The saved brush choices and playback rate.
     void restoreSettings();
 
-    /// What a project saves beside the history: the camera (in the mesh's object space;
-    /// the project has no model matrix) and the static rule of the base mesh.
+    /// What a project saves beside the history or scene: the camera (in the mesh's object
+    /// space; the project has no model matrix), the static rule and the rest of the
+    /// document's view settings, relative to the shown scene's bounds.
     [[nodiscard]] timeline::ProjectExtras projectExtras() const;
     /// Moves the selected control points by `distance` (object units, > 0 outward) along
     /// their average normal as one undoable frame; a status message says why when
     /// nothing can move (no surface, no selection, an earlier frame shown, no normal).
     void moveSelectionAlongNormal(double distance);
-    /// True when the session has changes its project file does not hold.
+    /// True when the document shown has changes its project file does not hold.
     [[nodiscard]] bool isModified() const;
 
     /// How the viewport classifies: dynamic rules (per set) or the static rule alone;
@@ -114,13 +129,6 @@ public:
     void chooseRule(DynamicRule rule);
     void showFrame(int frame);
 
-    /// Shows `positions` (object 0's, e.g. the skeleton panel's posed mesh) in place of the
-    /// shown frame: under the dynamic rules as the current set's deformation from its
-    /// reference, so the trim follows the pose; under the static rule as the pose. Kept
-    /// across render-mode changes until the history changes or another frame is shown;
-    /// without a session it goes to the viewport directly.
-    void showForeignPose(std::vector<glm::vec3> positions);
-
     /// Milliseconds the last homogeneous confluent check took (chain and rays), 0 before.
     [[nodiscard]] double lastTrimCheckMilliseconds() const;
 
@@ -128,8 +136,6 @@ signals:
     /// A session started or ended.
     void sessionChanged();
     void statusMessage(const QString& message);
-    /// The session's undo stack became clean or modified.
-    void modifiedChanged(bool modified);
 
 private:
     void createDocks(QDockWidget* tabWith);
@@ -138,6 +144,9 @@ private:
     void connectParts();
     void onSessionChanged();
     void refreshView();
+    void refreshChain();
+    void onShownPoseChanged();
+    [[nodiscard]] const std::vector<glm::vec3>* foreignPose() const;
     [[nodiscard]] DynamicChain shownChain() const;
     void showControlNet();
     void frameControlNet(const std::vector<glm::dvec3>& points);
@@ -159,8 +168,10 @@ private:
     QAction* m_redoAction = nullptr;
     QAction* m_brushAction = nullptr;
     QAction* m_newSetAction = nullptr;
-    /// showForeignPose's positions; empty: the shown frame's.
-    std::vector<glm::vec3> m_foreignPose;
+    render::ContentPublisher m_shown; ///< the design history's pose and chain
+    render::ContentSubscription m_poseWatch;
+    bool m_showingFrame = false;       ///< refreshView is publishing the shown frame
+    bool m_chainOfForeignPose = false; ///< the chain shown ends in another feature's pose
     ProjectFiles* m_projectFiles = nullptr;
     SessionRecovery* m_recovery = nullptr;
     HistoryExports* m_exports = nullptr;

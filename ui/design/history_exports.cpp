@@ -1,6 +1,7 @@
 #include "ui/design/history_exports.h"
 
-#include "ui/common/background_task.h"
+#include "ui/common/background_job.h"
+#include "ui/common/document.h"
 #include "ui/common/task_progress_dialog.h"
 #include "ui/design/design_session.h"
 #include "ui/design/design_workspace.h"
@@ -38,16 +39,20 @@ bool attempt(Write write, QString* error)
 } // namespace
 
 HistoryExports::HistoryExports(QWidget* window, QSettings& settings, DesignWorkspace& workspace)
-    : QObject(window), m_window(window), m_settings(settings), m_workspace(workspace), m_task(new BackgroundTask(this))
+    : QObject(window),
+      m_window(window),
+      m_settings(settings),
+      m_workspace(workspace),
+      m_task(new BackgroundJob<std::shared_ptr<timeline::Timeline>>(this))
 {
-    connect(m_task, &BackgroundTask::succeeded, this, [this] { finishReplay(true, {}); });
-    connect(m_task, &BackgroundTask::failed, this, [this](const QString& message) { finishReplay(false, message); });
-    connect(m_task, &BackgroundTask::canceled, this, [this] {
+    connect(m_task, &BackgroundJobBase::succeeded, this, [this] { finishReplay(m_task->takeResult(), {}); });
+    connect(m_task, &BackgroundJobBase::failed, this,
+            [this](const QString& message) { finishReplay(nullptr, message); });
+    connect(m_task, &BackgroundJobBase::canceled, this, [this] {
         closeProgress();
-        m_replayResult.reset();
         emit statusMessage(tr("Replay canceled; the history is unchanged."));
     });
-    connect(m_task, &BackgroundTask::progressed, this, [this](const QString&, qint64 done, qint64 total) {
+    connect(m_task, &BackgroundJobBase::progressed, this, [this](const QString&, qint64 done, qint64 total) {
         if (!m_progress)
             return;
         m_progress->setMaximum(int(total));
@@ -62,9 +67,9 @@ HistoryExports::~HistoryExports()
 
 QString HistoryExports::suggestedPath(const QString& suffix) const
 {
-    const DesignSession* session = m_workspace.session();
-    const QString name = session && !session->projectPath().isEmpty()
-                             ? QFileInfo(session->projectPath()).completeBaseName()
+    const Document* document = m_workspace.document();
+    const QString name = document && !document->filePath().isEmpty()
+                             ? QFileInfo(document->filePath()).completeBaseName()
                              : QStringLiteral("deformation");
     return loadLastDirectory(m_settings) + QLatin1Char('/') + name + suffix;
 }
@@ -73,12 +78,14 @@ bool HistoryExports::exportObjSequence(const QString& directory, const QString& 
 {
     const DesignSession* session = m_workspace.session();
     std::size_t written = 0;
-    const bool ok = attempt([&] {
-        if (!session)
-            throw std::runtime_error(tr("There is no deformation history.").toStdString());
-        written = timeline::exportObjSequence(session->timeline(), directory.toStdString(), baseName.toStdString())
-                      .size();
-    }, error);
+    const bool ok = attempt(
+        [&] {
+            if (!session)
+                throw std::runtime_error(tr("There is no deformation history.").toStdString());
+            written = timeline::exportObjSequence(session->timeline(), directory.toStdString(), baseName.toStdString())
+                          .size();
+        },
+        error);
     if (ok)
         emit statusMessage(tr("Wrote %n frame(s) to %1", nullptr, int(written)).arg(directory));
     return ok;
@@ -87,11 +94,13 @@ bool HistoryExports::exportObjSequence(const QString& directory, const QString& 
 bool HistoryExports::exportGltf(const QString& path, double fps, QString* error)
 {
     const DesignSession* session = m_workspace.session();
-    const bool ok = attempt([&] {
-        if (!session)
-            throw std::runtime_error(tr("There is no deformation history.").toStdString());
-        timeline::exportMorphGltf(session->timeline(), path.toStdString(), fps);
-    }, error);
+    const bool ok = attempt(
+        [&] {
+            if (!session)
+                throw std::runtime_error(tr("There is no deformation history.").toStdString());
+            timeline::exportMorphGltf(session->timeline(), path.toStdString(), fps);
+        },
+        error);
     if (ok)
         emit statusMessage(tr("Saved %1").arg(path));
     return ok;
@@ -100,11 +109,13 @@ bool HistoryExports::exportGltf(const QString& path, double fps, QString* error)
 bool HistoryExports::saveStrokeScript(const QString& path, QString* error)
 {
     const DesignSession* session = m_workspace.session();
-    const bool ok = attempt([&] {
-        if (!session)
-            throw std::runtime_error(tr("There is no deformation history.").toStdString());
-        timeline::writeStrokeScript(path.toStdString(), timeline::strokeScriptFromTimeline(session->timeline()));
-    }, error);
+    const bool ok = attempt(
+        [&] {
+            if (!session)
+                throw std::runtime_error(tr("There is no deformation history.").toStdString());
+            timeline::writeStrokeScript(path.toStdString(), timeline::strokeScriptFromTimeline(session->timeline()));
+        },
+        error);
     if (ok)
         emit statusMessage(tr("Saved %1").arg(path));
     return ok;
@@ -112,9 +123,9 @@ bool HistoryExports::saveStrokeScript(const QString& path, QString* error)
 
 void HistoryExports::showExportObjDialog()
 {
-    const QString path = QFileDialog::getSaveFileName(m_window, tr("Export Frames as OBJ Sequence"),
-                                                      suggestedPath(QStringLiteral("_0000.obj")),
-                                                      tr("OBJ sequence (*.obj)"));
+    const QString path =
+        QFileDialog::getSaveFileName(m_window, tr("Export Frames as OBJ Sequence"),
+                                     suggestedPath(QStringLiteral("_0000.obj")), tr("OBJ sequence (*.obj)"));
     if (path.isEmpty())
         return;
     const QFileInfo info(path);
@@ -128,9 +139,9 @@ void HistoryExports::showExportObjDialog()
 
 void HistoryExports::showExportGltfDialog()
 {
-    QString path = QFileDialog::getSaveFileName(m_window, tr("Export Deformation as glTF"),
-                                                suggestedPath(QStringLiteral(".glb")),
-                                                tr("glTF binary (*.glb);;glTF (*.gltf)"));
+    QString path =
+        QFileDialog::getSaveFileName(m_window, tr("Export Deformation as glTF"), suggestedPath(QStringLiteral(".glb")),
+                                     tr("glTF binary (*.glb);;glTF (*.gltf)"));
     if (path.isEmpty())
         return;
     const QString suffix = QFileInfo(path).suffix().toLower();
@@ -144,9 +155,9 @@ void HistoryExports::showExportGltfDialog()
 
 void HistoryExports::showSaveScriptDialog()
 {
-    QString path = QFileDialog::getSaveFileName(m_window, tr("Save Stroke Script"),
-                                                suggestedPath(QStringLiteral("-strokes.json")),
-                                                tr("Stroke script (*.json)"));
+    QString path =
+        QFileDialog::getSaveFileName(m_window, tr("Save Stroke Script"), suggestedPath(QStringLiteral("-strokes.json")),
+                                     tr("Stroke script (*.json)"));
     if (path.isEmpty())
         return;
     if (QFileInfo(path).suffix().isEmpty())
@@ -189,13 +200,12 @@ void HistoryExports::replay(const QString& path)
     if (m_task->isRunning())
         return;
     m_replayPath = path;
-    m_replayResult = std::make_shared<timeline::Timeline>();
     auto base = std::make_shared<const TriangleMesh>(session->timeline().base());
     const std::string file = path.toStdString();
     const std::string name = QFileInfo(path).fileName().toStdString();
-    m_task->start([result = m_replayResult, base, file, name](const TaskControl& control) {
+    m_task->start([base, file, name](const TaskControl& control) {
         const timeline::StrokeScript script = timeline::loadStrokeScript(file);
-        *result = timeline::replayStrokeScript(*base, script, control, name);
+        return std::make_shared<timeline::Timeline>(timeline::replayStrokeScript(*base, script, control, name));
     });
     m_progress = new QProgressDialog(tr("Replaying %1…").arg(QFileInfo(path).fileName()), tr("Cancel"), 0, 0, m_window);
     m_progress->setObjectName(QStringLiteral("replayProgressDialog"));
@@ -203,14 +213,14 @@ void HistoryExports::replay(const QString& path)
     m_progress->setWindowModality(Qt::WindowModal);
     m_progress->setAutoClose(false);
     m_progress->setAutoReset(false);
-    connect(m_progress, &QProgressDialog::canceled, m_task, &BackgroundTask::cancel);
+    connect(m_progress, &QProgressDialog::canceled, m_task, &BackgroundJobBase::cancel);
     m_progress->setValue(0);
 }
 
-void HistoryExports::finishReplay(bool succeeded, const QString& message)
+void HistoryExports::finishReplay(std::shared_ptr<timeline::Timeline> result, const QString& message)
 {
     closeProgress();
-    std::shared_ptr<timeline::Timeline> result = std::move(m_replayResult);
+    const bool succeeded = result != nullptr;
     const DesignSession* session = m_workspace.session();
     const bool sameMesh = session && result && session->timeline().base() == result->base();
     if (!succeeded || !sameMesh) {
@@ -220,7 +230,10 @@ void HistoryExports::finishReplay(bool succeeded, const QString& message)
     }
     const int strokes = result->frameCount() - 1;
     const glm::dmat4 model = session->modelMatrix(); // a copy: startSession replaces the session
-    m_workspace.startSession(std::move(*result), model, QString());
+    m_workspace.startSession(std::move(*result), model);
+    // The replayed history is a change of the document that no file holds yet.
+    if (Document* document = m_workspace.document())
+        document->markChanged();
     emit statusMessage(tr("Replayed %n stroke(s) from %1.", nullptr, strokes).arg(QFileInfo(m_replayPath).fileName()));
     emit replayed(m_replayPath);
 }

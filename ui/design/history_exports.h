@@ -24,7 +24,8 @@ class Timeline;
 
 namespace trimlab::ui {
 
-class BackgroundTask;
+template <class T>
+class BackgroundJob;
 class DesignWorkspace;
 
 class HistoryExports : public QObject {
@@ -62,16 +63,16 @@ signals:
 
 private:
     [[nodiscard]] QString suggestedPath(const QString& suffix) const;
-    void finishReplay(bool succeeded, const QString& message);
+    /// `result`: the replayed history, or nullptr when the replay failed with `message`.
+    void finishReplay(std::shared_ptr<timeline::Timeline> result, const QString& message);
     void closeProgress();
 
     QWidget* m_window;
     QSettings& m_settings;
     DesignWorkspace& m_workspace;
-    BackgroundTask* m_task;
+    BackgroundJob<std::shared_ptr<timeline::Timeline>>* m_task; ///< the replay
     QPointer<QProgressDialog> m_progress;
     QString m_replayPath;
-    std::shared_ptr<timeline::Timeline> m_replayResult;
     int m_fps = 24;
 };
 

@@ -1,6 +1,7 @@
 #include "ui/design/project_files.h"
 
-#include "ui/common/background_task.h"
+#include "ui/common/background_job.h"
+#include "ui/common/document.h"
 #include "ui/common/task_progress_dialog.h"
 #include "ui/design/design_session.h"
 #include "ui/design/design_workspace.h"
@@ -13,6 +14,7 @@
 #include <QUndoStack>
 
 #include <filesystem>
+#include <stdexcept>
 
 namespace trimlab::ui {
 
@@ -20,8 +22,8 @@ namespace {
 
 void warnNotSaved(QWidget* parent, const QString& reason)
 {
-    QMessageBox box(QMessageBox::Warning, ProjectFiles::tr("Save Project"), ProjectFiles::tr("The project was not saved."),
-                    QMessageBox::Ok, parent);
+    QMessageBox box(QMessageBox::Warning, ProjectFiles::tr("Save Project"),
+                    ProjectFiles::tr("The project was not saved."), QMessageBox::Ok, parent);
     box.setInformativeText(reason);
     box.exec();
 }
@@ -34,14 +36,11 @@ ProjectFiles::ProjectFiles(QWidget* window, QSettings& settings, DesignWorkspace
       m_settings(settings),
       m_workspace(workspace),
       m_extras(std::move(extras)),
-      m_task(new BackgroundTask(this))
+      m_task(new BackgroundJob<std::shared_ptr<const timeline::Project>>(this))
 {
-    connect(m_task, &BackgroundTask::succeeded, this, [this] { finishOpen(true, {}); });
-    connect(m_task, &BackgroundTask::failed, this, [this](const QString& message) { finishOpen(false, message); });
-    connect(m_task, &BackgroundTask::canceled, this, [this] {
-        closeProgress();
-        m_result.reset();
-    });
+    connect(m_task, &BackgroundJobBase::succeeded, this, [this] { finishOpen(true, {}); });
+    connect(m_task, &BackgroundJobBase::failed, this, [this](const QString& message) { finishOpen(false, message); });
+    connect(m_task, &BackgroundJobBase::canceled, this, &ProjectFiles::closeProgress);
 }
 
 ProjectFiles::~ProjectFiles()
@@ -70,15 +69,15 @@ void ProjectFiles::open(const QString& path)
         m_task->cancel(); // its result is dropped; this request starts once it returned
     const auto start = [this, path] {
         m_openPath = path;
-        m_result = std::make_shared<timeline::Project>();
-        std::shared_ptr<timeline::Project> result = m_result;
         const std::filesystem::path file = path.toStdString();
-        m_task->start([result, file](const TaskControl&) { *result = timeline::readProject(file); });
+        m_task->start([file](const TaskControl&) {
+            return std::make_shared<const timeline::Project>(timeline::readProject(file));
+        });
         openTaskProgress(m_progress, m_window, m_task, tr("Opening project"),
                          tr("Reading %1…").arg(QFileInfo(path).fileName()));
     };
     if (m_task->isRunning())
-        connect(m_task, &BackgroundTask::finished, this, start, Qt::SingleShotConnection);
+        connect(m_task, &BackgroundJobBase::finished, this, start, Qt::SingleShotConnection);
     else
         start();
 }
@@ -86,9 +85,8 @@ void ProjectFiles::open(const QString& path)
 void ProjectFiles::finishOpen(bool succeeded, const QString& message)
 {
     closeProgress();
-    std::shared_ptr<const timeline::Project> result = std::move(m_result);
     if (succeeded)
-        emit opened(result, m_openPath);
+        emit opened(m_task->takeResult(), m_openPath);
     else
         emit failed(m_openPath, message);
 }
@@ -98,12 +96,6 @@ void ProjectFiles::closeProgress()
     closeProgressDialog(m_progress);
 }
 
-void ProjectFiles::sceneShown(const QString& path)
-{
-    m_scenePath = path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath();
-    emit saveableChanged();
-}
-
 bool ProjectFiles::canSave() const
 {
     return m_workspace.session() || (m_sceneSource && m_sceneSource().scene);
@@ -111,8 +103,8 @@ bool ProjectFiles::canSave() const
 
 QString ProjectFiles::currentPath() const
 {
-    const DesignSession* session = m_workspace.session();
-    return session ? session->projectPath() : m_scenePath;
+    const Document* document = m_workspace.document();
+    return document ? document->filePath() : QString();
 }
 
 bool ProjectFiles::save()
@@ -132,9 +124,9 @@ bool ProjectFiles::saveAs()
 {
     if (!canSave())
         return false;
-    const QString suggested = currentPath().isEmpty()
-                                  ? loadLastDirectory(m_settings) + QStringLiteral("/untitled.") + QLatin1String(kSuffix)
-                                  : currentPath();
+    const QString suggested =
+        currentPath().isEmpty() ? loadLastDirectory(m_settings) + QStringLiteral("/untitled.") + QLatin1String(kSuffix)
+                                : currentPath();
     QString path = QFileDialog::getSaveFileName(m_window, tr("Save Project As"), suggested, dialogFilter());
     if (path.isEmpty())
         return false;
@@ -150,12 +142,9 @@ bool ProjectFiles::saveAs()
 
 bool ProjectFiles::saveTo(const QString& path, QString* error)
 {
-    DesignSession* session = m_workspace.session();
-    if (!session)
-        return saveSceneTo(path, error);
     QString reason;
     try {
-        timeline::saveProject(session->timeline(), path.toStdString(), m_extras());
+        writeTo(path);
     } catch (const std::exception& e) {
         reason = QString::fromStdString(e.what());
     }
@@ -163,54 +152,38 @@ bool ProjectFiles::saveTo(const QString& path, QString* error)
         *error = reason;
     if (!reason.isEmpty())
         return false;
-    session->setProjectPath(QFileInfo(path).absoluteFilePath());
-    session->undoStack()->setClean();
-    emit saved(session->projectPath());
+    Document* document = m_workspace.document();
+    if (document)
+        document->markSaved(path);
+    emit saved(document ? document->filePath() : QFileInfo(path).absoluteFilePath());
+    emit saveableChanged();
     return true;
 }
 
-// The shown scene as a scene project: every object's mesh and placement, the CSG
-// expression and per-object rules, and the extras (camera, static rule).
-bool ProjectFiles::saveSceneTo(const QString& path, QString* error)
+// The history with its extras, or the shown scene as a scene project: every object's
+// mesh and placement, the CSG expression and per-object rules, and the extras.
+void ProjectFiles::writeTo(const QString& path) const
 {
-    const ShownScene shown = m_sceneSource ? m_sceneSource() : ShownScene{};
-    QString reason;
-    if (!shown.scene) {
-        reason = tr("There is no deformation history or scene to save.");
-    } else {
-        try {
-            timeline::saveSceneProject(projectSceneOf(*shown.scene, shown.csg), path.toStdString(), m_extras());
-        } catch (const std::exception& e) {
-            reason = QString::fromStdString(e.what());
-        }
+    if (const DesignSession* session = m_workspace.session()) {
+        timeline::saveProject(session->timeline(), path.toStdString(), m_extras());
+        return;
     }
-    if (error)
-        *error = reason;
-    if (!reason.isEmpty())
-        return false;
-    m_scenePath = QFileInfo(path).absoluteFilePath();
-    if (shown.markSaved)
-        shown.markSaved();
-    emit saved(m_scenePath);
-    return true;
+    const ShownScene shown = m_sceneSource ? m_sceneSource() : ShownScene{};
+    if (!shown.scene)
+        throw std::runtime_error(tr("There is no deformation history or scene to save.").toStdString());
+    timeline::saveSceneProject(projectSceneOf(*shown.scene, shown.csg), path.toStdString(), m_extras());
 }
 
 bool ProjectFiles::maybeSave()
 {
-    if (!m_workspace.isModified())
+    const Document* document = m_workspace.document();
+    if (!document || !document->isModified())
         return true;
-    return askToSave(tr("The deformation history has changes that are not saved."),
-                     tr("Save them to a project file first?"), QStringLiteral("unsavedHistoryBox"));
-}
-
-bool ProjectFiles::maybeSaveScene()
-{
-    if (m_workspace.session()) // a design: maybeSave() guards its history
-        return true;
-    const ShownScene shown = m_sceneSource ? m_sceneSource() : ShownScene{};
-    if (!shown.scene || !shown.unsaved)
-        return true;
-    return askToSave(tr("The scene of %1 objects has changes that are not saved.").arg(shown.scene->scene.objects.size()),
+    if (m_workspace.session() || !m_sceneSource || !m_sceneSource().scene)
+        return askToSave(tr("The deformation history has changes that are not saved."),
+                         tr("Save them to a project file first?"), QStringLiteral("unsavedHistoryBox"));
+    const std::size_t objects = m_sceneSource().scene->scene.objects.size();
+    return askToSave(tr("The scene of %1 objects has changes that are not saved.").arg(objects),
                      tr("Save its objects, placements and CSG to a project file first?"),
                      QStringLiteral("unsavedSceneBox"));
 }
@@ -225,9 +198,12 @@ bool ProjectFiles::askToSave(const QString& text, const QString& question, const
     box.setInformativeText(question);
     box.setDefaultButton(QMessageBox::Save);
     switch (box.exec()) {
-    case QMessageBox::Save: return save();
-    case QMessageBox::Discard: return true;
-    default: return false;
+    case QMessageBox::Save:
+        return save();
+    case QMessageBox::Discard:
+        return true;
+    default:
+        return false;
     }
 }
 

@@ -3,10 +3,12 @@
 /// The designer's project files (.trimlab, core/timeline/project_file.h) in the window:
 /// opening one off the UI thread (a busy progress dialog with Cancel after a short
 /// delay), Save Project / Save Project As… (atomic; the camera and the static rule go
-/// into the file's extras) of the deformation history or, when none is shown, of the
-/// scene with its objects, placements and CSG (a scene project), and the prompt before
-/// unsaved changes of a history would be lost. A
-/// project that cannot be read is reported through failed(); nothing else changes.
+/// into the file's extras, with the rest of the document's view settings) of the
+/// deformation history or, when none is shown, of the scene with its objects, placements
+/// and CSG (a scene project), and the prompt before the document's unsaved changes would
+/// be lost. What is saved where, and whether there is anything unsaved, is the document's
+/// (ui/common/document.h): a save marks it saved. A project that cannot be read is
+/// reported through failed(); nothing else changes.
 
 #include "core/catalog/scene_source.h"
 #include "core/timeline/project_file.h"
@@ -24,7 +26,8 @@ class QWidget;
 
 namespace trimlab::ui {
 
-class BackgroundTask;
+template <class T>
+class BackgroundJob;
 class DesignWorkspace;
 
 class ProjectFiles : public QObject {
@@ -40,10 +43,6 @@ public:
     struct ShownScene {
         std::shared_ptr<const LoadedScene> scene;
         CsgSettings csg;
-        /// An assembly of several objects with changes no file holds (maybeSaveScene asks).
-        bool unsaved = false;
-        /// Called once the scene is saved.
-        std::function<void()> markSaved;
     };
     using SceneSource = std::function<ShownScene()>;
 
@@ -60,28 +59,26 @@ public:
     [[nodiscard]] bool isOpening() const;
 
     void setSceneSource(SceneSource source) { m_sceneSource = std::move(source); }
-    /// A scene is shown: opened from the scene project `path` (Save writes there), or from
-    /// elsewhere ("": Save asks for a file). Save Project's enabled state may change.
-    void sceneShown(const QString& path);
     /// There is a deformation history or a scene to save.
     [[nodiscard]] bool canSave() const;
 
-    /// Saves the history to the session's project file, or the scene (without a session)
-    /// to its scene project, asking for a file when there is none. Returns false when
-    /// nothing was saved (canceled or failed: the failure is reported).
+    /// Saves the history, or the scene (without a session), to the document's project
+    /// file, asking for a file when it has none. Returns false when nothing was saved
+    /// (canceled or failed: the failure is reported).
     bool save();
     /// Asks for a file, then saves there.
     bool saveAs();
-    /// Saves the session to `path` atomically (then the session is clean and its project
-    /// path is `path`), or without a session the shown scene as a scene project. False
+    /// writeTo(`path`), then the document is saved there (clean, its file `path`). False
     /// with the reason in `error` otherwise.
     bool saveTo(const QString& path, QString* error);
-    /// When the session has unsaved changes, asks Save / Discard / Cancel. True when the
-    /// caller may go on (saved, discarded, or nothing to save).
+    /// Writes the document shown to `path` atomically — the history with the session, else
+    /// the scene as a scene project — without changing what the document knows (autosave
+    /// writes its copies this way). Throws std::runtime_error with the reason.
+    void writeTo(const QString& path) const;
+    /// When the document has unsaved changes (a design's history, a scene's objects,
+    /// placements or CSG), asks Save / Discard / Cancel. True when the caller may go on
+    /// (saved, discarded, or nothing to save).
     bool maybeSave();
-    /// The same for a scene of several objects without a session (ShownScene::unsaved),
-    /// before it is replaced or the window closes.
-    bool maybeSaveScene();
 
 signals:
     void opened(std::shared_ptr<const trimlab::timeline::Project> project, const QString& path);
@@ -93,7 +90,6 @@ signals:
 private:
     void finishOpen(bool succeeded, const QString& message);
     [[nodiscard]] QString currentPath() const;
-    bool saveSceneTo(const QString& path, QString* error);
     bool askToSave(const QString& text, const QString& question, const QString& name);
     void closeProgress();
 
@@ -102,11 +98,9 @@ private:
     DesignWorkspace& m_workspace;
     ExtrasSource m_extras;
     SceneSource m_sceneSource;
-    QString m_scenePath; ///< the shown scene's project file, "" when it has none
-    BackgroundTask* m_task = nullptr;
+    BackgroundJob<std::shared_ptr<const timeline::Project>>* m_task = nullptr; ///< reads a project
     QPointer<QProgressDialog> m_progress;
     QString m_openPath;
-    std::shared_ptr<timeline::Project> m_result;
 };
 
 } // namespace trimlab::ui

@@ -1,6 +1,6 @@
 #include "ui/design/session_recovery.h"
 
-#include "ui/design/design_session.h"
+#include "ui/common/document.h"
 #include "ui/design/design_workspace.h"
 
 #include <QFileInfo>
@@ -8,7 +8,6 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
-#include <QUndoStack>
 
 namespace trimlab::ui {
 
@@ -16,24 +15,24 @@ namespace {
 
 QString describe(const RecoverableSession& session)
 {
-    const QString project = session.originalPath.isEmpty()
-                                ? SessionRecovery::tr("an untitled project")
-                                : QFileInfo(session.originalPath).fileName();
-    return SessionRecovery::tr("Unsaved deformation history of %1, autosaved %2.")
+    const QString project = !session.originalPath.isEmpty() ? QFileInfo(session.originalPath).fileName()
+                            : !session.name.isEmpty()       ? session.name
+                                                            : SessionRecovery::tr("an untitled project");
+    return SessionRecovery::tr("Unsaved work on %1, autosaved %2.")
         .arg(project, QLocale().toString(session.savedAt.toLocalTime(), QLocale::ShortFormat));
 }
 
 } // namespace
 
 SessionRecovery::SessionRecovery(QWidget* window, QSettings& settings, DesignWorkspace& workspace,
-                                 ProjectFiles& projectFiles, ProjectFiles::ExtrasSource extras)
+                                 ProjectFiles& projectFiles)
     : QObject(window),
       m_window(window),
       m_workspace(workspace),
       m_projectFiles(projectFiles),
       m_directory(settings.value(QStringLiteral("recovery/directory"), Autosave::defaultDirectory()).toString())
 {
-    m_autosave = std::make_unique<Autosave>(workspace, std::move(extras), m_directory);
+    m_autosave = std::make_unique<Autosave>(workspace, projectFiles, m_directory);
     m_autosave->setIntervalMinutes(
         settings.value(QStringLiteral("recovery/intervalMinutes"), Autosave::kDefaultIntervalMinutes).toInt());
     // An autosave that cannot be read stays where it is (the window reports the error);
@@ -59,8 +58,8 @@ void SessionRecovery::offer()
     m_box->setObjectName(QStringLiteral("recoveryOffer"));
     QString details = describe(session);
     if (sessions.size() > 1)
-        details += QLatin1Char(' ') + tr("%n older session(s) can be recovered after this one.", "",
-                                         int(sessions.size() - 1));
+        details +=
+            QLatin1Char(' ') + tr("%n older session(s) can be recovered after this one.", "", int(sessions.size() - 1));
     m_box->setInformativeText(details + QLatin1Char('\n') + tr("Recover it? Discard deletes the autosaved copy."));
     QPushButton* recoverButton = m_box->addButton(tr("&Recover"), QMessageBox::AcceptRole);
     m_box->addButton(tr("&Discard"), QMessageBox::DestructiveRole);
@@ -68,20 +67,22 @@ void SessionRecovery::offer()
     m_box->setDefaultButton(recoverButton);
     m_box->setAttribute(Qt::WA_DeleteOnClose);
     m_box->setWindowModality(Qt::WindowModal);
-    connect(m_box, &QMessageBox::buttonClicked, this, [this, session](QAbstractButton* button) {
-        onOfferFinished(session, int(m_box->buttonRole(button)));
-    });
+    connect(m_box, &QMessageBox::buttonClicked, this,
+            [this, session](QAbstractButton* button) { onOfferFinished(session, int(m_box->buttonRole(button))); });
     m_box->open();
 }
 
 void SessionRecovery::onOfferFinished(const RecoverableSession& session, int role)
 {
     switch (QMessageBox::ButtonRole(role)) {
-    case QMessageBox::AcceptRole: recover(session); break;
+    case QMessageBox::AcceptRole:
+        recover(session);
+        break;
     case QMessageBox::DestructiveRole:
         Autosave::discard(session);
         break;
-    default: return; // kept for the next start
+    default:
+        return; // kept for the next start
     }
     if (!m_pending) // a discard: there may be more
         QMetaObject::invokeMethod(this, &SessionRecovery::offer, Qt::QueuedConnection);
@@ -99,9 +100,10 @@ bool SessionRecovery::adoptRecovered(const QString& path)
         return false;
     const RecoverableSession session = *m_pending;
     m_pending.reset();
-    if (DesignSession* design = m_workspace.session()) {
-        design->setProjectPath(session.originalPath);
-        design->undoStack()->resetClean(); // the recovered work is not in any project file yet
+    if (Document* document = m_workspace.document()) {
+        document->setName(session.name.isEmpty() ? tr("Untitled") : session.name);
+        document->setFilePath(session.originalPath);
+        document->markChanged(); // the recovered work is not in any project file yet
     }
     Autosave::discard(session);
     m_autosave->saveNow(); // protected again at once, under this process's name

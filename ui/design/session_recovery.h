@@ -28,8 +28,7 @@ class SessionRecovery : public QObject {
 public:
     /// Settings: "recovery/directory" (default Autosave::defaultDirectory()) and
     /// "recovery/intervalMinutes" (default Autosave::kDefaultIntervalMinutes; 0 = off).
-    SessionRecovery(QWidget* window, QSettings& settings, DesignWorkspace& workspace, ProjectFiles& projectFiles,
-                    ProjectFiles::ExtrasSource extras);
+    SessionRecovery(QWidget* window, QSettings& settings, DesignWorkspace& workspace, ProjectFiles& projectFiles);
     ~SessionRecovery() override;
 
     [[nodiscard]] Autosave& autosave() { return *m_autosave; }
@@ -40,7 +39,7 @@ public:
     /// Opens `session` through ProjectFiles; adoptRecovered() finishes it.
     void recover(const RecoverableSession& session);
     /// Called by the window once ProjectFiles opened `path`: when it is the session being
-    /// recovered, the design session gets its original project path and is marked
+    /// recovered, the document gets its original project file and name back and is marked
     /// modified, the recovery files are deleted and autosave covers it again. Returns
     /// false for any other project.
     bool adoptRecovered(const QString& path);

@@ -23,7 +23,7 @@ public:
 private:
     DesignSession& m_session;
     DynamicRule m_rule;
-    bool m_renamedEmptySet = false;          ///< what redo did, for undo
+    bool m_renamedEmptySet = false; ///< what redo did, for undo
     DynamicRule m_previousRule = DynamicRule::Confluent;
 };
 

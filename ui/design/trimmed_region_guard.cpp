@@ -48,8 +48,8 @@ std::optional<QString> TrimmedRegionGuard::refuseSample(const DesignSession& ses
         m_checkRevision = session.revision();
         m_checkBaseRule = baseRule;
     }
-    const std::vector<std::uint32_t> off = m_check->trimmedOff(
-        session.topology(), history.currentPositions(), sample, kTrimTestOffset * session.baseBounds().radius());
+    const std::vector<std::uint32_t> off = m_check->trimmedOff(session.topology(), history.currentPositions(), sample,
+                                                               kTrimTestOffset * session.baseBounds().radius());
     m_lastCheckMs = double(timer.nsecsElapsed()) * 1e-6;
     if (off.empty())
         return std::nullopt;

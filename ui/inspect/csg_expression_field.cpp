@@ -25,11 +25,12 @@ std::optional<CsgExpression> csgExpressionForScene(const QString& text, int obje
     const int largest = csgMaxObjectId(*expression);
     if (largest >= objectCount) {
         if (error)
-            *error = objectCount == 0 ? QObject::tr("The scene has no objects.")
-                                      : QObject::tr("Object %1 does not exist: the scene has %2 object(s), ids 0 to %3.")
-                                            .arg(largest)
-                                            .arg(objectCount)
-                                            .arg(objectCount - 1);
+            *error = objectCount == 0
+                         ? QObject::tr("The scene has no objects.")
+                         : QObject::tr("Object %1 does not exist: the scene has %2 object(s), ids 0 to %3.")
+                               .arg(largest)
+                               .arg(objectCount)
+                               .arg(objectCount - 1);
         return std::nullopt;
     }
     return expression;
@@ -51,8 +52,8 @@ CsgExpressionField::CsgExpressionField(QWidget* parent) : QGroupBox(tr("CSG"), p
     layout->addWidget(m_error);
     auto* buttons = new QHBoxLayout;
     buttons->setContentsMargins(0, 0, 0, 0);
-    m_union = addBuildButton(tr("Union"), QStringLiteral("csgUnionButton"),
-                             tr("The union of the selected objects"), CsgOperation::Union);
+    m_union = addBuildButton(tr("Union"), QStringLiteral("csgUnionButton"), tr("The union of the selected objects"),
+                             CsgOperation::Union);
     m_intersection = addBuildButton(tr("Intersection"), QStringLiteral("csgIntersectionButton"),
                                     tr("The intersection of the selected objects"), CsgOperation::Intersection);
     m_difference = addBuildButton(tr("Difference"), QStringLiteral("csgDifferenceButton"),
@@ -67,8 +68,8 @@ CsgExpressionField::CsgExpressionField(QWidget* parent) : QGroupBox(tr("CSG"), p
     setSelectionCount(0);
 }
 
-QPushButton* CsgExpressionField::addBuildButton(const QString& text, const QString& objectName,
-                                                const QString& toolTip, CsgOperation operation)
+QPushButton* CsgExpressionField::addBuildButton(const QString& text, const QString& objectName, const QString& toolTip,
+                                                CsgOperation operation)
 {
     auto* button = new QPushButton(text, this);
     button->setObjectName(objectName);

@@ -7,17 +7,20 @@
 
 namespace trimlab::ui {
 
-InspectScene::InspectScene(QObject* parent) : QObject(parent), m_undoStack(new QUndoStack(this))
+InspectScene::InspectScene(QObject* parent) : QObject(parent), m_ownUndoStack(new QUndoStack(this))
 {
-    m_undoStack->setObjectName(QStringLiteral("inspectUndoStack"));
+    m_ownUndoStack->setObjectName(QStringLiteral("inspectUndoStack"));
+    m_undoStack = m_ownUndoStack;
 }
 
 InspectScene::~InspectScene() = default;
 
-void InspectScene::reset(std::shared_ptr<const LoadedScene> scene)
+void InspectScene::reset(std::shared_ptr<const LoadedScene> scene, QUndoStack* undoStack)
 {
-    m_undoStack->clear(); // commands refer to the previous scene's objects
-    m_objectsAdded = false;
+    if (m_undoStack)          // gone with its document, or still here:
+        m_undoStack->clear(); // its commands refer to the previous scene's objects
+    m_undoStack = undoStack ? undoStack : m_ownUndoStack;
+    m_undoStack->clear();
     m_scene = std::move(scene);
     m_transforms.clear();
     if (m_scene)
@@ -35,9 +38,8 @@ bool InspectScene::appendObjects(const LoadedScene& added, QString* error)
     if (!m_scene)
         reason = tr("There is no scene to add objects to; open one first.");
     else if (total > Scene::maxObjects)
-        reason = tr("The scene would have %1 objects; the renderer supports at most %2.")
-                     .arg(total)
-                     .arg(Scene::maxObjects);
+        reason =
+            tr("The scene would have %1 objects; the renderer supports at most %2.").arg(total).arg(Scene::maxObjects);
     if (!reason.isEmpty()) {
         if (error)
             *error = reason;
@@ -51,20 +53,8 @@ bool InspectScene::appendObjects(const LoadedScene& added, QString* error)
         m_transforms.push_back(decomposeObjectTransform(added.scene.objects[i].modelMatrix));
     }
     m_scene = std::move(grown);
-    m_objectsAdded = true;
     emit sceneReplaced();
     return true;
-}
-
-bool InspectScene::isModified() const
-{
-    return m_objectsAdded || !m_undoStack->isClean();
-}
-
-void InspectScene::markSaved()
-{
-    m_objectsAdded = false;
-    m_undoStack->setClean();
 }
 
 int InspectScene::objectCount() const

@@ -3,8 +3,9 @@
 /// The scene shown, under the Scene panel's edits: each object's transform (translation,
 /// rotation in degrees, uniform scale: core/scene/object_transform.h) and the CSG
 /// settings (the expression over object ids and per-object rules: core/trim). Holds no
-/// algorithm; it keeps the current values, records edits on its undo stack (the window's
-/// Edit ▸ Undo/Redo) and says what changed.
+/// algorithm; it keeps the current values, records edits on the undo stack of the
+/// document shown (ui/common/document.h: the window's Edit ▸ Undo/Redo; whether it is
+/// modified is the document's) and says what changed.
 ///
 /// The scene is a value: every transform edit replaces it by a copy whose one model
 /// matrix differs (meshes copied, so whoever holds the previous scene — the viewport's
@@ -17,13 +18,13 @@
 #include "core/trim/inspect_settings.h"
 
 #include <QObject>
+#include <QPointer>
+#include <QUndoStack>
 #include <QString>
 
 #include <memory>
 #include <optional>
 #include <vector>
-
-class QUndoStack;
 
 namespace trimlab::ui {
 
@@ -34,9 +35,10 @@ public:
     ~InspectScene() override;
 
     /// A newly opened scene (nullptr: none): transforms read from its model matrices, the
-    /// CSG and per-object rules a scene project saved (else none), an empty undo stack.
-    /// Emits sceneReplaced().
-    void reset(std::shared_ptr<const LoadedScene> scene);
+    /// CSG and per-object rules a scene project saved (else none); edits go on `undoStack`
+    /// (its document's, emptied here; nullptr: a stack of this object's own). Emits
+    /// sceneReplaced().
+    void reset(std::shared_ptr<const LoadedScene> scene, QUndoStack* undoStack = nullptr);
     /// Appends the objects of `added` (their names, meshes, model matrices and validation
     /// reports) to the scene. Emits sceneReplaced(). False with the reason in `error`
     /// when there is no scene or the result would exceed Scene::maxObjects objects.
@@ -49,12 +51,8 @@ public:
     /// index is out of range.
     [[nodiscard]] std::optional<ObjectTransform> transform(int object) const;
     [[nodiscard]] const CsgSettings& csg() const { return m_csg; }
-    [[nodiscard]] QUndoStack* undoStack() const { return m_undoStack; }
-    /// The scene differs from what was opened or last saved: objects were added, or an
-    /// edit (transform, CSG) is not at the undo stack's clean state.
-    [[nodiscard]] bool isModified() const;
-    /// What the scene shows is now what a file holds (after Save Project).
-    void markSaved();
+    /// The stack edits go on (reset()).
+    [[nodiscard]] QUndoStack* undoStack() const { return m_undoStack.data(); }
 
     /// Undoable: moves object `object` to `transform`. Consecutive edits of the same
     /// component of one object (spin box steps) merge into one undo step, and so do the
@@ -86,8 +84,8 @@ private:
     std::shared_ptr<const LoadedScene> m_scene;
     std::vector<std::optional<ObjectTransform>> m_transforms;
     CsgSettings m_csg;
-    QUndoStack* m_undoStack;
-    bool m_objectsAdded = false; ///< since reset() or markSaved(): not an undoable edit
+    QUndoStack* m_ownUndoStack;
+    QPointer<QUndoStack> m_undoStack; ///< the document's, which may go first
     int m_typingSession = 0;
     int m_dragSession = 0;
 };

@@ -1,5 +1,6 @@
 #include "ui/inspect/inspect_workspace.h"
 
+#include "ui/common/current_document.h"
 #include "ui/common/window_context.h"
 #include "ui/design/design_session.h"
 #include "ui/inspect/inspect_scene.h"
@@ -13,38 +14,23 @@
 #include <QFileInfo>
 #include <QMainWindow>
 #include <QStatusBar>
-#include <QUndoGroup>
 #include <QUndoStack>
 
 #include <stdexcept>
 
 namespace trimlab::ui {
 
-namespace {
-
-/// Makes `stack` the group's active stack unless it has left the group: a stack being
-/// destroyed leaves its group first and then clears itself, which reports an index change.
-void activateIfGrouped(QUndoGroup* group, QUndoStack* stack)
-{
-    if (group->stacks().contains(stack))
-        group->setActiveStack(stack);
-}
-
-} // namespace
-
 InspectWorkspace::InspectWorkspace(const WindowContext& context, ViewportWidget* viewport, QDockWidget* tabWith,
-                                   QUndoGroup* undoGroup, QObject* parent)
+                                   QObject* parent)
     : QObject(parent),
       m_context(context),
       m_viewport(viewport),
-      m_undoGroup(undoGroup),
       m_inspect(new InspectScene(this)),
       m_loader(new SceneLoader(&context.window()))
 {
     m_panel = new ScenePanel(*m_inspect);
     m_dock = m_context.addSideDock(tr("Scene"), QStringLiteral("sceneDock"), m_panel, tabWith);
     connectParts();
-    joinUndoGroup();
 }
 
 const CsgSettings& InspectWorkspace::csg() const
@@ -68,15 +54,6 @@ void InspectWorkspace::connectParts()
     });
 }
 
-void InspectWorkspace::joinUndoGroup()
-{
-    QUndoStack* sceneStack = m_inspect->undoStack();
-    m_undoGroup->addStack(sceneStack);
-    connect(sceneStack, &QUndoStack::indexChanged, m_undoGroup,
-            [group = m_undoGroup, sceneStack] { activateIfGrouped(group, sceneStack); });
-    followUndoStacks();
-}
-
 void InspectWorkspace::moveObject(int object, const glm::dvec3& delta)
 {
     std::optional<ObjectTransform> transform = m_inspect->transform(object);
@@ -90,29 +67,16 @@ void InspectWorkspace::moveObject(int object, const glm::dvec3& delta)
 void InspectWorkspace::showScene(std::shared_ptr<const LoadedScene> scene, bool animation)
 {
     m_animation = animation;
-    m_inspect->reset(std::move(scene)); // no CSG, transforms of the new scene, a clean scene undo stack
+    Document* document = m_context.document().get();
+    // No CSG, the transforms of the new scene; edits on the document's undo stack.
+    m_inspect->reset(std::move(scene), document ? document->undoStack() : nullptr);
     updateEditability();
 }
 
 void InspectWorkspace::setDesignSession(const DesignSession* session)
 {
     m_session = session;
-    followUndoStacks();
     updateEditability();
-}
-
-// The stack edited last is the one Edit ▸ Undo acts on: the scene's, or the design
-// session's while one is shown (it becomes active again with its next stroke).
-void InspectWorkspace::followUndoStacks()
-{
-    if (!m_session) {
-        m_undoGroup->setActiveStack(m_inspect->undoStack());
-        return;
-    }
-    QUndoStack* designStack = m_session->undoStack();
-    connect(designStack, &QUndoStack::indexChanged, m_undoGroup,
-            [group = m_undoGroup, designStack] { activateIfGrouped(group, designStack); });
-    m_undoGroup->setActiveStack(designStack);
 }
 
 void InspectWorkspace::updateEditability()
@@ -129,8 +93,8 @@ void InspectWorkspace::updateEditability()
 
 void InspectWorkspace::showAddObjectDialog()
 {
-    const QString path = QFileDialog::getOpenFileName(&m_context.window(), tr("Add Object"),
-                                                      m_context.lastDirectory(), meshFileDialogFilter());
+    const QString path = QFileDialog::getOpenFileName(&m_context.window(), tr("Add Object"), m_context.lastDirectory(),
+                                                      meshFileDialogFilter());
     if (path.isEmpty())
         return;
     m_context.rememberDirectory(QFileInfo(path).absolutePath());

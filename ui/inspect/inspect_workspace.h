@@ -3,9 +3,8 @@
 /// The interior-inspection feature of the main window: the Scene dock (objects, their
 /// transforms and rules, the CSG expression: ScenePanel over an InspectScene), File ▸ Add
 /// Object… (a mesh loaded off the UI thread into the shown scene), Ctrl+drag of an object
-/// in the view, and the scene's undo stack in the window's undo group — the stack edited
-/// last, the scene's or the design session's, is the one Edit ▸ Undo acts on. (Clipping,
-/// capping and highlighting are groups of the Render panel: render_panel/.)
+/// in the view; its edits go on the undo stack of the document shown. (Clipping, capping
+/// and highlighting are groups of the Render panel: render_panel/.)
 ///
 /// Transforms cannot be edited while an animation is shown (its rest pose is fixed) or
 /// while the single object is being designed (its history works in its own frame).
@@ -20,7 +19,6 @@
 #include <memory>
 
 class QDockWidget;
-class QUndoGroup;
 
 namespace trimlab::ui {
 
@@ -34,9 +32,9 @@ class WindowContext;
 class InspectWorkspace : public QObject {
     Q_OBJECT
 public:
-    /// The Scene dock is tabbed with `tabWith`; the scene's undo stack joins `undoGroup`.
+    /// The Scene dock is tabbed with `tabWith`.
     InspectWorkspace(const WindowContext& context, ViewportWidget* viewport, QDockWidget* tabWith,
-                     QUndoGroup* undoGroup, QObject* parent = nullptr);
+                     QObject* parent = nullptr);
 
     [[nodiscard]] InspectScene* scene() const { return m_inspect; }
     [[nodiscard]] ScenePanel* panel() const { return m_panel; }
@@ -47,10 +45,9 @@ public:
     [[nodiscard]] bool showsAnimation() const { return m_animation; }
 
     /// Another scene is shown (an animation's rest pose when `animation`): no CSG, its
-    /// transforms, a clean scene undo stack.
+    /// transforms, edits on the new document's undo stack.
     void showScene(std::shared_ptr<const LoadedScene> scene, bool animation);
-    /// The design session started or ended (nullptr): which stack Undo acts on, and
-    /// whether transforms may be edited.
+    /// The design session started or ended (nullptr): whether transforms may be edited.
     void setDesignSession(const DesignSession* session);
     /// Asked before an object is added (the designed object stops being designed):
     /// false when the user keeps the unsaved design changes and nothing is added.
@@ -74,15 +71,12 @@ signals:
 
 private:
     void connectParts();
-    void joinUndoGroup();
-    void followUndoStacks();
     void updateEditability();
     void onObjectsLoaded(std::shared_ptr<const LoadedScene> loaded);
     void moveObject(int object, const glm::dvec3& delta);
 
     const WindowContext& m_context;
     ViewportWidget* m_viewport;
-    QUndoGroup* m_undoGroup;
     InspectScene* m_inspect = nullptr;
     ScenePanel* m_panel = nullptr;
     QDockWidget* m_dock = nullptr;

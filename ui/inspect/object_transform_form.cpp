@@ -47,7 +47,8 @@ ObjectTransformForm::ObjectTransformForm(QWidget* parent) : QWidget(parent)
         turn->setSuffix(QStringLiteral("°"));
         m_rotation[std::size_t(i)] = turn;
     }
-    m_scale = addSpin(6, QStringLiteral("uniformScale"), QString(), tr("Uniform scale about the object's origin (> 0)"));
+    m_scale =
+        addSpin(6, QStringLiteral("uniformScale"), QString(), tr("Uniform scale about the object's origin (> 0)"));
     m_scale->setRange(0.001, kMaxScale);
     m_scale->setDecimals(4);
     m_scale->setSingleStep(0.05);
@@ -81,7 +82,8 @@ QDoubleSpinBox* ObjectTransformForm::addSpin(int component, const QString& objec
     spin->setToolTip(toolTip);
     // Typing "0.5" must not move the object to 0 first: commit on Return or focus out.
     spin->setKeyboardTracking(false);
-    connect(spin, &QDoubleSpinBox::valueChanged, this, [this, component](double value) { onFieldEdited(component, value); });
+    connect(spin, &QDoubleSpinBox::valueChanged, this,
+            [this, component](double value) { onFieldEdited(component, value); });
     return spin;
 }
 

@@ -41,8 +41,9 @@ ScenePanel::ScenePanel(InspectScene& scene, QWidget* parent) : QWidget(parent), 
     connect(m_csg, &CsgExpressionField::expressionTyped, this, [this](const CsgExpression& expression) {
         CsgSettings csg = m_scene.csg();
         csg.expression = expression;
-        const QString text = expression.empty() ? tr("CSG off")
-                                                : tr("CSG %1").arg(QString::fromStdString(formatCsgExpression(expression)));
+        const QString text = expression.empty()
+                                 ? tr("CSG off")
+                                 : tr("CSG %1").arg(QString::fromStdString(formatCsgExpression(expression)));
         m_scene.editCsg(csg, text, true);
     });
     connect(m_csg, &CsgExpressionField::typingFinished, this, [this] { m_scene.endTyping(); });
@@ -65,9 +66,10 @@ QWidget* ScenePanel::createObjectsGroup()
     m_table->setHorizontalHeaderLabels({tr("Id"), tr("Name"), tr("In CSG"), tr("Rule")});
     m_table->horizontalHeaderItem(InCsgColumn)
         ->setToolTip(tr("Whether the CSG expression shows the object (without an expression every object is shown)"));
-    m_table->horizontalHeaderItem(RuleColumn)->setToolTip(tr("The rule that classifies the object on its own "
-                                                             "(CSG, collisions); \"Scene rule\" is the Render "
-                                                             "panel's"));
+    m_table->horizontalHeaderItem(RuleColumn)
+        ->setToolTip(tr("The rule that classifies the object on its own "
+                        "(CSG, collisions); \"Scene rule\" is the Render "
+                        "panel's"));
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_table->verticalHeader()->setVisible(false);
@@ -193,10 +195,9 @@ void ScenePanel::refreshTransform()
     else if (!transform)
         note = tr("This object's model matrix is not a rotation, uniform scale and translation; it cannot be "
                   "edited here.");
-    m_transformGroup->setTitle(object < 0 ? tr("Transform")
-                                          : tr("Transform of object %1 (%2)")
-                                                .arg(object)
-                                                .arg(m_table->item(object, NameColumn)->text()));
+    m_transformGroup->setTitle(
+        object < 0 ? tr("Transform")
+                   : tr("Transform of object %1 (%2)").arg(object).arg(m_table->item(object, NameColumn)->text()));
     m_transform->setTransform(transform.value_or(ObjectTransform{}));
     m_transform->setEnabled(note.isEmpty());
     m_transformNote->setText(note);

@@ -12,8 +12,8 @@ namespace {
 
 std::array<double, 7> components(const ObjectTransform& t)
 {
-    return {t.translation.x, t.translation.y, t.translation.z, t.rotationDegrees.x, t.rotationDegrees.y,
-            t.rotationDegrees.z, t.scale};
+    return {t.translation.x,     t.translation.y,     t.translation.z, t.rotationDegrees.x,
+            t.rotationDegrees.y, t.rotationDegrees.z, t.scale};
 }
 
 } // namespace
@@ -35,7 +35,8 @@ int changedTransformComponent(const ObjectTransform& a, const ObjectTransform& b
 
 SetObjectTransformCommand::SetObjectTransformCommand(InspectScene& scene, int object, const ObjectTransform& before,
                                                      const ObjectTransform& after, int dragSession)
-    : InspectSceneValueCommand(scene, before, after, dragSession), m_object(object),
+    : InspectSceneValueCommand(scene, before, after, dragSession),
+      m_object(object),
       m_component(changedTransformComponent(before, after))
 {
     setText(QCoreApplication::translate("SetObjectTransformCommand", "Move object %1").arg(object));
@@ -52,8 +53,7 @@ bool SetObjectTransformCommand::mergeWith(const QUndoCommand* other)
     if (next->m_object != m_object)
         return false;
     const bool sameDrag = sameSession(*next);
-    const bool sameField =
-        session() < 0 && next->session() < 0 && m_component >= 0 && next->m_component == m_component;
+    const bool sameField = session() < 0 && next->session() < 0 && m_component >= 0 && next->m_component == m_component;
     if (!sameDrag && !sameField)
         return false;
     takeAfter(*next);

@@ -1,6 +1,6 @@
 #include "ui/inspect/solid_export.h"
 
-#include "ui/common/background_task.h"
+#include "ui/common/background_job.h"
 #include "ui/common/task_progress_dialog.h"
 #include "ui/common/window_context.h"
 
@@ -14,11 +14,11 @@
 namespace trimlab::ui {
 
 SolidExport::SolidExport(const WindowContext& context, ShownSource shown, QObject* parent)
-    : QObject(parent), m_context(context), m_shown(std::move(shown)), m_task(new BackgroundTask(this))
+    : QObject(parent), m_context(context), m_shown(std::move(shown)), m_task(new BackgroundJob<TrimmedSolidStats>(this))
 {
-    connect(m_task, &BackgroundTask::succeeded, this, [this] { finish(true, {}); });
-    connect(m_task, &BackgroundTask::failed, this, [this](const QString& message) { finish(false, message); });
-    connect(m_task, &BackgroundTask::canceled, this, [this] {
+    connect(m_task, &BackgroundJobBase::succeeded, this, [this] { finish(true, {}); });
+    connect(m_task, &BackgroundJobBase::failed, this, [this](const QString& message) { finish(false, message); });
+    connect(m_task, &BackgroundJobBase::canceled, this, [this] {
         closeProgress();
         m_context.showStatus(tr("Export of the trimmed solid canceled."));
     });
@@ -63,14 +63,13 @@ void SolidExport::exportTo(const QString& path)
         return;
     }
     m_path = path;
-    m_stats = std::make_shared<TrimmedSolidStats>();
     const std::string comment = shown.name.toStdString() + " trimmed by " + ruleName(shown.settings.rule);
-    m_task->start([scene = shown.scene, settings = shown.settings, file = path.toStdString(), comment,
-                   stats = m_stats](const TaskControl& control) {
+    m_task->start([scene = shown.scene, settings = shown.settings, file = path.toStdString(),
+                   comment](const TaskControl& control) {
         const TrimmedSolid solid = trimmedSolid(*scene, settings, control);
         control.throwIfCancelled();
         saveTriangleMesh(file, solid.mesh, comment);
-        *stats = solid.stats;
+        return solid.stats;
     });
     openTaskProgress(m_progress, &m_context.window(), m_task, tr("Export Trimmed Solid"),
                      tr("Computing the trimmed solid of %1…").arg(shown.name));
@@ -86,7 +85,7 @@ void SolidExport::finish(bool succeeded, const QString& message)
         emit failed(m_path, message);
         return;
     }
-    const TrimmedSolidStats& stats = *m_stats;
+    const TrimmedSolidStats& stats = m_task->result();
     QString text = tr("Exported the trimmed solid to %1: %2 triangles, volume %3")
                        .arg(m_path)
                        .arg(stats.keptFaces - stats.roundingDroppedFaces)

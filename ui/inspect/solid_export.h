@@ -21,7 +21,8 @@ class QProgressDialog;
 
 namespace trimlab::ui {
 
-class BackgroundTask;
+template <class T>
+class BackgroundJob;
 class WindowContext;
 
 class SolidExport : public QObject {
@@ -58,10 +59,9 @@ private:
 
     const WindowContext& m_context;
     ShownSource m_shown;
-    BackgroundTask* m_task = nullptr;
+    BackgroundJob<TrimmedSolidStats>* m_task = nullptr; ///< computes and writes the solid
     QPointer<QProgressDialog> m_progress;
     QString m_path;
-    std::shared_ptr<TrimmedSolidStats> m_stats;
 };
 
 } // namespace trimlab::ui

@@ -26,8 +26,8 @@ FrameStatsLabels::FrameStatsLabels(QStatusBar* statusBar) : QObject(statusBar)
                            tr("GPU time of the last frame (clear, store and resolve passes)"));
     m_fragments = addLabel(statusBar, QStringLiteral("fragmentsLabel"),
                            tr("Fragments inside the kept span (after clipping) in the last frame"));
-    m_overflow = addLabel(statusBar, QStringLiteral("overflowLabel"),
-                          tr("Pixels that lost fragments to the method's capacity"));
+    m_overflow =
+        addLabel(statusBar, QStringLiteral("overflowLabel"), tr("Pixels that lost fragments to the method's capacity"));
     m_unresolved = addLabel(statusBar, QStringLiteral("unresolvedLabel"),
                             tr("Overflowed pixels whose trim point may have been lost (they show magenta) and "
                                "fragments lost. The Frame statistics panel offers a larger k or an unbounded method."));

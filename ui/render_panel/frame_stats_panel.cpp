@@ -53,11 +53,12 @@ FrameStatsPanel::FrameStatsPanel(QWidget* parent) : QWidget(parent)
                          tr("GPU time of the last frame; wall-clock time when the driver's timer is unusable"));
     m_passes = addRow(form, tr("Geometry passes"), "statsGeometryPassesLabel",
                       tr("Times the scene was rasterised (and full-screen passes)"));
-    m_memory = addRow(form, tr("GPU memory"), "statsMemoryLabel",
-                      tr("Method storage, render target and scene buffers"));
+    m_memory =
+        addRow(form, tr("GPU memory"), "statsMemoryLabel", tr("Method storage, render target and scene buffers"));
     m_fragments = addRow(form, tr("Fragments in span"), "statsFragmentsLabel",
                          tr("Fragments inside the kept span (after clipping)"));
-    m_stored = addRow(form, tr("Fragments stored"), "statsStoredLabel", tr("Fragments written to the method's storage"));
+    m_stored =
+        addRow(form, tr("Fragments stored"), "statsStoredLabel", tr("Fragments written to the method's storage"));
     m_lost = addRow(form, tr("Fragments lost"), "statsLostLabel",
                     tr("Fragments not stored: beyond the capacity, or given up on the spin-lock"));
     m_overflow = addRow(form, tr("Overflowed pixels"), "statsOverflowLabel", tr("Pixels that lost fragments"));
@@ -118,7 +119,8 @@ void FrameStatsPanel::showFrame(const render::ViewFrame& frame)
     const render::FrameStats& s = frame.stats;
     m_method->setText(methodDisplayName(render::methodInfo(s.method)));
     m_frameTime->setText(frameTimeText(s));
-    m_passes->setText(tr("%1 (+ %2 full-screen)").arg(s.methodStats.geometryPasses).arg(s.methodStats.fullscreenPasses));
+    m_passes->setText(
+        tr("%1 (+ %2 full-screen)").arg(s.methodStats.geometryPasses).arg(s.methodStats.fullscreenPasses));
     m_memory->setText(tr("%1 MB").arg(s.bufferMegabytes, 0, 'f', 1));
     m_fragments->setText(countText(s.counts.fragmentsInSpan));
     m_stored->setText(countText(s.counts.fragmentsStored));
@@ -131,8 +133,8 @@ void FrameStatsPanel::showFrame(const render::ViewFrame& frame)
 
 void FrameStatsPanel::clear()
 {
-    for (QLabel* label : {m_method, m_frameTime, m_passes, m_memory, m_fragments, m_stored, m_lost, m_overflow,
-                          m_unresolved, m_lock})
+    for (QLabel* label :
+         {m_method, m_frameTime, m_passes, m_memory, m_fragments, m_stored, m_lost, m_overflow, m_unresolved, m_lock})
         label->setText(kDash);
     showAdvice({});
 }
@@ -155,13 +157,14 @@ void FrameStatsPanel::showAdvice(const OverflowAdvice& advice)
     }
     m_switch->setVisible(!advice.unboundedMethods.empty());
     if (!advice.unboundedMethods.empty())
-        m_switch->setText(tr("Switch to %1").arg(methodDisplayName(render::methodInfo(advice.unboundedMethods.front()))));
+        m_switch->setText(
+            tr("Switch to %1").arg(methodDisplayName(render::methodInfo(advice.unboundedMethods.front()))));
     m_raiseK->setVisible(advice.raiseKTo.has_value());
     if (advice.raiseKTo) {
         m_raiseK->setText(tr("Raise k to %1").arg(*advice.raiseKTo));
-        m_raiseK->setToolTip(advice.raiseKHoldsDeepestPixel ? tr("The deepest pixel of this frame has %1 fragments.")
-                                                                  .arg(*advice.raiseKTo)
-                                                            : tr("This method does not count beyond k: doubles k."));
+        m_raiseK->setToolTip(advice.raiseKHoldsDeepestPixel
+                                 ? tr("The deepest pixel of this frame has %1 fragments.").arg(*advice.raiseKTo)
+                                 : tr("This method does not count beyond k: doubles k."));
     }
 }
 

@@ -1,6 +1,7 @@
 #include "ui/render_panel/inspect_group.h"
 
 #include "ui/common/form_controls.h"
+#include "ui/common/parameter_form.h"
 #include "ui/render_panel/render_choices.h"
 
 #include <QCheckBox>
@@ -37,6 +38,9 @@ QString patternKey(CapPattern pattern)
     return QString::fromLatin1(name.data(), qsizetype(name.size()));
 }
 
+// The cap spacing is a fraction of the radius, shown as a percentage.
+constexpr double kPercent = 100.0;
+
 // The X-ray combo box's item data: "off" or trimDisplayName().
 const QString kXrayOff = QStringLiteral("off");
 
@@ -44,17 +48,6 @@ QString displayKey(TrimDisplay display)
 {
     const std::string_view name = trimDisplayName(display);
     return QString::fromLatin1(name.data(), qsizetype(name.size()));
-}
-
-QDoubleSpinBox* xraySpin(QWidget* parent, const char* name, double lo, double hi, double step, const QString& tip)
-{
-    auto* spin = new QDoubleSpinBox(parent);
-    spin->setObjectName(QLatin1String(name));
-    spin->setRange(lo, hi);
-    spin->setDecimals(2);
-    spin->setSingleStep(step);
-    spin->setToolTip(tip);
-    return spin;
 }
 
 } // namespace
@@ -98,7 +91,7 @@ InspectGroup::InspectGroup(QWidget* parent) : QGroupBox(tr("Capping and highligh
     });
     for (QDoubleSpinBox* spin : {m_layerAlpha, m_ghostAlpha, m_density, m_fresnel})
         connect(spin, &QDoubleSpinBox::valueChanged, this, &InspectGroup::changed);
-    setChoices(CapSettings{}, RenderChoices::kDefaultCapSpacingFraction, HighlightSettings{});
+    setChoices(CapSettings{}, inspect_parameters::kCapSpacing.defaultValue, HighlightSettings{});
     setTransparency(TransparencySettings{});
 }
 
@@ -117,14 +110,10 @@ QWidget* InspectGroup::createXrayRows()
                               "as translucent ghosts. Translucent: every boundary of the trimmed solid (caps too) as "
                               "a translucent layer. Needs a buffer method (not peeling or two-pass)."));
     form->addRow(tr("X-ray"), m_xrayMode);
-    m_layerAlpha = xraySpin(rows, "xrayLayerAlphaSpin", 0.0, 1.0, 0.05,
-                            tr("Opacity of each layer of the trimmed solid (Translucent)"));
-    m_ghostAlpha = xraySpin(rows, "xrayGhostAlphaSpin", 0.0, 1.0, 0.05,
-                            tr("Opacity of each fragment the trim removed (0 hides them)"));
-    m_density = xraySpin(rows, "xrayDensitySpin", 0.0, 100.0, 0.1,
-                         tr("Absorption per world unit of distance inside the solid (Beer-Lambert); 0: none"));
-    m_fresnel = xraySpin(rows, "xrayFresnelSpin", 0.0, 16.0, 0.5,
-                         tr("Fresnel exponent: layers grow more opaque towards grazing angles; 0: off"));
+    m_layerAlpha = parameterDoubleSpinBox(inspect_parameters::kLayerAlpha, "xrayLayerAlphaSpin", rows);
+    m_ghostAlpha = parameterDoubleSpinBox(inspect_parameters::kGhostAlpha, "xrayGhostAlphaSpin", rows);
+    m_density = parameterDoubleSpinBox(inspect_parameters::kDensity, "xrayDensitySpin", rows);
+    m_fresnel = parameterDoubleSpinBox(inspect_parameters::kFresnel, "xrayFresnelSpin", rows);
     form->addRow(tr("Layer opacity"), m_layerAlpha);
     form->addRow(tr("Ghost opacity"), m_ghostAlpha);
     form->addRow(tr("Density"), m_density);
@@ -175,11 +164,8 @@ QWidget* InspectGroup::createCapRows()
     form->addRow(tr("Pattern"), m_pattern);
     m_spacing = new QDoubleSpinBox(rows);
     m_spacing->setObjectName(QStringLiteral("capSpacingSpin"));
-    m_spacing->setRange(100.0 * RenderChoices::kMinCapSpacingFraction, 100.0 * RenderChoices::kMaxCapSpacingFraction);
-    m_spacing->setDecimals(1);
-    m_spacing->setSingleStep(0.5);
+    applyParameter(m_spacing, inspect_parameters::kCapSpacing, kPercent);
     m_spacing->setSuffix(tr(" % of radius"));
-    m_spacing->setToolTip(tr("Distance between neighbouring lines, as a percentage of the scene's bounding radius"));
     form->addRow(tr("Spacing"), m_spacing);
     return rows;
 }
@@ -193,8 +179,9 @@ void InspectGroup::setChoices(const CapSettings& cap, double spacingFraction, co
     const QSignalBlocker coplanarBlocker(m_coplanar);
     m_cap->setChecked(cap.enabled);
     m_pattern->setCurrentIndex(std::max(0, m_pattern->findData(patternKey(cap.pattern))));
-    const double fraction = std::isfinite(spacingFraction) ? spacingFraction : RenderChoices::kDefaultCapSpacingFraction;
-    m_spacing->setValue(100.0 * fraction); // the spin box clamps to its range
+    const double fraction =
+        std::isfinite(spacingFraction) ? spacingFraction : inspect_parameters::kCapSpacing.defaultValue;
+    m_spacing->setValue(kPercent * fraction); // the spin box clamps to its range
     m_collisions->setChecked(highlight.collisions);
     m_coplanar->setChecked(highlight.coplanar);
     updateEnabled();
@@ -210,7 +197,7 @@ CapSettings InspectGroup::cap() const
 
 double InspectGroup::spacingFraction() const
 {
-    return m_spacing->value() / 100.0;
+    return m_spacing->value() / kPercent;
 }
 
 HighlightSettings InspectGroup::highlight() const

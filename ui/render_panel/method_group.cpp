@@ -1,6 +1,7 @@
 #include "ui/render_panel/method_group.h"
 
-#include "ui/render_panel/render_choices.h"
+#include "render/mfr/method_parameter_table.h"
+#include "ui/common/parameter_form.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -52,29 +53,15 @@ MethodGroup::MethodGroup(QWidget* parent) : QGroupBox(tr("Multi-fragment method"
     m_method->setObjectName(QStringLiteral("methodComboBox"));
     addMethodItems();
     form->addRow(tr("Method"), m_method);
-    m_k = new QSpinBox(this);
-    m_k->setObjectName(QStringLiteral("kSpinBox"));
-    m_k->setRange(1, render::MethodParameters::kMaxK);
-    m_k->setKeyboardTracking(false); // reallocate on Enter, not on every digit
-    m_k->setToolTip(tr("Fragments kept per pixel by the capacity-bounded methods. Pixels with more fragments "
-                       "overflow; where the trim point lies beyond the k nearest they are unresolved (magenta)."));
+    // Each spin box reallocates on Enter, not on every digit.
+    m_k = parameterSpinBox(render::method_parameters::kK, "kSpinBox", this);
+    m_k->setKeyboardTracking(false);
     form->addRow(tr("k"), m_k);
-    m_sharedCounters = new QSpinBox(this);
-    m_sharedCounters->setObjectName(QStringLiteral("sharedCountersSpinBox"));
-    m_sharedCounters->setRange(1, kMaxSharedCounters);
+    m_sharedCounters = parameterSpinBox(render::method_parameters::kSharedCounters, "sharedCountersSpinBox", this);
     m_sharedCounters->setKeyboardTracking(false);
-    m_sharedCounters->setToolTip(tr("S: shared counters of the S-buffer's memory referencing. More counters mean "
-                                    "less contention while counting but a longer prefix sum over them."));
     form->addRow(tr("Shared counters S"), m_sharedCounters);
-    m_budget = new QSpinBox(this);
-    m_budget->setObjectName(QStringLiteral("memoryBudgetSpinBox"));
-    m_budget->setRange(0, kMaxMemoryBudgetMegabytes);
-    m_budget->setSuffix(tr(" MB"));
-    m_budget->setSpecialValueText(tr("no limit"));
+    m_budget = parameterSpinBox(render::method_parameters::kMemoryBudget, "memoryBudgetSpinBox", this);
     m_budget->setKeyboardTracking(false);
-    m_budget->setToolTip(tr("GPU memory the method's fragment storage may use. A method that would need more "
-                            "is not allocated: the view falls back to a leaner method (S-buffer, then peeling, "
-                            "then the CPU reference) and the status bar says so."));
     form->addRow(tr("Memory budget"), m_budget);
     m_memory = new QLabel(this);
     m_memory->setObjectName(QStringLiteral("kMemoryLabel"));

@@ -6,7 +6,9 @@
 
 namespace trimlab::ui {
 
-MethodSurvey::MethodSurvey(ViewportWidget* viewport, QObject* parent) : QObject(parent), m_viewport(viewport) {}
+MethodSurvey::MethodSurvey(ViewportWidget* viewport, QObject* parent) : QObject(parent), m_viewport(viewport)
+{
+}
 
 void MethodSurvey::start(int framesPerMethod)
 {
@@ -40,7 +42,8 @@ void MethodSurvey::measureNext()
     try {
         const MethodMeasurement measured = m_viewport->measureMethod(timing.method, m_framesPerMethod);
         timing.milliseconds = measured.times.medianMilliseconds();
-        timing.timeSource = QString::fromLatin1(measured.times.source().data(), qsizetype(measured.times.source().size()));
+        timing.timeSource =
+            QString::fromLatin1(measured.times.source().data(), qsizetype(measured.times.source().size()));
         timing.geometryPasses = measured.lastStats.methodStats.geometryPasses;
         timing.megabytes = measured.lastStats.bufferMegabytes;
         timing.fragmentsLost = measured.lastStats.counts.fragmentsLost;

@@ -82,7 +82,8 @@ void MethodTimingChart::paintEvent(QPaintEvent*)
         const Bar& bar = m_bars[std::size_t(i)];
         const QRect row = rowRect(i);
         painter.setPen(palette().color(QPalette::WindowText));
-        painter.drawText(QRect(row.left(), row.top(), labels, row.height()), Qt::AlignVCenter | Qt::AlignLeft, bar.label);
+        painter.drawText(QRect(row.left(), row.top(), labels, row.height()), Qt::AlignVCenter | Qt::AlignLeft,
+                         bar.label);
         const int track = std::max(1, row.width() - labels - kValueWidth);
         const QRect area(row.left() + labels, row.top() + 4, track, row.height() - 8);
         const double fraction = bar.milliseconds && longest > 0.0 ? *bar.milliseconds / longest : 1.0;

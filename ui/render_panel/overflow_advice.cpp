@@ -29,10 +29,10 @@ std::optional<int> largerK(const render::MethodInfo& info, int k, std::optional<
 QString overflowMessage(const render::MethodInfo& info, const render::FrameCounts& counts, int k)
 {
     const QLocale locale;
-    QString text = tr("%1 pixels unresolved (magenta), %2 fragments lost, %3 pixels overflowed.")
-                       .arg(locale.toString(qulonglong(counts.unresolvedPixels)),
-                            locale.toString(qulonglong(counts.fragmentsLost)),
-                            locale.toString(qulonglong(counts.overflowPixels)));
+    QString text =
+        tr("%1 pixels unresolved (magenta), %2 fragments lost, %3 pixels overflowed.")
+            .arg(locale.toString(qulonglong(counts.unresolvedPixels)),
+                 locale.toString(qulonglong(counts.fragmentsLost)), locale.toString(qulonglong(counts.overflowPixels)));
     const QString name = QString::fromUtf8(info.displayName.data(), qsizetype(info.displayName.size()));
     if (info.usesK)
         text += QLatin1Char(' ') + tr("%1 keeps at most k = %2 fragments per pixel.").arg(name).arg(k);

@@ -4,41 +4,32 @@
 /// the multi-fragment method and its parameters. The GUI persists it
 /// (render_settings_store.h).
 
-#include "render/mfr/fragment_method.h"
+#include "core/trim/inspect_parameters.h"
 #include "core/trim/trim_settings.h"
+#include "render/mfr/fragment_method.h"
+#include "render/mfr/method_parameter_table.h"
 
 #include <cstddef>
 
 namespace trimlab::ui {
 
-/// The largest S the GUI and the command line accept.
-inline constexpr int kMaxSharedCounters = 1 << 20;
-/// The largest GPU memory budget the GUI accepts, in MB (1 TB: no real limit).
-inline constexpr int kMaxMemoryBudgetMegabytes = 1 << 20;
-
 struct RenderChoices {
     TrimSettings trim;
     /// The multi-fragment method (one of render::fragmentMethods()).
     render::FragmentMethodKind method = render::FragmentMethodKind::KPlusArray;
-    /// Capacity per pixel of the bounded methods, 1..MethodParameters::kMaxK (TrimRenderer's default).
+    /// k, S and the GPU memory budget in MB (0: none); their ranges and defaults are the rows
+    /// of render/mfr/method_parameter_table.h.
     int k = render::MethodParameters{}.k;
-    /// S, the shared counters of the S-buffer family, >= 1.
     int sharedCounters = render::MethodParameters{}.sharedCounters;
-    /// GPU memory budget of the method's storage in MB; 0: none (the driver's limits only).
-    int memoryBudgetMegabytes = 0;
+    int memoryBudgetMegabytes = int(render::method_parameters::kMemoryBudget.defaultValue);
     /// Classification of a designer session's frames: false, the static rule of `trim`
     /// alone; true, the dynamic rules of the history's sets (thesis 8.1.1), with the
     /// static rule classifying the base mesh.
     bool dynamicRules = false;
-    /// The cap pattern's line spacing as a fraction of the scene's bounding radius (the
-    /// command line's 1/25 by default); trim.cap.spacing is this times the radius of the
+    /// The cap pattern's line spacing as a fraction of the scene's bounding radius
+    /// (inspect_parameters::kCapSpacing); trim.cap.spacing is this times the radius of the
     /// scene shown (RenderPanel::renderChoices), so the pattern looks alike on any scene.
-    double capSpacingFraction = kDefaultCapSpacingFraction;
-
-    static constexpr double kDefaultCapSpacingFraction = 1.0 / 25.0;
-    /// The range the GUI and the settings store accept for capSpacingFraction.
-    static constexpr double kMinCapSpacingFraction = 0.001;
-    static constexpr double kMaxCapSpacingFraction = 1.0;
+    double capSpacingFraction = inspect_parameters::kCapSpacing.defaultValue;
 
     /// The renderer's parameters for these choices (the others at their defaults).
     [[nodiscard]] render::MethodParameters methodParameters() const
@@ -46,9 +37,11 @@ struct RenderChoices {
         render::MethodParameters parameters;
         parameters.k = k;
         parameters.sharedCounters = sharedCounters;
-        parameters.memoryBudgetBytes = std::size_t(memoryBudgetMegabytes) * 1024 * 1024;
+        parameters.memoryBudgetBytes = render::method_parameters::budgetBytes(memoryBudgetMegabytes);
         return parameters;
     }
+
+    friend bool operator==(const RenderChoices&, const RenderChoices&) = default;
 };
 
 /// What a new user sees first: the alternating border rule on the whole scene. Plane 1

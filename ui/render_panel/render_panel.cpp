@@ -69,8 +69,8 @@ QWidget* RenderPanel::createTrimGroup()
     m_rule->setItemData(m_rule->count() - 1, tr("Interior where K or more layers of the surface overlap"),
                         Qt::ToolTipRole);
     m_rule->addItem(tr("|w| ≥ K"), kAbsAtLeastPrefix);
-    m_rule->setItemData(m_rule->count() - 1,
-                        tr("Interior where K or more layers overlap, counting either orientation"), Qt::ToolTipRole);
+    m_rule->setItemData(m_rule->count() - 1, tr("Interior where K or more layers overlap, counting either orientation"),
+                        Qt::ToolTipRole);
     form->addRow(tr("Rule"), m_rule);
     m_threshold = new QSpinBox(group);
     m_threshold->setObjectName(QStringLiteral("ruleThresholdSpinBox"));
@@ -171,6 +171,7 @@ void RenderPanel::setSceneInfo(const Bounds& bounds, bool trimmable, const QStri
 
 void RenderPanel::setClipBounds(const Bounds& bounds)
 {
+    m_bounds = bounds;
     m_clip->setSceneBounds(bounds);
 }
 

@@ -42,8 +42,9 @@ public:
     /// modes apply; `reason` is LoadedScene::trimUnavailableReason().
     void setSceneInfo(const Bounds& bounds, bool trimmable, const QString& reason);
     [[nodiscard]] bool sceneTrimmable() const { return m_trimmable; }
-    /// New bounds for the clip offset sliders and the box preset only (an object moved;
-    /// the cap spacing keeps the radius of setSceneInfo so the pattern does not change).
+    /// New bounds of the scene shown (an object moved or was scaled): the clip offset
+    /// sliders, the box preset and the cap spacing follow them, so the pattern keeps its
+    /// look on a scaled object.
     void setClipBounds(const Bounds& bounds);
     /// Shows the chosen method's GPU memory estimate (from the viewport's renderer).
     void setMemoryEstimate(const MemoryEstimate& estimate);

@@ -4,8 +4,9 @@
 /// dialogs' last directory: ui/common/last_directory.h; recent files: recent_files.h;
 /// clipping plane 1 keeps the keys of the one plane of earlier versions, planes 2–6 are
 /// "render/clipPlaneN/…"; capping and highlighting "render/cap…", "render/highlight…";
-/// X-ray "render/xrayMode" ("off", "opaque", "translucent"), "render/xrayLayerAlpha",
-/// "render/xrayGhostAlpha" (0–1), "render/xrayDensity" (0–100), "render/xrayFresnel" (0–16);
+/// X-ray "render/xrayMode" ("off", "opaque", "translucent"); the keys and ranges of k, S,
+/// the memory budget, the X-ray numbers and the cap spacing are the rows of
+/// render/mfr/method_parameter_table.h and core/trim/inspect_parameters.h;
 /// the CSG expression and per-object rules belong to the scene and are not stored;
 /// window geometry and dock state: main_window.cpp). The method is stored by its stable
 /// id ("render/method"), the classification as "static" or "dynamic"

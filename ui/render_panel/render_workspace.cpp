@@ -1,5 +1,6 @@
 #include "ui/render_panel/render_workspace.h"
 
+#include "ui/common/current_document.h"
 #include "ui/common/window_context.h"
 #include "ui/render_panel/frame_stats_labels.h"
 #include "ui/render_panel/frame_stats_panel.h"
@@ -36,6 +37,12 @@ RenderWorkspace::RenderWorkspace(const WindowContext& context, ViewportWidget* v
     });
     connect(m_statsPanel, &FrameStatsPanel::methodRequested, this, &RenderWorkspace::chooseMethod);
     connect(m_statsPanel, &FrameStatsPanel::kRequested, this, &RenderWorkspace::chooseK);
+    const auto showDocument = [this] {
+        if (const Document* document = m_context.document().get())
+            showDocumentSettings(document->settings());
+    };
+    connect(&m_context.document(), &CurrentDocument::replaced, this, showDocument);
+    connect(&m_context.document(), &CurrentDocument::settingsChanged, this, showDocument);
 }
 
 void RenderWorkspace::createRenderDock()
@@ -85,6 +92,30 @@ void RenderWorkspace::setChoices(const RenderChoices& choices)
 void RenderWorkspace::restoreSettings()
 {
     m_panel->setRenderChoices(loadRenderChoices(m_context.settings()));
+}
+
+timeline::DocumentSettings RenderWorkspace::documentSettings() const
+{
+    const RenderChoices choices = m_panel->renderChoices();
+    timeline::DocumentSettings settings;
+    settings.trim = choices.trim;
+    settings.trim.csg = CsgSettings{}; // the scene's (Scene panel)
+    settings.classification =
+        choices.dynamicRules ? timeline::Classification::Dynamic : timeline::Classification::Static;
+    settings.capSpacingFraction = choices.capSpacingFraction;
+    return settings;
+}
+
+void RenderWorkspace::showDocumentSettings(const timeline::DocumentSettings& settings)
+{
+    if (settings == documentSettings())
+        return;
+    RenderChoices choices = m_panel->renderChoices();
+    choices.trim = settings.trim;
+    choices.trim.csg = CsgSettings{};
+    choices.dynamicRules = settings.classification == timeline::Classification::Dynamic;
+    choices.capSpacingFraction = settings.capSpacingFraction;
+    m_panel->setRenderChoices(choices);
 }
 
 namespace {

@@ -9,10 +9,14 @@
 ///
 /// The window composes the choices with what other features own (the scene's CSG, the
 /// design session's rules) in MainWindow::applyRenderChoices; this object applies the
-/// result to the viewport (apply()).
+/// result to the viewport (apply()). The panel edits the view settings of the document
+/// shown (ui/common/document.h): when another document is shown, or its settings change
+/// (objects added), the panel shows them; the method, k, S and the memory budget are the
+/// user's preferences.
 
 #include "ui/render_panel/render_choices.h"
 
+#include "core/timeline/view_settings.h"
 #include "core/trim/inspect_settings.h"
 #include "render/mfr/fragment_method.h"
 
@@ -45,6 +49,12 @@ public:
     void setChoices(const RenderChoices& choices);
     /// The saved choices into the panel (firstStartRenderChoices() without saved ones).
     void restoreSettings();
+    /// The part of the panel's choices that belongs to the document shown (trim, rule,
+    /// classification, clipping, caps, highlights, X-ray), in world space.
+    [[nodiscard]] timeline::DocumentSettings documentSettings() const;
+    /// Shows a document's settings in the panel (no choicesChanged()); the method and its
+    /// parameters stay the user's.
+    void showDocumentSettings(const timeline::DocumentSettings& settings);
     /// Saves the panel's choices and renders with them: `csg` is the scene's expression;
     /// trimming is off for scenes that cannot be trimmed. `historyShown`: a deformation
     /// history is shown, so the dynamic rules classify when chosen — capping,
@@ -57,7 +67,7 @@ public:
     /// The shown scene's bounds (clip offsets, cap spacing) and whether it can be trimmed
     /// (`reason` says why not).
     void showSceneInfo(const Bounds& bounds, bool trimmable, const QString& reason);
-    /// Bounds for the clip offsets only (an object moved).
+    /// New bounds of the scene shown (an object moved): clip offsets, cap spacing.
     void setClipBounds(const Bounds& bounds);
     /// The viewport cannot render: a dialog, and no frame numbers.
     void reportRenderError(const QString& message);

@@ -4,10 +4,12 @@
 /// every stage of skeleton extraction by mesh contraction (core/skeleton/
 /// skeleton_extraction.h, Berenguer & Moreno III.A–D), the heat constant c of the
 /// bone-heat weights (III.E) and the skinning used for posing, plus which stage the
-/// viewport shows. Plain data; persisted by skeleton_settings_store.h.
+/// viewport shows. Plain data; ranges and defaults are the rows of
+/// core/skeleton/skeleton_parameters.h; persisted by skeleton_settings_store.h.
 
-#include "core/skinning/skinning_model.h"
 #include "core/skeleton/skeleton_extraction.h"
+#include "core/skeleton/skeleton_parameters.h"
+#include "core/skinning/skinning_model.h"
 
 namespace trimlab::ui {
 
@@ -21,15 +23,24 @@ enum class SkeletonStageView {
 };
 
 struct SkeletonChoices {
-    /// Stages A–D; targetNodes 20–40 in the panel (the paper's range), rootJoint −1 = automatic.
+    /// Stages A–D; rootJoint −1 = automatic.
     SkeletonOptions extraction;
     /// c of H_jj = c/d² (bone_heat_terms.h); Pinocchio's 1.
-    double heatConstant = 1.0;
-    SkinningMethod skinning = SkinningMethod::Lbs;
+    double heatConstant = skeleton_parameters::kHeatConstant.defaultValue;
+    SkinningMethod skinning = SkinningMethod(skeleton_parameters::kPoseSkinning.defaultValue);
 
-    /// True when `other` needs a new contraction (stages A–C differ), false when only the
-    /// node count or the root changed (selectRig + weights suffice).
-    [[nodiscard]] bool needsContraction(const SkeletonChoices& other) const;
+    /// True when `other` needs a new contraction: any option of stages A–C differs, which
+    /// is every option of `extraction` but the selection's node count and root (those
+    /// alone need selectRig and the weights only).
+    [[nodiscard]] bool needsContraction(const SkeletonChoices& other) const
+    {
+        SkeletonOptions curve = extraction;
+        curve.targetNodes = other.extraction.targetNodes;
+        curve.rootJoint = other.extraction.rootJoint;
+        return !(curve == other.extraction);
+    }
+
+    friend bool operator==(const SkeletonChoices&, const SkeletonChoices&) = default;
 };
 
 } // namespace trimlab::ui

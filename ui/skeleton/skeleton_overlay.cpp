@@ -15,7 +15,8 @@ const QColor kSelectedColor(255, 200, 0);
 
 } // namespace
 
-SkeletonOverlay::SkeletonOverlay(ViewportWidget* viewport) : ViewportOverlay(viewport, QStringLiteral("skeletonOverlay"))
+SkeletonOverlay::SkeletonOverlay(ViewportWidget* viewport)
+    : ViewportOverlay(viewport, QStringLiteral("skeletonOverlay"))
 {
 }
 
@@ -59,8 +60,8 @@ void SkeletonOverlay::paintEvent(QPaintEvent*)
         // A dark outline under a light line stays visible on any surface colour.
         painter.setPen(QPen(QColor(20, 20, 20, 200), selected ? 7.0 : 4.0, Qt::SolidLine, Qt::RoundCap));
         painter.drawLine(*head, *tail);
-        painter.setPen(QPen(selected ? kSelectedColor : QColor(240, 240, 240), selected ? 4.0 : 2.0, Qt::SolidLine,
-                            Qt::RoundCap));
+        painter.setPen(
+            QPen(selected ? kSelectedColor : QColor(240, 240, 240), selected ? 4.0 : 2.0, Qt::SolidLine, Qt::RoundCap));
         painter.drawLine(*head, *tail);
     };
     for (std::size_t i = 0; i < m_bones.size(); ++i)

@@ -10,7 +10,6 @@
 
 #include "ui/viewport/viewport_overlay.h"
 
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 

@@ -2,8 +2,8 @@
 
 #include "ui/common/run_cancel_row.h"
 
-#include "ui/common/background_task.h"
 #include "ui/common/heat_map_legend.h"
+#include "ui/common/job_presenter.h"
 #include "ui/skeleton/skeleton_overlay.h"
 #include "core/skeleton/skeleton_pose_edit.h"
 #include "ui/skeleton/skeleton_pose_tool.h"
@@ -53,15 +53,22 @@ std::filesystem::path filePath(const QString& path)
     return std::filesystem::path(path.toStdU16String());
 }
 
+SkeletonPipelineOptions pipelineOptions(const SkeletonChoices& choices)
+{
+    SkeletonPipelineOptions options;
+    options.extraction = choices.extraction;
+    options.heatConstant = choices.heatConstant;
+    return options;
+}
+
 } // namespace
 
 SkeletonPanel::SkeletonPanel(QWidget* parent) : QWidget(parent)
 {
-    m_task = new BackgroundTask(this);
+    m_job = new BackgroundJob<std::shared_ptr<const SkeletonResult>>(this);
     m_form = new SkeletonSettingsForm;
     m_progress = new QProgressBar;
     m_progress->setObjectName(QStringLiteral("skeletonProgressBar"));
-    m_progress->setVisible(false);
     m_status = new QLabel;
     m_status->setObjectName(QStringLiteral("skeletonStatusLabel"));
     m_status->setWordWrap(true);
@@ -94,7 +101,7 @@ SkeletonPanel::SkeletonPanel(QWidget* parent) : QWidget(parent)
     });
     connect(m_form, &SkeletonSettingsForm::skinningChanged, this, &SkeletonPanel::updatePose);
     connect(m_rerunTimer, &QTimer::timeout, this, &SkeletonPanel::run);
-    connectTask();
+    connectJob();
     setScene(nullptr);
 }
 
@@ -127,8 +134,8 @@ QWidget* SkeletonPanel::createViewGroup()
     auto* group = new QGroupBox(tr("Result"));
     m_times = new QTableWidget(1, 6);
     m_times->setObjectName(QStringLiteral("skeletonTimesTable"));
-    m_times->setHorizontalHeaderLabels({tr("contraction"), tr("simplification"), tr("refinement"), tr("selection"),
-                                        tr("weights"), tr("total")});
+    m_times->setHorizontalHeaderLabels(
+        {tr("contraction"), tr("simplification"), tr("refinement"), tr("selection"), tr("weights"), tr("total")});
     m_times->setVerticalHeaderLabels({tr("s")});
     m_times->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_times->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -164,8 +171,8 @@ QTableWidget* SkeletonPanel::createQualityTable()
 {
     auto* table = new QTableWidget(2, 6);
     table->setObjectName(QStringLiteral("skeletonQualityTable"));
-    table->setHorizontalHeaderLabels({tr("nodes in"), tr("samples in"), tr("leaving"), tr("centring"),
-                                      tr("coverage"), tr("cycles")});
+    table->setHorizontalHeaderLabels(
+        {tr("nodes in"), tr("samples in"), tr("leaving"), tr("centring"), tr("coverage"), tr("cycles")});
     table->setVerticalHeaderLabels({tr("curve"), tr("rig")});
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -217,7 +224,8 @@ QWidget* SkeletonPanel::createPoseGroup()
         m_angles[i]->setWrapping(true);
         m_angles[i]->setSuffix(QStringLiteral("°"));
         m_angles[i]->setPrefix(axes[i] + QStringLiteral(" "));
-        m_angles[i]->setToolTip(tr("Rotation about the bone's local %1 axis (local y runs along the bone)").arg(axes[i]));
+        m_angles[i]->setToolTip(
+            tr("Rotation about the bone's local %1 axis (local y runs along the bone)").arg(axes[i]));
         connect(m_angles[i], &QDoubleSpinBox::valueChanged, this, &SkeletonPanel::onBoneAnglesEdited);
         angles->addWidget(m_angles[i]);
     }
@@ -263,16 +271,14 @@ QWidget* SkeletonPanel::createExportRow()
     return row;
 }
 
-void SkeletonPanel::connectTask()
+void SkeletonPanel::connectJob()
 {
-    connect(m_task, &BackgroundTask::progressed, this, &SkeletonPanel::onProgress);
-    connect(m_task, &BackgroundTask::succeeded, this, &SkeletonPanel::onSucceeded);
-    connect(m_task, &BackgroundTask::canceled, this, [this] {
-        m_pending.reset();
-        onEnded(m_result ? tr("Canceled; the previous skeleton is kept.") : tr("Canceled."));
-    });
-    connect(m_task, &BackgroundTask::failed, this, [this](const QString& message) {
-        m_pending.reset();
+    m_presenter =
+        new JobPresenter(m_job, {m_run, m_cancel, m_progress, m_status}, JobPresenter::ProgressText::Percent, this);
+    connect(m_job, &BackgroundJobBase::succeeded, this, &SkeletonPanel::onSucceeded);
+    connect(m_job, &BackgroundJobBase::canceled, this,
+            [this] { onEnded(m_result ? tr("Canceled; the previous skeleton is kept.") : tr("Canceled.")); });
+    connect(m_job, &BackgroundJobBase::failed, this, [this](const QString& message) {
         m_error->setText(tr("Not extracted: %1").arg(message));
         m_error->setVisible(true);
         onEnded(m_result ? tr("The previous skeleton is kept.") : QString());
@@ -282,28 +288,21 @@ void SkeletonPanel::connectTask()
 void SkeletonPanel::setViewport(ViewportWidget* viewport)
 {
     m_viewport = viewport;
+    m_content = render::ContentPublisher(viewport->content(), render::ContentOwner::Skeleton);
     m_overlay = new SkeletonOverlay(viewport);
     m_tool = new SkeletonPoseTool(viewport, m_overlay, this);
     connect(m_tool, &SkeletonPoseTool::boneSelected, this, &SkeletonPanel::selectBone);
     connect(m_tool, &SkeletonPoseTool::rotateRequested, this, &SkeletonPanel::rotateBone);
 }
 
-void SkeletonPanel::setPoseSink(std::function<void(std::vector<glm::vec3>)> sink)
-{
-    m_poseSink = std::move(sink);
-}
-
 void SkeletonPanel::showPositions()
 {
-    if (m_poseSink)
-        m_poseSink(m_shown);
-    else if (m_viewport)
-        m_viewport->showPose(m_shown);
+    m_content.showPose(m_shown);
 }
 
 void SkeletonPanel::setScene(std::shared_ptr<const LoadedScene> scene)
 {
-    m_task->cancel(); // a result that still arrives counts as canceled
+    m_job->cancel(); // a result that still arrives counts as canceled
     m_rerunTimer->stop();
     m_scene = std::move(scene);
     m_mesh.reset();
@@ -313,8 +312,8 @@ void SkeletonPanel::setScene(std::shared_ptr<const LoadedScene> scene)
         m_mesh = std::shared_ptr<const TriangleMesh>(m_scene, &object.mesh);
         m_model = object.modelMatrix;
     } else if (m_scene) {
-        m_unusable = tr("Skeleton extraction takes a scene of one object; this one has %1.")
-                         .arg(m_scene->scene.objects.size());
+        m_unusable =
+            tr("Skeleton extraction takes a scene of one object; this one has %1.").arg(m_scene->scene.objects.size());
     }
     m_result.reset();
     m_pose = {};
@@ -354,50 +353,36 @@ void SkeletonPanel::run()
     m_rerunTimer->stop();
     if (!m_mesh || isRunning())
         return;
-    const SkeletonChoices wanted = choices();
-    const bool rigOnly = m_result && !m_result->choices.needsContraction(wanted);
-    m_pending = std::make_shared<std::shared_ptr<const SkeletonResult>>();
-    m_task->start([pending = m_pending, mesh = m_mesh, previous = rigOnly ? m_result : nullptr,
-                   wanted](const TaskControl& control) {
-        *pending = previous ? rerunSkeletonRig(*mesh, *previous, wanted, control)
-                            : runSkeletonPipeline(*mesh, wanted, control);
+    m_runChoices = choices();
+    const SkeletonPipelineOptions options = pipelineOptions(m_runChoices);
+    const bool rigOnly = m_result && !m_resultChoices.needsContraction(m_runChoices);
+    m_job->start([mesh = m_mesh, previous = rigOnly ? m_result : nullptr, options](const TaskControl& control) {
+        return std::make_shared<const SkeletonResult>(previous ? rerunSkeletonRig(*mesh, *previous, options, control)
+                                                               : runSkeletonPipeline(*mesh, options, control));
     });
     m_error->clear();
     m_error->setVisible(false);
-    m_progress->setRange(0, 0);
-    m_progress->setVisible(true);
-    m_status->setText(rigOnly ? tr("Selecting %1 joints again and computing their weights…").arg(wanted.extraction.targetNodes)
-                              : tr("Extracting the skeleton…"));
+    m_presenter->showStarted(
+        rigOnly ? tr("Selecting %1 joints again and computing their weights…").arg(options.extraction.targetNodes)
+                : tr("Extracting the skeleton…"));
     updateControls();
 }
 
 void SkeletonPanel::cancel()
 {
-    if (!m_task->isRunning())
-        return;
-    m_task->cancel();
-    m_status->setText(tr("Canceling…"));
-    updateControls();
+    if (m_presenter->cancel())
+        updateControls();
 }
 
 bool SkeletonPanel::isRunning() const
 {
-    return m_task->isRunning();
-}
-
-void SkeletonPanel::onProgress(const QString& stage, qint64 done, qint64 total)
-{
-    if (!m_task->isRunning() || total <= 0)
-        return; // a late report of a finished job
-    m_progress->setRange(0, int(std::min<qint64>(total, 1 << 30)));
-    m_progress->setValue(int(std::min(done, total)));
-    m_progress->setFormat(tr("%1: %p%").arg(stage));
+    return m_job->isRunning();
 }
 
 void SkeletonPanel::onSucceeded()
 {
-    m_result = std::move(*m_pending);
-    m_pending.reset();
+    m_result = m_job->takeResult();
+    m_resultChoices = m_runChoices;
     m_pose = restPose(m_result->rig);
     m_selectedBone = m_result->rig.bones.empty() ? -1 : 0;
     const SkeletonRig& rig = m_result->rig;
@@ -412,9 +397,7 @@ void SkeletonPanel::onSucceeded()
 
 void SkeletonPanel::onEnded(const QString& status)
 {
-    m_progress->setVisible(false);
-    m_progress->resetFormat();
-    m_status->setText(status);
+    m_presenter->setStatus(status);
     showResult();
 }
 
@@ -452,7 +435,7 @@ void SkeletonPanel::showTimes()
         if (m_result) {
             const SkeletonStageTimes& t = m_result->times;
             const bool full = m_result->kind == SkeletonRunKind::Full;
-            const double values[6] = {t.contractionMs, t.simplificationMs, t.refinementMs,
+            const double values[6] = {t.contractionMs, t.simplificationMs,  t.refinementMs,
                                       t.selectionMs,   m_result->weightsMs, m_result->totalMs()};
             if (full || column >= 3)
                 text = seconds(values[column]);
@@ -483,7 +466,8 @@ void SkeletonPanel::updateAngleBoxes()
 {
     glm::dvec3 degrees(0.0);
     if (m_result && m_selectedBone >= 0)
-        degrees = localDegreesOfBoneRotation(m_result->rig, m_selectedBone, m_pose.rotations[std::size_t(m_selectedBone)]);
+        degrees =
+            localDegreesOfBoneRotation(m_result->rig, m_selectedBone, m_pose.rotations[std::size_t(m_selectedBone)]);
     for (int i = 0; i < 3; ++i) {
         const QSignalBlocker blocker(m_angles[i]);
         m_angles[i]->setValue(degrees[i]);
@@ -495,7 +479,8 @@ void SkeletonPanel::onBoneAnglesEdited()
     if (!m_result || m_selectedBone < 0)
         return;
     const glm::dvec3 degrees(m_angles[0]->value(), m_angles[1]->value(), m_angles[2]->value());
-    m_pose.rotations[std::size_t(m_selectedBone)] = boneRotationFromLocalDegrees(m_result->rig, m_selectedBone, degrees);
+    m_pose.rotations[std::size_t(m_selectedBone)] =
+        boneRotationFromLocalDegrees(m_result->rig, m_selectedBone, degrees);
     updatePose();
 }
 
@@ -557,7 +542,9 @@ void SkeletonPanel::applyDisplay()
     const SkeletonExtraction& extraction = *m_result->extraction;
     m_shown = m_posed;
     switch (m_view) {
-    case SkeletonStageView::Pose: m_colors.clear(); break;
+    case SkeletonStageView::Pose:
+        m_colors.clear();
+        break;
     case SkeletonStageView::Contraction: {
         m_shown.assign(extraction.contracted.begin(), extraction.contracted.end());
         double largest = 0.0;
@@ -566,8 +553,12 @@ void SkeletonPanel::applyDisplay()
         m_legend->setVisible(true);
         break;
     }
-    case SkeletonStageView::Mapping: m_colors = curveMappingColors(extraction.curve); break;
-    case SkeletonStageView::Segmentation: m_colors = jointSegmentColors(m_result->rig); break;
+    case SkeletonStageView::Mapping:
+        m_colors = curveMappingColors(extraction.curve);
+        break;
+    case SkeletonStageView::Segmentation:
+        m_colors = jointSegmentColors(m_result->rig);
+        break;
     case SkeletonStageView::Weights:
         if (m_selectedBone >= 0) {
             m_colors = boneWeightColors(m_result->weights->boneWeightColumn(m_selectedBone));
@@ -579,7 +570,7 @@ void SkeletonPanel::applyDisplay()
         break;
     }
     showPositions();
-    m_viewport->setVertexColors(m_colors);
+    m_content.showColors(m_colors);
 }
 
 void SkeletonPanel::setPoseToolEnabled(bool enabled)
@@ -649,8 +640,7 @@ void SkeletonPanel::updateControls()
 {
     const bool running = isRunning();
     m_form->setEnabled(!running);
-    m_run->setEnabled(m_mesh != nullptr && !running);
-    m_cancel->setEnabled(running && !m_task->cancelRequested());
+    m_presenter->updateRow(m_mesh != nullptr);
     m_viewBox->setEnabled(m_result != nullptr);
     m_poseGroup->setEnabled(m_result != nullptr);
     for (QDoubleSpinBox* box : m_angles)

@@ -6,11 +6,12 @@
 ///
 /// - Parameters of every stage (skeleton_settings_form.h); the window persists them
 ///   (skeleton_settings_store.h) on choicesChanged().
-/// - Run: on a worker (BackgroundTask) the pipeline of skeleton_result.h — stages A–D,
-///   then the bone-heat weights — with the running stage's name and bar and Cancel, which
-///   keeps the previous result. When only the node count or the root differs from the
-///   last run's choices, Run (and, after a short pause, any change of those two) re-runs
-///   only selectRig and the weights on the kept curve skeleton. The scene must be one
+/// - Run: on a worker (BackgroundJob) the pipeline of core/skeleton/skeleton_pipeline.h —
+///   stages A–D, the bone-heat weights with the form's heat constant, the evaluation —
+///   with the running stage's name and bar and Cancel, which keeps the previous result
+///   (job_presenter.h). When only the node count or the root differs from the last run's
+///   choices, Run (and, after a short pause, any change of those two) re-runs only
+///   selectRig and the weights on the kept curve skeleton (rerunSkeletonRig). The scene must be one
 ///   closed, manifold, connected object; otherwise the refusal (SkeletonInputError's
 ///   text) shows in the panel's error label — no dialog.
 /// - Show (stage views, skeleton_stage_colors.h): the posed mesh; the contracted mesh by
@@ -21,22 +22,25 @@
 ///   near it in the view and drag to turn it about its head in the view plane
 ///   (skeleton_pose_tool.h); three spin boxes give its rotation in degrees about x/y/z of
 ///   the bone's local frame (skeleton_pose_edit.h). The mesh is skinned (LBS or DQS) on
-///   every change and shown through the pose sink (setPoseSink; ViewportWidget::showPose
-///   by default), so the trim renderer shows
-///   the self-trimmed solid where the pose makes the surface cross itself. Reset pose
-///   goes back to the rest pose.
+///   every change and published as the skeleton's pose (render/content_publisher.h), so
+///   the trim renderer shows the self-trimmed solid where the pose makes the surface
+///   cross itself — under the dynamic rules too, whose chain the design history ends in
+///   the pose shown. Reset pose goes back to the rest pose.
 /// - Export rigged glTF… / Export skeleton JSON… (exportGltfRequested() /
 ///   exportJsonRequested(): the window asks for a file and calls exportRiggedGltf() /
 ///   exportSkeletonJson()).
 /// - The stage times of the last run in the columns of the paper's Table III.
 ///
-/// The panel drives the viewport it is given (setViewport) directly, as the brush does:
-/// it replaces object 0's positions and the vertex colours while it has a result.
+/// The panel publishes into the content of the viewport it is given (setViewport), as
+/// the skeleton: object 0's positions and the stage colours while it has a result.
 
+#include "ui/common/background_job.h"
 #include "ui/skeleton/skeleton_choices.h"
-#include "ui/skeleton/skeleton_result.h"
+
+#include "render/content_publisher.h"
 
 #include "core/catalog/scene_source.h"
+#include "core/skeleton/skeleton_pipeline.h"
 #include "core/skeleton/skeleton_pose.h"
 
 #include <QPointer>
@@ -63,8 +67,8 @@ class QTimer;
 
 namespace trimlab::ui {
 
-class BackgroundTask;
 class HeatMapLegend;
+class JobPresenter;
 class SkeletonOverlay;
 class SkeletonPoseTool;
 class SkeletonSettingsForm;
@@ -78,9 +82,6 @@ public:
 
     /// The view to show stages and poses in; creates the overlay and the pose tool.
     void setViewport(ViewportWidget* viewport);
-    /// Where the shown positions go (default: the viewport's showPose). The window routes
-    /// them through the design session, whose dynamic rules must classify the pose too.
-    void setPoseSink(std::function<void(std::vector<glm::vec3>)> sink);
     /// The scene shown (nullptr: none). Cancels a running job and forgets the result.
     void setScene(std::shared_ptr<const LoadedScene> scene);
 
@@ -91,7 +92,7 @@ public:
     void run();
     void cancel();
     [[nodiscard]] bool isRunning() const;
-    [[nodiscard]] BackgroundTask* task() const { return m_task; }
+    [[nodiscard]] BackgroundJobBase* task() const { return m_job; }
     /// The last successful run (nullptr before one on this scene).
     [[nodiscard]] std::shared_ptr<const SkeletonResult> result() const { return m_result; }
 
@@ -139,8 +140,7 @@ private:
     QTableWidget* createQualityTable();
     QWidget* createPoseGroup();
     QWidget* createExportRow();
-    void connectTask();
-    void onProgress(const QString& stage, qint64 done, qint64 total);
+    void connectJob();
     void onSucceeded();
     void onEnded(const QString& status);
     void onBoneAnglesEdited();
@@ -174,9 +174,10 @@ private:
     QPushButton* m_exportJson = nullptr;
     QTimer* m_rerunTimer = nullptr;
 
-    BackgroundTask* m_task = nullptr;
+    BackgroundJob<std::shared_ptr<const SkeletonResult>>* m_job = nullptr;
+    JobPresenter* m_presenter = nullptr;
     QPointer<ViewportWidget> m_viewport; ///< the window may destroy it before the panel
-    std::function<void(std::vector<glm::vec3>)> m_poseSink;
+    render::ContentPublisher m_content;  ///< the skeleton's pose and colours in the viewport's content
     QPointer<SkeletonOverlay> m_overlay; ///< a child of the viewport
     SkeletonPoseTool* m_tool = nullptr;
     bool m_toolInstalled = false;
@@ -185,8 +186,9 @@ private:
     std::shared_ptr<const TriangleMesh> m_mesh; ///< object 0 (object space); null when unusable
     glm::dmat4 m_model{1.0};
     QString m_unusable; ///< why the scene cannot be used ("" when it can)
-    std::shared_ptr<std::shared_ptr<const SkeletonResult>> m_pending;
     std::shared_ptr<const SkeletonResult> m_result;
+    SkeletonChoices m_resultChoices; ///< what m_result was made with
+    SkeletonChoices m_runChoices;    ///< what the running job was started with
     SkeletonPose m_pose;
     std::vector<glm::vec3> m_posed;
     std::vector<glm::vec3> m_shown;

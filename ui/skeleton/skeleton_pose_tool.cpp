@@ -62,13 +62,18 @@ void SkeletonPoseTool::released(QMouseEvent&)
     m_bone = -1;
 }
 
-void SkeletonPoseTool::hovered(QPointF) {}
+void SkeletonPoseTool::hovered(QPointF)
+{
+}
 
-void SkeletonPoseTool::left() {}
+void SkeletonPoseTool::left()
+{
+}
 
 QString SkeletonPoseTool::mouseHelp() const
 {
-    return tr("Click near a bone: select it · Drag from a bone: turn it about its head · Drag elsewhere: orbit · Right/middle drag: pan · Wheel: zoom");
+    return tr("Click near a bone: select it · Drag from a bone: turn it about its head · Drag elsewhere: orbit · "
+              "Right/middle drag: pan · Wheel: zoom");
 }
 
 } // namespace trimlab::ui

@@ -1,6 +1,7 @@
 #include "ui/skeleton/skeleton_settings_form.h"
 
 #include "ui/common/form_controls.h"
+#include "ui/common/parameter_form.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -11,35 +12,12 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
-#include <algorithm>
 #include <memory>
 #include <vector>
 
 namespace trimlab::ui {
 
-namespace {
-
-QDoubleSpinBox* realBox(const char* name, double lo, double hi, int decimals, double step, const QString& tip)
-{
-    auto* box = new QDoubleSpinBox;
-    box->setObjectName(QString::fromLatin1(name));
-    box->setRange(lo, hi);
-    box->setDecimals(decimals);
-    box->setSingleStep(step);
-    box->setToolTip(tip);
-    return box;
-}
-
-QSpinBox* intBox(const char* name, int lo, int hi, const QString& tip)
-{
-    auto* box = new QSpinBox;
-    box->setObjectName(QString::fromLatin1(name));
-    box->setRange(lo, hi);
-    box->setToolTip(tip);
-    return box;
-}
-
-} // namespace
+using namespace skeleton_parameters;
 
 SkeletonSettingsForm::SkeletonSettingsForm(QWidget* parent) : QWidget(parent)
 {
@@ -64,25 +42,13 @@ SkeletonSettingsForm::SkeletonSettingsForm(QWidget* parent) : QWidget(parent)
 QWidget* SkeletonSettingsForm::createContractionGroup()
 {
     auto* group = new QGroupBox(tr("Contraction"));
-    m_initialWeight = realBox("skeletonInitialWeightSpinBox", 0.0, 1000.0, 6, 0.001,
-                              tr("How strongly the first iteration pulls the surface inward (the paper's W_L⁰); 0 = "
-                                 "automatic (1: the paper's 10⁻³·√Ā spends its first ten iterations moving nothing)"));
-    m_initialWeight->setSpecialValueText(tr("automatic (1)"));
-    m_growth = realBox("skeletonGrowthSpinBox", 1.1, 10.0, 2, 0.1, tr("How much stronger the inward pull gets each iteration (the paper's s_L)"));
-    m_maxContraction = realBox("skeletonMaxContractionSpinBox", 1.0, 1e6, 1, 100.0, tr("The strongest inward pull, as a multiple of the first (the cap of the paper's W_L; paper: 2048)"));
-    m_maxAttraction = realBox("skeletonMaxAttractionSpinBox", 1.0, 1e7, 1, 1000.0, tr("How firmly vertices that stopped shrinking hold their place at most (the cap of the paper's W_H; "
-                                 "paper: 10000)"));
-    m_iterations = intBox("skeletonIterationsSpinBox", 1, 200, tr("At most this many contraction solves"));
-    m_ordering = new QComboBox;
-    m_ordering->setObjectName(QStringLiteral("skeletonOrderingComboBox"));
-    m_ordering->addItem(QStringLiteral("AMD"), int(SparseOrdering::Amd));
-    m_ordering->addItem(QStringLiteral("COLAMD"), int(SparseOrdering::Colamd));
-    m_ordering->addItem(QStringLiteral("METIS"), int(SparseOrdering::Metis));
-    m_ordering->setToolTip(tr("Fill-reducing ordering of the sparse factorizations (paper Table I)"));
-    m_solver = new QComboBox;
-    m_solver->setObjectName(QStringLiteral("skeletonSolverComboBox"));
-    m_solver->addItem(QStringLiteral("CHOLMOD"), int(SparseBackend::Cholmod));
-    m_solver->addItem(QStringLiteral("LDLT (Eigen)"), int(SparseBackend::EigenSimplicialLdlt));
+    m_initialWeight = parameterDoubleSpinBox(kInitialContractionWeight, "skeletonInitialWeightSpinBox");
+    m_growth = parameterDoubleSpinBox(kContractionGrowth, "skeletonGrowthSpinBox");
+    m_maxContraction = parameterDoubleSpinBox(kMaxContractionWeight, "skeletonMaxContractionSpinBox");
+    m_maxAttraction = parameterDoubleSpinBox(kMaxAttractionWeight, "skeletonMaxAttractionSpinBox");
+    m_iterations = parameterSpinBox(kMaxIterations, "skeletonIterationsSpinBox");
+    m_ordering = parameterComboBox(kOrdering, "skeletonOrderingComboBox");
+    m_solver = parameterComboBox(kSolver, "skeletonSolverComboBox");
     auto* form = new QFormLayout(group);
     form->addRow(tr("Initial pull"), m_initialWeight);
     form->addRow(tr("Pull growth"), m_growth);
@@ -97,13 +63,10 @@ QWidget* SkeletonSettingsForm::createContractionGroup()
 QWidget* SkeletonSettingsForm::createSimplificationGroup()
 {
     auto* group = new QGroupBox(tr("Simplification and refinement"));
-    m_delta = realBox("skeletonDeltaSpinBox", 0.0, 0.1, 5, 0.0005,
-                      tr("Edges shorter than this (a fraction of the bounding-box diagonal) collapse before the "
-                         "simplification (the paper's δ); 0 disables it"));
-    m_shapeWeight = realBox("skeletonShapeWeightSpinBox", 0.0, 1000.0, 3, 0.1, tr("How much keeping the curve's shape counts when collapsing edges (the paper's w_a)"));
-    m_samplingWeight = realBox("skeletonSamplingWeightSpinBox", 0.0, 1000.0, 3, 0.05, tr("How much even spacing of the nodes counts when collapsing edges (the paper's w_b)"));
-    m_refine = new QCheckBox(tr("Refine (centre the nodes)"));
-    m_refine->setObjectName(QStringLiteral("skeletonRefineCheckBox"));
+    m_delta = parameterDoubleSpinBox(kPreCollapseFraction, "skeletonDeltaSpinBox");
+    m_shapeWeight = parameterDoubleSpinBox(kShapeWeight, "skeletonShapeWeightSpinBox");
+    m_samplingWeight = parameterDoubleSpinBox(kSamplingWeight, "skeletonSamplingWeightSpinBox");
+    m_refine = parameterCheckBox(kRefine, tr("Refine (centre the nodes)"), "skeletonRefineCheckBox");
     auto* form = new QFormLayout(group);
     form->addRow(tr("Short edges"), m_delta);
     form->addRow(tr("Shape weight"), m_shapeWeight);
@@ -115,16 +78,10 @@ QWidget* SkeletonSettingsForm::createSimplificationGroup()
 QWidget* SkeletonSettingsForm::createSelectionGroup()
 {
     auto* group = new QGroupBox(tr("Selection, weights and skinning"));
-    m_nodes = intBox("skeletonNodesSpinBox", 20, 40, tr("Joints of the rig (paper: 20–40)"));
-    m_root = intBox("skeletonRootSpinBox", -1, 39, tr("Root joint of the rig, or automatic"));
-    m_root->setSpecialValueText(tr("automatic"));
-    m_heat = realBox("skeletonHeatConstantSpinBox", 0.01, 100.0, 3, 0.05,
-                     tr("How far each bone's influence spreads over the surface (the bone-heat constant c; "
-                        "Pinocchio: 1; the paper: ≈ 0.22 mimics heat in the volume)"));
-    m_skinning = new QComboBox;
-    m_skinning->setObjectName(QStringLiteral("skeletonSkinningComboBox"));
-    m_skinning->addItem(tr("Linear blend (LBS)"), int(SkinningMethod::Lbs));
-    m_skinning->addItem(tr("Dual quaternion (DQS)"), int(SkinningMethod::Dqs));
+    m_nodes = parameterSpinBox(kTargetNodes, "skeletonNodesSpinBox");
+    m_root = parameterSpinBox(kRootJoint, "skeletonRootSpinBox");
+    m_heat = parameterDoubleSpinBox(kHeatConstant, "skeletonHeatConstantSpinBox");
+    m_skinning = parameterComboBox(kPoseSkinning, "skeletonSkinningComboBox");
     auto* form = new QFormLayout(group);
     form->addRow(tr("Target nodes"), m_nodes);
     form->addRow(tr("Root joint"), m_root);

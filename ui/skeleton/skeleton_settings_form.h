@@ -3,10 +3,11 @@
 /// The Skeleton panel's parameter form: one group per stage of skeleton extraction by
 /// mesh contraction (Berenguer & Moreno III.A–E) — contraction (W_L⁰, s_L, the caps of W_L
 /// and W_H, iterations, ordering AMD/COLAMD/METIS, solver CHOLMOD/LDLT), simplification
-/// (δ, w_a, w_b), refinement (on/off), selection (target nodes 20–40, root joint automatic
-/// or an index), weights (c) — and the skinning used for posing (LBS/DQS). Every widget
-/// has an object name for tests; changed() follows every edit, nodesOrRootChanged() too
-/// when only the selection's node count or root changed.
+/// (δ, w_a, w_b), refinement (on/off), selection (target nodes, root joint automatic or
+/// an index), weights (c) — and the skinning used for posing (LBS/DQS). Every control
+/// takes its range, default and tooltip from its row of core/skeleton/skeleton_parameters.h
+/// and has an object name for tests; changed() follows every edit, nodesOrRootChanged()
+/// too when only the selection's node count or root changed.
 
 #include "ui/skeleton/skeleton_choices.h"
 

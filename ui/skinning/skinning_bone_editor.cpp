@@ -71,8 +71,8 @@ QWidget* SkinningBoneEditor::createTransformRows()
     grid->addWidget(new QLabel(tr("Rotate")), 0, 0);
     grid->addWidget(new QLabel(tr("Move")), 1, 0);
     for (int axis = 0; axis < 3; ++axis) {
-        m_rotation[axis] = spinBox(QStringLiteral("boneRotate%1SpinBox").arg(QLatin1String(axes[axis])), 180.0, 5.0,
-                                   1, QStringLiteral("°"));
+        m_rotation[axis] = spinBox(QStringLiteral("boneRotate%1SpinBox").arg(QLatin1String(axes[axis])), 180.0, 5.0, 1,
+                                   QStringLiteral("°"));
         m_rotation[axis]->setToolTip(tr("Degrees about the %1 axis through the bone's centroid").arg(axes[axis]));
         m_translation[axis] =
             spinBox(QStringLiteral("boneMove%1SpinBox").arg(QLatin1String(axes[axis])), 1.0, 0.01, 4, {});
@@ -125,8 +125,7 @@ void SkinningBoneEditor::setBones(std::span<const WheelColor> colors)
 void SkinningBoneEditor::setPose(int pose, bool editable, const QString& reason)
 {
     m_editable = editable;
-    m_pose->setText(reason.isEmpty() ? tr("Edits apply to pose %1 and carry to every later pose.").arg(pose)
-                                     : reason);
+    m_pose->setText(reason.isEmpty() ? tr("Edits apply to pose %1 and carry to every later pose.").arg(pose) : reason);
     updateButtons();
 }
 

@@ -10,6 +10,7 @@
 /// B segments, skinning_bones.h).
 
 #include "core/skinning/skinning_fitter.h"
+#include "core/skinning/skinning_parameters.h"
 
 namespace trimlab::ui {
 
@@ -18,19 +19,18 @@ enum class BoneSource {
     GivenCount,   ///< exactly `boneCount` segments of a new segmentation
 };
 
+/// Ranges and defaults are the rows of core/skinning/skinning_parameters.h.
 struct SkinningChoices {
-    static constexpr int kMaxBones = 1000;
-
     BoneSource boneSource = BoneSource::Segmentation;
-    int boneCount = 8; ///< 1 … kMaxBones, for BoneSource::GivenCount
+    int boneCount = int(skinning_parameters::kBones.defaultValue); ///< for BoneSource::GivenCount
     bool fitExported = true; ///< SkinningFitOptions::fitExported; `method` and `chain` then unused
     SkinningMethod method = SkinningMethod::Lbs;
-    SkinningChain chain = SkinningChain::PoseToPose;
-    bool weightCorrections = true;
-    bool vertexCorrections = true;
-    /// Bones per vertex for the fits that re-solve the weights (usesDecomposition): 4 plays
-    /// everywhere; 5–8 are exported as JOINTS_1/WEIGHTS_1.
-    int influences = int(kDefaultInfluences);
+    SkinningChain chain = SkinningChain(skinning_parameters::kChain.defaultValue);
+    bool weightCorrections = skinning_parameters::kWeightCorrections.defaultValue != 0.0;
+    bool vertexCorrections = skinning_parameters::kVertexCorrections.defaultValue != 0.0;
+    /// Most bones per vertex (every fit keeps it; more than 4 only where the weights are
+    /// re-solved, usesDecomposition): 4 plays everywhere; 5–8 are exported as JOINTS_1/WEIGHTS_1.
+    int influences = int(skinning_parameters::kInfluences.defaultValue);
 
     /// The core options these choices ask for (every other option at its default).
     [[nodiscard]] SkinningFitOptions fitOptions() const
@@ -45,7 +45,7 @@ struct SkinningChoices {
         return options;
     }
 
-    bool operator==(const SkinningChoices&) const = default;
+    friend bool operator==(const SkinningChoices&, const SkinningChoices&) = default;
 };
 
 } // namespace trimlab::ui

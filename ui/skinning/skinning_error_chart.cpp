@@ -51,8 +51,8 @@ SkinningErrorChart::SkinningErrorChart(QWidget* parent) : QChartView(parent)
     m_errorAxis->setLabelFormat(QStringLiteral("%.3g"));
     chart->addAxis(m_poseAxis, Qt::AlignBottom);
     chart->addAxis(m_errorAxis, Qt::AlignLeft);
-    for (QXYSeries* series : {static_cast<QXYSeries*>(m_fitted), static_cast<QXYSeries*>(m_series),
-                              static_cast<QXYSeries*>(m_marker)}) {
+    for (QXYSeries* series :
+         {static_cast<QXYSeries*>(m_fitted), static_cast<QXYSeries*>(m_series), static_cast<QXYSeries*>(m_marker)}) {
         chart->addSeries(series);
         series->attachAxis(m_poseAxis);
         series->attachAxis(m_errorAxis);

@@ -1,11 +1,12 @@
 #include "ui/skinning/skinning_panel.h"
 
-#include "ui/common/background_task.h"
 #include "core/image/heat_map_colors.h"
 #include "ui/common/heat_map_legend.h"
+#include "ui/common/job_presenter.h"
 #include "ui/common/loaded_animation.h"
+#include "ui/common/parameter_form.h"
+#include "ui/common/run_cancel_row.h"
 #include "ui/skinning/skinning_bone_editor.h"
-#include "core/skinning/proxy_bones.h"
 #include "ui/skinning/skinning_error_chart.h"
 #include "ui/skinning/skinning_session.h"
 #include "ui/skinning/skinning_settings_form.h"
@@ -74,12 +75,11 @@ bool isRedoKey(const QKeyEvent& key)
 
 SkinningPanel::SkinningPanel(QWidget* parent) : QWidget(parent)
 {
-    m_task = new BackgroundTask(this);
-    m_exportTask = new BackgroundTask(this);
+    m_job = new BackgroundJob<std::shared_ptr<const SkinningFit>>(this);
+    m_exportJob = new BackgroundJob<ExportOutcome>(this);
     m_form = new SkinningSettingsForm;
     m_progress = new QProgressBar;
     m_progress->setObjectName(QStringLiteral("skinningProgressBar"));
-    m_progress->setVisible(false);
     m_status = new QLabel;
     m_status->setObjectName(QStringLiteral("skinningStatusLabel"));
     m_status->setWordWrap(true);
@@ -93,8 +93,8 @@ SkinningPanel::SkinningPanel(QWidget* parent) : QWidget(parent)
     layout->addWidget(createExportRow());
     layout->addStretch();
     connect(m_form, &SkinningSettingsForm::changed, this, &SkinningPanel::onFormChanged);
-    connectTask();
-    connectExportTask();
+    connectJob();
+    connectExportJob();
     setAnimation(nullptr);
 }
 
@@ -109,12 +109,7 @@ QWidget* SkinningPanel::createFitRow()
     m_cancel->setObjectName(QStringLiteral("cancelSkinningButton"));
     connect(m_fit, &QPushButton::clicked, this, &SkinningPanel::fit);
     connect(m_cancel, &QPushButton::clicked, this, &SkinningPanel::cancel);
-    auto* row = new QWidget;
-    auto* layout = new QHBoxLayout(row);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_fit);
-    layout->addWidget(m_cancel);
-    return row;
+    return runCancelRow(m_fit, m_cancel);
 }
 
 QWidget* SkinningPanel::createResultGroup()
@@ -171,49 +166,54 @@ QWidget* SkinningPanel::createExportRow()
     m_morphTargets->setObjectName(QStringLiteral("skinningMorphTargetsCheckBox"));
     m_morphTargets->setToolTip(tr("One morph target per pose: exact, but larger than a skin. A skin carries rigid "
                                   "joints only, so an LBS fit is exported as its closest rigid motions."));
+    m_interpolation = parameterComboBox(skinning_parameters::kInterpolation, "skinningInterpolationComboBox");
+    connect(m_morphTargets, &QCheckBox::toggled, m_interpolation, [this](bool morph) {
+        m_interpolation->setEnabled(!morph); // morph targets are exact at every pose: nothing to interpolate
+    });
     connect(m_export, &QPushButton::clicked, this, &SkinningPanel::exportRequested);
     auto* row = new QWidget;
     auto* layout = new QHBoxLayout(row);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_export);
     layout->addWidget(m_morphTargets);
+    layout->addWidget(m_interpolation);
     return row;
 }
 
-void SkinningPanel::connectTask()
+void SkinningPanel::connectJob()
 {
-    connect(m_task, &BackgroundTask::progressed, this, &SkinningPanel::onProgress);
-    connect(m_task, &BackgroundTask::succeeded, this, &SkinningPanel::onFitSucceeded);
-    connect(m_task, &BackgroundTask::canceled, this, [this] {
-        m_pending.reset();
+    m_presenter =
+        new JobPresenter(m_job, {m_fit, m_cancel, m_progress, m_status}, JobPresenter::ProgressText::Count, this);
+    connect(m_job, &BackgroundJobBase::succeeded, this, &SkinningPanel::onFitSucceeded);
+    connect(m_job, &BackgroundJobBase::canceled, this, [this] {
         onFitEnded(m_fitAnimation != m_animation ? readyStatus()
-                   : m_session                  ? tr("Canceled; the previous fit is kept.")
-                                                : tr("Canceled."));
+                   : m_session                   ? tr("Canceled; the previous fit is kept.")
+                                                 : tr("Canceled."));
     });
-    connect(m_task, &BackgroundTask::failed, this, [this](const QString& message) {
-        m_pending.reset();
+    connect(m_job, &BackgroundJobBase::failed, this, [this](const QString& message) {
         onFitEnded(m_fitAnimation == m_animation ? tr("Fit failed: %1").arg(message) : readyStatus());
     });
 }
 
-void SkinningPanel::connectExportTask()
+void SkinningPanel::connectExportJob()
 {
-    connect(m_exportTask, &BackgroundTask::succeeded, this, [this] {
+    connect(m_exportJob, &BackgroundJobBase::succeeded, this, [this] {
+        const ExportOutcome outcome = m_exportJob->takeResult();
         setStatus(tr("Exported %1.").arg(m_exportPath));
-        emit exportFinished(m_exportPath, m_exportOutcome->eRms, m_exportOutcome->kind);
+        emit exportFinished(m_exportPath, outcome.eRms, outcome.kind);
     });
-    connect(m_exportTask, &BackgroundTask::failed, this, [this](const QString& message) {
+    connect(m_exportJob, &BackgroundJobBase::failed, this, [this](const QString& message) {
         setStatus(tr("Export failed: %1").arg(message));
         emit exportFailed(m_exportPath, message);
     });
-    connect(m_exportTask, &BackgroundTask::canceled, this, [this] { setStatus(tr("Export canceled.")); });
-    connect(m_exportTask, &BackgroundTask::finished, this, &SkinningPanel::updateControls);
+    connect(m_exportJob, &BackgroundJobBase::canceled, this, [this] { setStatus(tr("Export canceled.")); });
+    connect(m_exportJob, &BackgroundJobBase::finished, this, &SkinningPanel::updateControls);
 }
 
 void SkinningPanel::setAnimation(std::shared_ptr<const LoadedAnimation> animation)
 {
-    m_task->cancel(); // its result, should it still arrive, counts as canceled
-    m_exportTask->cancel(); // the file is still written; only the report is dropped
+    m_job->cancel();       // its result, should it still arrive, counts as canceled
+    m_exportJob->cancel(); // the file is still written; only the report is dropped
     m_animation = std::move(animation);
     m_segmentation.reset();
     m_segmentColors.clear();
@@ -278,7 +278,9 @@ QString SkinningPanel::readyStatus() const
                         : tr("The animation has fewer vertices than %1 bones.").arg(wanted.boneCount);
     if (!hasUsableSegmentation())
         return tr("Segment the animation first (Segmentation panel): its segments become the bones.");
-    return tr("Press Fit to fit %1 bones to %2 poses.").arg(m_segmentation->count).arg(m_animation->animation->poseCount());
+    return tr("Press Fit to fit %1 bones to %2 poses.")
+        .arg(m_segmentation->count)
+        .arg(m_animation->animation->poseCount());
 }
 
 void SkinningPanel::setCurrentPose(int pose)
@@ -291,6 +293,7 @@ void SkinningPanel::setCurrentPose(int pose)
 void SkinningPanel::setChoices(const SkinningChoices& choices)
 {
     m_form->setChoices(choices);
+    onFormChanged(); // the bone source or count decides whether Fit can run
 }
 
 SkinningChoices SkinningPanel::choices() const
@@ -304,42 +307,42 @@ void SkinningPanel::fit()
         return;
     const SkinningChoices wanted = choices();
     const bool given = wanted.boneSource == BoneSource::GivenCount;
-    m_pending = std::make_shared<std::shared_ptr<const SkinningFit>>();
     m_fitAnimation = m_animation;
-    BoneSegmentation shown;
-    if (!given)
-        shown = {*m_segmentation, m_segmentColors};
-    m_task->start([pending = m_pending, animation = m_animation->animation, shown = std::move(shown), given,
-                   count = std::size_t(wanted.boneCount), settings = m_segmenterSettings,
-                   options = wanted.fitOptions()](const TaskControl& control) {
-        BoneSegmentation bones = given ? segmentIntoBones(*animation, settings, count, control) : shown;
-        *pending = runSkinningFit(*animation, std::move(bones.labeling), std::move(bones.colors), options, control);
+    SkinningBoneSource bones;
+    if (given) {
+        bones.count = std::size_t(wanted.boneCount);
+        bones.segmenter = m_segmenterSettings;
+    } else {
+        bones.segmentation = BoneSegmentation{*m_segmentation, m_segmentColors, {}};
+    }
+    SkinningPipelineOptions options;
+    options.fit = wanted.fitOptions();
+    m_job->start([animation = m_animation->animation, bones = std::move(bones), options](const TaskControl& control) {
+        return runSkinningFit(*animation, bones, options, control);
     });
-    m_progress->setRange(0, 0);
-    m_progress->setVisible(true);
-    setStatus(given ? tr("Segmenting into %1 bones and fitting them…").arg(wanted.boneCount)
-                    : tr("Fitting %1 bones…").arg(m_segmentation->count));
+    m_presenter->showStarted(given ? tr("Segmenting into %1 bones and fitting them…").arg(wanted.boneCount)
+                                   : tr("Fitting %1 bones…").arg(m_segmentation->count));
     updateControls();
 }
 
 void SkinningPanel::exportGltf(const QString& path, double fps)
 {
-    if (!m_session || m_exportTask->isRunning())
+    if (!m_session || m_exportJob->isRunning())
         return;
     m_exportPath = path;
-    m_exportOutcome = std::make_shared<ExportOutcome>();
     const bool edited = m_session->isEdited();
-    m_exportTask->start([outcome = m_exportOutcome, fit = m_session->sharedFit(), model = m_session->model(),
-                         file = std::filesystem::path(path.toStdU16String()), fps, morph = m_morphTargets->isChecked(),
-                         edited](const TaskControl&) {
+    m_exportJob->start([fit = m_session->sharedFit(), model = m_session->model(),
+                        file = std::filesystem::path(path.toStdU16String()), fps, morph = m_morphTargets->isChecked(),
+                        step = m_interpolation->currentData().toInt() != 0, edited](const TaskControl&) {
         SkinExportOptions options;
         options.morphTargets = morph;
+        options.stepInterpolation = step;
         // An edited model keeps its edits: its joints follow its own poses, not the original's.
         options.target = edited ? nullptr : &fit->original;
         const ExportedSkin report = exportSkinnedGltf(*model, file, fps, options);
-        outcome->eRms = measureSkinningError(fit->original, report.positions, model->restPose).eRms;
-        outcome->kind = QString::fromUtf8(skinExportKindName(report.kind).data(),
-                                          qsizetype(skinExportKindName(report.kind).size()));
+        const std::string_view kind = skinExportKindName(report.kind);
+        return ExportOutcome{measureSkinningError(fit->original, report.positions, model->restPose).eRms,
+                             QString::fromUtf8(kind.data(), qsizetype(kind.size()))};
     });
     setStatus(tr("Exporting %1…").arg(path));
     updateControls();
@@ -347,32 +350,18 @@ void SkinningPanel::exportGltf(const QString& path, double fps)
 
 void SkinningPanel::cancel()
 {
-    if (!m_task->isRunning())
-        return;
-    m_task->cancel();
-    setStatus(tr("Canceling…"));
-    updateControls();
+    if (m_presenter->cancel())
+        updateControls();
 }
 
 bool SkinningPanel::isRunning() const
 {
-    return m_task->isRunning();
-}
-
-void SkinningPanel::onProgress(const QString& stage, qint64 done, qint64 total)
-{
-    if (!m_task->isRunning() || total <= 0)
-        return; // a late report of a finished job
-    m_progress->setRange(0, int(total));
-    m_progress->setValue(int(std::min(done, total)));
-    m_progress->setFormat(tr("%1: %v / %m").arg(stage));
+    return m_job->isRunning();
 }
 
 void SkinningPanel::onFitSucceeded()
 {
-    std::shared_ptr<const SkinningFit> fit = std::move(*m_pending);
-    m_pending.reset();
-    m_session = std::make_unique<SkinningSession>(std::move(fit));
+    m_session = std::make_unique<SkinningSession>(m_job->takeResult());
     connect(m_session.get(), &SkinningSession::modelChanged, this, &SkinningPanel::onModelChanged);
     m_editor->setBones(m_session->fit().boneColors);
     m_editor->setUndoStack(m_session->undoStack());
@@ -386,8 +375,6 @@ void SkinningPanel::onFitSucceeded()
 
 void SkinningPanel::onFitEnded(const QString& status)
 {
-    m_progress->setVisible(false);
-    m_progress->resetFormat();
     setStatus(status);
     showResult();
 }
@@ -501,9 +488,9 @@ void SkinningPanel::updateEditPose()
                           tr("Pose %1 is the rest pose: it has no bone transforms. Go to a later pose to edit it.")
                               .arg(m_currentPose));
     else if (model.chain == SkinningChain::RestToPose)
-        m_editor->setPose(m_currentPose, true,
-                          tr("Edits apply to pose %1 only (a rest-to-pose fit does not chain poses).")
-                              .arg(m_currentPose));
+        m_editor->setPose(
+            m_currentPose, true,
+            tr("Edits apply to pose %1 only (a rest-to-pose fit does not chain poses).").arg(m_currentPose));
     else
         m_editor->setPose(m_currentPose, true);
 }
@@ -512,11 +499,10 @@ void SkinningPanel::updateControls()
 {
     const bool running = isRunning();
     m_form->setEnabled(m_animation != nullptr && !running);
-    m_fit->setEnabled(canFit() && !running);
-    m_cancel->setEnabled(running && !m_task->cancelRequested());
+    m_presenter->updateRow(canFit());
     m_viewBox->setEnabled(m_session != nullptr);
     m_editGroup->setEnabled(m_session != nullptr);
-    m_export->setEnabled(m_session != nullptr && !m_exportTask->isRunning());
+    m_export->setEnabled(m_session != nullptr && !m_exportJob->isRunning());
     updateEditPose();
 }
 

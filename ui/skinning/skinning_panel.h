@@ -5,9 +5,9 @@
 /// Segmentation panel shows (setSegmentation(), one bone per segment, in its color), or a
 /// given number B of them (the animation segmented anew into exactly B segments with the
 /// Segmentation panel's settings, setSegmenterSettings()); the settings form picks
-/// LBS/DQS, the chain and the corrections; Fit runs fitSkinning on a worker
-/// (BackgroundTask on runSkinningFit) with a progress bar and Cancel, which keeps the
-/// previous fit. The result shows E_RMS overall and the stage times, E_RMS per pose as
+/// LBS/DQS, the chain and the corrections; Fit runs the core's fit on a worker
+/// (BackgroundJob on runSkinningFit, core/skinning/skinning_pipeline.h) with a progress
+/// bar and Cancel, which keeps the previous fit (job_presenter.h). The result shows E_RMS overall and the stage times, E_RMS per pose as
 /// a chart with a dot on the timeline's pose, and the "Show" selector:
 /// - Original: the animation's own poses (the timeline plays them);
 /// - Approximation: the skinned reconstruction of each pose (shownPose());
@@ -32,11 +32,12 @@
 /// reference and the fallback) and displayColors() whenever displayChanged() is emitted and
 /// when the timeline moves.
 
+#include "ui/common/background_job.h"
 #include "ui/skinning/skinning_choices.h"
-#include "ui/skinning/skinning_result.h"
 
 #include "core/animation/animation_segmenter.h"
 #include "core/skinning/skinning_model.h"
+#include "core/skinning/skinning_pipeline.h"
 
 #include <QString>
 #include <QWidget>
@@ -58,8 +59,8 @@ struct BoneEdit;
 
 namespace trimlab::ui {
 
-class BackgroundTask;
 class HeatMapLegend;
+class JobPresenter;
 class SkinningBoneEditor;
 class SkinningErrorChart;
 class SkinningSession;
@@ -98,8 +99,8 @@ public:
 
     /// The fit and its edits (nullptr before the first fit of this animation).
     [[nodiscard]] SkinningSession* session() const { return m_session.get(); }
-    [[nodiscard]] BackgroundTask* fitTask() const { return m_task; }
-    [[nodiscard]] BackgroundTask* exportTask() const { return m_exportTask; }
+    [[nodiscard]] BackgroundJobBase* fitTask() const { return m_job; }
+    [[nodiscard]] BackgroundJobBase* exportTask() const { return m_exportJob; }
 
     /// Writes the model shown to `path` (.gltf or .glb) on a worker, its keyframes `fps`
     /// apart; exportFinished() or exportFailed() follows. No-op without a fit or while an
@@ -142,10 +143,9 @@ private:
     QWidget* createResultGroup();
     QWidget* createEditGroup();
     QWidget* createExportRow();
-    void connectTask();
-    void connectExportTask();
+    void connectJob();
+    void connectExportJob();
     void onFormChanged();
-    void onProgress(const QString& stage, qint64 done, qint64 total);
     void onFitSucceeded();
     void onFitEnded(const QString& status);
     void onModelChanged();
@@ -174,23 +174,23 @@ private:
     SkinningBoneEditor* m_editor = nullptr;
     QPushButton* m_export = nullptr;
     QCheckBox* m_morphTargets = nullptr;
+    QComboBox* m_interpolation = nullptr; ///< the skin's keyframes: linear or step
 
-    BackgroundTask* m_task = nullptr;
-    BackgroundTask* m_exportTask = nullptr;
+    /// What an export reports: the file's E_RMS against the original, and what it holds.
+    struct ExportOutcome {
+        double eRms = 0.0;
+        QString kind;
+    };
+
+    BackgroundJob<std::shared_ptr<const SkinningFit>>* m_job = nullptr;
+    BackgroundJob<ExportOutcome>* m_exportJob = nullptr;
+    JobPresenter* m_presenter = nullptr;
     std::shared_ptr<const LoadedAnimation> m_animation;
     std::shared_ptr<const LoadedAnimation> m_fitAnimation; ///< what the running fit was started on
     std::optional<VertexLabeling> m_segmentation;
     std::vector<WheelColor> m_segmentColors;
     SegmenterSettings m_segmenterSettings;
-    /// What the running fit writes (read in onFitSucceeded).
-    std::shared_ptr<std::shared_ptr<const SkinningFit>> m_pending;
-    /// The running export's file, and the E_RMS and kind it writes back.
-    QString m_exportPath;
-    struct ExportOutcome {
-        double eRms = 0.0;
-        QString kind;
-    };
-    std::shared_ptr<ExportOutcome> m_exportOutcome;
+    QString m_exportPath; ///< the running export's file
     std::unique_ptr<SkinningSession> m_session;
     SkinningView m_view = SkinningView::Original;
     std::vector<std::uint32_t> m_displayColors;

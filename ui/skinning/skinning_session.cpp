@@ -19,9 +19,10 @@ std::vector<glm::vec3> SkinningSession::approximatePose(std::size_t pose) const
 
 void SkinningSession::editBone(std::size_t pose, std::size_t bone, const BoneEdit& edit)
 {
-    auto edited = std::make_shared<const SkinningModel>(applyBoneEdit(*m_model, pose, bone, edit, approximation()[pose]));
-    m_undo.push(new SkinningEditCommand(this, m_model, std::move(edited),
-                                        tr("Move bone %1 at pose %2").arg(bone).arg(pose)));
+    auto edited =
+        std::make_shared<const SkinningModel>(applyBoneEdit(*m_model, pose, bone, edit, approximation()[pose]));
+    m_undo.push(
+        new SkinningEditCommand(this, m_model, std::move(edited), tr("Move bone %1 at pose %2").arg(bone).arg(pose)));
 }
 
 void SkinningSession::setModel(std::shared_ptr<const SkinningModel> model)

@@ -1,8 +1,9 @@
 #pragma once
 /// \file
 /// The skinned approximation the Skinning panel shows and edits: a finished fit
-/// (skinning_result.h), the model as edited so far, its reconstruction of every pose and
-/// its error against the original animation, and the undo stack of the edits. Every edit
+/// (core/skinning/skinning_pipeline.h), the model as edited so far, its reconstruction of
+/// every pose and its error against the original animation, and the undo stack of the
+/// edits. Every edit
 /// is a SkinningEditCommand on undoStack(): it swaps whole models (shared, immutable), so
 /// undo gives back the previous model exactly — the fitted one after the last undo.
 ///
@@ -12,7 +13,7 @@
 /// on a worker.
 
 #include "core/skinning/bone_edit.h"
-#include "ui/skinning/skinning_result.h"
+#include "core/skinning/skinning_pipeline.h"
 
 #include "core/skinning/skinning_error.h"
 

@@ -33,7 +33,6 @@ signals:
 private:
     void updateBoneCountEnabled();
     void updateChainEnabled();
-    void updateInfluencesEnabled();
 
     QComboBox* m_boneSource = nullptr;
     QSpinBox* m_boneCount = nullptr;

@@ -55,10 +55,14 @@ std::span<const NurbsPrimitive> nurbsPrimitives()
 QString nurbsPrimitiveLabel(NurbsPrimitive primitive)
 {
     switch (primitive) {
-    case NurbsPrimitive::Sphere: return QObject::tr("Sphere");
-    case NurbsPrimitive::Torus: return QObject::tr("Torus");
-    case NurbsPrimitive::Tube: return QObject::tr("Tube (capped)");
-    case NurbsPrimitive::Patch: return QObject::tr("Patch");
+    case NurbsPrimitive::Sphere:
+        return QObject::tr("Sphere");
+    case NurbsPrimitive::Torus:
+        return QObject::tr("Torus");
+    case NurbsPrimitive::Tube:
+        return QObject::tr("Tube (capped)");
+    case NurbsPrimitive::Patch:
+        return QObject::tr("Patch");
     }
     return {};
 }
@@ -66,10 +70,14 @@ QString nurbsPrimitiveLabel(NurbsPrimitive primitive)
 QString nurbsPrimitiveKey(NurbsPrimitive primitive)
 {
     switch (primitive) {
-    case NurbsPrimitive::Sphere: return QStringLiteral("Sphere");
-    case NurbsPrimitive::Torus: return QStringLiteral("Torus");
-    case NurbsPrimitive::Tube: return QStringLiteral("Tube");
-    case NurbsPrimitive::Patch: return QStringLiteral("Patch");
+    case NurbsPrimitive::Sphere:
+        return QStringLiteral("Sphere");
+    case NurbsPrimitive::Torus:
+        return QStringLiteral("Torus");
+    case NurbsPrimitive::Tube:
+        return QStringLiteral("Tube");
+    case NurbsPrimitive::Patch:
+        return QStringLiteral("Patch");
     }
     return {};
 }
@@ -79,10 +87,18 @@ SurfaceDefinition makePrimitiveDefinition(NurbsPrimitive primitive, const Surfac
     const glm::dvec3 origin(0.0);
     NurbsSurface surface;
     switch (primitive) {
-    case NurbsPrimitive::Sphere: surface = makeNurbsSphere(origin, 1.0); break;
-    case NurbsPrimitive::Torus: surface = makeNurbsTorus(origin, 1.0, 0.4); break;
-    case NurbsPrimitive::Tube: surface = makeNurbsCappedTube(origin, 0.6, 1.6); break;
-    case NurbsPrimitive::Patch: surface = frontFacingPatch(choices.patchDegree); break;
+    case NurbsPrimitive::Sphere:
+        surface = makeNurbsSphere(origin, 1.0);
+        break;
+    case NurbsPrimitive::Torus:
+        surface = makeNurbsTorus(origin, 1.0, 0.4);
+        break;
+    case NurbsPrimitive::Tube:
+        surface = makeNurbsCappedTube(origin, 0.6, 1.6);
+        break;
+    case NurbsPrimitive::Patch:
+        surface = frontFacingPatch(choices.patchDegree);
+        break;
     }
     return nurbsDefinition(std::move(surface), choices.segmentsU, choices.segmentsV);
 }
@@ -155,8 +171,7 @@ SurfaceDefinition rebuiltDefinition(const SurfaceDefinition& definition, std::sp
 {
     if (controlPoints.size() != definition.controlPointCount())
         throw std::invalid_argument("the history has " + std::to_string(controlPoints.size()) +
-                                    " control points, the surface " +
-                                    std::to_string(definition.controlPointCount()));
+                                    " control points, the surface " + std::to_string(definition.controlPointCount()));
     SurfaceDefinition rebuilt = definition;
     if (rebuilt.kind() == SurfaceKind::Nurbs) {
         NurbsDefinition& nurbs = std::get<NurbsDefinition>(rebuilt.source);

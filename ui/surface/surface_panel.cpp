@@ -207,7 +207,8 @@ void SurfacePanel::updateEnabled()
     m_moveAlongNormal->setEnabled(m_kind != Kind::None && m_selectionCount > 0);
     m_normalStep->setEnabled(m_kind != Kind::None);
     if (m_selection->text().isEmpty())
-        m_selection->setText(tr("%1 selected").arg(countOf(m_selectionCount, tr("control point"), tr("control points"))));
+        m_selection->setText(
+            tr("%1 selected").arg(countOf(m_selectionCount, tr("control point"), tr("control points"))));
 }
 
 } // namespace trimlab::ui

@@ -187,8 +187,8 @@ bool SurfaceWorkspace::createFromNurbsFile(const QString& path)
         std::vector<NurbsSurface> surfaces = loadNurbsJson(path.toStdString());
         const SurfaceChoices choices = m_panel->choices();
         const std::size_t count = surfaces.size();
-        const QString name = surfaces.front().name.empty() ? QFileInfo(path).fileName()
-                                                           : QString::fromStdString(surfaces.front().name);
+        const QString name =
+            surfaces.front().name.empty() ? QFileInfo(path).fileName() : QString::fromStdString(surfaces.front().name);
         if (!createSession(nurbsDefinition(std::move(surfaces.front()), choices.segmentsU, choices.segmentsV), name,
                            true))
             return false;
@@ -207,9 +207,9 @@ bool SurfaceWorkspace::createFromNurbsFile(const QString& path)
 void SurfaceWorkspace::showSaveNurbsDialog()
 {
     QSettings& settings = m_context.settings();
-    QString path = QFileDialog::getSaveFileName(&m_context.window(), tr("Save NURBS Surface"),
-                                                settings.value(kCageDirectoryKey).toString(),
-                                                tr("NURBS files (*.nurbs.json)"));
+    QString path =
+        QFileDialog::getSaveFileName(&m_context.window(), tr("Save NURBS Surface"),
+                                     settings.value(kCageDirectoryKey).toString(), tr("NURBS files (*.nurbs.json)"));
     if (path.isEmpty())
         return;
     if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive))
@@ -290,8 +290,8 @@ void SurfaceWorkspace::rebuildSurface()
     std::optional<SurfaceDefinition> rebuilt;
     QString problem;
     try {
-        rebuilt = rebuiltDefinition(surface->definition(), session->timeline().currentControlPoints(),
-                                    m_panel->choices());
+        rebuilt =
+            rebuiltDefinition(surface->definition(), session->timeline().currentControlPoints(), m_panel->choices());
     } catch (const std::exception& e) {
         problem = QString::fromStdString(e.what());
     }

@@ -1,6 +1,6 @@
 #include "ui/viewport/cpu_still_render.h"
 
-#include "ui/common/background_task.h"
+#include "ui/common/background_job.h"
 #include "render/rgba_qimage.h"
 
 #include "core/trim/reference_renderer.h"
@@ -14,24 +14,23 @@ bool CpuStillRender::Request::sameView(const Request& other) const
     return scene == other.scene && camera == other.camera && settings == other.settings && size == other.size;
 }
 
-CpuStillRender::CpuStillRender(QObject* parent)
-    : QObject(parent),
-      m_task(new BackgroundTask(this)),
-      m_result(std::make_shared<QImage>()),
-      m_builtReference(std::make_shared<std::shared_ptr<const ReferenceRenderer>>()),
-      m_resultMs(std::make_shared<double>(0.0))
+CpuStillRender::CpuStillRender(QObject* parent) : QObject(parent), m_job(new BackgroundJob<Rendered>(this))
 {
-    connect(m_task, &BackgroundTask::succeeded, this, [this] {
-        m_image = *m_result;
+    connect(m_job, &BackgroundJobBase::succeeded, this, [this] {
+        Rendered rendered = m_job->takeResult();
+        if (m_referenceScene == m_running->scene)
+            m_builtReference = std::move(rendered.reference);
+        m_image = std::move(rendered.image);
         m_shown = m_running;
-        m_lastMs = *m_resultMs;
+        m_lastMs = rendered.milliseconds;
         emit ready();
     });
-    connect(m_task, &BackgroundTask::failed, this, [this](const QString& message) {
+    connect(m_job, &BackgroundJobBase::failed, this, [this](const QString& message) {
         m_referenceScene.reset(); // build again next time
+        m_builtReference.reset();
         emit failed(message);
     });
-    connect(m_task, &BackgroundTask::finished, this, &CpuStillRender::onFinished);
+    connect(m_job, &BackgroundJobBase::finished, this, &CpuStillRender::onFinished);
 }
 
 CpuStillRender::~CpuStillRender() = default;
@@ -40,7 +39,7 @@ void CpuStillRender::request(const Request& request)
 {
     if (!request.scene || request.size.isEmpty())
         return;
-    if (m_running && m_task->isRunning()) {
+    if (m_running && m_job->isRunning()) {
         if (!m_running->sameView(request))
             m_waiting = request;
         return;
@@ -56,20 +55,18 @@ void CpuStillRender::start(const Request& request)
     m_waiting.reset();
     if (m_referenceScene != request.scene) {
         m_referenceScene = request.scene;
-        m_builtReference->reset(); // the job builds the BVH of the new scene
+        m_builtReference.reset(); // the job builds the BVH of the new scene
     }
-    auto result = m_result;
-    auto built = m_builtReference;
-    auto milliseconds = m_resultMs;
-    m_task->start([request, result, built, milliseconds](const TaskControl&) {
+    m_job->start([request, built = m_builtReference](const TaskControl&) {
         QElapsedTimer timer;
         timer.start();
-        if (!*built)
-            *built = std::make_shared<const ReferenceRenderer>(*request.scene);
-        const ReferenceResult rendered =
-            (*built)->render(request.camera, request.size.width(), request.size.height(), request.settings);
-        *result = render::toQImage(rendered.color);
-        *milliseconds = double(timer.nsecsElapsed()) * 1e-6;
+        Rendered rendered;
+        rendered.reference = built ? built : std::make_shared<const ReferenceRenderer>(*request.scene);
+        const ReferenceResult result =
+            rendered.reference->render(request.camera, request.size.width(), request.size.height(), request.settings);
+        rendered.image = render::toQImage(result.color);
+        rendered.milliseconds = double(timer.nsecsElapsed()) * 1e-6;
+        return rendered;
     });
 }
 

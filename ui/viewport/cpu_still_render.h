@@ -23,7 +23,9 @@ class ReferenceRenderer;
 
 namespace trimlab::ui {
 
-class BackgroundTask;
+class BackgroundJobBase;
+template <class T>
+class BackgroundJob;
 
 class CpuStillRender : public QObject {
     Q_OBJECT
@@ -56,19 +58,25 @@ signals:
     void failed(const QString& message);
 
 private:
+    /// What one job renders: the image, its time, and the reference it used (built for a
+    /// new scene, else the one it was given).
+    struct Rendered {
+        QImage image;
+        double milliseconds = 0.0;
+        std::shared_ptr<const ReferenceRenderer> reference;
+    };
+
     void start(const Request& request);
     void onFinished();
 
-    BackgroundTask* m_task;
+    BackgroundJob<Rendered>* m_job;
     std::optional<Request> m_running;
     std::optional<Request> m_waiting;
     std::optional<Request> m_shown;
-    std::shared_ptr<const Scene> m_referenceScene; ///< the scene *m_builtReference was built for
-    std::shared_ptr<QImage> m_result;
-    std::shared_ptr<std::shared_ptr<const ReferenceRenderer>> m_builtReference;
+    std::shared_ptr<const Scene> m_referenceScene; ///< the scene m_builtReference was built for
+    std::shared_ptr<const ReferenceRenderer> m_builtReference;
     QImage m_image;
     double m_lastMs = 0.0;
-    std::shared_ptr<double> m_resultMs;
 };
 
 } // namespace trimlab::ui

@@ -16,7 +16,8 @@ namespace {
 constexpr double kAxisPixels = 28.0;
 constexpr double kMarginPixels = 42.0;
 
-const std::array<glm::dvec3, 3> kAxes = {glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.0, 1.0, 0.0), glm::dvec3(0.0, 0.0, 1.0)};
+const std::array<glm::dvec3, 3> kAxes = {glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.0, 1.0, 0.0),
+                                         glm::dvec3(0.0, 0.0, 1.0)};
 const std::array<QColor, 3> kColours = {QColor(230, 70, 70), QColor(90, 200, 90), QColor(80, 140, 240)};
 const std::array<const char*, 3> kLabels = {"X", "Y", "Z"};
 

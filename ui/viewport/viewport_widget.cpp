@@ -32,7 +32,12 @@ constexpr double kAngleDeltaPerNotch = 120.0;
 
 } // namespace
 
-ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent), m_cpuStill(new CpuStillRender(this))
+ViewportWidget::ViewportWidget(QWidget* parent)
+    : QOpenGLWidget(parent),
+      m_content(std::make_shared<render::ShownContent>()),
+      m_view(m_content),
+      m_repaint(m_content->subscribe([this](render::ShownLayer) { update(); })),
+      m_cpuStill(new CpuStillRender(this))
 {
     connect(m_cpuStill, &CpuStillRender::ready, this, qOverload<>(&ViewportWidget::update));
     connect(m_cpuStill, &CpuStillRender::failed, this, [this](const QString& message) {
@@ -61,7 +66,7 @@ ViewportWidget::~ViewportWidget()
 void ViewportWidget::setScene(std::shared_ptr<const Scene> scene)
 {
     m_orbit.setSceneBounds(scene ? scene->worldBounds() : Bounds{});
-    m_view.setScene(std::move(scene));
+    m_content->setScene(std::move(scene));
     m_resetPending = true;
     update();
 }
@@ -75,7 +80,7 @@ void ViewportWidget::replaceScene(std::shared_ptr<const Scene> scene)
 
 void ViewportWidget::setSceneTransforms(std::shared_ptr<const Scene> scene)
 {
-    m_view.setSceneTransforms(scene);
+    m_content->setSceneTransforms(scene);
     m_orbit.setSceneBounds(scene->worldBounds()); // the depth range must enclose the moved object
     update();
 }
@@ -87,28 +92,6 @@ void ViewportWidget::setTool(ViewportTool* tool)
     setMouseTracking(tool != nullptr); // hover feedback (the brush's region) needs moves without buttons
     if (m_drag == Drag::Tool)
         m_drag = Drag::None;
-}
-
-void ViewportWidget::setDynamicChain(std::shared_ptr<const DynamicChain> chain)
-{
-    m_view.setDynamicChain(std::move(chain));
-    update();
-}
-
-void ViewportWidget::setDynamicShownLevel(std::shared_ptr<const DynamicChainLevel> level)
-{
-    if (!m_view.rendersDynamicRules())
-        return;
-    m_view.setDynamicShownLevel(std::move(level));
-    update();
-}
-
-void ViewportWidget::appendDynamicLevel(std::shared_ptr<const DynamicChainLevel> level)
-{
-    if (!m_view.rendersDynamicRules())
-        return;
-    m_view.appendDynamicLevel(std::move(level));
-    update();
 }
 
 std::optional<TrimPixel> ViewportWidget::trimPixelAt(QPointF position)
@@ -128,33 +111,6 @@ std::optional<TrimPixel> ViewportWidget::trimPixelAt(QPointF position)
 void ViewportWidget::setViewBounds(const Bounds& bounds)
 {
     m_orbit.setSceneBounds(bounds);
-    update();
-}
-
-void ViewportWidget::showPose(const std::vector<glm::vec3>& positions)
-{
-    m_view.showPose(positions);
-    update();
-}
-
-void ViewportWidget::showSubdivisionPose(std::shared_ptr<const render::SubdivisionStencils> stencils,
-                                         std::vector<glm::dvec3> controlPoints,
-                                         const std::vector<glm::vec3>& positions)
-{
-    m_view.showSubdivisionPose(std::move(stencils), std::move(controlPoints), positions);
-    update();
-}
-
-void ViewportWidget::showSkinnedPose(std::shared_ptr<const SkinningModel> model, std::size_t pose,
-                                     const std::vector<glm::vec3>& positions)
-{
-    m_view.showSkinnedPose(std::move(model), pose, positions);
-    update();
-}
-
-void ViewportWidget::setVertexColors(std::vector<std::uint32_t> rgba8)
-{
-    m_view.setVertexColors(std::move(rgba8));
     update();
 }
 
@@ -212,7 +168,7 @@ MethodMeasurement ViewportWidget::measureMethod(render::FragmentMethodKind metho
 {
     if (!m_view.hasRenderer())
         throw std::runtime_error(m_error.isEmpty() ? "OpenGL is not available." : m_error.toStdString());
-    if (!m_view.scene() || m_view.scene()->empty())
+    if (!m_content->scene() || m_content->scene()->empty())
         throw std::runtime_error("There is no scene to render.");
     makeCurrent();
     applyPendingReset();
@@ -256,7 +212,7 @@ void ViewportWidget::setFramingPoints(std::vector<glm::dvec3> worldPoints)
 Bounds ViewportWidget::shownBounds()
 {
     Bounds bounds;
-    if (const std::shared_ptr<const Scene> posed = m_view.posedScene())
+    if (const std::shared_ptr<const Scene> posed = m_content->posedScene())
         bounds = posed->worldBounds();
     for (const glm::dvec3& p : m_framingPoints)
         bounds.extend(p);
@@ -430,7 +386,7 @@ void ViewportWidget::paintGL()
         paintMessage(m_error.isEmpty() ? tr("OpenGL is not available.") : m_error);
         return;
     }
-    if (!m_view.scene() || m_view.scene()->empty()) {
+    if (!m_content->scene() || m_content->scene()->empty()) {
         clearToBackground();
         paintMessage(tr("No scene. Open a mesh with File ▸ Open… or drop a mesh file here."));
         return;
@@ -488,7 +444,7 @@ QImage ViewportWidget::cpuStillImage() const
 void ViewportWidget::paintCpuStill()
 {
     applyPendingReset();
-    const std::shared_ptr<const Scene> scene = m_view.posedScene();
+    const std::shared_ptr<const Scene> scene = m_content->posedScene();
     const CpuStillRender::Request request{scene, m_orbit.camera(), m_view.trimSettings(), framePixelSize()};
     m_cpuStill->request(request);
     clearToBackground();

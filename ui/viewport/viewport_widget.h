@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// The 3D view: a QOpenGLWidget that owns a TrimRenderer and an OrbitController. It
+/// The 3D view: a QOpenGLWidget that owns the shown content, a ViewportRenderer and an
+/// OrbitController. It
 /// renders only when something changed (scene, settings, camera, size) — never in a loop
 /// — at the widget's device-pixel size, and blits the result into its framebuffer.
 ///
@@ -11,14 +12,16 @@
 /// is asked first on every press and takes the presses it wants; what it leaves (for the
 /// brush: Alt + left drag, right and middle drag) still moves the camera.
 ///
-/// Under the dynamic rules (setDynamicChain) frames render through a DynamicTrimRenderer
-/// instead of the static rule: the chain's levels are uploaded once, and
-/// setDynamicShownLevel replaces only the shown frame (a brush drag), which keeps the
-/// cached characterizations of the earlier sets.
-///
-/// For mesh animations the window passes the pose to show (showPose: object 0's positions,
-/// uploaded at the next frame), per-vertex colors such as a segmentation's
-/// (setVertexColors) and the bounds of all poses (setViewBounds).
+/// What it shows is the shown content (render/shown_content.h, content()): the document's
+/// scene, which the widget sets (setScene, replaceScene, setSceneTransforms — they frame
+/// the camera too), and the pose, colour and dynamic-chain layers the features publish
+/// into through their render::ContentPublisher. The widget keeps input, the camera and
+/// painting, repaints when the content changes, and renders it through its
+/// render::ViewportRenderer, which uploads only the layers that changed. Under the
+/// dynamic rules (a chain shown) frames render through a DynamicTrimRenderer: the chain's
+/// levels are uploaded once, and a drag's replaced shown level keeps the cached
+/// characterizations of the earlier sets. An animation passes the bounds of all its poses
+/// (setViewBounds) so that no pose leaves the depth range.
 ///
 /// OpenGL failures (no 4.3 context, a shader that does not build) never crash and never
 /// leave a silent black view: the message is painted into the view and emitted once
@@ -67,13 +70,17 @@ public:
     explicit ViewportWidget(QWidget* parent = nullptr);
     ~ViewportWidget() override;
 
+    /// What the view shows: the features publish into it (render/content_publisher.h);
+    /// readouts ask it for the shown scene (posedScene).
+    [[nodiscard]] const std::shared_ptr<render::ShownContent>& content() const { return m_content; }
     /// Shows `scene` (nullptr: an empty view). The view is reset (reset view) on the next
-    /// frame, when the widget's final size is known. Clears the pose, the vertex colors and
-    /// the dynamic chain below, and the view bounds become the scene's bounds.
+    /// frame, when the widget's final size is known. The content's pose, colours and
+    /// dynamic chain go (they belonged to the previous meshes), and the view bounds become
+    /// the scene's bounds.
     void setScene(std::shared_ptr<const Scene> scene);
     /// Shows `scene` in place of the shown one keeping the camera (an object was added
     /// to the scene shown): uploads it, the view bounds become its bounds, the pose, the
-    /// vertex colors and the dynamic chain are cleared as by setScene().
+    /// colours and the dynamic chain go as by setScene().
     void replaceScene(std::shared_ptr<const Scene> scene);
     /// Shows `scene`, which has the shown scene's objects with the same meshes and differs
     /// only in model matrices (the Scene panel moved an object): only the matrices go to
@@ -82,39 +89,14 @@ public:
     /// object or vertex count differs (use replaceScene then).
     void setSceneTransforms(std::shared_ptr<const Scene> scene);
     /// The scene shown (nullptr: none).
-    [[nodiscard]] const std::shared_ptr<const Scene>& scene() const { return m_view.scene(); }
+    [[nodiscard]] const std::shared_ptr<const Scene>& scene() const { return m_content->scene(); }
     /// The box the camera's depth range must enclose and Fit frames (default: the
     /// scene's world bounds). An animation passes the bounds of all its poses, so that no
     /// pose reaches past the far plane. Re-renders; the camera itself is not moved.
     void setViewBounds(const Bounds& bounds);
-    /// Shows object 0 of the scene at `positions` (an animation pose: #V positions in
-    /// object space, same vertex count and triangles as the scene's object 0) from the
-    /// next frame on, with normals recomputed (GpuScene::updatePositions); the Scene
-    /// itself is not changed. Kept across GL context re-creation until setScene().
-    /// Throws std::invalid_argument on a vertex count mismatch or without a scene.
-    void showPose(const std::vector<glm::vec3>& positions);
-    /// The same for pose `pose` of a skinned approximation of object 0, `positions` being
-    /// the CPU's skinning of it: the renderer skins the pose on the GPU where it can
-    /// (render::ViewportRenderer::showSkinnedPose), else shows `positions`. Throws as
-    /// showPose, and std::invalid_argument for a pose beyond the model.
-    void showSkinnedPose(std::shared_ptr<const SkinningModel> model, std::size_t pose,
-                         const std::vector<glm::vec3>& positions);
-    /// Whether the last frame's pose was skinned on the GPU (showSkinnedPose).
-    [[nodiscard]] bool poseSkinnedOnGpu() const { return m_view.poseSkinnedOnGpu(); }
-    /// The same for a subdivision surface at `controlPoints`, `positions` being the CPU's
-    /// evaluation of them: the renderer evaluates the surface on the GPU where it can
-    /// (render::ViewportRenderer::showSubdivisionPose), else shows `positions`. Throws as
-    /// showPose, and std::invalid_argument for a control point count the stencils do not take.
-    void showSubdivisionPose(std::shared_ptr<const render::SubdivisionStencils> stencils,
-                             std::vector<glm::dvec3> controlPoints, const std::vector<glm::vec3>& positions);
-    /// Whether the last frame's pose was evaluated on the GPU (showSubdivisionPose).
-    [[nodiscard]] bool poseSubdividedOnGpu() const { return m_view.poseSubdividedOnGpu(); }
-    /// Per-vertex colors (one per vertex of the scene, objects in order; RGBA8 with red in
-    /// the lowest byte, as GLSL's unpackUnorm4x8 reads them) shown instead of the trim
-    /// palette from the next frame on; empty: back to the trim palette. Kept until
-    /// setScene(). Throws std::invalid_argument on a count mismatch.
-    void setVertexColors(std::vector<std::uint32_t> rgba8);
-    [[nodiscard]] bool showsVertexColors() const { return m_view.showsVertexColors(); }
+    /// How the pose of the last static frame reached the GPU: skinned or subdivided there,
+    /// or the CPU's positions uploaded.
+    [[nodiscard]] render::PoseEvaluation poseEvaluation() const { return m_view.lastPoseEvaluation(); }
     /// The settings to render with. The caller passes trimEnabled = false for scenes that
     /// are not trimmable.
     void setTrimSettings(const TrimSettings& settings);
@@ -188,22 +170,6 @@ public:
     /// The tool set last (nullptr: none).
     [[nodiscard]] ViewportTool* tool() const { return m_tool; }
 
-    /// Renders with the dynamic rules of `chain` (its last level is the shown frame) from
-    /// the next frame on; nullptr: back to the static rule of the trim settings. The
-    /// settings' rule classifies the base mesh; set it equal to chain->baseRule.
-    void setDynamicChain(std::shared_ptr<const DynamicChain> chain);
-    /// Replaces only the chain's shown level (same set, new positions: a brush drag).
-    /// Ignored without a chain; the next setDynamicChain() drops it.
-    void setDynamicShownLevel(std::shared_ptr<const DynamicChainLevel> level);
-    /// The shown level becomes the reference of a new set and `level` is shown (an
-    /// animation played forward against its previous pose): one characterization pass
-    /// instead of the whole history's. Ignored without a chain.
-    void appendDynamicLevel(std::shared_ptr<const DynamicChainLevel> level);
-    /// Levels of the chain shown, appended ones included (0 under the static rule).
-    [[nodiscard]] std::size_t dynamicLevelCount() const { return m_view.dynamicLevelCount(); }
-    [[nodiscard]] bool rendersDynamicRules() const { return m_view.rendersDynamicRules(); }
-    /// The chain's shown level as last set (setDynamicShownLevel or the chain's last).
-    [[nodiscard]] const DynamicChainLevel* dynamicShownLevel() const { return m_view.dynamicShownLevel(); }
     /// The dynamic renderer's numbers of the last frame (nullopt for static frames).
     [[nodiscard]] const std::optional<render::DynamicFrameStats>& lastDynamicStats() const
     {
@@ -291,15 +257,17 @@ private:
     [[nodiscard]] glm::dvec3 worldAtDepth(QPointF position, double depth) const;
 
     OrbitController m_orbit;
-    /// The content, the renderers of the current context, the frame policy, the last frame.
+    std::shared_ptr<render::ShownContent> m_content; ///< what is shown
+    /// The renderers of the current context, the frame policy, the last frame.
     render::ViewportRenderer m_view;
+    render::ContentSubscription m_repaint; ///< a change of the content repaints
     bool m_resetPending = false;
     std::vector<glm::dvec3> m_framingPoints; ///< setFramingPoints
     QString m_error;
     QString m_reportedError;
     ViewportTool* m_tool = nullptr;
-    TrimImage m_trimCache; ///< the last frame's trim image once read (empty: not read)
-    int m_contextsInitialized = 0; ///< initializeGL() calls
+    TrimImage m_trimCache;                          ///< the last frame's trim image once read (empty: not read)
+    int m_contextsInitialized = 0;                  ///< initializeGL() calls
     std::unique_ptr<QOpenGLDebugLogger> m_debugLog; ///< with TRIMLAB_GL_DEBUG only (render/gl/gl_debug_log.h)
     CpuStillRender* m_cpuStill = nullptr;
     Drag m_drag = Drag::None;

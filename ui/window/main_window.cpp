@@ -1,9 +1,10 @@
 #include "ui/window/main_window.h"
 
-#include "ui/common/image_file.h"
+#include "render/image_file.h"
 
 #include "ui/animation/animation_workspace.h"
 #include "ui/animation/open_animation_dialog.h"
+#include "ui/common/current_document.h"
 #include "ui/common/window_context.h"
 #include "ui/design/design_session.h"
 #include "ui/design/design_workspace.h"
@@ -11,7 +12,6 @@
 #include "ui/design/session_recovery.h"
 #include "ui/inspect/inspect_workspace.h"
 #include "ui/render_panel/render_workspace.h"
-#include "ui/skeleton/skeleton_panel.h"
 #include "ui/skeleton/skeleton_workspace.h"
 #include "ui/skinning/skinning_workspace.h"
 #include "ui/surface/surface_workspace.h"
@@ -96,8 +96,9 @@ MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
     setDockOptions(dockOptions() | QMainWindow::VerticalTabs);
     keepDockTabTitlesWhole(*this);
     createCentralView();
-    m_switch = new SceneSwitch(this, m_viewport);
-    m_context = std::make_unique<WindowContext>(*this, *m_settings, *m_switch);
+    m_document = new CurrentDocument(this);
+    m_switch = new SceneSwitch(this, m_viewport, *m_document);
+    m_context = std::make_unique<WindowContext>(*this, *m_settings, *m_switch, *m_document);
     createWorkspaces();
     createFileMenu();
     createEditMenu();
@@ -116,10 +117,9 @@ MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
 // state) may reach the half-destroyed window.
 MainWindow::~MainWindow()
 {
-    for (QObject* part : std::initializer_list<QObject*>{m_switch, m_render, m_animation, m_design, m_surface,
-                                                         m_skeleton, m_inspect})
+    for (QObject* part :
+         std::initializer_list<QObject*>{m_switch, m_render, m_animation, m_design, m_surface, m_skeleton, m_inspect})
         disconnect(part, nullptr, this, nullptr);
-    disconnect(m_design->projectFiles(), nullptr, this, nullptr);
 }
 
 QString MainWindow::defaultSource()
@@ -161,9 +161,12 @@ void MainWindow::createWorkspaces()
     m_design = new DesignWorkspace(*m_context, m_viewport, m_render->dock(), this);
     m_surface = new SurfaceWorkspace(*m_context, *m_design, this);
     m_skeleton = new SkeletonWorkspace(*m_context, m_viewport, m_render->dock(), m_design->brushAction(), this);
-    m_inspect = new InspectWorkspace(*m_context, m_viewport, m_render->dock(), m_design->undoGroup(), this);
-    m_inspect->setSaveGuard([this] { return m_design->projectFiles()->maybeSave(); });
-    m_solidExport = new SolidExport(*m_context, [this] { return shownSolid(); }, this);
+    m_inspect = new InspectWorkspace(*m_context, m_viewport, m_render->dock(), this);
+    // Adding an object ends a design (several objects are not designed): its unsaved
+    // history is asked about; a scene only grows.
+    m_inspect->setSaveGuard([this] { return !m_design->session() || m_design->projectFiles()->maybeSave(); });
+    m_solidExport = new SolidExport(
+        *m_context, [this] { return shownSolid(); }, this);
     m_render->dock()->raise();
 }
 
@@ -178,7 +181,7 @@ SolidExport::Shown MainWindow::shownSolid() const
         shown.refusal = tr("Nothing is shown yet.");
         return shown;
     }
-    shown.scene = frame->scene;
+    shown.scene = m_viewport->content()->posedScene(); // the frame shown, not the rest mesh
     shown.settings = frame->settings;
     shown.name = m_context->sceneBaseName(QStringLiteral("trimlab"));
     if (!loaded->trimmable())
@@ -201,7 +204,8 @@ void MainWindow::createFileMenu()
     demos->setObjectName(QStringLiteral("openDemoMenu"));
     for (const DemoEntry& demo : builtInDemos()) {
         const QString source = QString::fromStdString(demo.source);
-        QAction* action = demos->addAction(source.mid(int(kDemoPrefix.size())), this, [this, source] { openSource(source); });
+        QAction* action =
+            demos->addAction(source.mid(int(kDemoPrefix.size())), this, [this, source] { openSource(source); });
         action->setStatusTip(QString::fromUtf8(demo.description.data(), qsizetype(demo.description.size())));
         action->setToolTip(action->statusTip());
     }
@@ -216,8 +220,7 @@ void MainWindow::createFileMenu()
     file->addSeparator();
     QAction* exportImage = file->addAction(tr("&Export Image…"), this, &MainWindow::showExportDialog);
     exportImage->setShortcut(QKeySequence(tr("Ctrl+E")));
-    QAction* exportSolid =
-        file->addAction(tr("Export &Trimmed Solid…"), m_solidExport, &SolidExport::showExportDialog);
+    QAction* exportSolid = file->addAction(tr("Export &Trimmed Solid…"), m_solidExport, &SolidExport::showExportDialog);
     exportSolid->setObjectName(QStringLiteral("exportTrimmedSolidAction"));
     exportSolid->setStatusTip(tr("Write the solid the view shows (its rule or CSG, exact) as a closed mesh: OBJ, "
                                  "PLY, STL or glTF"));
@@ -308,7 +311,8 @@ void MainWindow::addViewPresets(QMenu* view)
     };
     for (const Preset& preset : list) {
         const glm::dvec3 direction = preset.direction;
-        QAction* action = presets->addAction(tr(preset.text), m_viewport, [this, direction] { m_viewport->viewAlong(direction); });
+        QAction* action =
+            presets->addAction(tr(preset.text), m_viewport, [this, direction] { m_viewport->viewAlong(direction); });
         action->setObjectName(QLatin1String(preset.name));
         action->setShortcut(preset.keys);
         action->setShortcutContext(Qt::WidgetShortcut);
@@ -331,28 +335,21 @@ void MainWindow::createHelpMenu()
 
 void MainWindow::connectWorkspaces()
 {
-    connect(m_switch, &SceneSwitch::sceneShown, this, [this] {
-        applyRenderChoices();
-        updateTitle();
-    });
-    connect(m_switch, &SceneSwitch::titleChanged, this, &MainWindow::updateTitle);
+    connect(m_switch, &SceneSwitch::sceneShown, this, &MainWindow::applyRenderChoices);
+    connect(m_switch, &SceneSwitch::boundsChanged, this, &MainWindow::applyRenderChoices);
+    // The title follows the document shown: its name or project file, and its '*'.
+    connect(m_document, &CurrentDocument::titleChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &CurrentDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_switch, &SceneSwitch::sceneLoaded, this, &MainWindow::sceneLoaded);
     connect(m_switch, &SceneSwitch::animationLoaded, this, &MainWindow::animationLoaded);
     connect(m_switch, &SceneSwitch::sceneLoadFailed, this, &MainWindow::sceneLoadFailed);
     connect(m_switch, &SceneSwitch::objectAdded, this, &MainWindow::objectAdded);
     connect(m_render, &RenderWorkspace::choicesChanged, this, &MainWindow::applyRenderChoices);
     connect(m_inspect, &InspectWorkspace::csgChanged, this, &MainWindow::applyRenderChoices);
-    connect(m_design, &DesignWorkspace::modifiedChanged, this, &MainWindow::updateTitle);
-    connect(m_design->projectFiles(), &ProjectFiles::saved, this, &MainWindow::updateTitle);
     connect(m_design, &DesignWorkspace::sessionChanged, this, [this] {
         m_inspect->setDesignSession(m_design->session());
         applyRenderChoices(); // whether the dynamic rules are shown depends on the session
-        updateTitle();
     });
-    // A skeleton pose deforms the designed mesh: the session shows it, so that the dynamic
-    // rules classify it too (the viewport would otherwise keep rendering the history's frame).
-    m_skeleton->panel()->setPoseSink(
-        [this](std::vector<glm::vec3> positions) { m_design->showForeignPose(std::move(positions)); });
 }
 
 void MainWindow::restoreSettings()
@@ -368,7 +365,7 @@ void MainWindow::restoreSettings()
         resizeDocks({m_render->dock()}, {400}, Qt::Horizontal);
     }
     m_animation->hideAnimationDocks(); // until an animation is opened
-    m_design->timelineDock()->hide();   // until a deformation history starts
+    m_design->timelineDock()->hide();  // until a deformation history starts
 }
 
 void MainWindow::saveWindowState()
@@ -434,6 +431,11 @@ QStringList MainWindow::recentAnimations() const
     return m_switch->recentAnimations();
 }
 
+Document* MainWindow::document() const
+{
+    return m_document->get();
+}
+
 std::shared_ptr<const LoadedAnimation> MainWindow::animation() const
 {
     return m_animation->animation();
@@ -469,6 +471,8 @@ void MainWindow::showOpenDialog()
 // expression (inspect) and the design session's classification (design).
 void MainWindow::applyRenderChoices()
 {
+    if (Document* document = m_document->get())
+        document->setSettings(m_render->documentSettings());
     const TrimSettings effective = m_render->apply(m_inspect->csg(), m_design->session() != nullptr);
     const RenderChoices choices = m_render->choices();
     m_design->setRenderMode(choices.dynamicRules, choices.trim.rule, effective.trimEnabled);
@@ -483,7 +487,7 @@ bool MainWindow::exportImage(const QString& path, QString* error)
         reason = tr("Nothing has been rendered yet.");
     else {
         try {
-            writeImageFile(image.convertToFormat(QImage::Format_RGB32), path, "png");
+            render::writeImageFile(image.convertToFormat(QImage::Format_RGB32), path, "png");
         } catch (const std::exception& e) {
             reason = QString::fromUtf8(e.what());
         }
@@ -495,9 +499,9 @@ bool MainWindow::exportImage(const QString& path, QString* error)
 
 void MainWindow::showExportDialog()
 {
-    const QString path = m_context->askSavePath(tr("Export Image"), {tr("PNG image (*.png)")},
-                                                m_context->sceneBaseName(QStringLiteral("trimlab")) +
-                                                    QStringLiteral(".png"));
+    const QString path =
+        m_context->askSavePath(tr("Export Image"), {tr("PNG image (*.png)")},
+                               m_context->sceneBaseName(QStringLiteral("trimlab")) + QStringLiteral(".png"));
     if (path.isEmpty())
         return;
     QString error;
@@ -510,7 +514,7 @@ void MainWindow::showExportDialog()
 void MainWindow::showSceneStatistics()
 {
     if (!m_statistics) {
-        m_statistics = new SceneStatisticsDialog(this);
+        m_statistics = new SceneStatisticsDialog(m_viewport->content(), this);
         // Follows what is shown while it stays open.
         connect(m_switch, &SceneSwitch::sceneShown, m_statistics, [this] { m_statistics->showScene(scene()); });
     }
@@ -534,13 +538,11 @@ void MainWindow::showAbout()
 
 void MainWindow::updateTitle()
 {
-    QString name = m_switch->shownScene() ? QString::fromStdString(m_switch->shownScene()->displayName) : QString();
-    const DesignSession* session = m_design->session();
-    if (session && !session->projectPath().isEmpty())
-        name = QFileInfo(session->projectPath()).fileName();
+    const Document* document = m_document->get();
+    const QString name = document ? document->title() : QString();
     // "[*]" is where Qt puts the modified mark (setWindowModified).
     setWindowTitle(name.isEmpty() ? QStringLiteral("TrimLab[*]") : tr("%1[*] — TrimLab").arg(name));
-    setWindowModified(m_design->isModified());
+    setWindowModified(document && document->isModified());
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event)

@@ -23,15 +23,16 @@
 /// progress and cancel); its rest pose then is the scene. A trimmable single-object mesh
 /// shown starts a deformation history. A failed load shows a dialog naming the file and
 /// the reason and keeps what is shown. If nothing was opened by the time the event loop
-/// first runs, the window opens defaultSource(). Unsaved design changes are asked about
-/// before they would be lost, and the title marks them with a *.
+/// first runs, the window opens defaultSource(). Each file opened is a new document
+/// (ui/common/document.h) with its own view settings; its unsaved changes are asked about
+/// before they would be lost, and the title shows its name and marks them with a *.
 ///
-/// Settings (every feature's choices, recent files and recent animations — two lists,
-/// since an animation is a folder or pattern as often as a file —, the last directory,
-/// window geometry and dock state) persist in a QSettings: the user's (organization and
-/// application "TrimLab"), or an INI file given to the constructor, so tests never touch
-/// the user's settings. Without saved settings the window starts with
-/// firstStartRenderChoices().
+/// Settings (every feature's choices but the document's view settings, recent files and
+/// recent animations — two lists, since an animation is a folder or pattern as often as a
+/// file —, the last directory, window geometry and dock state) persist in a QSettings: the
+/// user's (organization and application "TrimLab"), or an INI file given to the
+/// constructor, so tests never touch the user's settings. Without saved settings the window
+/// starts with firstStartRenderChoices().
 
 #include "ui/inspect/solid_export.h"
 
@@ -50,6 +51,7 @@ namespace trimlab::ui {
 
 class AnimationOpener;
 class AnimationWorkspace;
+class CurrentDocument;
 class DesignWorkspace;
 class InspectWorkspace;
 class RenderWorkspace;
@@ -61,6 +63,7 @@ class OrientationAxes;
 class SceneStatisticsDialog;
 class ViewportWidget;
 class WindowContext;
+class Document;
 struct LoadedAnimation;
 
 class MainWindow : public QMainWindow {
@@ -98,6 +101,9 @@ public:
     [[nodiscard]] AnimationOpener* animationOpener() const;
     [[nodiscard]] QStringList recentFiles() const;
     [[nodiscard]] QStringList recentAnimations() const;
+    /// The document shown: its project file, view settings, undo stack, modified state
+    /// (nullptr before the first file is shown).
+    [[nodiscard]] Document* document() const;
     /// The open animation (nullptr while a mesh or demo is shown).
     [[nodiscard]] std::shared_ptr<const LoadedAnimation> animation() const;
 
@@ -152,10 +158,11 @@ private:
 
     std::unique_ptr<QSettings> m_settings;
     ViewportWidget* m_viewport = nullptr;
-    OrientationAxes* m_axes = nullptr; ///< the gizmo over the view
+    OrientationAxes* m_axes = nullptr;             ///< the gizmo over the view
     SceneStatisticsDialog* m_statistics = nullptr; ///< View ▸ Mesh Statistics, made when first asked
     /// Owns the viewport when OpenGL is unavailable and it is kept out of the window.
     std::unique_ptr<ViewportWidget> m_detachedViewport;
+    CurrentDocument* m_document = nullptr; ///< the document shown (ui/common/document.h)
     SceneSwitch* m_switch = nullptr;
     std::unique_ptr<WindowContext> m_context;
     RenderWorkspace* m_render = nullptr;

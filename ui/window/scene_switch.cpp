@@ -2,6 +2,7 @@
 
 #include "ui/animation/animation_opener.h"
 #include "ui/animation/animation_workspace.h"
+#include "ui/common/current_document.h"
 #include "ui/common/window_context.h"
 #include "ui/design/design_workspace.h"
 #include "ui/design/history_exports.h"
@@ -22,6 +23,7 @@
 #include "core/mesh/mesh_validation.h"
 #include "core/timeline/frame_chain.h"
 #include "core/timeline/project_file.h"
+#include "core/timeline/view_settings.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -55,8 +57,7 @@ QString trimUnavailableNote(const LoadedScene& scene)
 }
 
 /// A one-object scene of `history`'s base mesh named `name`, opened from `source`.
-std::shared_ptr<LoadedScene> historyScene(const timeline::Timeline& history, const QString& name,
-                                          const QString& source)
+std::shared_ptr<LoadedScene> historyScene(const timeline::Timeline& history, const QString& name, const QString& source)
 {
     auto loaded = std::make_shared<LoadedScene>();
     loaded->scene.objects.push_back({name.toStdString(), history.base(), glm::dmat4(1.0)});
@@ -66,11 +67,26 @@ std::shared_ptr<LoadedScene> historyScene(const timeline::Timeline& history, con
     return loaded;
 }
 
+/// The view settings a document opened with `extras` (a project's, or none) starts with:
+/// the saved ones, else the defaults for a scene of `bounds`.
+timeline::DocumentSettings openedSettings(const timeline::ProjectExtras* extras, const Bounds& bounds, bool hasHistory)
+{
+    timeline::DocumentSettings settings = timeline::documentDefaults(bounds, hasHistory);
+    if (!extras)
+        return settings;
+    const StaticRule rule = extras->staticRule.value_or(settings.trim.rule);
+    if (extras->viewSettings)
+        return timeline::documentSettings(*extras->viewSettings, rule, bounds);
+    settings.trim.rule = rule;
+    return settings;
+}
+
 } // namespace
 
-SceneSwitch::SceneSwitch(QWidget* window, ViewportWidget* viewport)
+SceneSwitch::SceneSwitch(QWidget* window, ViewportWidget* viewport, CurrentDocument& document)
     : QObject(window),
       m_viewport(viewport),
+      m_document(document),
       m_loader(new SceneLoader(window)),
       m_animationOpener(new AnimationOpener(window))
 {
@@ -83,10 +99,12 @@ void SceneSwitch::attach(const WindowContext& context, const Features& features,
 {
     m_context = &context;
     m_features = features;
-    m_recent = new RecentFilesMenu(recentFiles, context.settings(), QStringLiteral("recentFiles"),
-                                   [this](const QString& path) { openRecent(path); }, this);
-    m_recentAnimations = new RecentFilesMenu(recentAnimations, context.settings(), QStringLiteral("recentAnimations"),
-                                             [this](const QString& path) { openRecentAnimation(path); }, this);
+    m_recent = new RecentFilesMenu(
+        recentFiles, context.settings(), QStringLiteral("recentFiles"),
+        [this](const QString& path) { openRecent(path); }, this);
+    m_recentAnimations = new RecentFilesMenu(
+        recentAnimations, context.settings(), QStringLiteral("recentAnimations"),
+        [this](const QString& path) { openRecentAnimation(path); }, this);
     connectLoaders();
 }
 
@@ -113,11 +131,7 @@ void SceneSwitch::connectLoaders()
         const std::shared_ptr<const LoadedScene>& scene = inspect->scene()->scene();
         if (!scene || inspect->showsAnimation())
             return ProjectFiles::ShownScene{};
-        // Only an assembly asks before it is lost: one mesh's placement is a view of a
-        // file that is unchanged on disk, while objects put together exist nowhere else.
-        InspectScene* shown = inspect->scene();
-        return ProjectFiles::ShownScene{scene, inspect->csg(), shown->isModified() && shown->objectCount() > 1,
-                                        [shown] { shown->markSaved(); }};
+        return ProjectFiles::ShownScene{scene, inspect->csg()};
     });
     connect(inspect, &InspectWorkspace::transformed, this, &SceneSwitch::onSceneTransformed);
     connect(inspect, &InspectWorkspace::objectsAppended, this, &SceneSwitch::onObjectsAppended);
@@ -136,8 +150,7 @@ QStringList SceneSwitch::recentAnimations() const
 
 bool SceneSwitch::confirmReplacingShown()
 {
-    ProjectFiles* projects = m_features.design->projectFiles();
-    return projects->maybeSave() && projects->maybeSaveScene() && m_features.animation->confirmDiscardSkinningEdits();
+    return m_features.design->projectFiles()->maybeSave() && m_features.animation->confirmDiscardSkinningEdits();
 }
 
 void SceneSwitch::openSource(const QString& source)
@@ -194,9 +207,8 @@ void SceneSwitch::openAnimation(const QString& source)
 bool SceneSwitch::isLoading() const
 {
     const DesignWorkspace* design = m_features.design;
-    return m_loader->isLoading() || m_features.inspect->objectLoader()->isLoading() ||
-           m_animationOpener->isLoading() || design->projectFiles()->isOpening() ||
-           design->historyExports()->isReplaying();
+    return m_loader->isLoading() || m_features.inspect->objectLoader()->isLoading() || m_animationOpener->isLoading() ||
+           design->projectFiles()->isOpening() || design->historyExports()->isReplaying();
 }
 
 void SceneSwitch::openRecent(const QString& path)
@@ -246,7 +258,12 @@ void SceneSwitch::onSceneLoaded(std::shared_ptr<const LoadedScene> loaded)
     m_features.animation->clear();
     m_features.design->endSession(); // before the viewport takes the new scene
     const Bounds bounds = loaded->scene.worldBounds();
-    showScene(std::move(loaded), bounds);
+    const bool designable = loaded->trimmable() && loaded->scene.objects.size() == 1;
+    const Document::Kind kind = designable                         ? Document::Kind::Design
+                                : loaded->scene.objects.size() > 1 ? Document::Kind::Scene
+                                                                   : Document::Kind::Mesh;
+    const QString name = QString::fromStdString(loaded->displayName);
+    showScene(std::move(loaded), bounds, newDocument(kind, name, openedSettings(nullptr, bounds, false)));
     startDesignSession();
     const QString source = QString::fromStdString(m_scene->source);
     if (!isDemoSource(m_scene->source))
@@ -261,7 +278,10 @@ void SceneSwitch::onSceneLoaded(std::shared_ptr<const LoadedScene> loaded)
 void SceneSwitch::onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loaded)
 {
     m_features.design->endSession(); // an animation's poses are not a deformation history
-    showScene(loaded->restScene, loaded->bounds, true);
+    showScene(loaded->restScene, loaded->bounds,
+              newDocument(Document::Kind::Animation, QString::fromStdString(loaded->restScene->displayName),
+                          openedSettings(nullptr, loaded->bounds, false)),
+              true);
     m_features.skeleton->panel()->setScene(nullptr); // the timeline drives the poses of an animation
     m_viewport->setViewBounds(loaded->bounds);       // no pose may cross the far plane
     m_features.animation->show(loaded);
@@ -282,36 +302,40 @@ void SceneSwitch::onProjectOpened(std::shared_ptr<const timeline::Project> proje
     DesignWorkspace* design = m_features.design;
     m_features.animation->clear();
     design->endSession();
-    const QString name = QFileInfo(path).fileName();
-    if (project->extras.staticRule) {
-        RenderChoices choices = m_features.render->choices();
-        choices.trim.rule = *project->extras.staticRule;
-        m_features.render->setChoices(choices);
-    }
     if (project->scene) {
         showSceneProject(*project, path);
         return;
     }
+    const QString name = QFileInfo(path).fileName();
+    std::shared_ptr<LoadedScene> loaded = historyScene(project->timeline, name, path);
+    const timeline::DocumentSettings settings =
+        openedSettings(&project->extras, loaded->scene.worldBounds(), project->timeline.frameCount() > 1);
     // The session below widens the view bounds to every frame.
-    showScene(historyScene(project->timeline, name, path), timeline::historyBounds(project->timeline));
-    design->startSession(project->timeline, glm::dmat4(1.0), QFileInfo(path).absoluteFilePath());
+    showScene(std::move(loaded), timeline::historyBounds(project->timeline),
+              newDocument(Document::Kind::Design, name, settings, path));
+    design->startSession(project->timeline, glm::dmat4(1.0));
     if (const auto& view = project->extras.view)
         m_viewport->setCamera(Camera{view->eye, view->target, view->up, view->fovyDegrees});
-    if (design->sessionRecovery()->adoptRecovered(path)) {
-        emit titleChanged(); // the title marks the recovered history as modified
-        m_context->showStatus(tr("Recovered the unsaved deformation history (%1 frames). Save it to keep it.")
-                                  .arg(project->timeline.frameCount()),
-                              2 * kStatusMessageMs);
-        emit sceneLoaded(path);
+    if (adoptIfRecovered(path, project->timeline.frameCount()))
         return;
-    }
     m_recent->add(path);
-    emit titleChanged();
     m_context->showStatus(tr("%1: %2 frames in %3 sets")
                               .arg(name)
                               .arg(project->timeline.frameCount())
                               .arg(project->timeline.sets().size()));
     emit sceneLoaded(path);
+}
+
+// An autosaved document being recovered gets its own identity back (session_recovery.h).
+bool SceneSwitch::adoptIfRecovered(const QString& path, int frames)
+{
+    if (!m_features.design->sessionRecovery()->adoptRecovered(path))
+        return false;
+    m_context->showStatus(tr("Recovered the unsaved work (%1). Save it to keep it.")
+                              .arg(frames > 0 ? tr("%n frame(s)", nullptr, frames) : tr("a scene")),
+                          2 * kStatusMessageMs);
+    emit sceneLoaded(path);
+    return true;
 }
 
 // A scene project: its objects where they were placed, its CSG and rules (the Scene panel
@@ -320,15 +344,16 @@ void SceneSwitch::onProjectOpened(std::shared_ptr<const timeline::Project> proje
 void SceneSwitch::showSceneProject(const timeline::Project& project, const QString& path)
 {
     const QString name = QFileInfo(path).fileName();
-    auto loaded = std::make_shared<LoadedScene>(projectSceneLoaded(*project.scene, project.extras.staticRule,
-                                                                   path.toStdString(), name.toStdString()));
+    auto loaded = std::make_shared<LoadedScene>(
+        projectSceneLoaded(*project.scene, project.extras.staticRule, path.toStdString(), name.toStdString()));
     const Bounds bounds = loaded->scene.worldBounds();
-    showScene(std::move(loaded), bounds);
-    m_features.design->projectFiles()->sceneShown(path);
+    showScene(std::move(loaded), bounds,
+              newDocument(Document::Kind::Scene, name, openedSettings(&project.extras, bounds, false), path));
     if (const auto& view = project.extras.view)
         m_viewport->setCamera(Camera{view->eye, view->target, view->up, view->fovyDegrees});
+    if (adoptIfRecovered(path, 0))
+        return;
     m_recent->add(path);
-    emit titleChanged();
     m_context->showStatus(tr("%1: a scene of %2 objects%3")
                               .arg(name)
                               .arg(m_scene->scene.objects.size())
@@ -342,18 +367,30 @@ void SceneSwitch::showHistory(timeline::Timeline history, const QString& name)
     m_features.animation->clear();
     m_features.design->endSession();
     const Bounds bounds = computeBounds(history.base());
-    showScene(historyScene(history, name, name), bounds);
-    m_features.design->startSession(std::move(history), glm::dmat4(1.0), QString());
-    emit titleChanged();
+    const timeline::DocumentSettings settings = openedSettings(nullptr, bounds, history.frameCount() > 1);
+    showScene(historyScene(history, name, name), bounds, newDocument(Document::Kind::Design, name, settings));
+    m_features.design->startSession(std::move(history), glm::dmat4(1.0));
 }
 
+// The grown scene stays the same document, now a scene: the history of a design ends
+// (the user was asked to save it) and a design project's file no longer holds it; the
+// clipping planes keep their place relative to the grown bounds.
 void SceneSwitch::onObjectsAppended(const QString& source, const QString& displayName)
 {
-    m_features.design->endSession(); // before the viewport takes the grown scene; several objects are not designed
-    m_features.design->projectFiles()->sceneShown(QString()); // no longer the scene a project file holds
+    Document* document = m_document.get();
+    const Bounds before = m_scene->scene.worldBounds();
+    if (m_features.design->session()) {
+        m_features.design->endSession(); // before the viewport takes the grown scene; several objects are not designed
+        document->undoStack()->clear();  // its commands edited the history
+        document->setFilePath(QString());
+    }
+    document->setKind(Document::Kind::Scene);
     const InspectScene* inspect = m_features.inspect->scene();
     m_scene = inspect->scene();
-    m_features.render->showSceneInfo(m_scene->scene.worldBounds(), m_scene->trimmable(),
+    const Bounds bounds = m_scene->scene.worldBounds();
+    document->setSettings(timeline::refitClipPlanes(document->settings(), before, bounds));
+    document->markChanged();
+    m_features.render->showSceneInfo(bounds, m_scene->trimmable(),
                                      QString::fromStdString(m_scene->trimUnavailableReason()));
     m_viewport->replaceScene(std::shared_ptr<const Scene>(m_scene, &m_scene->scene));
     emit sceneShown();
@@ -379,21 +416,30 @@ void SceneSwitch::onSceneTransformed()
         m_viewport->replaceScene(scene); // the view showed other geometry (never expected): upload it all
     }
     m_features.render->setClipBounds(m_scene->scene.worldBounds());
+    emit boundsChanged(); // the cap spacing follows the scene's radius
 }
 
-// What a mesh, a history and an animation's rest pose (`animation`) share: the scene, the
-// trim controls (with `bounds` for the clip offset), the features that work on the shown
-// scene.
-void SceneSwitch::showScene(std::shared_ptr<const LoadedScene> loaded, const Bounds& bounds, bool animation)
+// What a mesh, a history and an animation's rest pose (`animation`) share: a new document
+// with its view settings, the scene, the trim controls (with `bounds` for the clip
+// offset), the features that work on the shown scene.
+void SceneSwitch::showScene(std::shared_ptr<const LoadedScene> loaded, const Bounds& bounds,
+                            std::unique_ptr<Document> document, bool animation)
 {
     m_scene = std::move(loaded);
+    m_document.replace(std::move(document)); // first: the features below use its undo stack
     m_features.render->showSceneInfo(bounds, m_scene->trimmable(),
                                      QString::fromStdString(m_scene->trimUnavailableReason()));
     m_viewport->setScene(std::shared_ptr<const Scene>(m_scene, &m_scene->scene));
     m_features.skeleton->panel()->setScene(m_scene); // after the viewport: its result never meets another mesh
     m_features.inspect->showScene(m_scene, animation);
-    m_features.design->projectFiles()->sceneShown(QString()); // a scene project says where it came from after this
     emit sceneShown();
+}
+
+std::unique_ptr<Document> SceneSwitch::newDocument(Document::Kind kind, const QString& name,
+                                                   const timeline::DocumentSettings& settings,
+                                                   const QString& filePath) const
+{
+    return std::make_unique<Document>(kind, name, settings, filePath);
 }
 
 // A trimmable scene of one object starts a history on that object (a surface demo's
@@ -408,8 +454,7 @@ void SceneSwitch::startDesignSession()
     }
     const SceneObject& object = m_scene->scene.objects.front();
     m_features.design->startSession(
-        surfaceDemoHistory(m_scene->source, object.mesh).value_or(timeline::Timeline(object.mesh)),
-        object.modelMatrix, QString());
+        surfaceDemoHistory(m_scene->source, object.mesh).value_or(timeline::Timeline(object.mesh)), object.modelMatrix);
 }
 
 } // namespace trimlab::ui

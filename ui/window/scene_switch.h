@@ -2,7 +2,10 @@
 /// \file
 /// The one thing the main window shows — a scene (a mesh, a demo, a NURBS file), a
 /// project's design history, a created surface's history, or an animation's rest pose —
-/// and how each way of opening something replaces it (SceneHost). Scenes load off the UI
+/// and how each way of opening something replaces it (SceneHost). Each is a new document
+/// (ui/common/document.h) with the file's view settings or the defaults for its bounds,
+/// never the settings of the document before; adding objects keeps the document, which
+/// becomes a scene. Scenes load off the UI
 /// thread (SceneLoader), animations too (AnimationOpener), projects through the design
 /// feature's ProjectFiles; the newest request wins and cancels pending ones. Replacing
 /// what is shown ends the animation and the design session first, then hands the new
@@ -13,6 +16,7 @@
 /// Built in two steps: the window creates it before its feature workspaces (which reach
 /// it as their SceneHost), then attach()es them.
 
+#include "ui/common/document.h"
 #include "ui/common/scene_host.h"
 
 #include <QObject>
@@ -32,6 +36,7 @@ namespace trimlab::ui {
 
 class AnimationOpener;
 class AnimationWorkspace;
+class CurrentDocument;
 class DesignWorkspace;
 class InspectWorkspace;
 class RecentFilesMenu;
@@ -54,8 +59,9 @@ public:
         InspectWorkspace* inspect;
     };
 
-    /// `window` parents the loaders' progress dialogs and this object.
-    SceneSwitch(QWidget* window, ViewportWidget* viewport);
+    /// `window` parents the loaders' progress dialogs and this object; `document` is the
+    /// holder of the document shown, which this object replaces.
+    SceneSwitch(QWidget* window, ViewportWidget* viewport, CurrentDocument& document);
     ~SceneSwitch() override;
     /// The second step: the window's context, its features, and the File menu's recent
     /// submenus to fill.
@@ -82,10 +88,11 @@ public:
 
 signals:
     /// A new scene is shown (the features have it): the window applies the render
-    /// choices and updates its title.
+    /// choices.
     void sceneShown();
-    /// What the title shows changed (a project or a new history is shown).
-    void titleChanged();
+    /// The shown scene's bounds changed (an object moved or was scaled): the cap spacing
+    /// follows them.
+    void boundsChanged();
     /// See MainWindow's signals of the same names.
     void sceneLoaded(const QString& source);
     void animationLoaded(const QString& source);
@@ -103,11 +110,17 @@ private:
     void onProjectOpened(std::shared_ptr<const timeline::Project> project, const QString& path);
     void onObjectsAppended(const QString& source, const QString& displayName);
     void showSceneProject(const timeline::Project& project, const QString& path);
+    [[nodiscard]] bool adoptIfRecovered(const QString& path, int frames);
     void onSceneTransformed();
-    void showScene(std::shared_ptr<const LoadedScene> loaded, const Bounds& bounds, bool animation = false);
+    void showScene(std::shared_ptr<const LoadedScene> loaded, const Bounds& bounds, std::unique_ptr<Document> document,
+                   bool animation = false);
+    [[nodiscard]] std::unique_ptr<Document> newDocument(Document::Kind kind, const QString& name,
+                                                        const timeline::DocumentSettings& settings,
+                                                        const QString& filePath = {}) const;
     void startDesignSession();
 
     ViewportWidget* m_viewport;
+    CurrentDocument& m_document;
     SceneLoader* m_loader;
     AnimationOpener* m_animationOpener;
     const WindowContext* m_context = nullptr;

@@ -4,7 +4,7 @@ surface histories), stroke scripts (script_*.json), animations (anim_*), NURBS f
 (nurbs_*.nurbs.json) and skeleton files (skeleton_*.json) of tests/data/broken/, and the
 valid version-2 project tests/data/projects/v2_cube_cage.trimlab the surface variants
 start from (Python 3, standard library only, deterministic). Each broken file has one
-defect; tests/core/tst_fuzz_regressions.cpp checks the exact error each must produce
+defect; tests/core/io/tst_fuzz_regressions.cpp checks the exact error each must produce
 (table in tests/data/README.md). The broken cages (cage_*.obj) are written by hand.
 Rerun after changing it:
 

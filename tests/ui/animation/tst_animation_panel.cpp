@@ -5,7 +5,7 @@
 // three modes, color by segment, export — and compare what it shows with the core run
 // directly. Settings go to INI files in a temporary folder, never the user's.
 #include "gl_test_context.h"
-#include "held_background_task.h"
+#include "held_background_job.h"
 #include "image_artifacts.h"
 #include "meeting_balls.h"
 #include "message_box_closer.h"
@@ -21,7 +21,7 @@
 #include "core/animation/animation_segmenter.h"
 #include "core/animation/segment_coloring.h"
 #include "ui/animation/animation_opener.h"
-#include "ui/common/background_task.h"
+#include "ui/common/background_job.h"
 #include "ui/common/loaded_animation.h"
 #include "ui/window/main_window.h"
 #include "ui/render_panel/render_workspace.h"
@@ -36,6 +36,8 @@
 #include "core/trim/reference_renderer.h"
 #include "core/trim/trim_shading.h"
 #include "ui/viewport/viewport_widget.h"
+
+#include "render/shown_content.h"
 
 #include <QtTest>
 
@@ -218,21 +220,7 @@ std::optional<QString> TestAnimationPanel::dynamicPoseDisagreement(MainWindow& w
         animationChain(*window.animation()->animation, std::size_t(pose), reference, rule, frame.settings.rule);
     if (!chain)
         return name + QStringLiteral(": the rest pose has no chain");
-    const int width = frame.pixelSize.width();
-    const int height = frame.pixelSize.height();
-    const ReferenceResult expected =
-        DynamicReferenceRenderer(*chain).render(frame.camera, width, height, frame.settings);
-    const TrimImage actual = window.viewport()->readTrimImage();
-    const test::TrimComparison comparison = test::compareTrimImages(actual, expected.trim, expected.diagnostics);
-    qInfo("%s: %s", qPrintable(name), qPrintable(comparison.summary()));
-    if (comparison.coveredPixels < width * height / 40)
-        return QStringLiteral("%1: only %2 pixels covered").arg(name).arg(comparison.coveredPixels);
-    if (comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05)
-        return std::nullopt;
-    const QString files = test::writeComparisonArtifacts(name, test::trimImageToPicture(actual),
-                                                         test::trimImageToPicture(expected.trim),
-                                                         comparison.disagreementMask);
-    return name + ": " + comparison.summary() + "; " + files;
+    return test::frameDisagreement(test::chainFrameAgainstReference(window, *chain), name);
 }
 
 // The folding box (three poses of a closed tube, the last one folded through itself): the
@@ -303,11 +291,11 @@ void TestAnimationPanel::dynamicRuleCarriesTheClassificationFromPoseToPose()
     QVERIFY(test::writeMeetingBalls(balls));
     auto window = showWindow(QStringLiteral("dynamic-timeline"));
     QVERIFY(openAndWait(*window, balls));
-    QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(child<QComboBox>(window.get(), "ruleComboBox"), Qt::Key_Home); }));
+    QVERIFY(waitForNewFrame(*window,
+                            [&] { QTest::keyClick(child<QComboBox>(window.get(), "ruleComboBox"), Qt::Key_Home); }));
     QCOMPARE(window->viewport()->lastFrame()->settings.rule, StaticRule::Parity);
-    QVERIFY(waitForNewFrame(*window, [&] {
-        QTest::mouseClick(child<QCheckBox>(window.get(), "clipPlaneEnabled0"), Qt::LeftButton);
-    }));
+    QVERIFY(waitForNewFrame(
+        *window, [&] { QTest::mouseClick(child<QCheckBox>(window.get(), "clipPlaneEnabled0"), Qt::LeftButton); }));
     QVERIFY(window->viewport()->lastFrame()->settings.clipSet().anyEnabled());
 
     auto* slider = child<QSlider>(window.get(), "poseSlider");
@@ -333,12 +321,13 @@ void TestAnimationPanel::dynamicRuleCarriesTheClassificationFromPoseToPose()
         const render::DynamicFrameStats stats = window->viewport()->lastDynamicStats().value();
         QCOMPARE(stats.levels, pose);
         QCOMPARE(stats.characterizedLevels, pose - 1); // pose 2: only the set appended
-        if (const auto problem = dynamicPoseDisagreement(*window, pose, PoseReference::Previous, DynamicRule::Confluent))
+        if (const auto problem =
+                dynamicPoseDisagreement(*window, pose, PoseReference::Previous, DynamicRule::Confluent))
             QFAIL(qPrintable(*problem));
     }
     const TrimImage played = window->viewport()->readTrimImage();
     QVERIFY(child<QLabel>(window.get(), "poseHistoryStatus")->text().contains(QStringLiteral("2 sets")));
-    const TrimImage playedMeshIds = withMeshIds(played, window->viewport()->dynamicShownLevel()->frame);
+    const TrimImage playedMeshIds = withMeshIds(played, window->viewport()->content()->chain()->shownLevel().frame);
     int differing = 0;
     for (std::size_t i = 0; i < played.pixels.size(); ++i)
         differing += playedMeshIds.pixels[i].primitiveId != parity.pixels[i].primitiveId ? 1 : 0;
@@ -356,7 +345,8 @@ void TestAnimationPanel::dynamicRuleCarriesTheClassificationFromPoseToPose()
         QCOMPARE(jumped.pixels[i].primitiveId, played.pixels[i].primitiveId);
     }
 
-    QVERIFY(waitForNewFrame(*window, [&] { reference->setCurrentIndex(reference->findData(int(PoseReference::Rest))); }));
+    QVERIFY(
+        waitForNewFrame(*window, [&] { reference->setCurrentIndex(reference->findData(int(PoseReference::Rest))); }));
     QCOMPARE(window->viewport()->lastDynamicStats()->levels, 1);
     if (const auto problem = dynamicPoseDisagreement(*window, 2, PoseReference::Rest, DynamicRule::Confluent))
         QFAIL(qPrintable(*problem));
@@ -379,11 +369,11 @@ void TestAnimationPanel::skinnedGltfPlaysOnTheGpu()
     slider->setFocus();
     QCOMPARE(slider->maximum(), 1);
     QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(slider, Qt::Key_End); }));
-    QVERIFY(window->viewport()->poseSkinnedOnGpu());
+    QCOMPARE(window->viewport()->poseEvaluation(), render::PoseEvaluation::GpuSkinning);
     if (const auto problem = poseDisagreement(*window, 1))
         QFAIL(qPrintable(*problem));
     QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(slider, Qt::Key_Home); }));
-    QVERIFY(window->viewport()->poseSkinnedOnGpu());
+    QCOMPARE(window->viewport()->poseEvaluation(), render::PoseEvaluation::GpuSkinning);
     if (const auto problem = poseDisagreement(*window, 0))
         QFAIL(qPrintable(*problem));
 }
@@ -520,7 +510,8 @@ void TestAnimationPanel::runAndHSliderFollowTheCore()
     QVERIFY(child<QLabel>(panel, "segmentationTimesLabel")->text().contains(QStringLiteral("partitions")));
     // The status names the animation's pose count (it said one pose fewer: the partitions).
     const QString done = child<QLabel>(panel, "segmentationStatusLabel")->text();
-    QVERIFY2(done.contains(QStringLiteral("%1 poses").arg(window->animation()->animation->poseCount())), qPrintable(done));
+    QVERIFY2(done.contains(QStringLiteral("%1 poses").arg(window->animation()->animation->poseCount())),
+             qPrintable(done));
 
     SegmenterSettings settings = SegmentationChoices{}.segmenterSettings();
     settings.partition.clusters = 6;
@@ -535,12 +526,14 @@ void TestAnimationPanel::runAndHSliderFollowTheCore()
         const double h = double(slider->value()) / SegmentationPanel::kHSteps;
         QCOMPARE(panel->choices().h, h);
         const VertexLabeling expected = core.segment(h);
-        QVERIFY(QTest::qWaitFor([&] { return panel->shownLabeling() && *panel->shownLabeling() == expected; }, kWaitMs));
-        QVERIFY2(count->text().startsWith(QStringLiteral("Segments: %1 ").arg(expected.count)), qPrintable(count->text()));
+        QVERIFY(
+            QTest::qWaitFor([&] { return panel->shownLabeling() && *panel->shownLabeling() == expected; }, kWaitMs));
+        QVERIFY2(count->text().startsWith(QStringLiteral("Segments: %1 ").arg(expected.count)),
+                 qPrintable(count->text()));
         counts[slider->value()] = expected.count;
     }
-    qInfo("segments at h=0: %u, h=1: %u; last h change: segment(h) %.3f ms, recolor + pack %.3f ms",
-          counts[0], counts[SegmentationPanel::kHSteps], panel->lastCleaningMs(), panel->lastColoringMs());
+    qInfo("segments at h=0: %u, h=1: %u; last h change: segment(h) %.3f ms, recolor + pack %.3f ms", counts[0],
+          counts[SegmentationPanel::kHSteps], panel->lastCleaningMs(), panel->lastColoringMs());
     QVERIFY(counts[SegmentationPanel::kHSteps] < counts[0]);
 }
 
@@ -556,7 +549,8 @@ void TestAnimationPanel::colorBySegmentShowsSegmentColors()
     ViewportWidget* viewport = window->viewport();
     auto* toggle = child<QCheckBox>(panel, "colorBySegmentCheckBox");
     QVERIFY(toggle->isChecked()); // the default
-    QVERIFY(QTest::qWaitFor([&] { return viewport->showsVertexColors(); }, kWaitMs));
+    QVERIFY(QTest::qWaitFor([&] { return viewport->content()->colorOwner() == render::ContentOwner::Segmentation; },
+                            kWaitMs));
     QVERIFY(waitForNewFrame(*window, [&] { viewport->update(); }));
 
     // Shading multiplies the interpolated color by one factor (ambient + diffuse, × 0.55 on
@@ -603,7 +597,7 @@ void TestAnimationPanel::colorBySegmentShowsSegmentColors()
 
     QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(toggle, Qt::Key_Space); }));
     QVERIFY(!toggle->isChecked());
-    QVERIFY(!viewport->showsVertexColors());
+    QCOMPARE(viewport->content()->colorOwner(), render::ContentOwner::None);
     QVERIFY(panel->displayColors().empty());
     const QImage plain = viewport->readColorImage();
     const TrimImage trim = viewport->readTrimImage();
@@ -632,7 +626,7 @@ void TestAnimationPanel::cancelKeepsThePreviousResult()
     const std::shared_ptr<const SegmentationResult> previous = panel->result();
     typeInto(child<QSpinBox>(panel, "clustersSpinBox"), 12);
 
-    test::HeldBackgroundTask held(panel->runTask());
+    test::HeldBackgroundJob held(panel->runTask());
     QTest::mouseClick(child<QPushButton>(panel, "runSegmentationButton"), Qt::LeftButton);
     QVERIFY(held.waitUntilHeld(kWaitMs));
     auto* cancel = child<QPushButton>(panel, "cancelSegmentationButton");
@@ -683,7 +677,7 @@ void TestAnimationPanel::realTimeStreamEqualsTheGlobalRun()
     QVERIFY(child<QLabel>(panel, "segmentationStatusLabel")->text().contains(QStringLiteral("%1 poses").arg(poses)));
     QCOMPARE(*panel->shownLabeling(), global);
     QCOMPARE(panel->result()->segmenter->overSegmentation(), referenceCat().overSegmentation());
-    QVERIFY(window->viewport()->showsVertexColors());
+    QCOMPARE(window->viewport()->content()->colorOwner(), render::ContentOwner::Segmentation);
     QTest::mouseClick(child<QToolButton>(window.get(), "playButton"), Qt::LeftButton); // pause
 }
 
@@ -800,13 +794,13 @@ void TestAnimationPanel::choicesPersist()
         auto window = showWindow(settings);
         QVERIFY(openAndWait(*window, testAnimation("bar")));
         SegmentationPanel* panel = window->animationWorkspace()->segmentationPanel();
-        QTest::keyClick(child<QComboBox>(panel, "referenceComboBox"), Qt::Key_End);      // previous pose
-        QTest::keyClick(child<QComboBox>(panel, "featureComboBox"), Qt::Key_End);        // acceleration
-        QTest::keyClick(child<QComboBox>(panel, "clusteringComboBox"), Qt::Key_End);         // hierarchical
+        QTest::keyClick(child<QComboBox>(panel, "referenceComboBox"), Qt::Key_End);  // previous pose
+        QTest::keyClick(child<QComboBox>(panel, "featureComboBox"), Qt::Key_End);    // acceleration
+        QTest::keyClick(child<QComboBox>(panel, "clusteringComboBox"), Qt::Key_End); // hierarchical
         typeInto(child<QSpinBox>(panel, "clustersSpinBox"), 11);
         typeInto(child<QSpinBox>(panel, "threadsSpinBox"), 2);
-        QTest::keyClick(child<QSlider>(panel, "hSlider"), Qt::Key_End);                  // h = 1
-        QTest::keyClick(child<QComboBox>(panel, "modeComboBox"), Qt::Key_End);           // variable
+        QTest::keyClick(child<QSlider>(panel, "hSlider"), Qt::Key_End);                    // h = 1
+        QTest::keyClick(child<QComboBox>(panel, "modeComboBox"), Qt::Key_End);             // variable
         QTest::keyClick(child<QCheckBox>(panel, "colorBySegmentCheckBox"), Qt::Key_Space); // off
         typeInto(child<QSpinBox>(window.get(), "fpsSpinBox"), 30);
         QTest::keyClick(child<QCheckBox>(window.get(), "loopCheckBox"), Qt::Key_Space);

@@ -58,8 +58,9 @@ void measureDrags(ui::MainWindow& window, QSize size, bool dynamic)
     QTest::mouseRelease(viewport, Qt::LeftButton, {}, centre + QPoint(20, -20));
     std::printf("%s: %zu vertices, press %.1f ms, drag update median %.2f ms, move to frame shown median %.1f ms, "
                 "of which the trim render %.1f ms\n",
-                dynamic ? "dynamic rules" : "static rule", window.designWorkspace()->session()->topology().vertexCount(),
-                pressMs, median(update), median(total), median(render));
+                dynamic ? "dynamic rules" : "static rule",
+                window.designWorkspace()->session()->topology().vertexCount(), pressMs, median(update), median(total),
+                median(render));
 }
 
 } // namespace

@@ -9,6 +9,7 @@
 #include "gl_test_context.h"
 #include "message_box_closer.h"
 
+#include "ui/common/document.h"
 #include "ui/design/brush_panel.h"
 #include "ui/design/brush_tool.h"
 #include "ui/design/deformation_timeline_panel.h"
@@ -21,6 +22,8 @@
 #include "core/scene/shape_generators.h"
 #include "core/timeline/project_file.h"
 #include "ui/viewport/viewport_widget.h"
+
+#include "render/shown_content.h"
 
 #include <QtTest>
 
@@ -49,19 +52,19 @@
 
 using namespace trimlab;
 using namespace trimlab::ui;
-using trimlab::test::MessageBoxCloser;
+using trimlab::test::brushDrag;
 using trimlab::test::kWaitMs;
+using trimlab::test::MessageBoxCloser;
+using trimlab::test::strokeAtCentre;
 
 namespace {
 
 constexpr QSize kViewportSize(256, 192);
 
-
 bool sameBits(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b)
 {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
 }
-
 
 int differingPixels(const QImage& a, const QImage& b)
 {
@@ -85,15 +88,6 @@ int magentaPixels(const QImage& image)
             count += c.red() > c.green() + 40 && c.blue() > c.green() + 20 ? 1 : 0;
         }
     return count;
-}
-
-/// A left drag from `from` to `to` in `steps` moves, as QTest sends it.
-void brushDrag(QWidget* viewport, QPoint from, QPoint to, int steps = 6)
-{
-    QTest::mousePress(viewport, Qt::LeftButton, {}, from);
-    for (int i = 1; i <= steps; ++i)
-        QTest::mouseMove(viewport, from + (to - from) * i / steps);
-    QTest::mouseRelease(viewport, Qt::LeftButton, {}, to);
 }
 
 /// The same drag with Shift held (the brush moves along the grabbed normal: up pulls out,
@@ -141,8 +135,6 @@ private:
     {
         return test::showDesignWindow(path(name + QStringLiteral(".ini")), kViewportSize);
     }
-    /// Drags at the viewport centre and waits until the history has one frame more.
-    [[nodiscard]] static bool strokeAtCentre(MainWindow& window, QPoint offset);
 
     QTemporaryDir m_dir;
     QString m_sphereObj;
@@ -154,18 +146,6 @@ void TestDesignWorkflow::initTestCase()
     QVERIFY(m_dir.isValid());
     m_sphereObj = path(QStringLiteral("sphere.obj"));
     QVERIFY(test::writePlainObj(makeIcosphere(glm::dvec3(0.0), 1.0, 3), m_sphereObj)); // 642 vertices
-}
-
-
-
-
-bool TestDesignWorkflow::strokeAtCentre(MainWindow& window, QPoint offset)
-{
-    const DesignSession* session = window.designWorkspace()->session();
-    const int before = session->timeline().frameCount();
-    const QPoint centre(kViewportSize.width() / 2, kViewportSize.height() / 2);
-    brushDrag(window.viewport(), centre, centre + offset);
-    return QTest::qWaitFor([&] { return session->timeline().frameCount() == before + 1; }, kWaitMs);
 }
 
 // The drag moves only vertices within the brush radius of the grabbed point, records them
@@ -189,7 +169,8 @@ void TestDesignWorkflow::brushDragDeformsWithinRadius()
     const QPointF centre(kViewportSize.width() / 2.0, kViewportSize.height() / 2.0);
     QMouseEvent hover(QEvent::MouseMove, centre, viewport->mapToGlobal(centre), Qt::NoButton, Qt::NoButton, {});
     QApplication::sendEvent(viewport, &hover);
-    QVERIFY(QTest::qWaitFor([&] { return viewport->showsVertexColors(); }, kWaitMs));
+    QVERIFY(QTest::qWaitFor([&] { return viewport->content()->colorOwner() == render::ContentOwner::BrushRegion; },
+                            kWaitMs));
     QVERIFY(QTest::qWaitFor([&] { return magentaPixels(viewport->grabFramebuffer()) > magentaPixels(untinted) + 50; },
                             kWaitMs));
     const QImage before = viewport->grabFramebuffer();
@@ -220,7 +201,7 @@ void TestDesignWorkflow::brushDragDeformsWithinRadius()
     QVERIFY(QTest::qWaitFor([&] { return differingPixels(before, viewport->grabFramebuffer()) > 50; }, kWaitMs));
     QEvent leave(QEvent::Leave);
     QApplication::sendEvent(viewport, &leave);
-    QVERIFY(!viewport->showsVertexColors());
+    QCOMPARE(viewport->content()->colorOwner(), render::ContentOwner::None);
 }
 
 // Ctrl+Z restores every position bit for bit, Ctrl+Shift+Z re-applies exactly the drag's.
@@ -393,8 +374,8 @@ void TestDesignWorkflow::dynamicRulesRenderInTheViewport()
 
     QVERIFY(strokeAtCentre(*window, QPoint(0, -25))); // picks through meshTriangle, drags the shown level
     QCOMPARE(session->timeline().frameCount(), 4);
-    QVERIFY(QTest::qWaitFor([&] { return viewport->lastDynamicStats().has_value() && viewport->errorMessage().isEmpty(); },
-                            kWaitMs));
+    QVERIFY(QTest::qWaitFor(
+        [&] { return viewport->lastDynamicStats().has_value() && viewport->errorMessage().isEmpty(); }, kWaitMs));
 
     // A GPU reset takes the uploaded chain and its cached characterizations with the
     // context: the view uploads and characterizes them again on the new context and shows
@@ -405,7 +386,10 @@ void TestDesignWorkflow::dynamicRulesRenderInTheViewport()
     const int contexts = viewport->contextsInitialized();
     viewport->recoverFromContextLoss(QStringLiteral("The graphics driver reset the GPU (test)."));
     QVERIFY(QTest::qWaitFor(
-        [&] { return viewport->contextsInitialized() == contexts + 1 && viewport->lastFrame() && viewport->lastDynamicStats(); },
+        [&] {
+            return viewport->contextsInitialized() == contexts + 1 && viewport->lastFrame() &&
+                   viewport->lastDynamicStats();
+        },
         kWaitMs));
     QCOMPARE(viewport->lastDynamicStats()->levels, levels);
     QCOMPARE(viewport->lastDynamicStats()->characterizedLevels, levels - 1);
@@ -421,13 +405,15 @@ void TestDesignWorkflow::dynamicRulesRenderInTheViewport()
     const auto* items = qobject_cast<const QStandardItemModel*>(method->model());
     QVERIFY(items && !items->item(peeling)->isEnabled());
     QVERIFY(items->item(buffer)->isEnabled());
-    QVERIFY2(method->itemData(peeling, Qt::ToolTipRole).toString().contains(QStringLiteral("cannot run the dynamic rules")),
-             qPrintable(method->itemData(peeling, Qt::ToolTipRole).toString()));
+    QVERIFY2(
+        method->itemData(peeling, Qt::ToolTipRole).toString().contains(QStringLiteral("cannot run the dynamic rules")),
+        qPrintable(method->itemData(peeling, Qt::ToolTipRole).toString()));
     method->setCurrentIndex(peeling);
     QVERIFY(items->item(method->currentIndex())->isEnabled());
     QVERIFY2(window->statusBar()->currentMessage().contains(QStringLiteral("cannot run the dynamic rules")),
              qPrintable(window->statusBar()->currentMessage()));
-    QVERIFY(QTest::qWaitFor([&] { return viewport->errorMessage().isEmpty() && viewport->lastDynamicStats(); }, kWaitMs));
+    QVERIFY(
+        QTest::qWaitFor([&] { return viewport->errorMessage().isEmpty() && viewport->lastDynamicStats(); }, kWaitMs));
     QVERIFY(closer.seen().isEmpty());
     method->setCurrentIndex(buffer);
     QVERIFY(QTest::qWaitFor([&] { return viewport->errorMessage().isEmpty() && viewport->lastFrame(); }, kWaitMs));
@@ -448,7 +434,8 @@ void TestDesignWorkflow::dynamicRulesRenderInTheViewport()
         kWaitMs));
     viewport->recoverFromContextLoss(reset);
     viewport->recoverFromContextLoss(reset);
-    QVERIFY2(viewport->errorMessage().contains(QStringLiteral("stopped rendering")), qPrintable(viewport->errorMessage()));
+    QVERIFY2(viewport->errorMessage().contains(QStringLiteral("stopped rendering")),
+             qPrintable(viewport->errorMessage()));
     QVERIFY(QTest::qWaitFor([&] { return viewport->contextsInitialized() == before + 4; }, kWaitMs));
     QTest::qWait(500);
     QCOMPARE(viewport->contextsInitialized(), before + 4); // no reset loop
@@ -479,13 +466,14 @@ void TestDesignWorkflow::dynamicRulesSetAsideStaticOnlyFeatures()
     cap->setChecked(true);
     collisions->setChecked(true);
     ViewportWidget* viewport = window->viewport();
-    QVERIFY(QTest::qWaitFor([&] { return viewport->lastFrame() && viewport->lastFrame()->settings.highlight.collisions; },
-                            kWaitMs));
+    QVERIFY(QTest::qWaitFor(
+        [&] { return viewport->lastFrame() && viewport->lastFrame()->settings.highlight.collisions; }, kWaitMs));
 
     auto* classification = test::child<QComboBox>(window.get(), "classificationComboBox");
     classification->setCurrentIndex(1);
     QVERIFY(window->designWorkspace()->showsDynamicRules());
-    QVERIFY(QTest::qWaitFor([&] { return viewport->lastDynamicStats().has_value() && viewport->lastFrame(); }, kWaitMs));
+    QVERIFY(
+        QTest::qWaitFor([&] { return viewport->lastDynamicStats().has_value() && viewport->lastFrame(); }, kWaitMs));
     QTest::qWait(200); // a refused frame would open its dialog from the event loop
     QVERIFY2(closer.seen().isEmpty(), qPrintable(closer.seen().join(QLatin1Char('|'))));
     QVERIFY2(viewport->errorMessage().isEmpty(), qPrintable(viewport->errorMessage()));
@@ -497,8 +485,8 @@ void TestDesignWorkflow::dynamicRulesSetAsideStaticOnlyFeatures()
     QVERIFY(reason->text().contains(QStringLiteral("static rule")));
 
     classification->setCurrentIndex(0);
-    QVERIFY(QTest::qWaitFor([&] { return viewport->lastFrame() && viewport->lastFrame()->settings.highlight.collisions; },
-                            kWaitMs));
+    QVERIFY(QTest::qWaitFor(
+        [&] { return viewport->lastFrame() && viewport->lastFrame()->settings.highlight.collisions; }, kWaitMs));
     QVERIFY(cap->isEnabled() && collisions->isEnabled());
     QVERIFY(!reason->isVisibleTo(window.get()));
     collisions->setChecked(false);
@@ -579,7 +567,7 @@ void TestDesignWorkflow::projectRoundTripAndCorruptFile()
     QCOMPARE(window->designWorkspace()->session()->timeline().frameCount(), 1);
     QVERIFY(test::openDesignAndWait(*window, project));
     QVERIFY(window->designWorkspace()->session()->timeline() == saved);
-    QCOMPARE(window->designWorkspace()->session()->projectPath(), QFileInfo(project).absoluteFilePath());
+    QCOMPARE(window->document()->filePath(), QFileInfo(project).absoluteFilePath());
     QVERIFY(window->recentFiles().contains(QFileInfo(project).absoluteFilePath()));
 
     // A damaged copy: the dialog names the file, nothing else changes.
@@ -596,7 +584,7 @@ void TestDesignWorkflow::projectRoundTripAndCorruptFile()
     QVERIFY(QTest::qWaitFor([&] { return !closer.seen().isEmpty(); }, kWaitMs));
     QVERIFY2(closer.seen().last().contains(QStringLiteral("damaged.trimlab")), qPrintable(closer.seen().last()));
     QVERIFY(window->designWorkspace()->session()->timeline() == saved);
-    QCOMPARE(window->designWorkspace()->session()->projectPath(), QFileInfo(project).absoluteFilePath());
+    QCOMPARE(window->document()->filePath(), QFileInfo(project).absoluteFilePath());
 
     // Unsaved changes: the prompt's default (Save) writes them before the mesh opens.
     QVERIFY(strokeAtCentre(*window, QPoint(0, 20)));
@@ -604,7 +592,6 @@ void TestDesignWorkflow::projectRoundTripAndCorruptFile()
     QVERIFY(test::openDesignAndWait(*window, m_sphereObj));
     QVERIFY(timeline::readProject(project.toStdString()).timeline == edited);
 }
-
 
 QTEST_MAIN(TestDesignWorkflow)
 #include "tst_design_workflow.moc"

@@ -7,6 +7,7 @@
 #include "design_window.h"
 #include "gl_test_context.h"
 
+#include "ui/common/document.h"
 #include "ui/design/autosave.h"
 #include "ui/design/design_session.h"
 #include "ui/design/design_workspace.h"
@@ -57,6 +58,7 @@ private slots:
     void initTestCase();
     void autosaveWritesModifiedWorkAndClearsWhenSaved();
     void recoverBringsBackTheHistoryModified();
+    void anUntitledRecoveryShowsNoInternalName();
     void discardDeletesTheAutosave();
     void liveSessionsAreNeverOffered();
 
@@ -78,7 +80,8 @@ private:
     void writeCrashedSession(const QString& recovery, const QString& stem, const QString& originalPath)
     {
         QVERIFY(QDir().mkpath(recovery));
-        timeline::saveProject(crashedHistory(), (recovery + QLatin1Char('/') + stem + QStringLiteral(".trimlab")).toStdString());
+        timeline::saveProject(crashedHistory(),
+                              (recovery + QLatin1Char('/') + stem + QStringLiteral(".trimlab")).toStdString());
         QFile info(recovery + QLatin1Char('/') + stem + QStringLiteral(".json"));
         QVERIFY(info.open(QIODevice::WriteOnly));
         info.write(QStringLiteral(R"({"projectPath": "%1", "savedAt": "2026-11-20T10:00:00.000Z"})")
@@ -95,6 +98,21 @@ private:
             },
             test::kWaitMs);
         return shown ? box : nullptr;
+    }
+    // Presses Recover on `box` and waits until the crashed history is shown.
+    static bool recoverAndWait(MainWindow& window, QMessageBox* box)
+    {
+        QAbstractButton* recoverButton = box ? buttonWithRole(box, QMessageBox::AcceptRole) : nullptr;
+        if (!recoverButton)
+            return false;
+        recoverButton->click();
+        const timeline::Timeline expected = crashedHistory();
+        return QTest::qWaitFor(
+            [&] {
+                const DesignSession* session = window.designWorkspace()->session();
+                return !window.isLoading() && session && session->timeline() == expected;
+            },
+            test::kWaitMs);
     }
     static bool waitForDefaultScene(MainWindow& window)
     {
@@ -131,7 +149,8 @@ void TestSessionRecovery::autosaveWritesModifiedWorkAndClearsWhenSaved()
     QVERIFY(Autosave::recoverableSessions(recovery).isEmpty());
 
     QString error;
-    QVERIFY2(window->designWorkspace()->projectFiles()->saveTo(path(QStringLiteral("autosaved.trimlab")), &error), qPrintable(error));
+    QVERIFY2(window->designWorkspace()->projectFiles()->saveTo(path(QStringLiteral("autosaved.trimlab")), &error),
+             qPrintable(error));
     QVERIFY(!QFile::exists(autosave.recoveryProjectPath()));
 }
 
@@ -145,21 +164,12 @@ void TestSessionRecovery::recoverBringsBackTheHistoryModified()
     QVERIFY(box);
     QVERIFY2(box->informativeText().contains(QStringLiteral("design.trimlab")), qPrintable(box->informativeText()));
     QVERIFY(waitForDefaultScene(*window));
-    QAbstractButton* recoverButton = buttonWithRole(box, QMessageBox::AcceptRole);
-    QVERIFY(recoverButton);
-    recoverButton->click();
-
+    QVERIFY(recoverAndWait(*window, box));
     const timeline::Timeline expected = crashedHistory();
-    QVERIFY(QTest::qWaitFor(
-        [&] {
-            const DesignSession* session = window->designWorkspace()->session();
-            return !window->isLoading() && session && session->timeline() == expected;
-        },
-        test::kWaitMs));
-    const DesignSession* session = window->designWorkspace()->session();
-    QCOMPARE(session->projectPath(), original);
+    QCOMPARE(window->document()->filePath(), original);
     QVERIFY(window->designWorkspace()->isModified());
     QVERIFY(window->isWindowModified());
+    QVERIFY2(window->windowTitle().startsWith(QStringLiteral("design.trimlab")), qPrintable(window->windowTitle()));
     QVERIFY(!window->recentFiles().contains(recovery + QStringLiteral("/session-1.trimlab")));
     // The crashed copy is gone; this window's own autosave holds the work now.
     QVERIFY(!QFile::exists(recovery + QStringLiteral("/session-1.trimlab")));
@@ -167,6 +177,22 @@ void TestSessionRecovery::recoverBringsBackTheHistoryModified()
     const QString own = window->designWorkspace()->sessionRecovery()->autosave().recoveryProjectPath();
     QVERIFY(QFile::exists(own));
     QCOMPARE(timeline::readProject(own.toStdString()).timeline, expected);
+}
+
+// Work that was never saved comes back under no name of the recovery folder's files.
+void TestSessionRecovery::anUntitledRecoveryShowsNoInternalName()
+{
+    const QString recovery = path(QStringLiteral("untitled-recovery"));
+    writeCrashedSession(recovery, QStringLiteral("session-5"), QString());
+    auto window = showWindow(QStringLiteral("untitled"), recovery);
+    QMessageBox* box = waitForOffer(*window);
+    QVERIFY(box);
+    QVERIFY(waitForDefaultScene(*window));
+    QVERIFY(recoverAndWait(*window, box));
+    QVERIFY(window->isWindowModified());
+    QVERIFY2(!window->windowTitle().contains(QStringLiteral("session-")), qPrintable(window->windowTitle()));
+    QVERIFY2(window->windowTitle().startsWith(QStringLiteral("Untitled")), qPrintable(window->windowTitle()));
+    window->designWorkspace()->sessionRecovery()->autosave().clear();
 }
 
 void TestSessionRecovery::discardDeletesTheAutosave()

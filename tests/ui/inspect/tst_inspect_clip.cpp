@@ -1,9 +1,12 @@
 // Clipping planes, caps and highlights as a user sets them in the Render panel: "None",
 // "Box" and two planes of the box moved inward by typing their offsets, capping with a
 // pattern, collision and coplanar highlighting with their counts in the status bar, and
-// the persisted choices in a new window. Every frame is compared with the exact CPU
-// reference for its own scene, camera, size and settings.
+// the choices saved with the scene's project (not carried into a new window's demo).
+// Every frame is compared with the exact CPU reference for its own scene, camera, size
+// and settings.
 #include "ui/render_panel/render_workspace.h"
+#include "ui/design/design_workspace.h"
+#include "ui/design/project_files.h"
 #include "inspect_window.h"
 #include "test_paths.h"
 
@@ -83,8 +86,7 @@ void TestInspectClip::boxShrunkThroughTheEditorMatchesTheReference()
     QTest::mouseClick(revealed(box), Qt::LeftButton);
     QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return enabledPlanes(f) == 6; }));
     for (int i = 0; i < kMaxClipPlanes; ++i)
-        QVERIFY(child<QCheckBox>(window.get(), qPrintable(QStringLiteral("clipPlaneEnabled%1").arg(i)))
-                    ->isChecked());
+        QVERIFY(child<QCheckBox>(window.get(), qPrintable(QStringLiteral("clipPlaneEnabled%1").arg(i)))->isChecked());
     QVERIFY2(changedPixels(window->viewport()->readTrimImage(), whole) < 20, "the box must not cut the scene");
     auto failure = inspectDisagreement(*window, QStringLiteral("box-whole"));
     QVERIFY2(!failure, failure ? qPrintable(*failure) : "");
@@ -151,6 +153,7 @@ void TestInspectClip::highlightCountsReachTheStatusBar()
 void TestInspectClip::inspectionChoicesPersist()
 {
     const QString ini = m_dir.filePath(QStringLiteral("persist.ini"));
+    const QString project = m_dir.filePath(QStringLiteral("persist.trimlab"));
     {
         auto window = showInspectWindow(ini, kTrio);
         QTest::mouseClick(revealed(child<QPushButton>(window.get(), "clipBoxButton")), Qt::LeftButton);
@@ -160,9 +163,21 @@ void TestInspectClip::inspectionChoicesPersist()
         typeValue(child<QDoubleSpinBox>(window.get(), "capSpacingSpin"), QStringLiteral("7.5"));
         clickButton(child<QCheckBox>(window.get(), "highlightCoplanarCheckBox"));
         QCOMPARE(window->viewport()->trimSettings().cap.pattern, CapPattern::Striped);
+        QString error;
+        QVERIFY2(window->designWorkspace()->projectFiles()->saveTo(project, &error), qPrintable(error));
         window->close();
     }
+    // They belong to the scene saved: a new window opening the demo starts without them,
+    // and the project brings them back.
     auto window = showInspectWindow(ini, kTrio);
+    const RenderChoices fresh = window->renderWorkspace()->panel()->renderChoices();
+    QVERIFY(!fresh.trim.cap.enabled);
+    QCOMPARE(fresh.trim.clipSet().enabledCount(), 0);
+    QVERIFY(!fresh.trim.highlight.coplanar);
+    window->openSource(project);
+    QVERIFY(waitForFrame(*window, [&](const ViewportFrame& f) {
+        return window->scene()->source == project.toStdString() && f.scene.get() == &window->scene()->scene;
+    }));
     const RenderChoices restored = window->renderWorkspace()->panel()->renderChoices();
     QVERIFY(restored.trim.cap.enabled);
     QCOMPARE(restored.trim.cap.pattern, CapPattern::Striped);

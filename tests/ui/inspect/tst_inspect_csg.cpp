@@ -109,7 +109,7 @@ void TestInspectCsg::builtAndTypedExpressionsMatchTheReference()
 
     QLineEdit* edit = panel->csgField()->lineEdit();
     typeExpression(edit, QStringLiteral("0 | (1 &"));
-    QVERIFY(!panel->csgField()->errorText().isEmpty()); // the parser's message, shown at once
+    QVERIFY(!panel->csgField()->errorText().isEmpty());                       // the parser's message, shown at once
     QCOMPARE(window->viewport()->trimSettings().csg.expression, parsed("0")); // the last valid text: "0"
     QTest::keyClicks(edit, QStringLiteral(" 7)"));
     QVERIFY2(panel->csgField()->errorText().contains(QStringLiteral("7")), qPrintable(panel->csgField()->errorText()));
@@ -159,7 +159,8 @@ void TestInspectCsg::addObjectGrowsTheSceneForCsg()
     QCOMPARE(window->scene()->scene.objects.size(), std::size_t(3));
     QCOMPARE(window->scene()->source, first.toStdString()); // still the scene opened
     QCOMPARE(window->inspectWorkspace()->panel()->objectTable()->rowCount(), 3);
-    QCOMPARE(window->inspectWorkspace()->panel()->objectTable()->item(2, ScenePanel::NameColumn)->text(), QStringLiteral("third.obj"));
+    QCOMPARE(window->inspectWorkspace()->panel()->objectTable()->item(2, ScenePanel::NameColumn)->text(),
+             QStringLiteral("third.obj"));
     QCOMPARE(window->inspectWorkspace()->panel()->currentObject(), 2);
     QVERIFY(window->inspectWorkspace()->panel()->transformForm()->isEnabled());
     const Camera after = window->viewport()->camera();

@@ -66,8 +66,8 @@ void TestInspectScene::transformEditsReplaceTheSceneAndUndo()
     inspect.editTransform(1, transform);
     QCOMPARE(moved.count(), 1);
     QCOMPARE(moved.front().front().toInt(), 1);
-    QVERIFY(inspect.scene() != original);                                    // a new value ...
-    QCOMPARE(original->scene.objects[1].modelMatrix, glm::dmat4(1.0));       // ... the old one untouched
+    QVERIFY(inspect.scene() != original);                              // a new value ...
+    QCOMPARE(original->scene.objects[1].modelMatrix, glm::dmat4(1.0)); // ... the old one untouched
     QCOMPARE(inspect.scene()->scene.objects[1].modelMatrix, transform.modelMatrix());
     QCOMPARE(inspect.scene()->scene.objects[1].mesh.triangles, original->scene.objects[1].mesh.triangles);
 

@@ -3,6 +3,7 @@
 // a scene project, and reopened in another window: the same objects, meshes, placements,
 // CSG and rules, the frame agreeing with the exact CPU reference, and Save Project
 // writing the same scene back to the file it came from.
+#include "ui/common/document.h"
 #include "ui/inspect/inspect_workspace.h"
 #include "inspect_window.h"
 #include "message_box_closer.h"
@@ -117,7 +118,7 @@ void TestInspectSceneProject::threeObjectsSaveAndReopenIdentical()
 
 // Objects put together exist nowhere else until saved: opening another file asks first
 // (Cancel keeps the assembly, Discard lets the file open); once saved, nothing is asked;
-// a moved object makes it unsaved again.
+// a moved object makes it unsaved again, and so does moving the one object of a mesh.
 void TestInspectSceneProject::anUnsavedAssemblyAsksBeforeItIsReplaced()
 {
     const QString first = m_dir.filePath(QStringLiteral("a.obj"));
@@ -131,7 +132,7 @@ void TestInspectSceneProject::anUnsavedAssemblyAsksBeforeItIsReplaced()
     window->inspectWorkspace()->addObject(second);
     QVERIFY(added.wait(kInspectWaitMs));
     InspectScene* scene = window->inspectWorkspace()->scene();
-    QVERIFY(scene->isModified());
+    QVERIFY(window->document()->isModified());
 
     QSignalSpy loaded(window.get(), &MainWindow::sceneLoaded);
     {
@@ -146,11 +147,11 @@ void TestInspectSceneProject::anUnsavedAssemblyAsksBeforeItIsReplaced()
     QString error;
     QVERIFY2(window->designWorkspace()->projectFiles()->saveTo(m_dir.filePath(QStringLiteral("ab.trimlab")), &error),
              qPrintable(error));
-    QVERIFY(!scene->isModified());
+    QVERIFY(!window->document()->isModified());
     ObjectTransform moved = scene->transform(1).value();
     moved.translation.x += 0.25;
     scene->editTransform(1, moved);
-    QVERIFY(scene->isModified());
+    QVERIFY(window->document()->isModified());
     {
         MessageBoxAnswerer discard(QMessageBox::Discard);
         window->openSource(other);
@@ -159,14 +160,16 @@ void TestInspectSceneProject::anUnsavedAssemblyAsksBeforeItIsReplaced()
     QVERIFY(loaded.count() > 0 || loaded.wait(kInspectWaitMs));
     QCOMPARE(scene->objectCount(), 1);
 
-    // One mesh moved is not an assembly: nothing is asked.
+    // One mesh moved is a change of its document like any other: it is asked about too.
     ObjectTransform nudged = scene->transform(0).value();
     nudged.translation.y += 0.1;
     scene->editTransform(0, nudged);
-    MessageBoxAnswerer none(QMessageBox::Cancel);
+    QVERIFY(window->document()->isModified());
+    MessageBoxAnswerer discardMove(QMessageBox::Discard);
     window->openSource(first);
     QVERIFY(loaded.wait(kInspectWaitMs));
-    QVERIFY(none.seen().isEmpty());
+    QCOMPARE(discardMove.seen().size(), 1);
+    QVERIFY(!window->document()->isModified());
 }
 
 QTEST_MAIN(TestInspectSceneProject)

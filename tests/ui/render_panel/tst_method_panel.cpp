@@ -144,13 +144,15 @@ void TestMethodPanel::parameterControlsFollowTheMethod()
         QCOMPARE(window->viewport()->method(), info.kind);
         QCOMPARE(k->isEnabled(), info.usesK);
         QCOMPARE(shared->isEnabled(), info.usesSharedCounters);
-        QVERIFY2(combo->itemData(combo->currentIndex(), Qt::ToolTipRole).toString().contains(
-                     info.bounded ? QStringLiteral("Capacity-bounded") : QStringLiteral("Unbounded")),
+        QVERIFY2(combo->itemData(combo->currentIndex(), Qt::ToolTipRole)
+                     .toString()
+                     .contains(info.bounded ? QStringLiteral("Capacity-bounded") : QStringLiteral("Unbounded")),
                  info.id.data());
         const MemoryEstimate estimate = window->viewport()->memoryEstimate();
         QVERIFY(estimate.available);
-        QVERIFY2(memory->text().contains(estimate.bytes ? QStringLiteral("MB") : QStringLiteral("depends on the scene")),
-                 qPrintable(memory->text()));
+        QVERIFY2(
+            memory->text().contains(estimate.bytes ? QStringLiteral("MB") : QStringLiteral("depends on the scene")),
+            qPrintable(memory->text()));
     }
 }
 
@@ -175,7 +177,8 @@ void TestMethodPanel::overflowAdviceRaisesKOrSwitches()
     QVERIFY(warning->isVisibleTo(window.get()));
     QVERIFY(!statusLabel->styleSheet().isEmpty()); // highlighted in the status bar
     QVERIFY(raise->isVisibleTo(window.get()));
-    QCOMPARE(raise->text(), QStringLiteral("Raise k to %1").arg(*window->renderWorkspace()->statsPanel()->advice().raiseKTo));
+    QCOMPARE(raise->text(),
+             QStringLiteral("Raise k to %1").arg(*window->renderWorkspace()->statsPanel()->advice().raiseKTo));
     QTest::qWait(100); // let the docks' layouts settle before the screenshot
     const QString shot = QString::fromStdString((test::outputDir() / "overflow-advice.png").string());
     QVERIFY(window->grab().save(shot));
@@ -251,8 +254,8 @@ void TestMethodPanel::methodChoicesRoundTrip()
 {
     const QString settings = QStringLiteral("round-trip");
     const std::vector<render::MethodInfo>& methods = render::fragmentMethods();
-    const auto withS = std::find_if(methods.begin(), methods.end(),
-                                    [](const render::MethodInfo& m) { return m.usesSharedCounters; });
+    const auto withS =
+        std::find_if(methods.begin(), methods.end(), [](const render::MethodInfo& m) { return m.usesSharedCounters; });
     {
         auto window = showWindow(settings);
         auto* combo = child<QComboBox>(window.get(), "methodComboBox");
@@ -390,12 +393,14 @@ void TestMethodPanel::memoryBudgetFallsBackToLeanerMethods()
     auto* budget = child<QSpinBox>(window.get(), "memoryBudgetSpinBox");
     QVERIFY(budget);
     ViewportWidget* viewport = window->viewport();
-    QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return f.stats.method == render::FragmentMethodKind::KPlusArray; }));
+    QVERIFY(waitForFrame(
+        *window, [](const ViewportFrame& f) { return f.stats.method == render::FragmentMethodKind::KPlusArray; }));
     const std::size_t kplusBytes = *viewport->memoryEstimate().bytes;
     const int megabytes = int(kplusBytes / (2 * 1024 * 1024)); // half of what it needs
     QVERIFY(megabytes >= 2);
     budget->setValue(megabytes);
-    QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return f.stats.method == render::FragmentMethodKind::SBuffer; }));
+    QVERIFY(waitForFrame(*window,
+                         [](const ViewportFrame& f) { return f.stats.method == render::FragmentMethodKind::SBuffer; }));
     QCOMPARE(viewport->method(), render::FragmentMethodKind::KPlusArray); // the choice is kept
     QCOMPARE(viewport->effectiveMethod(), render::FragmentMethodKind::SBuffer);
     // The status bar hears of it through a queued signal.
@@ -413,21 +418,22 @@ void TestMethodPanel::memoryBudgetFallsBackToLeanerMethods()
     viewport->setFixedSize(1024, 768);
     budget->setValue(1);
     QVERIFY(QTest::qWaitFor([&] { return viewport->showsCpuStill() && !viewport->cpuStillImage().isNull(); }, kWaitMs));
-    QVERIFY2(QTest::qWaitFor(
-                 [&] { return window->statusBar()->currentMessage().contains(QStringLiteral("CPU reference")); },
-                 kWaitMs),
-             qPrintable(window->statusBar()->currentMessage()));
+    QVERIFY2(
+        QTest::qWaitFor([&] { return window->statusBar()->currentMessage().contains(QStringLiteral("CPU reference")); },
+                        kWaitMs),
+        qPrintable(window->statusBar()->currentMessage()));
     const QImage still = viewport->cpuStillImage().convertToFormat(QImage::Format_RGBA8888);
     const QSize size = viewport->framePixelSize();
     const ReferenceRenderer reference(window->scene()->scene);
-    const ReferenceResult expected =
-        reference.render(viewport->camera(), size.width(), size.height(), window->renderWorkspace()->panel()->renderChoices().trim);
+    const ReferenceResult expected = reference.render(viewport->camera(), size.width(), size.height(),
+                                                      window->renderWorkspace()->panel()->renderChoices().trim);
     QCOMPARE(still.size(), size);
     QVERIFY(still == render::toQImage(expected.color));
     QVERIFY(expected.stats.coveredPixels > std::uint64_t(size.width() * size.height() / 10));
 
     budget->setValue(0);
-    QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return f.stats.method == render::FragmentMethodKind::KPlusArray; }));
+    QVERIFY(waitForFrame(
+        *window, [](const ViewportFrame& f) { return f.stats.method == render::FragmentMethodKind::KPlusArray; }));
     QVERIFY(!viewport->showsCpuStill());
 }
 

@@ -1,5 +1,5 @@
 // The Skeleton panel in the real main window, driven like a user: open a generated closed
-// mesh (a three-armed star, tests/core/skeleton_shapes.h) written to an OBJ file, press
+// mesh (a three-armed star, tests/core/skeleton/skeleton_shapes.h) written to an OBJ file, press
 // Run, and check the rig, the stage views in the viewport, posing with the spin boxes and
 // by dragging a bone in the view, Reset pose, the re-selection that keeps the contraction,
 // Cancel, the refusal of an open mesh, the exports and the settings. Settings go to INI
@@ -12,7 +12,7 @@
 #include "plain_obj.h"
 #include "skeleton_shapes.h"
 
-#include "ui/common/background_task.h"
+#include "ui/common/background_job.h"
 #include "ui/common/heat_map_legend.h"
 #include "ui/window/main_window.h"
 #include "ui/skeleton/skeleton_workspace.h"
@@ -23,6 +23,8 @@
 #include "ui/viewport/widget_projection.h"
 #include "ui/skeleton/skeleton_settings_store.h"
 #include "ui/viewport/viewport_widget.h"
+
+#include "render/shown_content.h"
 
 #include <QtTest>
 
@@ -173,7 +175,7 @@ bool TestSkeletonPanel::openAndWait(MainWindow& window, const QString& path)
 
 bool TestSkeletonPanel::runAndWait(SkeletonPanel* panel)
 {
-    QSignalSpy finished(panel->task(), &BackgroundTask::finished);
+    QSignalSpy finished(panel->task(), &BackgroundJobBase::finished);
     QTest::mouseClick(child<QPushButton>(panel, "runSkeletonButton"), Qt::LeftButton);
     return QTest::qWaitFor([&] { return !finished.isEmpty(); }, kWaitMs);
 }
@@ -209,7 +211,7 @@ void TestSkeletonPanel::projectionFollowsTheCamera()
     const auto up = projectToWidget(camera, size, glm::dvec3(0.0, 0.5, 0.0));
     const auto right = projectToWidget(camera, size, glm::dvec3(0.5, 0.0, 0.0));
     QVERIFY(up && right);
-    QVERIFY(up->y() < 50.0);             // world up is widget up
+    QVERIFY(up->y() < 50.0); // world up is widget up
     QCOMPARE(up->x(), 100.0);
     QVERIFY(right->x() > 100.0);
     QCOMPARE(right->y(), 50.0);
@@ -224,7 +226,7 @@ void TestSkeletonPanel::projectionFollowsTheCamera()
     const std::vector<std::array<int, 2>> bones{{0, 1}, {1, 2}, {2, 3}};
     QCOMPARE(nearestSegment(QPointF(5, 2), points, bones, 3.0), 0);
     QCOMPARE(nearestSegment(QPointF(12, 6), points, bones, 3.0), 1);
-    QCOMPARE(nearestSegment(QPointF(5, 6), points, bones, 3.0), -1); // 4 px from the nearest
+    QCOMPARE(nearestSegment(QPointF(5, 6), points, bones, 3.0), -1);  // 4 px from the nearest
     QCOMPARE(nearestSegment(QPointF(10, 11), points, bones, 3.0), 1); // bone 2 has no tail on screen
     QCOMPARE(distanceToSegment(QPointF(3, 4), QPointF(0, 0), QPointF(0, 0)), 5.0);
 }
@@ -247,13 +249,14 @@ void TestSkeletonPanel::runStagesPoseAndReset()
     QVERIFY(!child<QLabel>(panel, "skeletonErrorLabel")->isVisible());
     auto* times = child<QTableWidget>(panel, "skeletonTimesTable");
     QCOMPARE(times->columnCount(), 6);
-    QVERIFY(times->item(0, 0)->text().toDouble() > 0.0);  // contraction
+    QVERIFY(times->item(0, 0)->text().toDouble() > 0.0);                                   // contraction
     QVERIFY(times->item(0, 5)->text().toDouble() >= times->item(0, 0)->text().toDouble()); // total
     // The evaluator's table shows the result's own numbers; a star has no cycle, and its
     // rig keeps every bone inside.
     auto* quality = child<QTableWidget>(panel, "skeletonQualityTable");
     QCOMPARE(quality->rowCount(), 2);
-    QCOMPARE(quality->item(1, 0)->text(), QStringLiteral("%1 %").arg(100.0 * result->rigQuality.nodesInside, 0, 'f', 1));
+    QCOMPARE(quality->item(1, 0)->text(),
+             QStringLiteral("%1 %").arg(100.0 * result->rigQuality.nodesInside, 0, 'f', 1));
     QCOMPARE(result->rigQuality.nodeCount, int(rig.joints.size()));
     QCOMPARE(quality->item(1, 2)->text(), QStringLiteral("0"));
     QCOMPARE(quality->item(0, 5)->text(), QStringLiteral("0 / 0"));
@@ -265,14 +268,16 @@ void TestSkeletonPanel::runStagesPoseAndReset()
     // Stage views: each changes what the viewport shows.
     auto* view = child<QComboBox>(panel, "skeletonViewComboBox");
     QVERIFY(waitForNewFrame(*window, [&] { viewport->update(); }));
-    QVERIFY(!viewport->showsVertexColors());
+    QCOMPARE(viewport->content()->colorOwner(), render::ContentOwner::None);
+    QCOMPARE(viewport->content()->poseOwner(), render::ContentOwner::Skeleton);
     const QImage posedImage = viewport->readColorImage();
     std::vector<std::vector<std::uint32_t>> seen;
     for (const SkeletonStageView stage : {SkeletonStageView::Contraction, SkeletonStageView::Mapping,
                                           SkeletonStageView::Segmentation, SkeletonStageView::Weights}) {
         QVERIFY(waitForNewFrame(*window, [&] { view->setCurrentIndex(view->findData(int(stage))); }));
         QCOMPARE(panel->view(), stage);
-        QVERIFY(viewport->showsVertexColors());
+        QCOMPARE(viewport->content()->colorOwner(), render::ContentOwner::Skeleton);
+        QVERIFY(*viewport->content()->colors() == panel->displayColors());
         QCOMPARE(panel->displayColors().size(), rest.size());
         QVERIFY(viewport->readColorImage() != posedImage);
         QVERIFY(std::find(seen.begin(), seen.end(), panel->displayColors()) == seen.end());
@@ -293,7 +298,7 @@ void TestSkeletonPanel::runStagesPoseAndReset()
     }();
     QCOMPARE(distinctJointColors, std::size_t(std::set<int>(rig.vertexJoint.begin(), rig.vertexJoint.end()).size()));
     view->setCurrentIndex(view->findData(int(SkeletonStageView::Pose)));
-    QVERIFY(!viewport->showsVertexColors());
+    QCOMPARE(viewport->content()->colorOwner(), render::ContentOwner::None);
 
     // Posing with the spin boxes: a leaf bone (no bone below it) with the most weighted vertices.
     const BoneWeights& weights = result->weights->weights();
@@ -359,10 +364,12 @@ void TestSkeletonPanel::runStagesPoseAndReset()
     // The overlay paints the selected bone in its highlight colour over the GL frame.
     {
         const QImage shot = viewport->grab().toImage().convertToFormat(QImage::Format_RGB32);
-        if (qEnvironmentVariableIsSet("TRIMLAB_TEST_OUTPUT_DIR") && QDir().mkpath(qEnvironmentVariable("TRIMLAB_TEST_OUTPUT_DIR")))
-        {
-            shot.save(QDir(qEnvironmentVariable("TRIMLAB_TEST_OUTPUT_DIR")).filePath(QStringLiteral("skeleton-overlay.png")));
-            viewport->readColorImage().save(QDir(qEnvironmentVariable("TRIMLAB_TEST_OUTPUT_DIR")).filePath(QStringLiteral("skeleton-frame.png")));
+        if (qEnvironmentVariableIsSet("TRIMLAB_TEST_OUTPUT_DIR") &&
+            QDir().mkpath(qEnvironmentVariable("TRIMLAB_TEST_OUTPUT_DIR"))) {
+            shot.save(
+                QDir(qEnvironmentVariable("TRIMLAB_TEST_OUTPUT_DIR")).filePath(QStringLiteral("skeleton-overlay.png")));
+            viewport->readColorImage().save(
+                QDir(qEnvironmentVariable("TRIMLAB_TEST_OUTPUT_DIR")).filePath(QStringLiteral("skeleton-frame.png")));
         }
         const double ratio = shot.devicePixelRatio();
         const QRectF box = QRectF(*head, *tail).normalized().adjusted(-2, -2, 2, 2);
@@ -373,8 +380,8 @@ void TestSkeletonPanel::runStagesPoseAndReset()
                 highlighted += c.red() > 200 && c.green() > 150 && c.green() < 230 && c.blue() < 80 ? 1 : 0;
             }
         const QPoint mid = ((*head + *tail) * 0.5 * ratio).toPoint();
-        qInfo("overlay: ratio %g, shot %dx%d, bone (%.1f,%.1f)-(%.1f,%.1f), mid colour %s, %d highlighted pixels", ratio,
-              shot.width(), shot.height(), head->x(), head->y(), tail->x(), tail->y(),
+        qInfo("overlay: ratio %g, shot %dx%d, bone (%.1f,%.1f)-(%.1f,%.1f), mid colour %s, %d highlighted pixels",
+              ratio, shot.width(), shot.height(), head->x(), head->y(), tail->x(), tail->y(),
               qPrintable(shot.pixelColor(mid).name()), highlighted);
         QVERIFY2(highlighted > 0, "no highlighted bone pixel in the viewport");
     }
@@ -399,7 +406,7 @@ void TestSkeletonPanel::runStagesPoseAndReset()
 
     // Another node count re-selects without contracting again.
     const auto before = panel->result();
-    QSignalSpy finished(panel->task(), &BackgroundTask::finished);
+    QSignalSpy finished(panel->task(), &BackgroundJobBase::finished);
     child<QSpinBox>(panel, "skeletonNodesSpinBox")->setValue(25);
     QVERIFY(QTest::qWaitFor([&] { return !finished.isEmpty(); }, kWaitMs));
     QVERIFY(panel->result() != before);
@@ -453,8 +460,8 @@ void TestSkeletonPanel::cancelDuringRunChangesNothing()
     const std::vector<glm::vec3> shown = panel->shownPositions();
     // A contraction setting changed: Run must contract again, and Cancel stops it.
     child<QCheckBox>(panel, "skeletonRefineCheckBox")->setChecked(false);
-    QSignalSpy canceled(panel->task(), &BackgroundTask::canceled);
-    QSignalSpy finished(panel->task(), &BackgroundTask::finished);
+    QSignalSpy canceled(panel->task(), &BackgroundJobBase::canceled);
+    QSignalSpy finished(panel->task(), &BackgroundJobBase::finished);
     QTest::mouseClick(child<QPushButton>(panel, "runSkeletonButton"), Qt::LeftButton);
     QVERIFY(panel->isRunning());
     QVERIFY(child<QProgressBar>(panel, "skeletonProgressBar")->isVisible());
@@ -545,7 +552,7 @@ void TestSkeletonPanel::settingsRoundTrip()
     QSettings settings(file, QSettings::IniFormat);
     QVERIFY(same(loadSkeletonChoices(settings), choices));
     // Unusable values fall back field by field.
-    settings.setValue(QStringLiteral("skeleton/nodes"), 500);
+    settings.setValue(QStringLiteral("skeleton/nodes"), 20000);
     settings.setValue(QStringLiteral("skeleton/ordering"), QStringLiteral("nonsense"));
     const SkeletonChoices fallback = loadSkeletonChoices(settings);
     QCOMPARE(fallback.extraction.targetNodes, 30);

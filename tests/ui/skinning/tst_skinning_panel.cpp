@@ -7,7 +7,7 @@
 // and the keyboard, cancel a running fit, and export the result as glTF. Settings go to
 // INI files in a temporary folder, never the user's.
 #include "gl_test_context.h"
-#include "held_background_task.h"
+#include "held_background_job.h"
 #include "image_artifacts.h"
 #include "message_box_closer.h"
 #include "named_child.h"
@@ -18,7 +18,7 @@
 
 #include "core/skinning/skinning_error.h"
 #include "core/skinning/skinning_reconstruction.h"
-#include "ui/common/background_task.h"
+#include "ui/common/background_job.h"
 #include "core/image/heat_map_colors.h"
 #include "ui/common/heat_map_legend.h"
 #include "ui/common/loaded_animation.h"
@@ -34,11 +34,17 @@
 #include "core/trim/reference_renderer.h"
 #include "ui/viewport/viewport_widget.h"
 
+#include "render/shown_content.h"
+
 #include <QtTest>
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QListWidget>
@@ -99,8 +105,8 @@ bool samePoses(const std::vector<PosePositions>& a, const std::vector<PosePositi
 bool sameModel(const SkinningModel& a, const SkinningModel& b)
 {
     return a.method == b.method && a.chain == b.chain && a.restPose == b.restPose &&
-           a.restPositions == b.restPositions && a.weights == b.weights && a.affine == b.affine &&
-           a.rigid == b.rigid && a.triangles == b.triangles;
+           a.restPositions == b.restPositions && a.weights == b.weights && a.affine == b.affine && a.rigid == b.rigid &&
+           a.triangles == b.triangles;
 }
 
 } // namespace
@@ -116,6 +122,7 @@ private slots:
     void cancelDuringFitLeavesNoResult();
     void givenBoneCountSegmentsAnew();
     void exportWritesGltfAndReportsTheError();
+    void stepInterpolationExportsStepKeys();
 
 private:
     [[nodiscard]] std::unique_ptr<MainWindow> showWindow(const QString& settingsName);
@@ -128,9 +135,8 @@ private:
     /// A frame rendered now (after every change so far) against the CPU reference of the
     /// scene with object 0 at `positions`: nullopt when they agree (the animation test's
     /// criteria).
-    [[nodiscard]] static std::optional<QString> frameDisagreement(MainWindow& window,
-                                                                  const std::vector<glm::vec3>& positions,
-                                                                  const QString& name);
+    [[nodiscard]] static std::optional<QString>
+    frameDisagreement(MainWindow& window, const std::vector<glm::vec3>& positions, const QString& name);
 
     QTemporaryDir m_dir;
 };
@@ -172,7 +178,7 @@ std::unique_ptr<MainWindow> TestSkinningPanel::segmentedBox(const QString& setti
 
 bool TestSkinningPanel::fitAndWait(SkinningPanel* panel)
 {
-    QSignalSpy finished(panel->fitTask(), &BackgroundTask::finished);
+    QSignalSpy finished(panel->fitTask(), &BackgroundJobBase::finished);
     QTest::mouseClick(child<QPushButton>(panel, "fitSkinningButton"), Qt::LeftButton);
     return QTest::qWaitFor([&] { return !finished.isEmpty(); }, kWaitMs) && panel->session() != nullptr;
 }
@@ -201,7 +207,8 @@ void TestSkinningPanel::fitShowsErrorChartAndLabels()
     SkinningPanel* panel = window->animationWorkspace()->skinning()->panel();
     const VertexLabeling segmentation = *window->animationWorkspace()->segmentationPanel()->shownLabeling();
     QVERIFY(segmentation.count >= 1);
-    QCOMPARE(child<QComboBox>(panel, "skinningBoneSourceComboBox")->currentText(), QStringLiteral("From the segmentation"));
+    QCOMPARE(child<QComboBox>(panel, "skinningBoneSourceComboBox")->currentText(),
+             QStringLiteral("From the segmentation"));
     QVERIFY2(child<QLabel>(panel, "skinningBoneCountLabel")->text().contains(QString::number(segmentation.count)),
              qPrintable(child<QLabel>(panel, "skinningBoneCountLabel")->text()));
     QVERIFY(!child<QPushButton>(panel, "cancelSkinningButton")->isEnabled());
@@ -218,8 +225,8 @@ void TestSkinningPanel::fitShowsErrorChartAndLabels()
     // The core's own numbers: the reconstruction and error of the fitted model.
     const std::vector<PosePositions> reconstructed = reconstructPoses(fit.result.model);
     QVERIFY(reconstructed == panel->session()->approximation());
-    const SkinningError measured =
-        measureSkinningError(animationPositions(*window->animation()->animation), reconstructed, fit.result.model.restPose);
+    const SkinningError measured = measureSkinningError(animationPositions(*window->animation()->animation),
+                                                        reconstructed, fit.result.model.restPose);
     QCOMPARE(measured.eRms, fit.result.error.eRms);
 
     const QList<QPointF> points = panel->errorChart()->points();
@@ -268,7 +275,8 @@ void TestSkinningPanel::approximationAndHeatMapReachTheViewport()
     QVERIFY(panel->shownPose(last) == approximate);
     if (const auto problem = frameDisagreement(*window, approximate, QStringLiteral("skinning-approximation")))
         QFAIL(qPrintable(*problem));
-    QVERIFY(window->viewport()->poseSkinnedOnGpu()); // the frame above: the GPU's skinning
+    QCOMPARE(window->viewport()->poseEvaluation(), render::PoseEvaluation::GpuSkinning); // the frame above
+    QCOMPARE(window->viewport()->content()->poseOwner(), render::ContentOwner::Skinning);
 
     QVERIFY(waitForNewFrame(*window, [&] { chosen = chooseByKeys(view, QStringLiteral("Error heat map")); }));
     QVERIFY(chosen);
@@ -278,7 +286,8 @@ void TestSkinningPanel::approximationAndHeatMapReachTheViewport()
     const double largest = *std::max_element(perVertex.begin(), perVertex.end());
     QCOMPARE(panel->displayColors(), heatMapRgba8(perVertex, largest));
     QVERIFY(panel->displayColors() != segmentColors);
-    QVERIFY(window->viewport()->showsVertexColors());
+    QCOMPARE(window->viewport()->content()->colorOwner(), render::ContentOwner::Skinning);
+    QVERIFY(*window->viewport()->content()->colors() == panel->displayColors());
     auto* legend = child<HeatMapLegend>(panel, "heatMapLegend");
     QVERIFY(legend->isVisible());
     QCOMPARE(legend->maxValue(), largest);
@@ -289,11 +298,14 @@ void TestSkinningPanel::approximationAndHeatMapReachTheViewport()
     QVERIFY(panel->displayColors().empty());
     QVERIFY(!legend->isVisible());
     QVERIFY(!panel->shownPose(last));
-    QVERIFY(window->viewport()->showsVertexColors()); // the segment colors again
+    QCOMPARE(window->viewport()->content()->colorOwner(),
+             render::ContentOwner::Segmentation); // the segment colors again
+    QVERIFY(*window->viewport()->content()->colors() == segmentColors);
     if (const auto problem = frameDisagreement(*window, window->animation()->animation->poses[std::size_t(last)],
                                                QStringLiteral("skinning-original")))
         QFAIL(qPrintable(*problem));
-    QVERIFY(!window->viewport()->poseSkinnedOnGpu());
+    QCOMPARE(window->viewport()->poseEvaluation(), render::PoseEvaluation::Uploaded);
+    QCOMPARE(window->viewport()->content()->poseOwner(), render::ContentOwner::AnimationPlayback);
 }
 
 // Moving a bone at pose 1 changes poses 1 and 2, leaves pose 0 bit-identical, and equals
@@ -459,7 +471,7 @@ void TestSkinningPanel::cancelDuringFitLeavesNoResult()
     auto window = segmentedBox(QStringLiteral("cancel"));
     QVERIFY(window);
     SkinningPanel* panel = window->animationWorkspace()->skinning()->panel();
-    test::HeldBackgroundTask held(panel->fitTask());
+    test::HeldBackgroundJob held(panel->fitTask());
     auto* fit = child<QPushButton>(panel, "fitSkinningButton");
     auto* cancel = child<QPushButton>(panel, "cancelSkinningButton");
     QTest::mouseClick(fit, Qt::LeftButton);
@@ -506,7 +518,8 @@ void TestSkinningPanel::givenBoneCountSegmentsAnew()
     QCOMPARE(panel->choices().fitOptions().decomposition.maxInfluences, std::size_t(6));
     QVERIFY(chooseByKeys(child<QComboBox>(panel, "skinningMethodComboBox"), QStringLiteral("DQS (rigid bones)")));
     QVERIFY(child<QComboBox>(panel, "skinningChainComboBox")->isEnabled());
-    QVERIFY(!influences->isEnabled()); // the thesis's DQS fit keeps the segmentation's weights
+    QVERIFY(influences->isEnabled()); // every fit keeps the limit
+    QCOMPARE(panel->choices().fitOptions().decomposition.maxInfluences, std::size_t(6));
     const SkinningChoices chosen = panel->choices();
     QVERIFY(!chosen.fitExported);
     QCOMPARE(chosen.boneSource, BoneSource::GivenCount);
@@ -521,7 +534,8 @@ void TestSkinningPanel::givenBoneCountSegmentsAnew()
     QVERIFY(session->fit().result.times.weightCorrectionMs > 0.0);
     QVERIFY(session->fit().result.times.vertexCorrectionMs > 0.0);
     const QString times = child<QLabel>(panel, "skinningTimesLabel")->text();
-    QVERIFY2(times.contains(QStringLiteral("weight corrections")) && times.contains(QStringLiteral("vertex corrections")),
+    QVERIFY2(times.contains(QStringLiteral("weight corrections")) &&
+                 times.contains(QStringLiteral("vertex corrections")),
              qPrintable(times));
     QCOMPARE(child<QListWidget>(panel, "skinningBoneList")->count(), 3);
 
@@ -558,6 +572,38 @@ void TestSkinningPanel::exportWritesGltfAndReportsTheError()
     const QString shown = closer.seen().front();
     QVERIFY2(shown.contains(path) && shown.contains(SkinningPanel::formatERms(eRms)), qPrintable(shown));
     QVERIFY(button->isEnabled());
+}
+
+// The export's keyframes, as `trimlab skin --interpolation`: Step writes STEP samplers only;
+// morph targets have none to choose.
+void TestSkinningPanel::stepInterpolationExportsStepKeys()
+{
+    auto window = segmentedBox(QStringLiteral("step"));
+    QVERIFY(window);
+    SkinningPanel* panel = window->animationWorkspace()->skinning()->panel();
+    QVERIFY(fitAndWait(panel));
+    auto* interpolation = child<QComboBox>(panel, "skinningInterpolationComboBox");
+    QVERIFY(chooseByKeys(interpolation, QStringLiteral("Step")));
+    MessageBoxCloser closer;
+    QSignalSpy finished(panel, &SkinningPanel::exportFinished);
+    const QString path = m_dir.filePath(QStringLiteral("box-step.gltf"));
+    panel->exportGltf(path, 24.0);
+    QVERIFY(QTest::qWaitFor([&] { return !finished.isEmpty(); }, kWaitMs));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonArray animations = QJsonDocument::fromJson(file.readAll()).object().value("animations").toArray();
+    QVERIFY(!animations.isEmpty());
+    int samplers = 0;
+    for (const QJsonValue& animation : animations)
+        for (const QJsonValue& sampler : animation.toObject().value("samplers").toArray()) {
+            QCOMPARE(sampler.toObject().value("interpolation").toString(), QStringLiteral("STEP"));
+            ++samplers;
+        }
+    QVERIFY(samplers > 0);
+    auto* morph = child<QCheckBox>(panel, "skinningMorphTargetsCheckBox");
+    QVERIFY(morph->isEnabled() && !morph->isChecked());
+    morph->click(); // the panel may be scrolled so that a mouse click misses it
+    QVERIFY(!interpolation->isEnabled());
 }
 
 QTEST_MAIN(TestSkinningPanel)

@@ -21,6 +21,8 @@
 #include "ui/surface/surface_panel.h"
 #include "ui/viewport/viewport_widget.h"
 
+#include "render/shown_content.h"
+
 #include "core/catalog/fig8_13_history.h"
 #include "core/catalog/scene_source.h"
 #include "core/catalog/surface_scenes.h"
@@ -69,8 +71,8 @@ int coveredPixels(const QImage& image)
         for (int x = 0; x < image.width(); ++x) {
             const QColor c = image.pixelColor(x, y);
             count += std::abs(c.red() - background.red()) + std::abs(c.green() - background.green()) +
-                             std::abs(c.blue() - background.blue()) >
-                         60
+                                 std::abs(c.blue() - background.blue()) >
+                             60
                          ? 1
                          : 0;
         }
@@ -218,9 +220,14 @@ void TestSurfaceEditing::createNurbsSphereThroughTheMenu()
 void TestSurfaceEditing::everyCreateActionStartsASurfaceSession()
 {
     auto window = showWindow(QStringLiteral("every"));
-    const char* names[] = {"createNurbsSphereAction", "createNurbsTorusAction", "createNurbsTubeAction",
-                           "createNurbsPatchAction", "createSubdivision_cubeAction", "createSubdivision_torusAction",
-                           "createSubdivision_t-shapeAction", "createSubdivision_tetrahedronAction",
+    const char* names[] = {"createNurbsSphereAction",
+                           "createNurbsTorusAction",
+                           "createNurbsTubeAction",
+                           "createNurbsPatchAction",
+                           "createSubdivision_cubeAction",
+                           "createSubdivision_torusAction",
+                           "createSubdivision_t-shapeAction",
+                           "createSubdivision_tetrahedronAction",
                            "createSubdivision_octahedronAction"};
     for (const char* name : names) {
         QVERIFY2(create(*window, name), name);
@@ -267,9 +274,12 @@ void TestSurfaceEditing::historyDemosOpenWithTheirHistory()
             item = action->text() == QLatin1String(name) ? action : item;
         QVERIFY2(item, name);
         item->trigger();
-        QVERIFY2(QTest::qWaitFor([&] { return window->scene() && window->scene()->source == source.toStdString() &&
-                                               window->viewport()->lastFrame().has_value(); },
-                                 kWaitMs),
+        QVERIFY2(QTest::qWaitFor(
+                     [&] {
+                         return window->scene() && window->scene()->source == source.toStdString() &&
+                                window->viewport()->lastFrame().has_value();
+                     },
+                     kWaitMs),
                  name);
         const DesignSession* session = window->designWorkspace()->session();
         QVERIFY2(session && session->surface(), name);
@@ -295,11 +305,13 @@ void TestSurfaceEditing::fitFramesTheControlNet()
     ViewportWidget* viewport = window->viewport();
     viewport->setFocus();
     QTest::keyClick(viewport, Qt::Key_F);
-    const std::vector<std::optional<QPointF>> points = window->designWorkspace()->controlNetOverlay()->projectedPoints();
+    const std::vector<std::optional<QPointF>> points =
+        window->designWorkspace()->controlNetOverlay()->projectedPoints();
     QVERIFY(!points.empty());
     const QRectF view(QPointF(0.0, 0.0), QSizeF(viewport->size()));
     for (std::size_t i = 0; i < points.size(); ++i)
-        QVERIFY2(points[i] && view.contains(*points[i]), qPrintable(QStringLiteral("control point %1 is out of view").arg(i)));
+        QVERIFY2(points[i] && view.contains(*points[i]),
+                 qPrintable(QStringLiteral("control point %1 is out of view").arg(i)));
 }
 
 // Ctrl + drag from empty space draws a box: the points inside it join the selection, the
@@ -368,8 +380,7 @@ void TestSurfaceEditing::pickShiftPickDragUndoRedo()
         QTest::mouseMove(viewport, firstAt + QPoint(4 * i, -3 * i));
     QVERIFY(tool->isDragging());
     QVERIFY(tool->lastUpdateMilliseconds() > 0.0);
-    qInfo("drag update (evaluate the moved supports, hand the pose over): %.3f ms",
-          tool->lastUpdateMilliseconds());
+    qInfo("drag update (evaluate the moved supports, hand the pose over): %.3f ms", tool->lastUpdateMilliseconds());
     QTest::mouseRelease(viewport, Qt::LeftButton, {}, firstAt + QPoint(20, -15));
     QCOMPARE(session->timeline().frameCount(), 2);
     QCOMPARE(session->undoStack()->count(), 1);
@@ -523,7 +534,8 @@ void TestSurfaceEditing::alongNormalEditsAndDynamicRules()
     QVERIFY(create(*window, "createNurbsSphereAction"));
     DesignSession* session = window->designWorkspace()->session();
     ViewportWidget* viewport = window->viewport();
-    const std::optional<std::uint32_t> point = clickCentralPoint(viewport, *window->designWorkspace()->controlNetOverlay());
+    const std::optional<std::uint32_t> point =
+        clickCentralPoint(viewport, *window->designWorkspace()->controlNetOverlay());
     QVERIFY(point);
     const glm::dvec3 start = session->timeline().currentControlPoints()[*point];
     const glm::dvec3 normal = session->surface()->controlPointNormal(*point);
@@ -576,7 +588,9 @@ void TestSurfaceEditing::alongNormalEditsAndDynamicRules()
     QTest::mousePress(viewport, Qt::LeftButton, {}, from);
     for (int i = 1; i <= 3; ++i)
         QTest::mouseMove(viewport, from + QPoint(-5 * i, 0));
-    QVERIFY(viewport->dynamicShownLevel() != nullptr);
+    QVERIFY(viewport->content()->chain() != nullptr);
+    QCOMPARE(viewport->content()->chainOwner(), render::ContentOwner::DesignHistory);
+    QCOMPARE(viewport->content()->poseOwner(), render::ContentOwner::DesignHistory); // the preview
     QTest::mouseRelease(viewport, Qt::LeftButton, {}, from + QPoint(-15, 0));
     QCOMPARE(session->timeline().frameCount(), 5);
     QCOMPARE(session->timeline().setOfFrame(4), 2);

@@ -96,8 +96,7 @@ QString TestGuiBrokenFiles::failureOf(MainWindow& window, const std::function<vo
     QSignalSpy loaded(&window, &MainWindow::sceneLoaded);
     QSignalSpy animation(&window, &MainWindow::animationLoaded);
     open();
-    if (!QTest::qWaitFor([&] { return !failed.isEmpty() || !loaded.isEmpty() || !animation.isEmpty(); },
-                         test::kWaitMs))
+    if (!QTest::qWaitFor([&] { return !failed.isEmpty() || !loaded.isEmpty() || !animation.isEmpty(); }, test::kWaitMs))
         return {};
     return failed.isEmpty() ? QString() : failed.front().at(1).toString();
 }
@@ -121,8 +120,8 @@ void TestGuiBrokenFiles::everyBrokenFileReportsItsErrorAndChangesNothing()
 
     test::MessageBoxCloser closer; // the error dialogs, as a user pressing Return
     auto window = test::showDesignWindow(m_dir.filePath(QStringLiteral("broken.ini")), kViewportSize);
-    QVERIFY(QTest::qWaitFor([&] { return !window->isLoading() && window->designWorkspace()->session(); },
-                            test::kWaitMs));
+    QVERIFY(
+        QTest::qWaitFor([&] { return !window->isLoading() && window->designWorkspace()->session(); }, test::kWaitMs));
     const std::string shownSource = window->scene()->source;
     const DesignSession* shownSession = window->designWorkspace()->session();
     const timeline::Timeline shownHistory = shownSession->timeline();

@@ -93,7 +93,8 @@ private slots:
 
 private:
     [[nodiscard]] QString path(const QString& name) const { return m_dir.filePath(name); }
-    [[nodiscard]] std::unique_ptr<MainWindow> showWindow(const QString& settingsName, QSize viewportSize = kViewportSize);
+    [[nodiscard]] std::unique_ptr<MainWindow> showWindow(const QString& settingsName,
+                                                         QSize viewportSize = kViewportSize);
     [[nodiscard]] bool waitForScene(MainWindow& window, const QString& source);
     [[nodiscard]] static bool waitForFrame(MainWindow& window);
 
@@ -167,10 +168,12 @@ void TestMainWindow::ruleChangeRerendersAndMatchesReference()
     QVERIFY(rule);
     QTest::keyClick(rule, Qt::Key_Home); // alternating border → parity
     QCOMPARE(rule->currentData().toString(), QStringLiteral("parity"));
-    QVERIFY(QTest::qWaitFor([&] {
-        const auto& frame = window->viewport()->lastFrame();
-        return frame && frame->settings.rule == StaticRule::Parity;
-    }, kWaitMs));
+    QVERIFY(QTest::qWaitFor(
+        [&] {
+            const auto& frame = window->viewport()->lastFrame();
+            return frame && frame->settings.rule == StaticRule::Parity;
+        },
+        kWaitMs));
     const QImage after = window->viewport()->grabFramebuffer();
     QCOMPARE(after.size(), before.size());
     int changed = 0;
@@ -187,9 +190,9 @@ void TestMainWindow::ruleChangeRerendersAndMatchesReference()
     const test::TrimComparison comparison = test::compareTrimImages(actual, expected.trim, expected.diagnostics);
     qInfo("%s", qPrintable(comparison.summary()));
     if (comparison.agreement() < 0.999 || comparison.excludedFraction() > 0.05) {
-        const QString artifacts = test::writeComparisonArtifacts(
-            QStringLiteral("rule-change"), test::trimImageToPicture(actual), test::trimImageToPicture(expected.trim),
-            comparison.disagreementMask);
+        const QString artifacts =
+            test::writeComparisonArtifacts(QStringLiteral("rule-change"), test::trimImageToPicture(actual),
+                                           test::trimImageToPicture(expected.trim), comparison.disagreementMask);
         QFAIL(qPrintable(comparison.summary() + QStringLiteral("; ") + artifacts));
     }
     QVERIFY(comparison.coveredPixels > kViewportSize.width() * kViewportSize.height() / 10);
@@ -248,10 +251,12 @@ void TestMainWindow::openSurfaceDisablesTrimControls()
     QVERIFY(waitForScene(*window, m_pushedSphereObj));
     QVERIFY(trim->isEnabled() && rule->isEnabled());
     QVERIFY(!reason->isVisible());
-    QVERIFY(QTest::qWaitFor([&] {
-        const auto& frame = window->viewport()->lastFrame();
-        return frame && frame->settings.trimEnabled;
-    }, kWaitMs));
+    QVERIFY(QTest::qWaitFor(
+        [&] {
+            const auto& frame = window->viewport()->lastFrame();
+            return frame && frame->settings.trimEnabled;
+        },
+        kWaitMs));
 }
 
 // Rule, k, trim and clip plane edited with keyboard and mouse persist into a new window.
@@ -311,15 +316,17 @@ void TestMainWindow::thresholdRulePersists()
         QTest::keyClick(threshold, Qt::Key_A, Qt::ControlModifier);
         QTest::keyClicks(threshold, QStringLiteral("2"));
         QTest::keyClick(threshold, Qt::Key_Return);
-        QVERIFY(QTest::qWaitFor([&] {
-            const auto& frame = window->viewport()->lastFrame();
-            return frame && frame->settings.rule == StaticRule::absAtLeast(2);
-        }, kWaitMs));
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                const auto& frame = window->viewport()->lastFrame();
+                return frame && frame->settings.rule == StaticRule::absAtLeast(2);
+            },
+            kWaitMs));
         const ViewportFrame frame = *window->viewport()->lastFrame();
         const TrimImage actual = window->viewport()->readTrimImage();
-        const ReferenceResult expected = ReferenceRenderer(window->scene()->scene)
-                                             .render(frame.camera, frame.pixelSize.width(),
-                                                     frame.pixelSize.height(), frame.settings);
+        const ReferenceResult expected =
+            ReferenceRenderer(window->scene()->scene)
+                .render(frame.camera, frame.pixelSize.width(), frame.pixelSize.height(), frame.settings);
         const test::TrimComparison comparison = test::compareTrimImages(actual, expected.trim, expected.diagnostics);
         qInfo("%s", qPrintable(comparison.summary()));
         QVERIFY2(comparison.agreement() >= 0.999, qPrintable(comparison.summary()));
@@ -449,8 +456,8 @@ bool sameCamera(const Camera& a, const Camera& b)
 
 void sendWheel(QWidget* widget, QPoint position, int angleDelta, Qt::KeyboardModifiers modifiers = {})
 {
-    QWheelEvent wheel(position, widget->mapToGlobal(position), QPoint(), QPoint(0, angleDelta), Qt::NoButton,
-                      modifiers, Qt::NoScrollPhase, false);
+    QWheelEvent wheel(position, widget->mapToGlobal(position), QPoint(), QPoint(0, angleDelta), Qt::NoButton, modifiers,
+                      Qt::NoScrollPhase, false);
     QApplication::sendEvent(widget, &wheel);
 }
 
@@ -465,8 +472,8 @@ void TestMainWindow::mouseAndKeysMoveTheCamera()
     QVERIFY(waitForFrame(*window));
     ViewportWidget* viewport = window->viewport();
     const auto frameShows = [&](const Camera& camera) {
-        return QTest::qWaitFor([&] { return viewport->lastFrame() && sameCamera(viewport->lastFrame()->camera, camera); },
-                               kWaitMs);
+        return QTest::qWaitFor(
+            [&] { return viewport->lastFrame() && sameCamera(viewport->lastFrame()->camera, camera); }, kWaitMs);
     };
     QSignalSpy frames(viewport, &ViewportWidget::frameRendered);
     QTest::qWait(300);
@@ -499,7 +506,8 @@ void TestMainWindow::mouseAndKeysMoveTheCamera()
     const Camera fitted = viewport->camera();
     const Bounds bounds = window->scene()->scene.worldBounds();
     QVERIFY(glm::length(fitted.target - bounds.center()) < 1e-9);
-    QVERIFY(glm::length(glm::normalize(fitted.target - fitted.eye) - glm::normalize(zoomed.target - zoomed.eye)) < 1e-9);
+    QVERIFY(glm::length(glm::normalize(fitted.target - fitted.eye) - glm::normalize(zoomed.target - zoomed.eye)) <
+            1e-9);
     QVERIFY(frameShows(fitted));
 
     QTest::mouseDClick(viewport, Qt::LeftButton, {}, QPoint(50, 50));
@@ -603,8 +611,9 @@ void TestMainWindow::viewPresetsAndHelp()
     QStringList listed;
     for (int r = 0; r < table->rowCount(); ++r)
         listed << table->item(r, 1)->text() + QLatin1Char('=') + table->item(r, 2)->text();
-    QVERIFY2(listed.contains(QStringLiteral("Open…=") + QKeySequence(QKeySequence::Open).toString(QKeySequence::NativeText)),
-             qPrintable(listed.join(QLatin1Char('|'))));
+    QVERIFY2(
+        listed.contains(QStringLiteral("Open…=") + QKeySequence(QKeySequence::Open).toString(QKeySequence::NativeText)),
+        qPrintable(listed.join(QLatin1Char('|'))));
     QVERIFY2(listed.contains(QStringLiteral("Fit to View=F")), qPrintable(listed.join(QLatin1Char('|'))));
     table->window()->close();
     child<QAction>(window.get(), "userGuideAction")->trigger();
@@ -627,7 +636,9 @@ void TestMainWindow::viewPresetsAndHelp()
     // Hiding the axes persists.
     child<QAction>(window.get(), "showAxesAction")->trigger();
     QVERIFY(!axes->isVisible());
-    QVERIFY(!QSettings(path(QStringLiteral("presets.ini")), QSettings::IniFormat).value(QStringLiteral("view/showAxes")).toBool());
+    QVERIFY(!QSettings(path(QStringLiteral("presets.ini")), QSettings::IniFormat)
+                 .value(QStringLiteral("view/showAxes"))
+                 .toBool());
 }
 
 TRIMLAB_WIDGET_TEST_MAIN(TestMainWindow)

@@ -88,7 +88,8 @@ void TestWindowLayout::firstStartFitsTheWindow()
     QVERIFY(QTest::qWaitFor([&] { return window->scene() && !window->isLoading() && window->viewport()->lastFrame(); },
                             kWaitMs));
     QTest::qWait(300); // the docks' layouts and the status bar settle
-    const QString shot = QString::fromStdString((test::outputDir() / ("main-window-" + name + ".png").toStdString()).string());
+    const QString shot =
+        QString::fromStdString((test::outputDir() / ("main-window-" + name + ".png").toStdString()).string());
     QVERIFY(window->grab().save(shot));
     qInfo("screenshot: %s", qPrintable(shot));
 

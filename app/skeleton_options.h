@@ -1,0 +1,33 @@
+#pragma once
+/// \file
+/// The options of `trimlab skeleton`: every flagged row of skeleton_parameters::kTable
+/// (core/skeleton/skeleton_parameters.h: contraction, simplification, refinement,
+/// selection, bone-heat constant, Loop subdivision), then the mesh and the outputs,
+/// parsed before the mesh is loaded so that bad arguments fail fast with one line.
+
+#include "core/skeleton/skeleton_extraction.h"
+#include "core/skeleton/skeleton_parameters.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <string>
+#include <variant>
+
+namespace trimlab::app {
+
+struct SkeletonVerbOptions {
+    std::string source;
+    SkeletonOptions extraction;
+    double heatConstant = skeleton_parameters::kHeatConstant.defaultValue; ///< c of the bone-heat weights
+    int loopLevels = 0;
+    QString output; // .glb / .gltf, or empty
+    QString json;   // or empty
+};
+
+/// Parses the arguments after "skeleton": the options, or a one-line error; `help`
+/// receives the usage text when --help was given (the returned error is then empty).
+[[nodiscard]] std::variant<SkeletonVerbOptions, QString> parseSkeletonOptions(const QStringList& arguments,
+                                                                              QString& help);
+
+} // namespace trimlab::app

@@ -1,0 +1,74 @@
+"""TrimLab from Python: self-trimming of self-intersecting surfaces by winding numbers.
+
+Meshes travel as NumPy arrays: vertices V (n, 3) float64, triangles F (m, 3) int32
+(counter-clockwise seen from outside), animations as poses (k, n, 3) float64. Every
+function runs the same core code as the `trimlab` command line and the GUI panels:
+
+    load, load_scene, save, info, winding_numbers, demos     meshes and their report
+    trim                                                    the exact trimmed solid (CSG too)
+    render                                                  CPU reference or OpenGL images
+    load_animation, segment, skin                           mesh animations, skinning fits
+    skeleton                                                curve skeleton, rig, weights
+    parameters                                              the tables keywords take their ranges from
+
+Long functions release the GIL and take progress=callable(stage, done, total); an
+exception raised by the callback stops the work and reaches the caller, and a callback
+that returns False stops it with trimlab.Cancelled. Errors derive
+from trimlab.Error (see help(trimlab.Error) and the classes beside it).
+"""
+
+from ._trimlab import (
+    Cancelled,
+    Error,
+    InputError,
+    MeshLoadError,
+    MeshSaveError,
+    NotTrimmableError,
+    ParameterError,
+    RenderError,
+    SegmentationInputError,
+    SkeletonInputError,
+    SkinningBonesError,
+    SkinningFit,
+    demos,
+    info,
+    load,
+    load_animation,
+    load_scene,
+    parameters,
+    render,
+    save,
+    segment,
+    skeleton,
+    skin,
+    trim,
+    winding_numbers,
+)
+
+__all__ = [
+    "Cancelled",
+    "Error",
+    "InputError",
+    "MeshLoadError",
+    "MeshSaveError",
+    "NotTrimmableError",
+    "ParameterError",
+    "RenderError",
+    "SegmentationInputError",
+    "SkeletonInputError",
+    "SkinningBonesError",
+    "SkinningFit",
+    "demos",
+    "info",
+    "load",
+    "load_animation",
+    "load_scene",
+    "parameters",
+    "render",
+    "save",
+    "segment",
+    "skeleton",
+    "skin",
+    "trim",
+    "winding_numbers",
+]

@@ -1,0 +1,264 @@
+// The graph steps of skeleton extraction on small hand-made inputs: the collapse complex of
+// the simplification, vertex adjacency and cheapest paths, the selection of joints, the rig
+// hierarchy built from them, and the stage views' vertex colours.
+#include "core/skeleton/collapse_complex.h"
+#include "core/skeleton/mesh_adjacency.h"
+#include "core/skeleton/rig_hierarchy.h"
+#include "core/skeleton/skeleton_selection.h"
+#include "core/skeleton/skeleton_stage_colors.h"
+
+#include "core/animation/color_wheel.h"
+#include "core/image/heat_map_colors.h"
+#include "core/image/packed_rgba8.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+using namespace trimlab;
+
+namespace {
+
+// A tetrahedron: 4 vertices, 6 edges, 4 faces.
+const std::vector<glm::dvec3> kTetraPositions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+const std::vector<glm::uvec3> kTetraFaces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+
+// A curve of `nodes` joined in a chain 0–1–2–…, each node absorbing the one vertex at its
+// own position (returned in `vertices`).
+CurveSkeleton chainCurve(const std::vector<glm::dvec3>& nodes, std::vector<glm::dvec3>& vertices)
+{
+    CurveSkeleton curve;
+    curve.nodes = nodes;
+    for (std::size_t k = 0; k + 1 < nodes.size(); ++k)
+        curve.edges.push_back({int(k), int(k) + 1});
+    vertices = nodes;
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+        curve.vertexNode.push_back(int(k));
+    return curve;
+}
+
+// Every node of `curve` a joint, the edges as they are.
+NodeSelection everyNode(const CurveSkeleton& curve)
+{
+    NodeSelection selection;
+    for (std::size_t k = 0; k < curve.nodes.size(); ++k) {
+        selection.survivors.push_back(int(k));
+        selection.jointOfNode.push_back(int(k));
+    }
+    selection.edges = curve.edges;
+    return selection;
+}
+
+} // namespace
+
+class TestSkeletonGraph : public QObject {
+    Q_OBJECT
+
+private slots:
+    // A tetrahedron collapsed edge by edge: triangles holding both ends of a collapsed edge
+    // die, the others move to the survivor, and once none is left the last edge stays as a
+    // skeleton edge. An unused vertex stays isolated and alive.
+    void collapsesTurnATetrahedronIntoAnEdge()
+    {
+        std::vector<glm::dvec3> positions = kTetraPositions;
+        positions.emplace_back(5, 5, 5); // used by no triangle
+        CollapseComplex complex(positions, kTetraFaces);
+        QCOMPARE(complex.vertexCount(), std::size_t(5));
+        QCOMPARE(complex.liveTriangleCount(), std::size_t(4));
+        QCOMPARE(complex.neighbours(0), (std::vector<int>{1, 2, 3}));
+        QVERIFY(complex.neighbours(4).empty());
+        QVERIFY(complex.edgeHasTriangle(0, 1));
+
+        complex.collapse(3, 0); // faces (0,1,3) and (0,3,2) die; (1,2,3) becomes (1,2,0)
+        QVERIFY(!complex.alive(3));
+        QCOMPARE(complex.liveTriangleCount(), std::size_t(2));
+        QCOMPARE(complex.liveVertexCount(), std::size_t(4));
+        QCOMPARE(complex.representative(3), 0);
+        QCOMPARE(complex.position(0), kTetraPositions[0]);
+        std::vector<int> around = complex.neighbours(0);
+        std::sort(around.begin(), around.end());
+        QCOMPARE(around, (std::vector<int>{1, 2}));
+        QCOMPARE(complex.neighbours(1).size(), std::size_t(2)); // 0 and 2, never 3
+
+        complex.collapse(2, 1); // both remaining faces hold 1 and 2
+        QCOMPARE(complex.liveTriangleCount(), std::size_t(0));
+        QCOMPARE(complex.neighbours(0), (std::vector<int>{1}));
+        QVERIFY(!complex.edgeHasTriangle(0, 1));
+
+        complex.collapse(1, 0);
+        QCOMPARE(complex.representative(2), 0); // through 1
+        QCOMPARE(complex.representative(3), 0);
+        QCOMPARE(complex.liveVertexCount(), std::size_t(2)); // 0 and the isolated 4
+        QVERIFY(complex.alive(4));
+        QVERIFY(complex.neighbours(0).empty());
+    }
+
+    void adjacencyListsEdgesWithTheirLengths()
+    {
+        TriangleMesh mesh;
+        mesh.positions = {{0, 0, 0}, {3, 0, 0}, {3, 4, 0}, {0, 4, 0}};
+        mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+        const VertexAdjacency adjacency = vertexAdjacency(mesh);
+        QCOMPARE(adjacency.size(), std::size_t(4));
+        bool sawDiagonal = false;
+        for (const auto& [to, length] : adjacency[0]) {
+            QVERIFY(to == 1 || to == 2 || to == 3);
+            const double expected = to == 1 ? 3.0 : to == 3 ? 4.0 : 5.0;
+            QCOMPARE(length, expected);
+            sawDiagonal = sawDiagonal || to == 2;
+        }
+        QVERIFY(sawDiagonal);
+        for (const auto& [to, length] : adjacency[1]) // never joined to 3
+            QVERIFY(to != 3 && length > 0.0);
+    }
+
+    // A path 0–1–2–3 of unit steps and a shortcut 0–3 costing 5: the walk wins. The ends'
+    // costs count: starting at 1 (cost 0.5) beats starting at 0 (cost 0).
+    void cheapestPathCountsStepsAndEndCosts()
+    {
+        VertexAdjacency graph(5);
+        const auto join = [&](std::uint32_t a, std::uint32_t b, double cost) {
+            graph[a].push_back({b, cost});
+            graph[b].push_back({a, cost});
+        };
+        join(0, 1, 1.0);
+        join(1, 2, 1.0);
+        join(2, 3, 1.0);
+        join(0, 3, 5.0);
+        QCOMPARE(cheapestPath(graph, {{0, 0.0}}, {{3, 0.0}}), (std::vector<std::uint32_t>{0, 1, 2, 3}));
+        QCOMPARE(cheapestPath(graph, {{0, 0.0}, {1, 0.5}}, {{3, 0.0}}), (std::vector<std::uint32_t>{1, 2, 3}));
+        QCOMPARE(cheapestPath(graph, {{0, 0.0}}, {{3, 0.0}, {2, 10.0}}), (std::vector<std::uint32_t>{0, 1, 2, 3}));
+        QVERIFY(cheapestPath(graph, {{0, 0.0}}, {{4, 0.0}}).empty()); // 4 is joined to nothing
+    }
+
+    // A chain collapses its shortest inner edge first; the lower index survives a tie of
+    // degree and region. A leaf collapsed with its neighbour survives and keeps its place.
+    void selectionCollapsesTheShortestEdgesFirst()
+    {
+        std::vector<glm::dvec3> vertices;
+        const CurveSkeleton curve = chainCurve({{0, 0, 0}, {1, 0, 0}, {1.1, 0, 0}, {2, 0, 0}, {3, 0, 0}}, vertices);
+        const NodeSelection four = selectSkeletonNodes(curve, vertices, 4);
+        QCOMPARE(four.survivors, (std::vector<int>{0, 1, 3, 4}));
+        QCOMPARE(four.jointOfNode, (std::vector<int>{0, 1, 1, 2, 3}));
+        QCOMPARE(four.edges, (std::vector<std::array<int, 2>>{{0, 1}, {1, 2}, {2, 3}}));
+        const NodeSelection again = selectSkeletonNodes(curve, vertices, 4);
+        QCOMPARE(again.survivors, four.survivors);
+        QCOMPARE(again.jointOfNode, four.jointOfNode);
+
+        std::vector<glm::dvec3> tipVertices;
+        const CurveSkeleton tip = chainCurve({{0, 0, 0}, {0.1, 0, 0}, {1, 0, 0}, {2, 0, 0}}, tipVertices);
+        const NodeSelection three = selectSkeletonNodes(tip, tipVertices, 3);
+        QCOMPARE(three.survivors, (std::vector<int>{0, 2, 3}));
+        QCOMPARE(three.jointOfNode[1], 0);
+
+        QCOMPARE(selectSkeletonNodes(curve, vertices, 10).survivors.size(), std::size_t(5));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)selectSkeletonNodes(curve, vertices, 0));
+        vertices.pop_back();
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)selectSkeletonNodes(curve, vertices, 3));
+    }
+
+    // A T: the junction (degree 3) becomes the root, bones leave it breadth-first with
+    // their parents first, and each vertex takes the joint of its node's region.
+    void rigOfATRootsAtTheJunction()
+    {
+        CurveSkeleton curve;
+        curve.nodes = {{-1, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, -2, 0}};
+        curve.edges = {{0, 1}, {1, 2}, {1, 3}, {3, 4}};
+        curve.vertexNode = {0, 1, 2, 3, 4, 4};
+        const std::vector<glm::dvec3> vertices = {{-1, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, -2, 0}, {0, -2, 0}};
+        const SkeletonRig rig = buildSkeletonRig(curve, everyNode(curve), vertices, -1);
+        QCOMPARE(rig.root, 1);
+        QCOMPARE(rig.joints, curve.nodes);
+        QCOMPARE(rig.parent, (std::vector<int>{1, -1, 1, 1, 3}));
+        QCOMPARE(rig.bones.size(), std::size_t(4));
+        // Breadth-first from the root, neighbours in index order: tails 0, 2, 3, then 4.
+        const std::vector<int> tails = {rig.bones[0].tail, rig.bones[1].tail, rig.bones[2].tail, rig.bones[3].tail};
+        QCOMPARE(tails, (std::vector<int>{0, 2, 3, 4}));
+        QCOMPARE(rig.bones[3].head, 3);
+        QCOMPARE(rig.bones[3].parentBone, 2);
+        QCOMPARE(rig.bones[0].parentBone, -1);
+        QCOMPARE(rig.vertexJoint, (std::vector<int>{0, 1, 2, 3, 4, 4}));
+
+        const SkeletonRig rooted = buildSkeletonRig(curve, everyNode(curve), vertices, 4);
+        QCOMPARE(rooted.root, 4);
+        QCOMPARE(rooted.parent[4], -1);
+        QCOMPARE(rooted.parent[3], 4);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)buildSkeletonRig(curve, everyNode(curve), vertices, 5));
+    }
+
+    // A loop (the curve of a torus) opens into a tree: one edge is dropped. Another
+    // component is attached at its nearest joint. No joints: an empty rig.
+    void rigOpensLoopsAndJoinsComponents()
+    {
+        CurveSkeleton loop;
+        loop.nodes = {{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {3, 0, 0}};
+        loop.edges = {{0, 1}, {1, 2}, {2, 3}, {0, 3}};
+        loop.vertexNode = {0, 1, 2, 3, 4};
+        const SkeletonRig rig = buildSkeletonRig(loop, everyNode(loop), loop.nodes, 0);
+        QCOMPARE(rig.bones.size(), std::size_t(4));
+        QCOMPARE(rig.parent[0], -1);
+        QCOMPARE(rig.parent[1], 0);
+        QCOMPARE(rig.parent[3], 0);
+        QVERIFY(rig.parent[2] == 1 || rig.parent[2] == 3);
+        QCOMPARE(rig.parent[4], 0); // the lone node, nearest to joint 0
+
+        const SkeletonRig empty = buildSkeletonRig(loop, NodeSelection{}, loop.nodes, -1);
+        QVERIFY(empty.joints.empty() && empty.bones.empty());
+        QCOMPARE(empty.root, 0);
+        QCOMPARE(empty.vertexJoint, std::vector<int>(5, -1));
+    }
+
+    void laplacianColorsScaleToTheLargestFiniteValue()
+    {
+        const std::vector<double> magnitude = {0.0, 2.0, std::nan(""), std::numeric_limits<double>::infinity(), 1.0};
+        double largest = -1.0;
+        const std::vector<std::uint32_t> colors = laplacianColors(magnitude, largest);
+        QCOMPARE(largest, 2.0);
+        const std::vector<std::uint32_t> expected = heatMapRgba8(std::vector<double>{0.0, 2.0, 0.0, 0.0, 1.0}, 2.0);
+        QCOMPARE(colors, expected);
+        QVERIFY(colors[0] != colors[1] && colors[4] != colors[1]);
+
+        const std::vector<std::uint32_t> flat = laplacianColors(std::vector<double>{0.0, 0.0}, largest);
+        QCOMPARE(largest, 0.0);
+        QCOMPARE(flat[0], flat[1]);
+    }
+
+    // Neighbouring nodes differ in colour, so a chain alternates; vertices of no valid node
+    // are grey; joints take their own palette colours.
+    void regionColorsTellNeighboursApart()
+    {
+        const std::uint32_t grey = packRgba8(glm::vec3(0.6f));
+        CurveSkeleton curve;
+        curve.nodes = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 1, 0}};
+        curve.edges = {{0, 1}, {1, 2}, {1, 3}};
+        curve.vertexNode = {0, 1, 2, 3, -1, 9};
+        const std::vector<std::uint32_t> nodes = curveMappingColors(curve);
+        QCOMPARE(nodes.size(), std::size_t(6));
+        QVERIFY(nodes[0] != nodes[1] && nodes[2] != nodes[1] && nodes[3] != nodes[1]);
+        QCOMPARE(nodes[0], nodes[2]);
+        QCOMPARE(nodes[4], grey);
+        QCOMPARE(nodes[5], grey);
+
+        SkeletonRig rig;
+        rig.joints = {{0, 0, 0}, {1, 0, 0}};
+        rig.vertexJoint = {1, 0, -1, 2};
+        const std::vector<std::uint32_t> joints = jointSegmentColors(rig);
+        QCOMPARE(joints[0], packRgba8(paletteColor(1).rgb()));
+        QCOMPARE(joints[1], packRgba8(paletteColor(0).rgb()));
+        QCOMPARE(joints[2], grey);
+        QCOMPARE(joints[3], grey);
+    }
+
+    void boneWeightColorsClampToTheUnitRange()
+    {
+        const std::vector<std::uint32_t> colors =
+            boneWeightColors(std::vector<double>{-1.0, 0.0, 0.5, 1.0, 2.0, std::nan("")});
+        QCOMPARE(colors, heatMapRgba8(std::vector<double>{0.0, 0.0, 0.5, 1.0, 1.0, 0.0}, 1.0));
+        QVERIFY(colors[2] != colors[1] && colors[2] != colors[3]);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSkeletonGraph)
+#include "tst_skeleton_graph.moc"
