@@ -1,10 +1,13 @@
 #include "app/cli_messages.h"
 
+#include "core/util/printable_text.h"
+
 #include <QCommandLineParser>
 #include <QRegularExpression>
 
 #include <cstdio>
 #include <exception>
+#include <new>
 
 namespace trimlab::app {
 
@@ -19,22 +22,30 @@ QString indentContinuationLines(const QString& text)
     return result;
 }
 
+// What reaches the terminal: no control or escape sequence from a file (printable_text.h).
+QByteArray terminalBytes(const QString& text)
+{
+    const QByteArray utf8 = text.toUtf8();
+    const std::string printable = printableText(std::string_view(utf8.constData(), std::size_t(utf8.size())));
+    return QString::fromUtf8(printable.data(), qsizetype(printable.size())).toLocal8Bit();
+}
+
 } // namespace
 
 void printLine(const QString& text)
 {
-    std::fprintf(stdout, "%s\n", text.toLocal8Bit().constData());
+    std::fprintf(stdout, "%s\n", terminalBytes(text).constData());
     std::fflush(stdout);
 }
 
 void printError(const QString& text)
 {
-    std::fprintf(stderr, "trimlab: error: %s\n", indentContinuationLines(text).toLocal8Bit().constData());
+    std::fprintf(stderr, "trimlab: error: %s\n", terminalBytes(indentContinuationLines(text)).constData());
 }
 
 void printNote(const QString& text)
 {
-    std::fprintf(stderr, "trimlab: note: %s\n", indentContinuationLines(text).toLocal8Bit().constData());
+    std::fprintf(stderr, "trimlab: note: %s\n", terminalBytes(indentContinuationLines(text)).constData());
 }
 
 QString verbHelpText(const QCommandLineParser& parser, const QString& verb)
@@ -45,12 +56,41 @@ QString verbHelpText(const QCommandLineParser& parser, const QString& verb)
     return text;
 }
 
-int runGuarded(const std::function<int()>& body)
+namespace {
+
+std::string joined(const std::vector<std::string>& inputs)
+{
+    std::string files;
+    for (const std::string& input : inputs)
+        files += (files.empty() ? "" : ", ") + input;
+    return files;
+}
+
+// A message that names none of the inputs (a system error from deep inside: a thread that
+// could not start) gets them appended, so that a batch farm's log says which file failed.
+std::string withInputs(std::string message, const std::vector<std::string>& inputs)
+{
+    for (const std::string& input : inputs)
+        if (message.find(input) != std::string::npos)
+            return message;
+    return inputs.empty() ? message : message + " (working on " + joined(inputs) + ")";
+}
+
+} // namespace
+
+int runGuarded(const std::function<int()>& body, const std::vector<std::string>& inputs)
 {
     try {
         return body();
+    } catch (const std::bad_alloc&) {
+        printError(QStringLiteral("out of memory working on %1: the system refused an allocation (set "
+                                  "TRIMLAB_MEMORY_BUDGET below this process's memory limit to have such work "
+                                  "refused before it starts, or give it more memory)")
+                       .arg(inputs.empty() ? QStringLiteral("the request") : QString::fromStdString(joined(inputs))));
+        return 1;
     } catch (const std::exception& e) {
-        printError(QString::fromUtf8(e.what()));
+        // Escaped before decoding, so that bytes that are not UTF-8 show as such.
+        printError(QString::fromStdString(printableText(withInputs(e.what(), inputs))));
         return 1;
     }
 }

@@ -9,7 +9,9 @@ class QCommandLineParser;
 
 #include <functional>
 #include <optional>
+#include <string>
 #include <variant>
+#include <vector>
 
 namespace trimlab::app {
 
@@ -39,7 +41,11 @@ template <class Options>
     return 2;
 }
 
-/// Runs `body`; an exception becomes a one-line error and exit code 1.
-int runGuarded(const std::function<int()>& body);
+/// Runs `body`; an exception becomes a one-line error and exit code 1, naming `inputs`
+/// when its message names none of them (so a batch farm's log says which file failed).
+/// An allocation the system refused (std::bad_alloc, from this thread or a worker's, which
+/// parallelFor hands back after every worker has stopped) becomes "out of memory working
+/// on <inputs>" with what to change.
+int runGuarded(const std::function<int()>& body, const std::vector<std::string>& inputs = {});
 
 } // namespace trimlab::app

@@ -80,7 +80,7 @@ int runInfoVerb(int argc, char** argv, const QStringList& arguments)
         printError(*error);
         return 2;
     }
-    return runGuarded([&] { return printReports(sources, transforms); });
+    return runGuarded([&] { return printReports(sources, transforms); }, sources);
 }
 
 } // namespace trimlab::app

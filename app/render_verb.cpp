@@ -592,7 +592,7 @@ int runRenderVerb(int argc, char** argv, const QStringList& arguments)
     } else {
         application = std::make_unique<QCoreApplication>(argc, argv);
     }
-    return runGuarded([&] { return renderLoaded(options); });
+    return runGuarded([&] { return renderLoaded(options); }, options.sources);
 }
 
 } // namespace trimlab::app

@@ -1,5 +1,6 @@
 #include "app/scene_composition.h"
 
+#include "core/scene/world_geometry.h"
 #include "core/trim/csg_expression.h"
 #include "core/trim/csg_object_ids.h"
 #include "core/trim/static_rule.h"
@@ -60,7 +61,12 @@ std::optional<QString> applyObjectTransforms(const std::vector<ObjectTransformOp
                 .arg(option.object)
                 .arg(scene.objects.size())
                 .arg(int(scene.objects.size()) - 1);
-        scene.objects[std::size_t(option.object)].modelMatrix = option.transform.modelMatrix();
+        SceneObject& object = scene.objects[std::size_t(option.object)];
+        object.modelMatrix = option.transform.modelMatrix();
+        if (const std::string problem = placementProblem(object); !problem.empty())
+            return QStringLiteral("--object-transform %1: object %2 (%3): %4")
+                .arg(QString::number(option.object), QString::number(option.object),
+                     QString::fromStdString(object.name), QString::fromStdString(problem));
     }
     return std::nullopt;
 }

@@ -89,7 +89,8 @@ int runSegmentVerb(int argc, char** argv, const QStringList& arguments)
     const auto parsed = parseSegmentOptions(arguments, help);
     if (const std::optional<int> code = exitIfNotParsed(parsed, help))
         return *code;
-    return runGuarded([&] { return segmentAnimation(std::get<SegmentOptions>(parsed)); });
+    const SegmentOptions& options = std::get<SegmentOptions>(parsed);
+    return runGuarded([&] { return segmentAnimation(options); }, {options.source});
 }
 
 } // namespace trimlab::app

@@ -179,7 +179,8 @@ int runSkeletonVerb(int argc, char** argv, const QStringList& arguments)
     const auto parsed = parseSkeletonOptions(arguments, help);
     if (const std::optional<int> code = exitIfNotParsed(parsed, help))
         return *code;
-    return runGuarded([&] { return skeletonOfMesh(std::get<SkeletonVerbOptions>(parsed)); });
+    const SkeletonVerbOptions& options = std::get<SkeletonVerbOptions>(parsed);
+    return runGuarded([&] { return skeletonOfMesh(options); }, {options.source});
 }
 
 } // namespace trimlab::app

@@ -156,7 +156,8 @@ int runSkinVerb(int argc, char** argv, const QStringList& arguments)
     const auto parsed = parseSkinOptions(arguments, help);
     if (const std::optional<int> code = exitIfNotParsed(parsed, help))
         return *code;
-    return runGuarded([&] { return skinAnimation(std::get<SkinOptions>(parsed)); });
+    const SkinOptions& options = std::get<SkinOptions>(parsed);
+    return runGuarded([&] { return skinAnimation(options); }, {options.source});
 }
 
 } // namespace trimlab::app

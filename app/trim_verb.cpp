@@ -176,7 +176,8 @@ int runTrimVerb(int argc, char** argv, const QStringList& arguments)
     auto parsed = parseTrimOptions(arguments, &help);
     if (const std::optional<int> exitCode = exitIfNotParsed(parsed, help))
         return *exitCode;
-    return runGuarded([&] { return exportTrimmedSolid(std::get<TrimOptions>(parsed)); });
+    const TrimOptions& options = std::get<TrimOptions>(parsed);
+    return runGuarded([&] { return exportTrimmedSolid(options); }, options.sources);
 }
 
 } // namespace trimlab::app

@@ -4,6 +4,7 @@
 #include "core/mesh/mesh_load_error.h"
 #include "core/skeleton/skeleton_input.h"
 #include "core/skinning/skinning_pipeline.h"
+#include "core/util/printable_text.h"
 #include "core/util/task_control.h"
 
 namespace trimlab::python {
@@ -41,19 +42,21 @@ PyObject* makeClass(py::module_& module, const char* name, py::tuple bases, cons
     return type;
 }
 
+// Messages quote files: escaped (printable_text.h), they are valid UTF-8 for Python's str
+// and print no control sequence.
 void raise(PyObject* type, const std::exception& e)
 {
-    PyErr_SetString(type, e.what());
+    PyErr_SetString(type, printableText(e.what()).c_str());
 }
 
 // A MeshLoadError carries where the file went wrong as attributes.
 void raiseMeshLoad(const MeshLoadError& e)
 {
-    py::object error = py::reinterpret_borrow<py::object>(classes().meshLoad)(e.what());
-    error.attr("file") = e.file();
+    py::object error = py::reinterpret_borrow<py::object>(classes().meshLoad)(printableText(e.what()));
+    error.attr("file") = printableText(e.file());
     error.attr("line") = e.line() ? py::int_(*e.line()) : py::object(py::none());
-    error.attr("element") = e.element();
-    error.attr("reason") = e.reason();
+    error.attr("element") = printableText(e.element());
+    error.attr("reason") = printableText(e.reason());
     PyErr_SetObject(classes().meshLoad, error.ptr());
 }
 

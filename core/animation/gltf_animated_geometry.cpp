@@ -1,7 +1,9 @@
 #include "core/animation/gltf_animated_geometry.h"
 
 #include "core/mesh/gltf_accessor.h"
+#include "core/mesh/gltf_scene_size.h"
 #include "core/mesh/mesh_load_error.h"
+#include "core/util/memory_budget.h"
 
 #include <tiny_gltf.h>
 
@@ -17,37 +19,6 @@ namespace {
 std::vector<glm::dvec3> toVectors(const std::vector<glm::vec3>& values)
 {
     return std::vector<glm::dvec3>(values.begin(), values.end());
-}
-
-// The scene's nodes in depth-first pre-order (children in file order).
-std::vector<std::size_t> sceneNodes(const tinygltf::Model& model, const std::vector<int>& parents,
-                                    const std::string& name)
-{
-    std::vector<int> roots;
-    if (model.defaultScene >= int(model.scenes.size()))
-        throw MeshLoadError(name, "the default scene " + std::to_string(model.defaultScene) + " does not exist");
-    if (!model.scenes.empty())
-        roots = model.scenes[std::size_t(std::max(model.defaultScene, 0))].nodes;
-    else
-        for (std::size_t i = 0; i < parents.size(); ++i)
-            if (parents[i] < 0)
-                roots.push_back(int(i));
-    std::vector<std::size_t> order;
-    std::vector<char> visited(model.nodes.size(), 0);
-    std::vector<int> stack(roots.rbegin(), roots.rend());
-    while (!stack.empty()) {
-        const int node = stack.back();
-        stack.pop_back();
-        if (node < 0 || std::size_t(node) >= model.nodes.size())
-            throw MeshLoadError(name, "the scene lists node " + std::to_string(node) + ", which does not exist");
-        if (visited[std::size_t(node)]++)
-            throw MeshLoadError(name, "node " + std::to_string(node) +
-                                          " is reached twice; glTF node hierarchies must be trees");
-        order.push_back(std::size_t(node));
-        const std::vector<int>& children = model.nodes[std::size_t(node)].children;
-        stack.insert(stack.end(), children.rbegin(), children.rend());
-    }
-    return order;
 }
 
 GltfSkin readSkin(const tinygltf::Model& model, std::size_t index, const std::string& name)
@@ -267,6 +238,30 @@ std::vector<glm::dvec3> GltfAnimatedGeometry::pose(const std::vector<NodeTransfo
     return positions;
 }
 
+namespace {
+
+// Refuses, before any primitive is read, a scene whose mesh instances need more than the
+// memory budget (gltf_scene_size.h): rest positions and morph displacements in double
+// precision, four joints and weights per vertex, the triangles.
+void requireGeometryMemory(const tinygltf::Model& model, const std::vector<std::size_t>& nodes, const std::string& name)
+{
+    const GltfSceneSize size = gltfSceneSize(model, nodes);
+    const std::uint64_t bytes = (size.vertices + size.targetVertices) * sizeof(glm::dvec3) +
+                                size.vertices * (4 * sizeof(std::uint32_t) + 4 * sizeof(double)) +
+                                size.indices * sizeof(std::uint32_t);
+    try {
+        requireMemory(bytes,
+                      "the scene's " + std::to_string(size.instances) + " mesh instances (" +
+                          std::to_string(size.vertices) + " vertices, " + std::to_string(size.targetVertices) +
+                          " morph-target vertices)",
+                      "reference fewer meshes from the file's nodes");
+    } catch (const MemoryBudgetError& e) {
+        throw MeshLoadError(name, e.what());
+    }
+}
+
+} // namespace
+
 GltfAnimatedGeometry readAnimatedGeometry(const tinygltf::Model& model, const std::vector<int>& parents,
                                           const std::string& name)
 {
@@ -274,7 +269,9 @@ GltfAnimatedGeometry readAnimatedGeometry(const tinygltf::Model& model, const st
     for (std::size_t s = 0; s < model.skins.size(); ++s)
         geometry.skins.push_back(readSkin(model, s, name));
     const std::vector<glm::dmat4> fileWorld = worldMatrices(fileNodeTransforms(model, name), parents);
-    for (const std::size_t node : sceneNodes(model, parents, name)) {
+    const std::vector<std::size_t> nodes = gltfSceneNodes(model, gltfSceneRoots(model, name), name);
+    requireGeometryMemory(model, nodes, name);
+    for (const std::size_t node : nodes) {
         if (model.nodes[node].mesh >= 0)
             addMeshNode(model, node, fileWorld[node], name, geometry);
     }

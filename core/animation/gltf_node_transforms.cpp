@@ -82,15 +82,23 @@ std::vector<int> nodeParents(const tinygltf::Model& model, const std::string& na
             parents[std::size_t(child)] = int(i);
         }
     }
-    // Walking up from every node must reach a root within #nodes steps, else a cycle.
+    // Walking up from every node must reach a root, else a cycle. Each walk stops at the
+    // first node an earlier walk settled, so every node is visited once: linear time even
+    // for a chain of a million nodes.
+    enum : char { kUnseen, kOnWalk, kSettled };
+    std::vector<char> state(parents.size(), kUnseen);
+    std::vector<std::size_t> walk;
     for (std::size_t i = 0; i < parents.size(); ++i) {
-        int node = int(i);
-        for (std::size_t steps = 0; node >= 0; ++steps) {
-            if (steps > parents.size())
-                throw MeshLoadError(name, "node " + std::to_string(i) +
+        walk.clear();
+        for (int node = int(i); node >= 0 && state[std::size_t(node)] != kSettled; node = parents[std::size_t(node)]) {
+            if (state[std::size_t(node)] == kOnWalk)
+                throw MeshLoadError(name, "node " + std::to_string(node) +
                                               " is part of a cycle; glTF node hierarchies must be trees");
-            node = parents[std::size_t(node)];
+            state[std::size_t(node)] = kOnWalk;
+            walk.push_back(std::size_t(node));
         }
+        for (const std::size_t node : walk)
+            state[node] = kSettled;
     }
     return parents;
 }

@@ -1,24 +1,51 @@
 #include "core/io/atomic_write.h"
 
+#include "core/io/output_target.h"
 #include "core/io/stale_temporaries.h"
 
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace trimlab::io {
 
 namespace {
 
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& step, int error)
+// What a user can do about the errors a batch farm meets most.
+std::string adviceFor(int error)
 {
-    throw std::runtime_error("cannot write " + path.string() + ": " + step + ": " + std::strerror(error));
+    switch (error) {
+    case EFBIG:
+        return " (the file-size limit of this process, ulimit -f, was reached)";
+    case ENOSPC:
+    case EDQUOT:
+        return " (free some space or write elsewhere)";
+    default:
+        return {};
+    }
+}
+
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& step, int error, bool existed)
+{
+    throw std::runtime_error("cannot write " + path.string() + ": " + step + ": " + std::strerror(error) +
+                             adviceFor(error) + (existed ? "; the existing file is unchanged" : ""));
+}
+
+// The mode of the regular file a save replaces, or nullopt for a new file.
+std::optional<mode_t> existingMode(const std::filesystem::path& file)
+{
+    struct stat status {};
+    if (::stat(file.c_str(), &status) != 0 || !S_ISREG(status.st_mode))
+        return std::nullopt;
+    return status.st_mode & 07777;
 }
 
 std::string randomSuffix()
@@ -31,19 +58,31 @@ std::string randomSuffix()
     return suffix;
 }
 
-// Creates a fresh temporary file next to `path`; returns its descriptor and name.
-int createTemporary(const std::filesystem::path& path, std::filesystem::path& temporary)
+// Creates a fresh temporary file next to `path`; returns its descriptor and name. A new
+// file gets 0666 less the umask (the kernel applies it); one that replaces a file starts
+// private (0600) and takes the old file's mode before anything is written, so a private
+// file's contents are never readable by others, not even for a moment.
+int createTemporary(const std::filesystem::path& path, std::optional<mode_t> mode, std::filesystem::path& temporary)
 {
+    const std::filesystem::path folder = path.parent_path().empty() ? "." : path.parent_path();
+    const std::string prefix = temporaryPrefix(path, fileNameLimit(folder));
     for (int attempt = 0; attempt < 100; ++attempt) {
-        temporary = path;
-        temporary += ".tmp-" + randomSuffix();
-        const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0)
-            return fd;
-        if (errno != EEXIST)
-            fail(path, "create " + temporary.filename().string(), errno);
+        temporary = path.parent_path() / (prefix + randomSuffix());
+        const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, mode ? 0600 : 0666);
+        if (fd < 0 && errno == EEXIST)
+            continue;
+        if (fd < 0)
+            fail(path, "create " + temporary.filename().string(), errno, mode.has_value());
+        if (mode && ::fchmod(fd, *mode) != 0) {
+            const int error = errno;
+            ::close(fd);
+            std::error_code ignored;
+            std::filesystem::remove(temporary, ignored);
+            fail(path, "keep the file's permissions", error, true);
+        }
+        return fd;
     }
-    fail(path, "create a temporary file", EEXIST);
+    fail(path, "create a temporary file", EEXIST, mode.has_value());
 }
 
 // Writes everything and makes it durable; returns 0 or the errno of the failed step.
@@ -79,10 +118,15 @@ void syncFolder(const std::filesystem::path& folder)
 
 } // namespace
 
-void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes)
+void writeFileAtomically(const std::filesystem::path& requested, std::string_view bytes)
 {
+    const OutputTarget target = resolveOutputTarget(requested);
+    if (!target.problem.empty())
+        throw std::runtime_error("cannot write " + target.problem);
+    const std::filesystem::path& path = target.file;
+    const std::optional<mode_t> mode = existingMode(path);
     std::filesystem::path temporary;
-    const int fd = createTemporary(path, temporary);
+    const int fd = createTemporary(path, mode, temporary);
     std::string step;
     int error = writeAll(fd, bytes, step);
     if (::close(fd) != 0 && error == 0) {
@@ -100,7 +144,7 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
     if (error != 0) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
-        fail(path, step, error);
+        fail(path, step, error, mode.has_value());
     }
     syncFolder(path.parent_path());
     // Leftovers of earlier saves of this file that were killed before their rename.

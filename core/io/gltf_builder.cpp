@@ -3,7 +3,10 @@
 #include <glm/common.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <span>
+#include <stdexcept>
+#include <string>
 
 namespace trimlab::io {
 
@@ -49,8 +52,24 @@ void setVec3Bounds(tinygltf::Accessor& accessor, std::span<const glm::vec3> valu
 
 } // namespace
 
+namespace {
+
+// glTF (§3.6.2.2) and every reader require finite floats; a non-finite value means a
+// computation went wrong upstream, and writing it would hand the problem to the next tool.
+void requireFinite(const float* values, std::size_t count, std::size_t components, std::size_t accessor)
+{
+    for (std::size_t i = 0; i < count; ++i)
+        if (!std::isfinite(values[i]))
+            throw std::invalid_argument("accessor " + std::to_string(accessor) + ", element " +
+                                        std::to_string(i / components) + ": a non-finite value (" +
+                                        std::to_string(values[i]) + ") cannot be written to glTF");
+}
+
+} // namespace
+
 int addGltfVec3Accessor(tinygltf::Model& model, const std::vector<glm::vec3>& values, int target, bool bounds)
 {
+    requireFinite(reinterpret_cast<const float*>(values.data()), values.size() * 3, 3, model.accessors.size());
     const int view = addGltfBufferView(model, values.data(), values.size() * sizeof(glm::vec3), target);
     const int accessor = addGltfAccessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, values.size());
     if (bounds && !values.empty())
@@ -61,6 +80,7 @@ int addGltfVec3Accessor(tinygltf::Model& model, const std::vector<glm::vec3>& va
 int addGltfFloatAccessor(tinygltf::Model& model, const std::vector<float>& values, int type, bool bounds)
 {
     const std::size_t components = std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(type)));
+    requireFinite(values.data(), values.size(), std::max<std::size_t>(components, 1), model.accessors.size());
     const int view = addGltfBufferView(model, values.data(), values.size() * sizeof(float), 0);
     const int accessor = addGltfAccessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, type, values.size() / components);
     if (bounds && type == TINYGLTF_TYPE_SCALAR && !values.empty()) {
@@ -73,6 +93,7 @@ int addGltfFloatAccessor(tinygltf::Model& model, const std::vector<float>& value
 
 int addGltfSparseVec3Accessor(tinygltf::Model& model, const std::vector<glm::vec3>& values)
 {
+    requireFinite(reinterpret_cast<const float*>(values.data()), values.size() * 3, 3, model.accessors.size());
     std::vector<std::uint32_t> indices;
     std::vector<glm::vec3> nonZero;
     for (std::size_t v = 0; v < values.size(); ++v) {

@@ -23,6 +23,9 @@ int addGltfBufferView(tinygltf::Model& model, const void* bytes, std::size_t siz
 /// Adds an accessor over buffer view `view` (−1: none, e.g. all-sparse) and returns its index.
 int addGltfAccessor(tinygltf::Model& model, int view, int componentType, int type, std::size_t count);
 
+/// The float accessors below refuse a non-finite value with std::invalid_argument naming
+/// the accessor and the element: no writer puts NaN or infinity into a glTF file.
+
 /// Float VEC3 `values` as a new view (with `target`) and accessor; with `bounds`, the
 /// exact componentwise min/max (validators compare them with the data bit for bit).
 int addGltfVec3Accessor(tinygltf::Model& model, const std::vector<glm::vec3>& values, int target, bool bounds);

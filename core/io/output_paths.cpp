@@ -1,5 +1,7 @@
 #include "core/io/output_paths.h"
 
+#include "core/io/output_target.h"
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -24,10 +26,11 @@ std::optional<std::string> checkOne(const OutputRequest& output)
     const std::string named = output.option + " " + output.path;
     if (output.path.find('\0') != std::string::npos)
         return named + ": a file name cannot hold a NUL byte";
-    const fs::path path(output.path);
+    const OutputTarget target = resolveOutputTarget(fs::path(output.path));
+    if (!target.problem.empty())
+        return output.option + " " + target.problem;
+    const fs::path& path = target.file;
     std::error_code error;
-    if (fs::is_directory(path, error))
-        return named + " is a folder; give a file name";
     const fs::path folder = folderOf(path);
     if (!fs::exists(folder, error))
         return error ? named + ": the folder " + folder.string() + " cannot be checked (" + error.message() + ")"
@@ -40,10 +43,11 @@ std::optional<std::string> checkOne(const OutputRequest& output)
     return std::nullopt;
 }
 
-/// The file `path` names, with its folder resolved (the file itself need not exist).
+/// The file `path` names, with its links and its folder resolved (the file itself need not
+/// exist).
 fs::path resolved(const std::string& path)
 {
-    const fs::path p(path);
+    const fs::path p = followOutputLinks(fs::path(path)).value_or(fs::path(path));
     std::error_code error;
     const fs::path absolute = fs::absolute(folderOf(p), error);
     const fs::path folder = fs::weakly_canonical(absolute, error);

@@ -20,9 +20,11 @@ struct OutputRequest {
 };
 
 /// nullopt when every requested path can be written, else a one-line error naming the
-/// option and the path: the path is a folder; its folder does not exist, is not a folder,
-/// or cannot be written into; or two options name the same file (after resolving ".",
-/// ".." and symbolic links of the folders). Never throws for any text.
+/// option and the path: the path is a folder, a device, a FIFO or a socket, a link loop,
+/// or a name too long for its folder (output_target.h); its folder does not exist, is not
+/// a folder, or cannot be written into; or two options name the same file (after
+/// following links and resolving ".", ".." and the folders' links). Never throws for any
+/// text.
 [[nodiscard]] std::optional<std::string> checkOutputPaths(const std::vector<OutputRequest>& outputs);
 
 } // namespace trimlab::io

@@ -1,6 +1,9 @@
 #include "core/io/stale_temporaries.h"
 
+#include "core/io/output_target.h"
+
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <system_error>
 
@@ -9,7 +12,36 @@ namespace trimlab::io {
 namespace {
 
 constexpr std::string_view kTemporaryMarker = ".tmp-";
-constexpr std::size_t kSuffixLength = 6;
+constexpr std::size_t kHashLength = 9; // "~" and 8 hex digits
+
+std::uint32_t nameHash(std::string_view name)
+{
+    std::uint32_t hash = 2166136261u; // FNV-1a
+    for (const char c : name) {
+        hash ^= std::uint8_t(c);
+        hash *= 16777619u;
+    }
+    return hash;
+}
+
+std::string hexDigits(std::uint32_t value)
+{
+    static constexpr char kDigits[] = "0123456789abcdef";
+    std::string text(8, '0');
+    for (int i = 7; i >= 0; --i, value >>= 4)
+        text[std::size_t(i)] = kDigits[value & 0xf];
+    return text;
+}
+
+// The longest prefix of `name` of at most `bytes` bytes that does not split a UTF-8
+// character.
+std::string_view cutAtCharacter(std::string_view name, std::size_t bytes)
+{
+    std::size_t end = std::min(bytes, name.size());
+    while (end > 0 && end < name.size() && (std::uint8_t(name[end]) & 0xc0) == 0x80)
+        --end;
+    return name.substr(0, end);
+}
 
 bool isSuffixCharacter(char c)
 {
@@ -27,11 +59,22 @@ bool olderThan(const std::filesystem::path& file, std::chrono::seconds minimumAg
 
 } // namespace
 
+std::string temporaryPrefix(const std::filesystem::path& target, std::size_t nameLimit)
+{
+    const std::string name = target.filename().string();
+    const std::size_t fixed = kTemporaryMarker.size() + kTemporarySuffixLength;
+    if (name.size() + fixed <= nameLimit)
+        return name + std::string(kTemporaryMarker);
+    const std::size_t room = nameLimit > fixed + kHashLength ? nameLimit - fixed - kHashLength : 0;
+    return std::string(cutAtCharacter(name, room)) + "~" + hexDigits(nameHash(name)) + std::string(kTemporaryMarker);
+}
+
 bool isAtomicWriteTemporaryOf(const std::filesystem::path& target, const std::filesystem::path& candidate)
 {
-    const std::string prefix = target.filename().string() + std::string(kTemporaryMarker);
+    const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
+    const std::string prefix = temporaryPrefix(target, fileNameLimit(folder));
     const std::string name = candidate.filename().string();
-    if (name.size() != prefix.size() + kSuffixLength || name.compare(0, prefix.size(), prefix) != 0)
+    if (name.size() != prefix.size() + kTemporarySuffixLength || name.compare(0, prefix.size(), prefix) != 0)
         return false;
     return std::all_of(name.begin() + std::ptrdiff_t(prefix.size()), name.end(), isSuffixCharacter);
 }

@@ -122,6 +122,32 @@ bool hasGlbMagic(std::string_view bytes)
     return bytes.size() >= 4 && bytes.substr(0, 4) == "glTF";
 }
 
+// GLB framing (glTF 2.0 §4.4): after the 12-byte header, chunks of an 8-byte header (length,
+// type) and their data follow one another up to the declared length; the first is JSON.
+// A chunk that runs past the declared length is refused before any chunk is read.
+void checkGlbChunks(std::string_view file, const std::string& name)
+{
+    constexpr std::uint32_t kJson = 0x4E4F534A;
+    std::size_t offset = 12;
+    for (int chunk = 0; offset < file.size(); ++chunk) {
+        const std::string which = "chunk " + std::to_string(chunk) + " at byte " + std::to_string(offset);
+        if (file.size() - offset < 8)
+            throw MeshLoadError(name, "binary glTF " + which + ": its 8-byte header runs past the " +
+                                          std::to_string(file.size()) + " bytes the file declares");
+        const auto length = decodeScalar<std::uint32_t>(file.data() + offset, std::endian::little);
+        const auto type = decodeScalar<std::uint32_t>(file.data() + offset + 4, std::endian::little);
+        if (chunk == 0 && type != kJson)
+            throw MeshLoadError(name, "binary glTF: the first chunk must be JSON");
+        if (length > file.size() - offset - 8)
+            throw MeshLoadError(name, "binary glTF " + which + " declares " + std::to_string(length) +
+                                          " bytes, but only " + std::to_string(file.size() - offset - 8) +
+                                          " follow in the file");
+        offset += 8 + std::size_t(length);
+    }
+    if (offset == 12)
+        throw MeshLoadError(name, "binary glTF: no JSON chunk follows the header");
+}
+
 void checkGlbHeader(std::string_view bytes, const std::string& name)
 {
     if (bytes.size() < 12)
@@ -134,6 +160,7 @@ void checkGlbHeader(std::string_view bytes, const std::string& name)
     if (length > bytes.size())
         throw MeshLoadError(name, "truncated binary glTF: the header declares " + std::to_string(length) +
                                       " bytes, but the file has only " + std::to_string(bytes.size()));
+    checkGlbChunks(bytes.substr(0, length), name);
 }
 
 // The JSON text of a glTF asset: the whole input, or a GLB's first chunk (clamped).
@@ -192,12 +219,31 @@ std::string firstNegativeIndex(std::string_view json)
     return {};
 }
 
+// tinygltf quotes a data URI whole in its messages; a file's embedded buffer may be
+// hundreds of megabytes of base64. The first 16 characters say which one it was.
+std::string shortenDataUris(std::string text)
+{
+    constexpr std::string_view kMarker = ";base64,";
+    constexpr std::size_t kKept = 16;
+    for (std::size_t at = text.find(kMarker); at != std::string::npos; at = text.find(kMarker, at + 1)) {
+        const std::size_t begin = at + kMarker.size();
+        std::size_t end = begin;
+        while (end < text.size() &&
+               (std::isalnum(std::uint8_t(text[end])) || text[end] == '+' || text[end] == '/' || text[end] == '='))
+            ++end;
+        if (end - begin > kKept)
+            text.replace(begin + kKept, end - begin - kKept,
+                         "\u2026 (" + std::to_string(end - begin - kKept) + " more characters)");
+    }
+    return text;
+}
+
 std::string cleanMessage(std::string text)
 {
     while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
         text.pop_back();
     std::replace(text.begin(), text.end(), '\n', ';');
-    return text;
+    return shortenDataUris(std::move(text));
 }
 
 tinygltf::Model parseModel(std::string_view bytes, const std::string& name, const std::filesystem::path& baseDir)
@@ -246,13 +292,22 @@ tinygltf::Model parseModel(std::string_view bytes, const std::string& name, cons
     return model;
 }
 
+// glTF 2.0 §3.12: a file that lists an extension in extensionsRequired must not be loaded
+// by a reader that does not implement it (its data may mean something else without it).
+// extensionsUsed alone is only a hint and is ignored. TrimLab reads positions, indices,
+// node transforms, skins and morph targets; of the registered extensions it implements only
+// KHR_mesh_quantization (integer and normalized position accessors, gltf_accessor.cpp).
 void checkRequiredExtensions(const tinygltf::Model& model, const std::string& name)
 {
     for (const std::string& extension : model.extensionsRequired) {
-        if (extension == "KHR_draco_mesh_compression" || extension == "EXT_meshopt_compression" ||
-            extension == "KHR_meshopt_compression")
-            throw MeshLoadError(name, "the file requires the extension " + extension +
-                                          ", which is not supported; re-export without mesh compression");
+        if (extension == "KHR_mesh_quantization")
+            continue;
+        const bool compression = extension == "KHR_draco_mesh_compression" || extension == "EXT_meshopt_compression" ||
+                                 extension == "KHR_meshopt_compression";
+        throw MeshLoadError(name, "the file requires the extension '" + extension +
+                                      "', which TrimLab does not implement (glTF 2.0: such a file must not be "
+                                      "loaded without it); " +
+                                      (compression ? "re-export without mesh compression" : "re-export without it"));
     }
 }
 

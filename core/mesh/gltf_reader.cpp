@@ -2,9 +2,11 @@
 
 #include "core/mesh/gltf_accessor.h"
 #include "core/mesh/gltf_document.h"
+#include "core/mesh/gltf_scene_size.h"
 #include "core/mesh/mesh_load_error.h"
 #include "core/mesh/reader_support.h"
 #include "core/mesh/vertex_welding.h"
+#include "core/util/memory_budget.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -17,28 +19,6 @@
 namespace trimlab {
 
 namespace {
-
-std::vector<int> sceneRoots(const tinygltf::Model& model, const std::string& name)
-{
-    if (model.defaultScene >= static_cast<int>(model.scenes.size()) || model.defaultScene < -1)
-        throw MeshLoadError(name, "the default scene " + std::to_string(model.defaultScene) +
-                                      " does not exist (the file has " + std::to_string(model.scenes.size()) + ")");
-    if (!model.scenes.empty())
-        return model.scenes[static_cast<std::size_t>(std::max(model.defaultScene, 0))].nodes;
-    std::vector<char> isChild(model.nodes.size(), 0);
-    for (const tinygltf::Node& node : model.nodes) {
-        for (const int child : node.children) {
-            if (child >= 0 && static_cast<std::size_t>(child) < isChild.size())
-                isChild[static_cast<std::size_t>(child)] = 1;
-        }
-    }
-    std::vector<int> roots;
-    for (std::size_t i = 0; i < model.nodes.size(); ++i) {
-        if (!isChild[i])
-            roots.push_back(static_cast<int>(i));
-    }
-    return roots;
-}
 
 void requireSize(const std::vector<double>& values, std::size_t size, const char* what, int node,
                  const std::string& name)
@@ -178,6 +158,24 @@ TriangleMesh SceneCollector::take()
     return std::move(m_mesh);
 }
 
+// Refuses, before anything is read, a scene that needs more than the memory budget
+// (gltf_scene_size.h): the positions in the scene and in the welding table, the indices
+// and one remapped index per vertex.
+void requireSceneMemory(const tinygltf::Model& model, const std::vector<int>& roots, const std::string& name)
+{
+    const GltfSceneSize size = gltfSceneSize(model, gltfSceneNodes(model, roots, name));
+    const std::uint64_t bytes =
+        size.vertices * (sizeof(glm::vec3) * 2 + sizeof(std::uint32_t) * 2) + size.indices * sizeof(std::uint32_t) * 2;
+    try {
+        requireMemory(bytes,
+                      "the scene's " + std::to_string(size.instances) + " mesh instances (" +
+                          std::to_string(size.vertices) + " vertices)",
+                      "reference fewer meshes from the file's nodes");
+    } catch (const MemoryBudgetError& e) {
+        throw MeshLoadError(name, e.what());
+    }
+}
+
 TriangleMesh collectScene(const tinygltf::Model& model, const std::string& name)
 {
     struct Pending {
@@ -185,23 +183,17 @@ TriangleMesh collectScene(const tinygltf::Model& model, const std::string& name)
         glm::dmat4 parentWorld;
     };
     std::vector<Pending> stack;
-    const std::vector<int> roots = sceneRoots(model, name);
+    const std::vector<int> roots = gltfSceneRoots(model, name);
+    // Its walk (gltfSceneNodes) has checked that every node exists and that they form
+    // trees; this one composes the transforms, holding only the pending children.
+    requireSceneMemory(model, roots, name);
     for (auto it = roots.rbegin(); it != roots.rend(); ++it)
         stack.push_back({*it, glm::dmat4(1.0)});
-    std::vector<char> visited(model.nodes.size(), 0);
     SceneCollector collector(model, name);
     while (!stack.empty()) {
         const Pending next = stack.back();
         stack.pop_back();
-        if (next.node < 0 || static_cast<std::size_t>(next.node) >= model.nodes.size())
-            throw MeshLoadError(name, "node " + std::to_string(next.node) + " does not exist (the file has " +
-                                          countNoun(model.nodes.size(), "node", "nodes") + ")");
         const auto index = static_cast<std::size_t>(next.node);
-        if (visited[index])
-            throw MeshLoadError(
-                name, "node " + std::to_string(next.node) +
-                          " is reached twice; glTF node hierarchies must be trees (no cycles or shared children)");
-        visited[index] = 1;
         const glm::dmat4 world = next.parentWorld * localMatrix(model.nodes[index], next.node, name);
         collector.addNode(next.node, world);
         const std::vector<int>& children = model.nodes[index].children;

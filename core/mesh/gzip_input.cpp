@@ -1,11 +1,15 @@
 #include "core/mesh/gzip_input.h"
 
 #include "core/mesh/mesh_load_error.h"
+#include "core/util/memory_budget.h"
 
 #include <zlib.h>
 
 #include <algorithm>
 #include <climits>
+#include <cstdint>
+#include <new>
+#include <string>
 
 namespace trimlab {
 
@@ -49,8 +53,19 @@ void growOutput(std::string& out, std::size_t produced, std::size_t maxOutputByt
     if (produced > maxOutputBytes || out.size() >= limit)
         throw MeshLoadError(displayName, "the gzip data decompresses to more than " + formatBytes(maxOutputBytes) +
                                              ", the limit for a mesh file; is it really a mesh?");
-    const std::size_t wanted = std::max<std::size_t>(out.size() * 2, std::size_t(1) << 16);
-    out.resize(std::min(wanted, limit));
+    const std::size_t wanted = std::min(std::max<std::size_t>(out.size() * 2, std::size_t(1) << 16), limit);
+    // Growing copies: the old and the new buffer are alive at once.
+    try {
+        requireMemory(std::uint64_t(wanted) + out.size(),
+                      "decompressing the gzip data (" + std::to_string(produced) + " bytes so far)",
+                      "decompress the file separately to see its size");
+        out.resize(wanted);
+    } catch (const MemoryBudgetError& e) {
+        throw MeshLoadError(displayName, e.what());
+    } catch (const std::bad_alloc&) {
+        throw MeshLoadError(displayName,
+                            "out of memory decompressing the gzip data after " + std::to_string(produced) + " bytes");
+    }
 }
 
 } // namespace

@@ -128,6 +128,7 @@ void saveTriangleMesh(const std::filesystem::path& path, const TriangleMesh& mes
         throw std::invalid_argument(path.string() + ": unknown mesh format '" + ext + "' (use " +
                                     meshExportFormatsText() + ")");
     checkIndices(mesh);
+    requireFiniteVertices(path, mesh);
     const std::string bytes = ext == ".ply"   ? plyBytes(mesh, comment)
                               : ext == ".stl" ? stlBytes(mesh, comment)
                                               : gltfBytes(mesh, comment, ext == ".glb");

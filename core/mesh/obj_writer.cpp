@@ -3,8 +3,10 @@
 #include "core/io/atomic_write.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 
 namespace trimlab {
 
@@ -52,9 +54,28 @@ std::string meshObjText(const TriangleMesh& mesh, std::span<const glm::vec3> nor
     return out;
 }
 
+void requireFiniteVertices(const std::filesystem::path& path, const TriangleMesh& mesh)
+{
+    const auto finite = [](const glm::vec3& p) {
+        return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+    };
+    const auto first = std::find_if_not(mesh.positions.begin(), mesh.positions.end(), finite);
+    if (first == mesh.positions.end())
+        return;
+    const glm::vec3& p = *first;
+    const float bad = !std::isfinite(p.x) ? p.x : !std::isfinite(p.y) ? p.y : p.z;
+    throw std::invalid_argument(path.string() + ": vertex " + std::to_string(first - mesh.positions.begin()) +
+                                " has a non-finite coordinate (" +
+                                (std::isnan(bad) ? "nan"
+                                 : bad > 0       ? "inf"
+                                                 : "-inf") +
+                                "); nothing was written");
+}
+
 void saveMeshObj(const std::filesystem::path& path, const TriangleMesh& mesh, std::span<const glm::vec3> normals,
                  std::string_view comment)
 {
+    requireFiniteVertices(path, mesh);
     io::writeFileAtomically(path, meshObjText(mesh, normals, comment));
 }
 

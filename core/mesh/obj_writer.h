@@ -21,6 +21,11 @@ namespace trimlab {
 [[nodiscard]] std::string meshObjText(const TriangleMesh& mesh, std::span<const glm::vec3> normals = {},
                                       std::string_view comment = {});
 
+/// Throws std::invalid_argument naming `path` and the vertex when a coordinate of `mesh` is
+/// not finite ("out.obj: vertex 17 has a non-finite coordinate (inf); nothing was
+/// written"). Every mesh writer (this one and mesh_export.h) checks before it writes.
+void requireFiniteVertices(const std::filesystem::path& path, const TriangleMesh& mesh);
+
 /// Writes meshObjText to `path` atomically. Throws as meshObjText, and std::runtime_error
 /// naming the file when it cannot be written.
 void saveMeshObj(const std::filesystem::path& path, const TriangleMesh& mesh, std::span<const glm::vec3> normals = {},

@@ -1,5 +1,7 @@
 #include "core/skeleton/sparse_cholesky.h"
 
+#include "core/util/memory_budget.h"
+
 #include <iostream> // Eigen/MetisSupport reports METIS errors on std::cerr without including it
 
 #include <Eigen/CholmodSupport>
@@ -9,6 +11,7 @@
 
 #include <dlfcn.h>
 
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -101,6 +104,9 @@ std::string cholmodStatusText(int status)
     }
 }
 
+// OpenBLAS's work buffer (128 MiB on x86-64) with as much again for the factor's blocks.
+constexpr std::uint64_t kBlasRoom = std::uint64_t(256) << 20;
+
 // CHOLMOD through Eigen's wrapper. Eigen keeps the cholmod_factor protected and does not
 // check cholmod_analyze's result (a failed analysis leaves a null factor that factorize
 // would dereference), so this subclass exposes it for checking.
@@ -117,6 +123,12 @@ public:
         common.method[0].ordering = ordering;
         common.postorder = 1;
         common.print = 0; // failures are reported through `error`, not printed
+        // The supernodal factorization calls OpenBLAS, which takes a 128 MiB work buffer on
+        // its first call and retries for ever when the system refuses it (under prlimit
+        // --as). Where the memory budget leaves no room for that buffer, CHOLMOD's
+        // simplicial factorization, which calls no BLAS, is used instead.
+        if (memoryBudgetBytes() < kBlasRoom)
+            common.supernodal = CHOLMOD_SIMPLICIAL;
     }
 
     bool analyze(const SkeletonSparseMatrix& lower, std::string& error) override

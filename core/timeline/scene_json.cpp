@@ -1,6 +1,7 @@
 #include "core/timeline/scene_json.h"
 
 #include "core/io/json_fields.h"
+#include "core/scene/world_geometry.h"
 #include "core/timeline/mesh_json.h"
 #include "core/trim/csg_expression.h"
 #include "core/trim/static_rule.h"
@@ -85,6 +86,8 @@ SceneObject readObject(const json& item, const std::string& path)
     if (const std::string problem = triangleIndexProblem(object.mesh); !problem.empty())
         throw JsonPathError(fieldPath(path, "mesh"), problem);
     object.modelMatrix = readMatrix(requiredField(item, "model_matrix", path), fieldPath(path, "model_matrix"));
+    if (const std::string problem = placementProblem(object); !problem.empty())
+        throw JsonPathError(fieldPath(path, "model_matrix"), "object '" + object.name + "': " + problem);
     return object;
 }
 

@@ -4,14 +4,13 @@
 #include "core/trim/transparency.h"
 #include "core/trim/trim_shading.h"
 #include "core/util/memory_budget.h"
+#include "core/util/parallel_for.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <thread>
 
 namespace trimlab {
 
@@ -189,28 +188,20 @@ ReferenceResult ReferenceRenderer::render(const Camera& camera, int width, int h
     result.color = RgbaImage(width, height);
     result.diagnostics = ReferenceDiagnostics(width, height);
 
-    const int blockCount = (height + kRowsPerBlock - 1) / kRowsPerBlock;
-    if (threads == 0)
-        threads = std::max(1u, std::thread::hardware_concurrency());
-    threads = std::min(threads, unsigned(blockCount));
-    std::atomic<int> nextBlock{0};
-    std::vector<ReferenceStats> partial(threads);
-    auto work = [&](unsigned worker) {
+    // Blocks of rows on the shared pool (parallel_for.h): an exception in any block, an
+    // allocation that failed included, reaches the caller after every worker stopped.
+    const auto blockCount = std::size_t((height + kRowsPerBlock - 1) / kRowsPerBlock);
+    threads = effectiveThreadCount(threads, blockCount);
+    std::vector<ReferenceStats> partial(blockCount);
+    const auto renderBlock = [&](std::size_t block) {
         RowContext context{camera, width, height, settings, settings.clipSet(), walker ? &walker : nullptr, result, {},
                            {},     {},    {},     {}};
-        for (int block = nextBlock++; block < blockCount; block = nextBlock++) {
-            const int rowEnd = std::min(height, (block + 1) * kRowsPerBlock);
-            for (int y = block * kRowsPerBlock; y < rowEnd; ++y)
-                renderRow(context, y);
-        }
-        partial[worker] = context.stats;
+        const int rowEnd = std::min(height, int(block + 1) * kRowsPerBlock);
+        for (int y = int(block) * kRowsPerBlock; y < rowEnd; ++y)
+            renderRow(context, y);
+        partial[block] = context.stats;
     };
-    std::vector<std::thread> pool;
-    for (unsigned worker = 1; worker < threads; ++worker)
-        pool.emplace_back(work, worker);
-    work(0);
-    for (std::thread& thread : pool)
-        thread.join();
+    parallelFor(blockCount, threads, renderBlock);
 
     for (const ReferenceStats& s : partial) {
         result.stats.totalHits += s.totalHits;

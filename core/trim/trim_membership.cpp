@@ -1,12 +1,11 @@
 #include "core/trim/trim_membership.h"
 
 #include "core/trim/dynamic_frame_scene.h"
+#include "core/util/parallel_for.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <atomic>
-#include <thread>
 
 namespace trimlab {
 
@@ -39,21 +38,17 @@ bool pointOnTrim(const DynamicReferenceRenderer& chain, const glm::dvec3& point,
 std::vector<bool> pointsOnTrim(const DynamicReferenceRenderer& chain, std::span<const glm::dvec3> points,
                                std::span<const glm::dvec3> normals, double epsilon)
 {
+    // Chunks of points on the shared pool (parallel_for.h), each reusing one hit list; an
+    // exception in any chunk reaches the caller after every worker stopped.
+    constexpr std::size_t kChunk = 64;
     std::vector<char> result(points.size(), 0);
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
+    const std::size_t chunks = (points.size() + kChunk - 1) / kChunk;
+    parallelFor(chunks, 0, [&](std::size_t chunk) {
         std::vector<RayHit> hits;
-        for (std::size_t i = next++; i < points.size(); i = next++)
+        const std::size_t end = std::min(points.size(), (chunk + 1) * kChunk);
+        for (std::size_t i = chunk * kChunk; i < end; ++i)
             result[i] = pointOnTrim(chain, points[i], normals[i], epsilon, hits) ? 1 : 0;
-    };
-    const unsigned threads =
-        std::clamp(unsigned(points.size() / 16), 1u, std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t)
-        pool.emplace_back(work);
-    work();
-    for (std::thread& thread : pool)
-        thread.join();
+    });
     return {result.begin(), result.end()};
 }
 

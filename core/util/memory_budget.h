@@ -8,7 +8,10 @@
 /// budget).
 ///
 /// The budget: $TRIMLAB_MEMORY_BUDGET when set (bytes, or a number with K, M or G: "512M",
-/// "8G"), else half of this machine's physical memory.
+/// "8G"), else half of this machine's physical memory or, when the process runs under an
+/// address-space limit (prlimit --as, ulimit -v) that leaves less, half of what that limit
+/// leaves: under a batch farm's cap the estimate refuses with a message before the system
+/// refuses an allocation halfway.
 
 #include <cstdint>
 #include <stdexcept>

@@ -5,6 +5,7 @@
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -69,8 +70,22 @@ void parallelFor(std::size_t count, unsigned threads, const std::function<void(s
     state.runningWorkers = workers;
     std::vector<std::jthread> pool;
     pool.reserve(workers);
-    for (unsigned w = 0; w < workers; ++w)
-        pool.emplace_back([&] { runWorker(state, count, body, control.stop); });
+    for (unsigned w = 0; w < workers; ++w) {
+        try {
+            pool.emplace_back([&] { runWorker(state, count, body, control.stop); });
+        } catch (const std::system_error&) {
+            // The system starts no more threads (a memory limit leaves no room for another
+            // stack, or the thread limit is reached): the started ones share the items.
+            const std::lock_guard lock(state.mutex);
+            state.runningWorkers -= workers - w;
+            break;
+        }
+    }
+    if (pool.empty()) {
+        // Not even one: the calling thread does the work itself.
+        state.runningWorkers = 1;
+        runWorker(state, count, body, control.stop);
+    }
     std::size_t seen = 0;     // finished items the caller has woken up for
     std::size_t reported = 0; // finished items reported to `control`
     std::unique_lock lock(state.mutex);

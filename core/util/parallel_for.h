@@ -14,7 +14,9 @@ namespace trimlab {
 /// Calls `body(i)` once for every i in [0, count) on up to `threads` threads (0 = the
 /// hardware concurrency; never more threads than items). Items are handed out in
 /// increasing order. The calling thread only waits, reports progress through `control`
-/// (stage `stage`, after every finished item) and checks for cancellation.
+/// (stage `stage`, after every finished item) and checks for cancellation. When the
+/// system refuses to start a thread (under a memory or thread limit) the threads started
+/// share the items; when it starts none, the calling thread runs them all.
 /// - `body` must be safe to run concurrently for different indices.
 /// - The first exception thrown by `body` stops the handing out of further items and is
 ///   rethrown here after every running item has finished.

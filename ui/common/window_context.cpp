@@ -3,6 +3,8 @@
 #include "ui/common/last_directory.h"
 #include "ui/common/panel_wheel_guard.h"
 
+#include "core/util/printable_text.h"
+
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -14,8 +16,21 @@
 
 namespace trimlab::ui {
 
-void WindowContext::showStatus(const QString& message, int timeoutMs) const
+namespace {
+
+// No control or escape sequence from a file reaches a label as is (printable_text.h).
+QString printable(const QString& text)
 {
+    const QByteArray utf8 = text.toUtf8();
+    const std::string shown = printableText(std::string_view(utf8.constData(), std::size_t(utf8.size())));
+    return QString::fromUtf8(shown.data(), qsizetype(shown.size()));
+}
+
+} // namespace
+
+void WindowContext::showStatus(const QString& text, int timeoutMs) const
+{
+    const QString message = printable(text);
     m_window.statusBar()->showMessage(message, timeoutMs);
     // A long message is cut at the frame numbers on the right: hovering shows all of it.
     m_window.statusBar()->setToolTip(message);
@@ -24,8 +39,10 @@ void WindowContext::showStatus(const QString& message, int timeoutMs) const
 void WindowContext::showMessage(QMessageBox::Icon icon, const QString& title, const QString& text,
                                 const QString& details) const
 {
-    auto* box = new QMessageBox(icon, title, text, QMessageBox::Ok, &m_window);
-    box->setInformativeText(details);
+    // Plain text: a file name or a message quoting a file is never read as HTML.
+    auto* box = new QMessageBox(icon, title, printable(text), QMessageBox::Ok, &m_window);
+    box->setTextFormat(Qt::PlainText);
+    box->setInformativeText(printable(details));
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
 }

@@ -298,7 +298,7 @@ void TestMeshIo::brokenFiles_data()
         {"missing_position.gltf", "no POSITION attribute"},
         {"node_cycle.gltf", "node 0 is reached twice"},
         {"bad_node_reference.gltf", "node 7 does not exist"},
-        {"draco_required.gltf", "KHR_draco_mesh_compression, which is not supported"},
+        {"draco_required.gltf", "'KHR_draco_mesh_compression', which TrimLab does not implement"},
         {"bad_triangle_count.gltf", "34 indices, which is not a multiple of 3"},
         // gzip
         {"truncated.obj.gz", "truncated gzip data"},

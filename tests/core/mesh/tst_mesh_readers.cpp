@@ -394,6 +394,35 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, saveTriangleMesh(root / "b.obj", broken));
         QVERIFY_THROWS_EXCEPTION(std::runtime_error, saveTriangleMesh(root / "missing" / "t.obj", mesh));
     }
+
+    // No writer hands a non-finite coordinate to the next tool: each format refuses the
+    // mesh naming the file and the vertex, and writes nothing.
+    void writersRefuseNonFiniteVertices()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const std::filesystem::path root = dir.path().toStdString();
+        TriangleMesh overflowed = tetrahedron();
+        overflowed.positions[2].y = std::numeric_limits<float>::infinity();
+        for (const std::string extension : {"obj", "ply", "stl", "gltf", "glb"}) {
+            const std::filesystem::path path = root / ("inf." + extension);
+            std::string message;
+            try {
+                saveTriangleMesh(path, overflowed);
+            } catch (const std::invalid_argument& e) {
+                message = e.what();
+            }
+            QVERIFY2(contains(message, path.string() + ": vertex 2 has a non-finite coordinate (inf)"),
+                     (extension + ": " + message).c_str());
+            QVERIFY(!std::filesystem::exists(path));
+        }
+        // The glTF builder behind the animation exports refuses the same.
+        tinygltf::Model model;
+        model.buffers.emplace_back();
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, io::addGltfVec3Accessor(model, overflowed.positions, 0, true));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 io::addGltfFloatAccessor(model, {0.0f, std::nanf("")}, TINYGLTF_TYPE_SCALAR, true));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestMeshReaders)

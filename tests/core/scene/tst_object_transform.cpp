@@ -3,6 +3,7 @@
 // that decomposing a matrix gives a transform rebuilding it — or nothing for matrices no
 // such transform can express.
 #include "core/scene/object_transform.h"
+#include "core/scene/world_geometry.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
@@ -48,7 +49,36 @@ private slots:
     void decomposeRebuildsTheMatrix();
     void decomposeKeepsAnglesInRange();
     void decomposeRejectsWhatNoTransformExpresses();
+    void placementsBeyondSinglePrecisionAreNamed();
 };
+
+// A transform finite in double precision can still overflow the floats that the GPU,
+// every export and every file format hold: such a placement is named, not drawn as
+// infinity.
+void TestObjectTransform::placementsBeyondSinglePrecisionAreNamed()
+{
+    SceneObject object;
+    object.name = "box";
+    object.mesh.positions = {{-1, -1, -1}, {1, 1, 1}, {1, -1, 1}};
+    object.mesh.triangles = {{0, 1, 2}};
+    QCOMPARE(placementProblem(object), std::string());
+    ObjectTransform far;
+    far.translation = {0.0, -1e39, 0.0};
+    object.modelMatrix = far.modelMatrix();
+    QCOMPARE(placementProblem(object),
+             std::string("its model matrix entry [3][1] is -1e+39, beyond single precision (±3.4e+38)"));
+    ObjectTransform huge;
+    huge.scale = 3e38; // the matrix fits in floats, the box corner at 1 does not once moved
+    huge.translation = {1e38, 0.0, 0.0};
+    object.modelMatrix = huge.modelMatrix();
+    QCOMPARE(placementProblem(object),
+             std::string("it places a vertex at x = 4e+38, beyond single precision (±3.4e+38)"));
+    // Large but representable placements are fine.
+    ObjectTransform large;
+    large.translation = {1e30, 0.0, 0.0};
+    object.modelMatrix = large.modelMatrix();
+    QCOMPARE(placementProblem(object), std::string());
+}
 
 void TestObjectTransform::defaultIsIdentity()
 {

@@ -3,10 +3,13 @@
 // what, and what to change: the CPU reference render, Loop subdivision, a surface's
 // tessellation (as a version-2 project loads it), and loading an animation. The budget is
 // set small through TRIMLAB_MEMORY_BUDGET here; under the default (half the machine's
-// memory) the same small jobs run.
+// memory) the same small jobs run. Decompression checks each growth of its output against
+// the budget too.
 #include "core/animation/animation_loader.h"
 #include "core/catalog/demo_scenes.h"
 #include "core/mesh/loop_subdivision.h"
+#include "core/mesh/mesh_io.h"
+#include "core/mesh/mesh_load_error.h"
 #include "core/surface/editable_surface.h"
 #include "core/surface/subdivision_cages.h"
 #include "core/surface/surface_definition.h"
@@ -17,6 +20,8 @@
 #include "test_paths.h"
 
 #include <QtTest>
+
+#include <zlib.h>
 
 #include <functional>
 
@@ -69,6 +74,23 @@ std::vector<Job> jobs()
     };
 }
 
+/// `text` as a gzip member (zlib's deflate with the gzip wrapper).
+std::string gzipped(const std::string& text)
+{
+    z_stream stream{};
+    if (deflateInit2(&stream, Z_BEST_COMPRESSION, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+        return {};
+    std::string out(deflateBound(&stream, uLong(text.size())), '\0');
+    stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
+    stream.avail_in = uInt(text.size());
+    stream.next_out = reinterpret_cast<Bytef*>(out.data());
+    stream.avail_out = uInt(out.size());
+    deflate(&stream, Z_FINISH);
+    out.resize(stream.total_out);
+    deflateEnd(&stream);
+    return out;
+}
+
 } // namespace
 
 class TestMemoryBudget : public QObject {
@@ -78,7 +100,31 @@ private slots:
     void readsTheBudget();
     void jobsBeyondTheBudgetAreRefused();
     void jobsWithinTheBudgetRun();
+    void decompressionChecksEachGrowth();
 };
+
+// 4 MiB of comment lines compress to a few KiB: under a 1 MiB budget the decompression
+// stops at the growth that would pass it, with a load error naming the file.
+void TestMemoryBudget::decompressionChecksEachGrowth()
+{
+    std::string mesh = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    while (mesh.size() < (4u << 20))
+        mesh += "# padding\n";
+    const std::string bytes = gzipped(mesh);
+    QVERIFY(!bytes.empty() && bytes.size() < (64 << 10));
+    qputenv("TRIMLAB_MEMORY_BUDGET", "1M");
+    std::string message;
+    try {
+        (void)loadMeshFromMemory(bytes, "obj.gz", "bomb.obj.gz");
+    } catch (const MeshLoadError& e) {
+        message = e.what();
+    }
+    QVERIFY2(message.starts_with("bomb.obj.gz: decompressing the gzip data (") &&
+                 message.find("more than the memory budget of 1.0 MiB") != std::string::npos,
+             message.c_str());
+    qunsetenv("TRIMLAB_MEMORY_BUDGET");
+    QCOMPARE(loadMeshFromMemory(bytes, "obj.gz", "bomb.obj.gz").positions.size(), std::size_t(3));
+}
 
 void TestMemoryBudget::readsTheBudget()
 {

@@ -1,7 +1,9 @@
 // The small utilities every area uses: comma-separated number lists, the cancel and
-// progress protocol of long operations, disjoint sets, and bit-pattern equality.
+// progress protocol of long operations, disjoint sets, bit-pattern equality, and text from
+// files made safe to print.
 #include "core/util/float_bits.h"
 #include "core/util/parse_numbers.h"
+#include "core/util/printable_text.h"
 #include "core/util/task_control.h"
 #include "core/util/union_find.h"
 
@@ -19,6 +21,32 @@ class TestUtilParts : public QObject {
     Q_OBJECT
 
 private slots:
+    void printableTextEscapesWhatATerminalWouldActOn()
+    {
+        // An escape sequence that would turn the terminal red and retitle it, shown instead.
+        QCOMPARE(printableText("bad token '\x1b[31mX\x1b]0;owned\x07'"),
+                 std::string("bad token '\\x1b[31mX\\x1b]0;owned\\x07'"));
+        QCOMPARE(printableText("a\rb\x7f\v"), std::string("a\\rb\\x7f\\v"));
+        // Line feed, tab, backslash and ordinary multi-byte text are kept.
+        QCOMPARE(printableText("line 1\n\tnode \"caf\xc3\xa9 \xe2\x86\x92 \xf0\x9f\x90\x8e\" C:\\x"),
+                 std::string("line 1\n\tnode \"caf\xc3\xa9 \xe2\x86\x92 \xf0\x9f\x90\x8e\" C:\\x"));
+        // C1 controls (U+009B is a one-character CSI) and bidirectional overrides.
+        QCOMPARE(printableText("x\xc2\x9b"
+                               "31m"),
+                 std::string("x\\u009b31m"));
+        QCOMPARE(printableText("evil\xe2\x80\xaegpj.obj"), std::string("evil\\u202egpj.obj"));
+        QCOMPARE(printableText("\xe2\x81\xa6"), std::string("\\u2066"));
+        // Bytes outside well-formed UTF-8: a stray continuation, a cut sequence, an overlong
+        // form, a surrogate, a lead byte above U+10FFFF.
+        QCOMPARE(printableText("\x80"), std::string("\\x80"));
+        QCOMPARE(printableText("\xe2\x86"), std::string("\\xe2\\x86"));
+        QCOMPARE(printableText("\xc0\xaf"), std::string("\\xc0\\xaf"));
+        QCOMPARE(printableText("\xed\xa0\x80"), std::string("\\xed\\xa0\\x80"));
+        QCOMPARE(printableText("\xf5\x80\x80\x80"), std::string("\\xf5\\x80\\x80\\x80"));
+        QCOMPARE(printableText(std::string_view("a\0b", 3)), std::string("a\\x00b"));
+        QCOMPARE(printableText(""), std::string());
+    }
+
     void numberListsParseExactlyTheCount()
     {
         std::string error;
