@@ -1,6 +1,6 @@
 // Fuzz target: glTF node graphs, in the mesh reader and the animation loader. The input
 // describes the nodes of a one-triangle file: byte 0 and 1 give the node count (at most
-// 4096), each following byte pair (node, child) adds a child link, bytes with the high bit
+// 512), each following byte pair (node, child) adds a child link, bytes with the high bit
 // set mark the node they name as showing the mesh; scene roots are the first input byte's
 // node and node 0, and a translation clip moves node 0. Cycles, shared children, missing
 // nodes, long chains and many instances must end in MeshLoadError or a scene, never in a
@@ -24,7 +24,7 @@ constexpr char kBuffer[] =
 std::string graphJson(std::string_view input)
 {
     const std::size_t count =
-        input.size() < 2 ? 1 : 1 + ((std::size_t(std::uint8_t(input[0])) << 8 | std::uint8_t(input[1])) % 4096);
+        input.size() < 2 ? 1 : 1 + ((std::size_t(std::uint8_t(input[0])) << 8 | std::uint8_t(input[1])) % 512);
     std::vector<std::vector<int>> children(count);
     std::vector<char> mesh(count, 0);
     for (std::size_t i = 2; i + 1 < input.size(); i += 2) {
