@@ -27,6 +27,11 @@ bool referenceClass(const ReferenceClassification& reference, const DynamicRegis
 {
     if (!reference.characterization)
         return isInterior(reference.staticRule, r.referenceIndex);
+    // Behind every reference hit: the unbounded interval, outside under every rule (both
+    // indices are 0 there, so each rule keeps the class before it, back to the static
+    // rule's class of w = 0). It is known even where the characterization overflowed.
+    if (r.referenceBehind == 0)
+        return false;
     if (reference.characterization->overflowed || r.referenceBehind >= PartitionCharacterization::kLayers)
         unresolved = true;
     return reference.characterization->interior(r.referenceBehind);

@@ -52,8 +52,14 @@ bool referenceClass(inout TrimWalk walk)
 {
     if (u_referenceIsBase)
         return isInterior(u_rule, walk.referenceIndex);
-    uint base = dynamicPixelIndex(ivec2(gl_FragCoord.xy)) * uint(CHARACTERIZATION_STRIDE);
     int n = walk.referenceBehind;
+    // Behind every reference fragment: the unbounded interval, outside under every rule
+    // (both indices are 0 there, so each rule keeps the class before it, back to the
+    // static rule's class of w = 0). It is known even where the characterization
+    // overflowed, so an emptied pixel forgets an overflow of earlier frames.
+    if (n == 0)
+        return false;
+    uint base = dynamicPixelIndex(ivec2(gl_FragCoord.xy)) * uint(CHARACTERIZATION_STRIDE);
     if ((referenceBits[base + uint(CHARACTERIZATION_WORDS)] & 1u) != 0u || n >= CHARACTERIZATION_LAYERS)
         walk.unresolved = true;
     if (n < 0 || n >= CHARACTERIZATION_LAYERS)

@@ -55,6 +55,7 @@ private slots:
     void referenceOnlyHitsAreNeverShown();
     void characterizationRecordsEveryCurrentInterval();
     void characterizationOverflowMakesPixelsUnresolved();
+    void overflowIsForgottenWhereNoReferenceHitIsBehind();
     void unchangedFrameMatchesTheStaticRule();
     void frameSceneSplitsMovedTriangles();
     void trimmedOffPartsAreFound();
@@ -192,6 +193,40 @@ void TestDynamicRules::characterizationOverflowMakesPixelsUnresolved()
     const DynamicWalkResult result = walkDynamicRay(deep, spanFrom(0.5), settings, DynamicRule::Confluent, previous);
     QVERIFY(result.unresolved);
     QCOMPARE(result.walk.shownIndex, std::ptrdiff_t(-1));
+}
+
+// The interval behind every reference hit is outside under every rule, so a ray that has
+// no reference hit (the surface left the pixel) or only current hits (a new surface
+// arrived) is exact although the reference characterization overflowed; and its own
+// characterization no longer carries the overflow to the next frame.
+void TestDynamicRules::overflowIsForgottenWhereNoReferenceHitIsBehind()
+{
+    std::vector<RayHit> deep;
+    for (int i = 0; i < PartitionCharacterization::kLayers; ++i)
+        deep.push_back(hit(1.0 + i, kDynamicObjectBoth, i % 2 == 0 ? +1 : -1));
+    const ReferenceClassification base{nullptr, StaticRule::AlternatingBorder};
+    const PartitionCharacterization overflowed = characterizeDynamicRay(deep, DynamicRule::Confluent, base);
+    QVERIFY(overflowed.overflowed);
+    const ReferenceClassification previous{&overflowed, StaticRule::AlternatingBorder};
+    TrimSettings settings;
+
+    const DynamicWalkResult empty = walkDynamicRay({}, spanFrom(0.5), settings, DynamicRule::Confluent, previous);
+    QVERIFY(!empty.unresolved);
+    QCOMPARE(empty.walk.shownIndex, std::ptrdiff_t(-1));
+    QVERIFY(!characterizeDynamicRay({}, DynamicRule::Confluent, previous).overflowed);
+
+    const std::vector<RayHit> arrived{hit(2.0, kDynamicObjectCurrentOnly, +1), hit(3.0, kDynamicObjectCurrentOnly, -1)};
+    const DynamicWalkResult result = walkDynamicRay(arrived, spanFrom(0.5), settings, DynamicRule::Confluent, previous);
+    QVERIFY(!result.unresolved);
+    QCOMPARE(result.walk.shownIndex, std::ptrdiff_t(0)); // the new surface, entered at t = 2
+    const PartitionCharacterization next = characterizeDynamicRay(arrived, DynamicRule::Confluent, previous);
+    QVERIFY(!next.overflowed);
+    QCOMPARE(next.interior(1), true); // [2, 3): inside the new surface
+    QCOMPARE(next.interior(0), false);
+
+    // A ray that still crosses reference surfaces needs their classes: still unresolved.
+    const std::vector<RayHit> stayed{hit(2.0, kDynamicObjectBoth, +1), hit(3.0, kDynamicObjectBoth, -1)};
+    QVERIFY(walkDynamicRay(stayed, spanFrom(0.5), settings, DynamicRule::Confluent, previous).unresolved);
 }
 
 void TestDynamicRules::unchangedFrameMatchesTheStaticRule()
