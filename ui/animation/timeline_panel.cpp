@@ -1,5 +1,7 @@
 #include "ui/animation/timeline_panel.h"
 
+#include "ui/common/frame_slider.h"
+
 #include <QCheckBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -34,11 +36,15 @@ void TimelinePanel::createControls()
     m_play->setObjectName(QStringLiteral("playButton"));
     m_play->setToolTip(tr("Play or pause the animation"));
     connect(m_play, &QToolButton::clicked, this, &TimelinePanel::togglePlaying);
-    m_slider = new QSlider(Qt::Horizontal);
+    m_slider = new FrameSlider;
     m_slider->setObjectName(QStringLiteral("poseSlider"));
     m_slider->setPageStep(kPageStep);
-    m_slider->setToolTip(tr("Pose: ←/→ one pose, PgUp/PgDn ten, Home/End first/last"));
+    m_slider->setToolTip(tr("Pose: %1").arg(FrameSlider::inputHelp()));
     connect(m_slider, &QSlider::valueChanged, this, &TimelinePanel::onSliderMoved);
+    connect(m_slider, &FrameSlider::playToggleRequested, this, [this] {
+        if (m_play->isEnabled())
+            togglePlaying();
+    });
     m_poseLabel = new QLabel;
     m_poseLabel->setObjectName(QStringLiteral("poseLabel"));
     m_poseLabel->setMinimumWidth(160);

@@ -6,8 +6,9 @@
 /// shows the pose the clock has reached since Play (pose = start + elapsed × fps), so a
 /// renderer slower than the rate drops poses instead of slowing the animation down, and
 /// the rate label says how many poses per second were actually shown. Playing or
-/// scrubbing emits poseChanged(), which the window turns into a viewport pose. Keys on
-/// the slider: ←/→ one pose, PgUp/PgDn ten, Home/End first/last.
+/// scrubbing emits poseChanged(), which the window turns into a viewport pose. A click on
+/// the slider goes to the pose under the cursor; keys on it: ←/→ one pose, PgUp/PgDn ten,
+/// Home/End first/last, Space play/pause (ui/common/frame_slider.h).
 
 #include <QElapsedTimer>
 #include <QStringList>
@@ -16,11 +17,12 @@
 
 class QCheckBox;
 class QLabel;
-class QSlider;
 class QSpinBox;
 class QToolButton;
 
 namespace trimlab::ui {
+
+class FrameSlider;
 
 class TimelinePanel : public QWidget {
     Q_OBJECT
@@ -69,7 +71,7 @@ private:
     void restartClock();
     void updateRateLabel();
 
-    QSlider* m_slider = nullptr;
+    FrameSlider* m_slider = nullptr;
     QLabel* m_poseLabel = nullptr;
     QLabel* m_rateLabel = nullptr;
     QToolButton* m_play = nullptr;

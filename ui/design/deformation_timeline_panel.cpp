@@ -2,6 +2,8 @@
 
 #include "ui/design/deformation_track.h"
 
+#include "ui/common/frame_slider.h"
+
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -49,8 +51,9 @@ void DeformationTimelinePanel::createControls()
     m_play = new QToolButton(this);
     m_play->setObjectName(QStringLiteral("deformationPlayButton"));
     row->addWidget(m_play);
-    m_slider = new QSlider(Qt::Horizontal, this);
+    m_slider = new FrameSlider(this);
     m_slider->setObjectName(QStringLiteral("deformationSlider"));
+    m_slider->setToolTip(tr("Frame: %1").arg(FrameSlider::inputHelp()));
     row->addWidget(m_slider, 1);
     m_frameLabel = new QLabel(this);
     m_frameLabel->setObjectName(QStringLiteral("deformationFrameLabel"));
@@ -77,6 +80,10 @@ void DeformationTimelinePanel::createControls()
     connect(m_track, &DeformationTrack::frameClicked, this, &DeformationTimelinePanel::chooseFrame);
     connect(m_slider, &QSlider::valueChanged, this, &DeformationTimelinePanel::chooseFrame);
     connect(m_play, &QToolButton::clicked, this, &DeformationTimelinePanel::togglePlaying);
+    connect(m_slider, &FrameSlider::playToggleRequested, this, [this] {
+        if (m_play->isEnabled())
+            togglePlaying();
+    });
     connect(m_fps, &QSpinBox::valueChanged, this, [this](int fps) {
         m_timer.setInterval(1000 / fps);
         emit fpsChanged(fps);

@@ -5,8 +5,9 @@
 /// scrub slider, play/pause with frames per second, and the sets' rules: "New set" (N)
 /// starts a set of concurrent disjoint deformations with the chosen rule, and choosing a
 /// rule while strokes are being made changes the current (last) set's rule. Both are
-/// requests: the window turns them into undoable commands. Keys on the slider: ←/→ one
-/// frame, Home/End first/last.
+/// requests: the window turns them into undoable commands. A click on the slider goes to
+/// the frame under the cursor; keys on it: ←/→ one frame, Home/End first/last, Space
+/// play/pause (ui/common/frame_slider.h).
 
 #include "core/timeline/timeline.h"
 
@@ -15,13 +16,13 @@
 
 class QComboBox;
 class QLabel;
-class QSlider;
 class QSpinBox;
 class QToolButton;
 
 namespace trimlab::ui {
 
 class DeformationTrack;
+class FrameSlider;
 
 class DeformationTimelinePanel : public QWidget {
     Q_OBJECT
@@ -69,7 +70,7 @@ private:
     void updatePlayButton();
 
     DeformationTrack* m_track = nullptr;
-    QSlider* m_slider = nullptr;
+    FrameSlider* m_slider = nullptr;
     QLabel* m_frameLabel = nullptr;
     QToolButton* m_play = nullptr;
     QSpinBox* m_fps = nullptr;

@@ -2,6 +2,8 @@
 
 #include "ui/viewport/viewport_widget.h"
 
+#include "ui/common/frame_slider.h"
+
 #include <QAction>
 #include <QDialog>
 #include <QDialogButtonBox>
@@ -86,6 +88,12 @@ void showKeyboardShortcuts(QMainWindow& window)
                              dialog);
     mouse->setWordWrap(true);
     layout->addWidget(mouse);
+    auto* timelines = new QLabel(QObject::tr("<b>On a timeline's slider</b> (Timeline, Deformation timeline): %1")
+                                     .arg(FrameSlider::inputHelp().toHtmlEscaped()),
+                                 dialog);
+    timelines->setObjectName(QStringLiteral("timelineKeysLabel"));
+    timelines->setWordWrap(true);
+    layout->addWidget(timelines);
     addCloseButton(*dialog, *layout);
     dialog->resize(640, 520);
     dialog->show();
