@@ -25,6 +25,13 @@ namespace trimlab::ui {
 
 namespace {
 
+// "a · b · c" as one gesture per line: a plain-text tooltip is never wrapped, and all
+// gestures on one line were wider than the screen.
+QString helpLines(const QString& help)
+{
+    return help.split(QStringLiteral(" · ")).join(QLatin1Char('\n'));
+}
+
 /// Pixels of margin around the message painted into the view.
 constexpr int kMessageMargin = 24;
 /// QWheelEvent::angleDelta of one wheel notch (15° in eighths of a degree).
@@ -49,7 +56,7 @@ ViewportWidget::ViewportWidget(QWidget* parent)
     setFormat(render::OffscreenGlContext::requestedFormat());
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
-    setToolTip(cameraHelp());
+    setToolTip(helpLines(cameraHelp()));
 }
 
 QString ViewportWidget::cameraHelp()
@@ -66,6 +73,7 @@ ViewportWidget::~ViewportWidget()
 void ViewportWidget::setScene(std::shared_ptr<const Scene> scene)
 {
     m_orbit.setSceneBounds(scene ? scene->worldBounds() : Bounds{});
+    m_motionBounds.reset(); // they were the previous scene's poses
     m_content->setScene(std::move(scene));
     m_resetPending = true;
     update();
@@ -88,10 +96,18 @@ void ViewportWidget::setSceneTransforms(std::shared_ptr<const Scene> scene)
 void ViewportWidget::setTool(ViewportTool* tool)
 {
     m_tool = tool;
-    setToolTip(tool ? tool->mouseHelp() : cameraHelp()); // what the mouse does now, not the camera alone
+    setToolTip(helpLines(tool ? tool->mouseHelp() : cameraHelp())); // what the mouse does now
     setMouseTracking(tool != nullptr); // hover feedback (the brush's region) needs moves without buttons
     if (m_drag == Drag::Tool)
         m_drag = Drag::None;
+}
+
+void ViewportWidget::offerTool(ViewportTool* tool, bool usable)
+{
+    if (usable && !m_tool)
+        setTool(tool);
+    else if (!usable && m_tool == tool)
+        setTool(nullptr);
 }
 
 std::optional<TrimPixel> ViewportWidget::trimPixelAt(QPointF position)
@@ -112,6 +128,12 @@ void ViewportWidget::setViewBounds(const Bounds& bounds)
 {
     m_orbit.setSceneBounds(bounds);
     update();
+}
+
+void ViewportWidget::setMotionBounds(const Bounds& bounds)
+{
+    m_motionBounds = bounds;
+    setViewBounds(bounds);
 }
 
 void ViewportWidget::setTrimSettings(const TrimSettings& settings)
@@ -208,7 +230,8 @@ void ViewportWidget::setFramingPoints(std::vector<glm::dvec3> worldPoints)
 
 // What Home and Fit frame: the surface as shown now (the pose, not every frame of the
 // history the depth range must hold, so Home frames a mesh the same way whatever was
-// drawn before) and the points drawn over it (a control net reaches past its surface).
+// drawn before), the points drawn over it (a control net reaches past its surface) and
+// an animation's every pose (a walk leaves the first pose's box).
 Bounds ViewportWidget::shownBounds()
 {
     Bounds bounds;
@@ -216,6 +239,8 @@ Bounds ViewportWidget::shownBounds()
         bounds = posed->worldBounds();
     for (const glm::dvec3& p : m_framingPoints)
         bounds.extend(p);
+    if (m_motionBounds && m_motionBounds->valid())
+        bounds.extend(*m_motionBounds);
     return bounds;
 }
 

@@ -21,7 +21,7 @@
 /// dynamic rules (a chain shown) frames render through a DynamicTrimRenderer: the chain's
 /// levels are uploaded once, and a drag's replaced shown level keeps the cached
 /// characterizations of the earlier sets. An animation passes the bounds of all its poses
-/// (setViewBounds) so that no pose leaves the depth range.
+/// (setMotionBounds) so that no pose leaves the depth range and Fit frames the motion.
 ///
 /// OpenGL failures (no 4.3 context, a shader that does not build) never crash and never
 /// leave a silent black view: the message is painted into the view and emitted once
@@ -90,10 +90,15 @@ public:
     void setSceneTransforms(std::shared_ptr<const Scene> scene);
     /// The scene shown (nullptr: none).
     [[nodiscard]] const std::shared_ptr<const Scene>& scene() const { return m_content->scene(); }
-    /// The box the camera's depth range must enclose and Fit frames (default: the
-    /// scene's world bounds). An animation passes the bounds of all its poses, so that no
-    /// pose reaches past the far plane. Re-renders; the camera itself is not moved.
+    /// The box the camera's depth range must enclose (default: the scene's world bounds):
+    /// a design history passes every frame's, so that no frame reaches past the far plane.
+    /// Fit and Home still frame the surface as shown. Re-renders; the camera itself is not
+    /// moved.
     void setViewBounds(const Bounds& bounds);
+    /// The bounds of every pose of an animation: the depth range encloses them (as
+    /// setViewBounds), and Fit and Home frame them too, so that a figure walking across
+    /// the scene stays in view while it plays. setScene() forgets them.
+    void setMotionBounds(const Bounds& bounds);
     /// How the pose of the last static frame reached the GPU: skinned or subdivided there,
     /// or the CPU's positions uploaded.
     [[nodiscard]] render::PoseEvaluation poseEvaluation() const { return m_view.lastPoseEvaluation(); }
@@ -169,6 +174,10 @@ public:
     [[nodiscard]] static QString cameraHelp();
     /// The tool set last (nullptr: none).
     [[nodiscard]] ViewportTool* tool() const { return m_tool; }
+    /// `tool` can work (`usable`: it has something to edit) or cannot: it becomes the
+    /// tool when the view has none, and stops being it when it cannot work, leaving
+    /// another tool that holds the view alone either way.
+    void offerTool(ViewportTool* tool, bool usable);
 
     /// The dynamic renderer's numbers of the last frame (nullopt for static frames).
     [[nodiscard]] const std::optional<render::DynamicFrameStats>& lastDynamicStats() const
@@ -263,6 +272,7 @@ private:
     render::ContentSubscription m_repaint; ///< a change of the content repaints
     bool m_resetPending = false;
     std::vector<glm::dvec3> m_framingPoints; ///< setFramingPoints
+    std::optional<Bounds> m_motionBounds;    ///< setMotionBounds; cleared by setScene
     QString m_error;
     QString m_reportedError;
     ViewportTool* m_tool = nullptr;

@@ -283,7 +283,7 @@ void SceneSwitch::onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loade
                           openedSettings(nullptr, loaded->bounds, false)),
               true);
     m_features.skeleton->panel()->setScene(nullptr); // the timeline drives the poses of an animation
-    m_viewport->setViewBounds(loaded->bounds);       // no pose may cross the far plane
+    m_viewport->setMotionBounds(loaded->bounds);     // Fit frames every pose; none crosses the far plane
     m_features.animation->show(loaded);
     const MeshAnimation& animation = *loaded->animation;
     const QString source = QString::fromStdString(m_scene->source);

@@ -10,6 +10,7 @@
 #include "meeting_balls.h"
 #include "message_box_closer.h"
 #include "named_child.h"
+#include "plain_obj.h"
 #include "shown_main_window.h"
 #include "widget_test_main.h"
 #include "posed_frame_check.h"
@@ -28,6 +29,8 @@
 #include "ui/animation/animation_workspace.h"
 #include "ui/animation/pose_history_bar.h"
 #include "core/mesh/mesh_io.h"
+#include "core/scene/shape_generators.h"
+#include "core/view/camera.h"
 #include "ui/render_panel/render_panel.h"
 #include "ui/animation/segment_stream.h"
 #include "ui/animation/segmentation_panel.h"
@@ -43,6 +46,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -130,6 +134,7 @@ class TestAnimationPanel : public QObject {
 private slots:
     void initTestCase();
     void timelineShowsEveryPoseLikeTheReference();
+    void fitFramesEveryPose();
     void playbackAndGltfAndDrop();
     void playbackKeepsTimeOnASlowView();
     void dynamicRuleCarriesTheClassificationFromPoseToPose();
@@ -376,6 +381,42 @@ void TestAnimationPanel::skinnedGltfPlaysOnTheGpu()
     QCOMPARE(window->viewport()->poseEvaluation(), render::PoseEvaluation::GpuSkinning);
     if (const auto problem = poseDisagreement(*window, 0))
         QFAIL(qPrintable(*problem));
+}
+
+// A box that travels 6 units along x over three poses: the view opened on it, and Fit
+// (F) at its first pose, frame every pose, so the box never leaves the picture as it
+// plays.
+void TestAnimationPanel::fitFramesEveryPose()
+{
+    const QString folder = m_dir.filePath(QStringLiteral("travelling_box"));
+    QVERIFY(QDir().mkpath(folder));
+    for (int pose = 0; pose < 3; ++pose) {
+        const double x = 3.0 * pose;
+        const TriangleMesh box = makeBox({x - 0.5, -0.5, -0.5}, {x + 0.5, 0.5, 0.5});
+        QVERIFY(test::writePlainObj(box, folder + QStringLiteral("/pose_%1.obj").arg(pose)));
+    }
+    auto window = showWindow(QStringLiteral("fit-motion"));
+    QVERIFY(openAndWait(*window, folder));
+    const MeshAnimation& animation = *window->animation()->animation;
+    QCOMPARE(animation.poseCount(), std::size_t(3));
+    const auto everyPoseInView = [&](const Camera& camera) {
+        const QSize size = window->viewport()->framePixelSize();
+        const glm::dmat4 clip = projectionMatrix(camera, double(size.width()) / size.height()) * viewMatrix(camera);
+        for (const auto& pose : animation.poses)
+            for (const glm::vec3& p : pose) {
+                const glm::dvec4 c = clip * glm::dvec4(glm::dvec3(p), 1.0);
+                if (c.w <= 0.0 || std::abs(c.x) > c.w || std::abs(c.y) > c.w)
+                    return false;
+            }
+        return true;
+    };
+    QVERIFY(everyPoseInView(window->viewport()->camera()));
+    window->viewport()->setCamera(Camera{{0.0, 0.0, 1.5}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 45.0});
+    QVERIFY(!everyPoseInView(window->viewport()->camera())); // close up: the case arises
+    window->viewport()->setFocus();
+    QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(window->viewport(), Qt::Key_F); }));
+    QCOMPARE(window->animationWorkspace()->timelinePanel()->pose(), 0);
+    QVERIFY(everyPoseInView(window->viewport()->camera()));
 }
 
 // Play advances the poses on a timer and pauses again; a glTF animation opens through the
