@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -68,6 +69,16 @@ std::vector<ControlPointTarget> controlBrushTargets(std::span<const glm::dvec3> 
         targets.push_back({std::uint32_t(c), controlPoints[c] + offset});
     }
     return targets;
+}
+
+double nearestControlPointDistance(std::span<const glm::dvec3> controlPoints, const glm::dvec3& anchor)
+{
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const glm::dvec3& p : controlPoints) {
+        const glm::dvec3 d = p - anchor;
+        nearest = std::min(nearest, std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z));
+    }
+    return nearest;
 }
 
 std::vector<ControlPointTarget> translateControlPoints(const EditableSurface& surface,

@@ -33,6 +33,11 @@ namespace trimlab {
                                                                   const glm::dvec3& anchor, const glm::dvec3& drag,
                                                                   const deform::BrushSettings& brush);
 
+/// The Euclidean distance from `anchor` to the nearest of `controlPoints` (infinity when
+/// there are none): a brush whose radius does not exceed it moves no control point, which
+/// the designer must be told rather than see nothing happen.
+[[nodiscard]] double nearestControlPointDistance(std::span<const glm::dvec3> controlPoints, const glm::dvec3& anchor);
+
 /// Moves the selected control points rigidly by `drag` (e.g. the mouse drag unprojected
 /// into the view plane through the selection's centroid: the UI computes that vector
 /// from its camera). Tied points follow. Duplicate indices are ignored. Throws

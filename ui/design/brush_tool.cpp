@@ -75,6 +75,10 @@ void BrushTool::setSession(DesignSession* session)
     m_controlDrag.reset();
     clearRegionTint();
     m_session = session;
+    // Without a history there is nothing to deform: the mouse is the camera's again (and
+    // the view's tooltip says so) until a history is shown with the brush still on.
+    if (m_enabled)
+        m_viewport->offerTool(this, m_session != nullptr);
 }
 
 void BrushTool::setSettings(const deform::BrushSettings& settings)
@@ -95,7 +99,7 @@ void BrushTool::setEnabled(bool enabled)
     m_hoverTimer.stop();
     clearRegionTint();
     // Another tool may have taken the viewport already (Edit ▸ Control Points): leave it.
-    if (enabled)
+    if (enabled && m_session)
         m_viewport->setTool(this);
     else if (m_viewport->tool() == this)
         m_viewport->setTool(nullptr);
@@ -259,6 +263,11 @@ void BrushTool::releaseControlDrag()
     m_session->syncSurface(); // back at the history's control points, where the frame starts
     if (!drag->moved() || targets.empty()) {
         m_shown.showPose(m_session->shownPositions());
+        if (drag->moved() && drag->nearestControlPoint() >= drag->radius())
+            emit statusMessage(tr("The brush reached no control point: the nearest is %1 from where you pressed, "
+                                  "beyond the radius %2. Widen the radius in the Brush panel.")
+                                   .arg(drag->nearestControlPoint(), 0, 'g', 3)
+                                   .arg(drag->radius(), 0, 'g', 3));
         return;
     }
     if (m_session->timeline().frameCount() != m_dragFrameCount) {

@@ -52,11 +52,14 @@ public:
     explicit BrushTool(ViewportWidget* viewport, QObject* parent = nullptr);
     ~BrushTool() override;
 
-    /// The history to edit (nullptr: the tool declines every press).
+    /// The history to edit (nullptr: the tool declines every press). While on, the tool
+    /// leaves the viewport without a history (its mouse and tooltip are the camera's) and
+    /// takes it back, unless another tool has it, when a history comes.
     void setSession(DesignSession* session);
     void setSettings(const deform::BrushSettings& settings);
     [[nodiscard]] const deform::BrushSettings& settings() const { return m_settings; }
-    /// Installed on the viewport while on; off clears the region tint.
+    /// Installed on the viewport while on and a history is edited; off clears the region
+    /// tint.
     void setEnabled(bool enabled);
     [[nodiscard]] bool isEnabled() const { return m_enabled; }
     /// Whether the design history is shown under the dynamic rules (drags then replace the

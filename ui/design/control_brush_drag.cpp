@@ -30,7 +30,8 @@ ControlBrushDrag::ControlBrushDrag(DesignSession& session, const DragView& view,
       m_settings(settings),
       m_normal(
           triangleNormal(session.timeline().currentPositions(), session.timeline().base().triangles.at(pick.triangle))),
-      m_preview(*session.surface(), session.timeline().currentPositions())
+      m_preview(*session.surface(), session.timeline().currentPositions()),
+      m_nearest(nearestControlPointDistance(m_preview.startControlPoints(), pick.anchor))
 {
     // Checks the settings now, so that a bad radius is refused at the press.
     (void)controlBrushTargets({}, pick.anchor, glm::dvec3(0.0), settings);

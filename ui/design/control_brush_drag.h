@@ -37,6 +37,10 @@ public:
     /// The targets of the last move (empty before the first or when nothing is in reach).
     [[nodiscard]] const std::vector<ControlPointTarget>& targets() const { return m_targets; }
     [[nodiscard]] bool moved() const { return m_drag != glm::dvec3(0.0); }
+    /// How far the nearest control point is from the grabbed point, and the brush radius:
+    /// a radius not beyond that distance moves nothing.
+    [[nodiscard]] double nearestControlPoint() const { return m_nearest; }
+    [[nodiscard]] double radius() const { return m_settings.radius; }
 
 private:
     DesignSession& m_session;
@@ -47,6 +51,7 @@ private:
     ControlPreview m_preview;
     std::vector<ControlPointTarget> m_targets;
     glm::dvec3 m_drag{0.0};
+    double m_nearest = 0.0;
 };
 
 } // namespace trimlab::ui

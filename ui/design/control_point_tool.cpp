@@ -45,6 +45,9 @@ void ControlPointTool::setSession(DesignSession* session)
     cancelDrag();
     m_session = session;
     setSelection({});
+    // Without a history there are no control points to pick: the mouse is the camera's.
+    if (m_enabled)
+        m_viewport->offerTool(this, m_session != nullptr);
 }
 
 void ControlPointTool::setEnabled(bool enabled)
@@ -55,7 +58,7 @@ void ControlPointTool::setEnabled(bool enabled)
     m_enabled = enabled;
     m_overlay->setHovered(std::nullopt);
     // The brush may have taken the viewport already: leave it.
-    if (enabled)
+    if (enabled && m_session)
         m_viewport->setTool(this);
     else if (m_viewport->tool() == this)
         m_viewport->setTool(nullptr);

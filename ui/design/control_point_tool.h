@@ -63,9 +63,10 @@ public:
     ~ControlPointTool() override;
 
     /// The history to edit (nullptr, or one without a surface: the tool declines every
-    /// press). Clears the selection.
+    /// press). Clears the selection. While on, the tool leaves the viewport without a
+    /// history and takes it back, unless another tool has it, when a history comes.
     void setSession(DesignSession* session);
-    /// Installed on the viewport while on.
+    /// Installed on the viewport while on and a history is edited.
     void setEnabled(bool enabled);
     [[nodiscard]] bool isEnabled() const { return m_enabled; }
     /// Whether the viewport renders the dynamic rules (drags then replace its shown level).

@@ -276,6 +276,14 @@ void TestSurfaceEdit::brushMovesOnlyPointsWithinTheRadius()
         QVERIFY2(std::abs(t.position.y - smooth * 0.5 * 2.0) < 1e-15, qPrintable(QString::number(t.position.y)));
     }
     QCOMPARE(targets[0].position, glm::dvec3(0.0, 1.0, 0.0)); // the anchor: strength × drag
+    // The nearest point decides whether a radius reaches any: none within 0.2 of (2.2, 0, 0).
+    QCOMPARE(nearestControlPointDistance(points, glm::dvec3(2.2, 0.0, 0.0)), 2.2 - 2.0);
+    QCOMPARE(nearestControlPointDistance(points, glm::dvec3(0.5, 0.0, 0.0)), 0.0);
+    QVERIFY(std::isinf(nearestControlPointDistance({}, glm::dvec3(0.0))));
+    brush.radius = 0.2;
+    QVERIFY(controlBrushTargets(points, glm::dvec3(2.2, 0.0, 0.0), drag, brush).empty());
+    brush.radius = 0.21;
+    QCOMPARE(controlBrushTargets(points, glm::dvec3(2.2, 0.0, 0.0), drag, brush).size(), std::size_t(1));
     brush.radius = 0.0;
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)controlBrushTargets(points, glm::dvec3(0.0), drag, brush));
     // On a sphere: only control points within the radius move, and the edit is a frame.

@@ -10,6 +10,7 @@
 #include "message_box_closer.h"
 
 #include "ui/design/brush_panel.h"
+#include "ui/design/brush_tool.h"
 #include "ui/design/deformation_timeline_panel.h"
 #include "ui/design/project_files.h"
 #include "ui/design/control_net_overlay.h"
@@ -26,6 +27,7 @@
 #include "core/catalog/fig8_13_history.h"
 #include "core/catalog/scene_source.h"
 #include "core/catalog/surface_scenes.h"
+#include "core/design/control_brush.h"
 #include "core/timeline/project_file.h"
 
 #include <QAction>
@@ -141,6 +143,7 @@ private slots:
     void boxSelectsControlPoints();
     void pickShiftPickDragUndoRedo();
     void brushMovesControlPoints();
+    void brushOutOfReachSaysSo();
     void subdivisionLevelAndShowNet();
     void brokenCageFileNamesFileAndLine();
     void alongNormalEditsAndDynamicRules();
@@ -472,6 +475,36 @@ void TestSurfaceEditing::brushMovesControlPoints()
     QVERIFY(frame.controlMoves.size() < session->surface()->controlPointCount());
     QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
     QCOMPARE(session->timeline().frameCount(), 1);
+}
+
+// A brush too small to reach any control point records nothing and says why (the
+// nearest point's distance and the radius), instead of silently doing nothing.
+void TestSurfaceEditing::brushOutOfReachSaysSo()
+{
+    auto window = showWindow(QStringLiteral("brush-reach"));
+    QVERIFY(create(*window, "createNurbsSphereAction"));
+    DesignSession* session = window->designWorkspace()->session();
+    BrushPanel* panel = window->designWorkspace()->brushPanel();
+    auto* radiusBox = panel->findChild<QDoubleSpinBox*>(QStringLiteral("brushRadiusSpinBox"));
+    QVERIFY(radiusBox);
+    radiusBox->setValue(radiusBox->minimum()); // as the user's edit: the brush takes it
+    const double radius = panel->settings().radius;
+    QCOMPARE(window->designWorkspace()->brushTool()->settings().radius, radius);
+    // The press lands near the unit vector towards the eye (brushMovesControlPoints); no
+    // control point of the sphere lies within the radius of it.
+    const Camera camera = window->viewport()->camera();
+    const glm::dvec3 anchor = glm::normalize(camera.eye - camera.target);
+    QVERIFY(nearestControlPointDistance(session->surface()->controlPoints(), anchor) > radius + 0.05);
+    window->designWorkspace()->brushAction()->setChecked(true);
+    const QPoint centre(kViewportSize.width() / 2, kViewportSize.height() / 2);
+    QTest::mousePress(window->viewport(), Qt::LeftButton, {}, centre);
+    for (int i = 1; i <= 5; ++i)
+        QTest::mouseMove(window->viewport(), centre + QPoint(5 * i, 0));
+    QTest::mouseRelease(window->viewport(), Qt::LeftButton, {}, centre + QPoint(25, 0));
+    QCOMPARE(session->timeline().frameCount(), 1);
+    const QString message = window->statusBar()->currentMessage();
+    QVERIFY2(message.contains(QStringLiteral("reached no control point")), qPrintable(message));
+    QVERIFY2(message.contains(QString::number(radius, 'g', 3)), qPrintable(message));
 }
 
 // A fresh subdivision cube: level 2 → 6·4² quads = 192 triangles, level 1 → 48; the

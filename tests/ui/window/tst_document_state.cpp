@@ -12,6 +12,7 @@
 #include "test_paths.h"
 
 #include "ui/design/design_session.h"
+#include "ui/design/brush_tool.h"
 #include "ui/design/design_workspace.h"
 #include "ui/design/history_exports.h"
 #include "ui/design/project_files.h"
@@ -24,6 +25,7 @@
 #include "ui/render_panel/render_workspace.h"
 
 #include "render/shown_content.h"
+#include "ui/viewport/viewport_widget.h"
 
 #include "core/scene/shape_generators.h"
 
@@ -130,6 +132,7 @@ private slots:
     void aReopenedProjectKeepsItsClassification();
     void theTitleFollowsSceneProjects();
     void theCapSpacingFollowsAScaledObject();
+    void theBrushLeavesTheViewWithTheDesign();
 
 private:
     [[nodiscard]] QString meshFile(const char* name, const glm::dvec3& centre, double radius);
@@ -304,6 +307,33 @@ void TestDocumentState::theCapSpacingFollowsAScaledObject()
         return f.scene->objects[1].modelMatrix[0][0] == 3.0 &&
                std::abs(f.settings.cap.spacing - fraction * radius) < 1e-9;
     }));
+}
+
+// The brush belongs to a design: opening an animation with the brush on gives the mouse
+// (and the view's tooltip, one line per gesture) back to the camera; the next design gets
+// the brush again, as the Brush button still says.
+void TestDocumentState::theBrushLeavesTheViewWithTheDesign()
+{
+    auto window = showInspectWindow(m_dir.filePath(QStringLiteral("brush.ini")), kSphere);
+    QVERIFY(window->designWorkspace()->session());
+    window->designWorkspace()->brushAction()->setChecked(true);
+    ViewportWidget* viewport = window->viewport();
+    QCOMPARE(viewport->tool(), static_cast<ViewportTool*>(window->designWorkspace()->brushTool()));
+
+    QSignalSpy loaded(window.get(), &ui::MainWindow::animationLoaded);
+    window->openAnimation(QString::fromStdString(testDataPath("animations/folding_box").string()));
+    QVERIFY(QTest::qWaitFor([&] { return !loaded.isEmpty() && !window->isLoading(); }, kInspectWaitMs));
+    QVERIFY(!window->designWorkspace()->session());
+    QCOMPARE(viewport->tool(), nullptr);
+    QVERIFY2(viewport->toolTip().contains(QStringLiteral("orbit")) && viewport->toolTip().contains(QLatin1Char('\n')),
+             qPrintable(viewport->toolTip()));
+    for (const QString& line : viewport->toolTip().split(QLatin1Char('\n')))
+        QVERIFY2(line.size() <= 80, qPrintable(line));
+
+    QVERIFY(openAndWait(*window, kSphere));
+    QVERIFY(window->designWorkspace()->session());
+    QVERIFY(window->designWorkspace()->brushAction()->isChecked());
+    QCOMPARE(viewport->tool(), static_cast<ViewportTool*>(window->designWorkspace()->brushTool()));
 }
 
 QTEST_MAIN(TestDocumentState)
