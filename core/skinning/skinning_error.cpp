@@ -1,5 +1,7 @@
 #include "core/skinning/skinning_error.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -64,6 +66,17 @@ SkinningError measureSkinningError(const std::vector<PosePositions>& original,
     error.diagonal = boundingDiagonal(original[std::min(restPose, poses - 1)]);
     error.eRmsDiagonal = error.diagonal > 0.0 ? error.eRms / error.diagonal : 0.0;
     return error;
+}
+
+std::vector<double> poseVertexErrors(const PosePositions& original, const PosePositions& approximation)
+{
+    if (original.size() != approximation.size())
+        throw std::invalid_argument("poseVertexErrors: the pose has " + std::to_string(original.size()) +
+                                    " vertices, its approximation " + std::to_string(approximation.size()));
+    std::vector<double> errors(original.size());
+    for (std::size_t j = 0; j < original.size(); ++j)
+        errors[j] = glm::length(original[j] - approximation[j]);
+    return errors;
 }
 
 std::vector<PosePositions> animationPositions(const MeshAnimation& animation)

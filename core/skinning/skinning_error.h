@@ -42,6 +42,12 @@ struct SkinningError {
                                                  const std::vector<PosePositions>& approximation,
                                                  std::size_t restPose = 0);
 
+/// ‖v_j − v′_j‖ for every vertex j of one pose (#V values; throws std::invalid_argument
+/// when the sizes differ): the error heat map of the pose shown. perVertex above sums over
+/// every pose, so an edit that moves one bone at a late pose barely changes it; this shows
+/// the pose the user looks at.
+[[nodiscard]] std::vector<double> poseVertexErrors(const PosePositions& original, const PosePositions& approximation);
+
 /// The original poses of `animation` in double precision (#P × #V).
 [[nodiscard]] std::vector<PosePositions> animationPositions(const MeshAnimation& animation);
 

@@ -285,9 +285,28 @@ QString SkinningPanel::readyStatus() const
 
 void SkinningPanel::setCurrentPose(int pose)
 {
+    const bool moved = pose != m_currentPose;
     m_currentPose = pose;
     m_chart->setCurrentPose(pose);
     updateEditPose();
+    // The heat map is the pose's. Only on a move: the window shows the pose again on
+    // every displayChanged(), and calls this then.
+    if (moved && m_view == SkinningView::ErrorHeatMap && m_session)
+        refreshDisplay();
+}
+
+std::size_t SkinningPanel::heatMapPose() const
+{
+    const std::size_t poses = m_session ? m_session->approximation().size() : 0;
+    return poses == 0 ? 0 : std::min(std::size_t(std::max(m_currentPose, 0)), poses - 1);
+}
+
+std::vector<double> SkinningPanel::heatMapErrors() const
+{
+    if (!m_session)
+        return {};
+    const std::size_t pose = heatMapPose();
+    return poseVertexErrors(m_session->fit().original.at(pose), m_session->approximation().at(pose));
 }
 
 void SkinningPanel::setChoices(const SkinningChoices& choices)
@@ -446,9 +465,9 @@ void SkinningPanel::showResult()
                        .arg(error.eRmsDiagonal, 0, 'g', 3)
                        .arg(error.maxDistance, 0, 'g', 3);
     if (m_session->isEdited())
-        text += tr(" · edited; fitted E_RMS %1").arg(formatERms(result.error.eRms));
+        text += tr(" · edited; fitted E_RMS %1 thousandths").arg(formatERms(result.error.eRms));
     else if (result.weightCorrectionsKept || result.vertexCorrectionsKept)
-        text += tr(" · before corrections %1").arg(formatERms(result.uncorrectedError.eRms));
+        text += tr(" · E_RMS before corrections %1 thousandths").arg(formatERms(result.uncorrectedError.eRms));
     m_error->setText(text);
     m_times->setText(stageTimesText(result));
     if (m_session->isEdited())
@@ -463,10 +482,11 @@ void SkinningPanel::refreshDisplay()
 {
     const bool heatMap = m_view == SkinningView::ErrorHeatMap && m_session;
     if (heatMap) {
-        const std::vector<double>& perVertex = m_session->error().perVertex;
-        const double largest = perVertex.empty() ? 0.0 : *std::max_element(perVertex.begin(), perVertex.end());
-        m_displayColors = heatMapRgba8(perVertex, largest);
-        m_legend->setRange(largest, tr("length units"));
+        // The pose shown, on the scale of the largest error of any pose, so that colours
+        // compare from pose to pose and a bone edit shows where and when it moved the mesh.
+        const double largest = m_session->error().maxDistance;
+        m_displayColors = heatMapRgba8(heatMapErrors(), largest);
+        m_legend->setRange(largest, tr("length units, pose %1").arg(heatMapPose()));
     } else {
         m_displayColors.clear();
     }

@@ -11,8 +11,9 @@
 /// a chart with a dot on the timeline's pose, and the "Show" selector:
 /// - Original: the animation's own poses (the timeline plays them);
 /// - Approximation: the skinned reconstruction of each pose (shownPose());
-/// - Error heat map: the per-vertex error as vertex colors (displayColors()) on the
-///   original poses, with a legend.
+/// - Error heat map: each vertex's error at the timeline's pose as vertex colors
+///   (displayColors()) on the original poses, on the scale of the largest error of any
+///   pose, with a legend naming the pose; it follows the timeline and every bone edit.
 ///
 /// Pose editing (thesis 4.1.3): a bone of the list gets an extra rotation about its
 /// centroid and a translation at the timeline's pose (skinning_bone_edit.h); the core
@@ -153,6 +154,10 @@ private:
     void onViewChosen();
     void showResult();
     void refreshDisplay();
+    /// The pose the heat map shows: the timeline's, within the fit's poses.
+    [[nodiscard]] std::size_t heatMapPose() const;
+    /// Each vertex's distance from the original at heatMapPose() (empty without a fit).
+    [[nodiscard]] std::vector<double> heatMapErrors() const;
     void updateControls();
     void updateEditPose();
     void setStatus(const QString& text);

@@ -210,6 +210,10 @@ void TestSkinningFit::errorMetricByHand()
     QVERIFY(std::abs(e.perVertex[1] - 5.0 / std::sqrt(2.0)) < 1e-15);
     QCOMPARE(e.maxDistance, 5.0);
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)measureSkinningError(original, {}));
+    // The heat map of one pose: the distances of that pose alone.
+    QCOMPARE(poseVertexErrors(original[1], approx[1]), (std::vector<double>{0.0, 5.0}));
+    QCOMPARE(poseVertexErrors(original[0], approx[0]), (std::vector<double>{0.0, 0.0}));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)poseVertexErrors(original[0], {}));
 }
 
 void TestSkinningFit::weightsFromSegmentation()

@@ -281,17 +281,28 @@ void TestSkinningPanel::approximationAndHeatMapReachTheViewport()
     QVERIFY(waitForNewFrame(*window, [&] { chosen = chooseByKeys(view, QStringLiteral("Error heat map")); }));
     QVERIFY(chosen);
     QVERIFY(!panel->shownPose(last)); // the heat map lies on the original poses
-    const std::vector<double>& perVertex = panel->session()->error().perVertex;
-    QCOMPARE(perVertex.size(), window->animation()->animation->vertexCount());
-    const double largest = *std::max_element(perVertex.begin(), perVertex.end());
-    QCOMPARE(panel->displayColors(), heatMapRgba8(perVertex, largest));
+    // The errors of the pose shown, on the scale of the largest error of any pose.
+    const SkinningSession& session = *panel->session();
+    const auto poseMap = [&](int pose) {
+        return heatMapRgba8(poseVertexErrors(session.fit().original.at(std::size_t(pose)),
+                                             session.approximation().at(std::size_t(pose))),
+                            session.error().maxDistance);
+    };
+    QCOMPARE(panel->displayColors().size(), window->animation()->animation->vertexCount());
+    QCOMPARE(panel->displayColors(), poseMap(last));
     QVERIFY(panel->displayColors() != segmentColors);
     QCOMPARE(window->viewport()->content()->colorOwner(), render::ContentOwner::Skinning);
     QVERIFY(*window->viewport()->content()->colors() == panel->displayColors());
     auto* legend = child<HeatMapLegend>(panel, "heatMapLegend");
     QVERIFY(legend->isVisible());
-    QCOMPARE(legend->maxValue(), largest);
+    QCOMPARE(legend->maxValue(), session.error().maxDistance);
     QVERIFY(heatMapColor(0.0) != heatMapColor(1.0));
+    // It follows the timeline: the first pose's own errors, shown in the view.
+    QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(slider, Qt::Key_Home); }));
+    QCOMPARE(panel->displayColors(), poseMap(0));
+    QVERIFY(*window->viewport()->content()->colors() == poseMap(0));
+    QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(slider, Qt::Key_End); }));
+    QCOMPARE(panel->displayColors(), poseMap(last));
 
     QVERIFY(waitForNewFrame(*window, [&] { chosen = chooseByKeys(view, QStringLiteral("Original")); }));
     QVERIFY(chosen);
@@ -363,6 +374,11 @@ void TestSkinningPanel::boneEditPropagatesAndUndoes()
     QCOMPARE(session->error().eRms, editedError.eRms);
     QVERIFY(editedError.eRms > fittedERms);
     QVERIFY(child<QLabel>(panel, "skinningErrorLabel")->text().contains(SkinningPanel::formatERms(editedError.eRms)));
+    // Every error the label quotes has its unit, the fitted one beside the edit too.
+    const QString fittedText =
+        QStringLiteral("fitted E_RMS %1 thousandths").arg(SkinningPanel::formatERms(session->fit().result.error.eRms));
+    QVERIFY2(child<QLabel>(panel, "skinningErrorLabel")->text().contains(fittedText),
+             qPrintable(child<QLabel>(panel, "skinningErrorLabel")->text()));
     QCOMPARE(panel->errorChart()->points().at(1).y(), editedError.perPose[1]);
     QCOMPARE(panel->errorChart()->fittedPoints().size(), qsizetype(fittedPoses.size()));
     // The frame shows the edited approximation, which is far from the original pose.
