@@ -65,7 +65,7 @@ CsgExpressionField::CsgExpressionField(QWidget* parent) : QGroupBox(tr("CSG"), p
     layout->addLayout(buttons);
     connect(m_text, &QLineEdit::textEdited, this, &CsgExpressionField::onTextEdited);
     connect(m_text, &QLineEdit::editingFinished, this, &CsgExpressionField::typingFinished);
-    setSelectionCount(0);
+    setSelection(0, -1);
 }
 
 QPushButton* CsgExpressionField::addBuildButton(const QString& text, const QString& objectName, const QString& toolTip,
@@ -98,10 +98,16 @@ void CsgExpressionField::setExpression(const CsgExpression& expression)
     showError({});
 }
 
-void CsgExpressionField::setSelectionCount(int count)
+void CsgExpressionField::setSelection(int count, int differenceFrom)
 {
     for (QPushButton* button : {m_union, m_intersection, m_difference})
         button->setEnabled(count >= 2);
+    const bool named = count >= 2 && differenceFrom >= 0;
+    m_difference->setText(named ? tr("Difference: %1 − others").arg(differenceFrom) : tr("Difference"));
+    m_difference->setToolTip(named ? tr("Object %1 (the current row) minus the other selected objects; make another "
+                                        "selected row current to keep that one instead")
+                                         .arg(differenceFrom)
+                                   : tr("The current object minus the other selected objects"));
 }
 
 QString CsgExpressionField::errorText() const

@@ -35,8 +35,10 @@ public:
     /// Shows `expression` without emitting anything (kept as typed when the field already
     /// means it).
     void setExpression(const CsgExpression& expression);
-    /// Enables the build buttons (they need two or more selected objects).
-    void setSelectionCount(int count);
+    /// Enables the build buttons (they need two or more selected objects); the Difference
+    /// button names the object it keeps, `differenceFrom` (−1: none), so that the user
+    /// sees which object the others are subtracted from before clicking.
+    void setSelection(int count, int differenceFrom);
     [[nodiscard]] QLineEdit* lineEdit() const { return m_text; }
     /// The message under the field ("" while the text is valid).
     [[nodiscard]] QString errorText() const;

@@ -84,9 +84,11 @@ QWidget* ScenePanel::createObjectsGroup()
     m_addObject->setToolTip(tr("Load a mesh file into the scene as one more object (File ▸ Add Object…)"));
     connect(m_addObject, &QPushButton::clicked, this, &ScenePanel::addObjectRequested);
     layout->addWidget(m_addObject, 0, Qt::AlignLeft);
-    connect(m_table, &QTableWidget::currentCellChanged, this, [this] { refreshTransform(); });
-    connect(m_table, &QTableWidget::itemSelectionChanged, this,
-            [this] { m_csg->setSelectionCount(int(selectedObjects().size())); });
+    connect(m_table, &QTableWidget::currentCellChanged, this, [this] {
+        refreshTransform();
+        refreshBuildButtons(); // the difference keeps the current object
+    });
+    connect(m_table, &QTableWidget::itemSelectionChanged, this, &ScenePanel::refreshBuildButtons);
     return group;
 }
 
@@ -159,7 +161,7 @@ void ScenePanel::rebuildTable()
         m_table->setCurrentCell(std::clamp(previous, 0, m_scene.objectCount() - 1), NameColumn);
     refreshCsgColumns();
     refreshTransform();
-    m_csg->setSelectionCount(int(selectedObjects().size()));
+    refreshBuildButtons();
 }
 
 void ScenePanel::refreshCsgColumns()
@@ -223,16 +225,28 @@ void ScenePanel::onRuleChosen(int object, int comboIndex)
 
 // Union and intersection of the selection in id order; the difference keeps the current
 // object (when selected, else the lowest id) and removes the others.
-void ScenePanel::buildExpression(CsgOperation operation)
+std::vector<int> ScenePanel::buildOperands(CsgOperation operation) const
 {
     std::vector<int> objects = selectedObjects();
     objects.erase(std::remove_if(objects.begin(), objects.end(), [](int id) { return id >= kMaxCsgOperands; }),
                   objects.end());
-    if (objects.size() < 2)
-        return;
     const auto current = std::find(objects.begin(), objects.end(), currentObject());
     if (operation == CsgOperation::Difference && current != objects.end())
         std::rotate(objects.begin(), current, current + 1);
+    return objects;
+}
+
+void ScenePanel::refreshBuildButtons()
+{
+    const std::vector<int> difference = buildOperands(CsgOperation::Difference);
+    m_csg->setSelection(int(selectedObjects().size()), difference.size() >= 2 ? difference.front() : -1);
+}
+
+void ScenePanel::buildExpression(CsgOperation operation)
+{
+    const std::vector<int> objects = buildOperands(operation);
+    if (objects.size() < 2)
+        return;
     std::vector<CsgExpression> operands;
     for (const int id : objects)
         operands.push_back(CsgExpression::operand(id));

@@ -61,6 +61,10 @@ private:
     void refreshTransform();
     void onRuleChosen(int object, int comboIndex);
     void buildExpression(CsgOperation operation);
+    /// The operands a build button combines, in order (the difference's first is the one
+    /// kept).
+    [[nodiscard]] std::vector<int> buildOperands(CsgOperation operation) const;
+    void refreshBuildButtons();
 
     InspectScene& m_scene;
     QTableWidget* m_table = nullptr;

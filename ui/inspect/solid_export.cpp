@@ -38,8 +38,7 @@ void SolidExport::showExportDialog()
 {
     const Shown shown = m_shown();
     if (!shown.refusal.isEmpty()) {
-        m_context.showMessage(QMessageBox::Information, tr("Export Trimmed Solid"),
-                              tr("The view shows no solid to export."), shown.refusal);
+        m_context.showMessage(QMessageBox::Information, tr("Export Trimmed Solid"), shown.refusal, shown.remedy);
         return;
     }
     const QString path = m_context.askSavePath(
@@ -57,9 +56,9 @@ void SolidExport::exportTo(const QString& path)
     const Shown shown = m_shown();
     if (!shown.refusal.isEmpty() || m_task->isRunning()) {
         const QString reason = !shown.refusal.isEmpty() ? shown.refusal : tr("An export is already running.");
-        m_context.showMessage(QMessageBox::Information, tr("Export Trimmed Solid"),
-                              tr("The trimmed solid was not exported."), reason);
-        emit failed(path, reason);
+        const QString remedy = !shown.refusal.isEmpty() ? shown.remedy : QString();
+        m_context.showMessage(QMessageBox::Information, tr("Export Trimmed Solid"), reason, remedy);
+        emit failed(path, remedy.isEmpty() ? reason : reason + QLatin1Char(' ') + remedy);
         return;
     }
     m_path = path;

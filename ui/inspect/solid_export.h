@@ -29,12 +29,14 @@ class SolidExport : public QObject {
     Q_OBJECT
 public:
     /// What the view shows: the scene and the settings it is trimmed with, or why it has
-    /// no solid to export (`refusal` not empty).
+    /// no solid to export (`refusal` not empty) and what the user can do about it. The
+    /// refusal is the message's first line: the reason comes before anything generic.
     struct Shown {
         std::shared_ptr<const Scene> scene;
         TrimSettings settings;
-        QString name; ///< suggests the file name
-        QString refusal;
+        QString name;    ///< suggests the file name
+        QString refusal; ///< the reason, one sentence
+        QString remedy;  ///< what to change to get a solid; may be empty
     };
     using ShownSource = std::function<Shown()>;
 

@@ -179,6 +179,7 @@ SolidExport::Shown MainWindow::shownSolid() const
     const std::shared_ptr<const LoadedScene> loaded = scene();
     if (!frame || !frame->scene || !loaded) {
         shown.refusal = tr("Nothing is shown yet.");
+        shown.remedy = tr("Open a mesh, a project or a demo first.");
         return shown;
     }
     shown.scene = m_viewport->content()->posedScene(); // the frame shown, not the rest mesh
@@ -186,12 +187,15 @@ SolidExport::Shown MainWindow::shownSolid() const
     shown.name = m_context->sceneBaseName(QStringLiteral("trimlab"));
     if (!loaded->trimmable())
         shown.refusal = tr("The scene has no inside: %1").arg(QString::fromStdString(loaded->trimUnavailableReason()));
-    else if (!frame->settings.trimEnabled)
-        shown.refusal = tr("Trimming is off; turn it on in the Render panel to choose the rule that makes the solid.");
-    else if (m_render->choices().dynamicRules && m_design->session())
-        shown.refusal = tr("The view classifies by the dynamic rules of the deformation history, which remember "
-                           "more than one surface; choose Static rule under Classification to export what a static "
-                           "rule keeps of the frame shown.");
+    else if (!frame->settings.trimEnabled) {
+        shown.refusal = tr("Trimming is off, so the view shows no solid.");
+        shown.remedy = tr("Turn trimming on in the Render panel and choose the rule that makes the solid.");
+    } else if (m_render->choices().dynamicRules && m_design->session()) {
+        shown.refusal = tr("Dynamic rules cannot be exported exactly: they remember more than one surface of the "
+                           "deformation history.");
+        shown.remedy = tr("Choose Static rule under Classification to export what a static rule keeps of the "
+                          "frame shown.");
+    }
     return shown;
 }
 

@@ -95,6 +95,13 @@ void TestInspectCsg::builtAndTypedExpressionsMatchTheReference()
     selectRows(*panel, {0, 1});
     auto* difference = child<QPushButton>(window.get(), "csgDifferenceButton");
     QVERIFY(difference && difference->isEnabled());
+    // The button says which object the others are taken from: the current row.
+    selectRows(*panel, {1, 0});
+    QCOMPARE(panel->currentObject(), 1);
+    QCOMPARE(difference->text(), QStringLiteral("Difference: 1 − others"));
+    selectRows(*panel, {0, 1});
+    QCOMPARE(panel->currentObject(), 0);
+    QCOMPARE(difference->text(), QStringLiteral("Difference: 0 − others"));
     QTest::mouseClick(revealed(difference), Qt::LeftButton);
     QCOMPARE(window->inspectWorkspace()->scene()->csg().expression, parsed("0 - 1"));
     QCOMPARE(panel->csgField()->lineEdit()->text(), QStringLiteral("0 - 1"));

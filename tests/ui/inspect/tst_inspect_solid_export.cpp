@@ -1,7 +1,8 @@
 // File ▸ Export Trimmed Solid in the window: the CSG of the csg-trio demo as the Scene
 // panel holds it, exported off the UI thread, is the closed mesh the core computes for
 // the frame's own scene and settings (read back by TrimLab's loader); a view without a
-// solid (trimming off) is refused with its reason and writes nothing.
+// solid (trimming off, a design under dynamic rules) is refused with its reason first and
+// writes nothing.
 #include "inspect_window.h"
 #include "message_box_closer.h"
 #include "test_paths.h"
@@ -9,12 +10,16 @@
 #include "ui/inspect/inspect_scene.h"
 #include "ui/inspect/inspect_workspace.h"
 #include "ui/inspect/solid_export.h"
+#include "ui/design/design_workspace.h"
+#include "ui/viewport/viewport_widget.h"
+#include "render/shown_content.h"
 
 #include "core/catalog/scene_source.h"
 #include "core/mesh/mesh_validation.h"
 #include "core/trim/csg_expression.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -31,6 +36,7 @@ private slots:
     void initTestCase();
     void exportsTheCsgShown();
     void refusesWithoutASolid();
+    void refusesDynamicRulesWithTheReasonFirst();
 
 private:
     QTemporaryDir m_dir;
@@ -82,6 +88,26 @@ void TestInspectSolidExport::refusesWithoutASolid()
     QVERIFY2(failed.front().at(1).toString().contains(QStringLiteral("Trimming is off")),
              qPrintable(failed.front().at(1).toString()));
     QVERIFY(!QFile::exists(path));
+    // The box's first line is the reason, not a generic "nothing to export".
+    QVERIFY(QTest::qWaitFor([&] { return !closer.seen().isEmpty(); }, 5000));
+    QVERIFY2(closer.seen().front().startsWith(QStringLiteral("Trimming is off")), qPrintable(closer.seen().front()));
+}
+
+// A design shown under its dynamic rules: File ▸ Export Trimmed Solid says first that
+// dynamic rules cannot be exported exactly, then how to get a solid (the static rule).
+void TestInspectSolidExport::refusesDynamicRulesWithTheReasonFirst()
+{
+    auto window = showInspectWindow(m_dir.filePath(QStringLiteral("dynamic.ini")), QStringLiteral("demo:sphere"));
+    QVERIFY(window->designWorkspace()->session());
+    QComboBox* classification = revealed(child<QComboBox>(window.get(), "classificationComboBox"));
+    classification->setCurrentIndex(1);
+    QVERIFY(QTest::qWaitFor([&] { return window->viewport()->content()->chain() != nullptr; }, 60000));
+    MessageBoxCloser closer;
+    window->solidExport()->showExportDialog();
+    QVERIFY(QTest::qWaitFor([&] { return !closer.seen().isEmpty(); }, 5000));
+    const QString message = closer.seen().front();
+    QVERIFY2(message.startsWith(QStringLiteral("Dynamic rules cannot be exported exactly")), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("Static rule")), qPrintable(message));
 }
 
 QTEST_MAIN(TestInspectSolidExport)
