@@ -23,12 +23,12 @@ void requirePartitionedPoses(const AnimationSegmenter& segmenter)
 
 void addVariable(SegmentationResult& result, const TaskControl& control)
 {
-    control.report("variable", 0, 1);
+    control.report("per-pose segments", 0, 1);
     const AnimationSegmenter& segmenter = *result.segmenter;
     result.variable = segmenter.variableSegmentation();
     control.throwIfCancelled();
     result.variableColors = colorSequence(segmenter.graph(), segmenter.vertexAreas(), result.variable);
-    control.report("variable", 1, 1);
+    control.report("per-pose segments", 1, 1);
 }
 
 } // namespace

@@ -50,7 +50,7 @@ public:
 
 /// For a worker thread: segments `animation` with `options.settings` — run() with its
 /// progress stages "features" and "partitions" — then adds the variable segmentation
-/// when asked (stage "variable"). Throws SegmentationInputError as above,
+/// when asked (stage "per-pose segments"). Throws SegmentationInputError as above,
 /// OperationCancelled when asked to stop.
 [[nodiscard]] std::shared_ptr<const SegmentationResult>
 runSegmentation(MeshAnimation animation, const SegmentationRunOptions& options, const TaskControl& control = {});

@@ -154,8 +154,14 @@ void SegmentationPanel::setAnimation(std::shared_ptr<const LoadedAnimation> anim
 
 QString SegmentationPanel::readyStatus() const
 {
-    return m_animation ? tr("%1 poses. Press Run to segment them.").arg(m_animation->animation->poseCount())
-                       : tr("Open an animation (File ▸ Open Animation…) to segment it.");
+    return m_animation
+               ? tr("%1 poses. Press %2 to segment them.").arg(m_animation->animation->poseCount()).arg(runLabel())
+               : tr("Open an animation (File ▸ Open Animation…) to segment it.");
+}
+
+QString SegmentationPanel::runLabel() const
+{
+    return m_choices.mode == SegmentationMode::RealTime ? tr("Stream poses") : tr("Run");
 }
 
 void SegmentationPanel::setCurrentPose(int pose)
@@ -192,7 +198,10 @@ void SegmentationPanel::onFormChanged()
     if (mode != m_choices.mode && m_choices.mode != SegmentationMode::RealTime)
         m_stream->stop();
     if (m_result && !isRunning())
-        setStatus(settingsMatchResult() ? tr("Showing the last run.") : tr("Settings changed: Run to apply them."));
+        setStatus(settingsMatchResult() ? tr("Showing the last run.")
+                                        : tr("Settings changed: %1 to apply them.").arg(runLabel()));
+    else if (!m_result && !isRunning() && mode != m_choices.mode)
+        setStatus(readyStatus()); // it names the button, whose label follows the mode
     updateControls();
     refreshDisplay();
     emit choicesChanged();
@@ -401,7 +410,7 @@ void SegmentationPanel::updateControls()
     const bool available = m_animation != nullptr;
     const bool running = isRunning();
     m_form->setEnabled(available && !running);
-    m_run->setText(m_choices.mode == SegmentationMode::RealTime ? tr("Stream poses") : tr("Run"));
+    m_run->setText(runLabel());
     m_presenter->updateRow(available, m_stream->isRunning());
     m_hSlider->setEnabled(available && m_choices.mode != SegmentationMode::Variable);
     m_colorBySegment->setEnabled(available);

@@ -124,6 +124,8 @@ private:
     void showTimes(const SegmentationTimes& times, std::optional<double> cleaningMs);
     void setStatus(const QString& text);
     [[nodiscard]] QString readyStatus() const;
+    /// The Run button's label for the mode chosen ("Stream poses" in real-time mode).
+    [[nodiscard]] QString runLabel() const;
     [[nodiscard]] bool settingsMatchResult() const;
 
     /// What the viewport shows: a labeling and one color per label (both null: nothing).

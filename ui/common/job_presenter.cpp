@@ -60,6 +60,13 @@ void JobPresenter::showProgress(const QString& stage, qint64 done, qint64 total)
 {
     if (!m_job->isRunning() || total <= 0)
         return; // a late report of a job that has ended
+    if (total == 1) {
+        // One step: "0 / 1" would read like a count of nothing; the busy bar and the
+        // stage's name say what runs.
+        m_widgets.progress->setRange(0, 0);
+        m_widgets.progress->setFormat(tr("%1…").arg(stage));
+        return;
+    }
     const qint64 range = std::min(total, kLargestRange);
     const qint64 value = std::min(done, total);
     m_widgets.progress->setRange(0, int(range));

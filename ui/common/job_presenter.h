@@ -4,7 +4,7 @@
 /// panels): the Run / Cancel row (run_cancel_row.h), the progress bar and the status line,
 /// kept in one protocol for every such panel:
 /// - started: a busy bar until the first report, then the running stage's name and
-///   progress;
+///   progress (a stage of one step keeps the busy bar, with its name);
 /// - Cancel: the job is asked to stop and the status says "Canceling…" until it ends;
 ///   Cancel stays disabled from then on;
 /// - ended (succeeded, failed or canceled): the bar hides before the panel's own handlers

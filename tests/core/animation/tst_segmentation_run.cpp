@@ -256,7 +256,7 @@ private slots:
         const MeshAnimation animation = tube();
         StageRecorder full;
         (void)runSegmentation(animation, optionsFor(FeatureKind::RotationAngle), full.control());
-        QCOMPARE(full.stages, (std::vector<std::string>{"features", "partitions", "variable"}));
+        QCOMPARE(full.stages, (std::vector<std::string>{"features", "partitions", "per-pose segments"}));
 
         SegmentationRunOptions plain = optionsFor(FeatureKind::RotationAngle);
         plain.variable = false;
@@ -266,7 +266,7 @@ private slots:
 
         StageRecorder completing;
         (void)completeSegmentation(streamed(animation, plain.settings), completing.control());
-        QCOMPARE(completing.stages, std::vector<std::string>{"variable"});
+        QCOMPARE(completing.stages, std::vector<std::string>{"per-pose segments"});
     }
 
     void stopThrowsOperationCancelled_data()
@@ -274,7 +274,7 @@ private slots:
         QTest::addColumn<QString>("stage");
         QTest::newRow("features") << "features";
         QTest::newRow("partitions") << "partitions";
-        QTest::newRow("variable") << "variable";
+        QTest::newRow("per-pose segments") << "per-pose segments";
     }
 
     void stopThrowsOperationCancelled()
@@ -285,7 +285,7 @@ private slots:
         StopAtStage run{stage.toStdString(), {}};
         QVERIFY_THROWS_EXCEPTION(OperationCancelled, (void)runSegmentation(animation, options, run.control()));
         QVERIFY(run.source.stop_requested());
-        if (stage != "variable")
+        if (stage != "per-pose segments")
             return;
         StopAtStage complete{stage.toStdString(), {}};
         QVERIFY_THROWS_EXCEPTION(OperationCancelled,

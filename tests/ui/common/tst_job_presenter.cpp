@@ -23,6 +23,7 @@
 
 #include "core/catalog/scene_source.h"
 
+#include <QComboBox>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
@@ -99,9 +100,11 @@ class TestJobPresenter : public QObject {
 private slots:
     void initTestCase();
     void presenterFollowsAJob();
+    void aStageOfOneStepShowsItsNameOnABusyBar();
     void skeletonPanelRunsCancelsAndRefuses();
     void skinningPanelFitsAndCancels();
     void segmentationPanelRunsCancelsAndRefuses();
+    void segmentationStatusNamesTheRunButton();
 
 private:
     QTemporaryDir m_dir;
@@ -166,6 +169,34 @@ void TestJobPresenter::presenterFollowsAJob()
     emit job.progressed(QStringLiteral("late"), 1, 2);
     QVERIFY(!progress->isVisible());
     QVERIFY(!progress->format().startsWith(QStringLiteral("late")));
+}
+
+// A stage reported as step 0 of 1 (the per-pose segments of a segmentation run) reads
+// as its name on a busy bar, not as "0 / 1".
+void TestJobPresenter::aStageOfOneStepShowsItsNameOnABusyBar()
+{
+    QWidget host;
+    BackgroundJob<std::shared_ptr<const LoadedAnimation>> job;
+    auto* progress = new QProgressBar(&host);
+    JobPresenter presenter(&job, {new QPushButton(&host), new QPushButton(&host), progress, new QLabel(&host)},
+                           JobPresenter::ProgressText::Count);
+    host.show();
+    test::HeldBackgroundJob held(&job);
+    const std::string path = test::testDataPath("animations/folding_box").string();
+    job.start([path](const TaskControl& control) {
+        return std::make_shared<const LoadedAnimation>(loadAnimationForDisplay(path, control));
+    });
+    presenter.showStarted(QStringLiteral("Segmenting…"));
+    QVERIFY(held.waitUntilHeld(kWaitMs));
+    QTRY_VERIFY(progress->maximum() > 0);
+    emit job.progressed(QStringLiteral("per-pose segments"), 0, 1);
+    QCOMPARE(progress->maximum(), 0);
+    QCOMPARE(progress->format(), QStringLiteral("per-pose segments…"));
+    emit job.progressed(QStringLiteral("load"), 1, 3);
+    QCOMPARE(progress->format(), QStringLiteral("load: %v / %m"));
+    QSignalSpy finished(&job, &BackgroundJobBase::finished);
+    held.release();
+    QVERIFY(QTest::qWaitFor([&] { return !finished.isEmpty(); }, kWaitMs));
 }
 
 void TestJobPresenter::skeletonPanelRunsCancelsAndRefuses()
@@ -280,6 +311,26 @@ void TestJobPresenter::segmentationPanelRunsCancelsAndRefuses()
     QVERIFY(clickAndWait(panel.runTask(), row.run));
     QVERIFY(!panel.result());
     QVERIFY2(row.status->text().contains(QStringLiteral("the animation has 1 pose")), qPrintable(row.status->text()));
+}
+
+// In real-time mode the Run button reads "Stream poses", and the status line that tells
+// the user which button to press says the same.
+void TestJobPresenter::segmentationStatusNamesTheRunButton()
+{
+    SegmentationPanel panel;
+    panel.show();
+    auto* run = child<QPushButton>(&panel, "runSegmentationButton");
+    auto* status = child<QLabel>(&panel, "segmentationStatusLabel");
+    auto* mode = child<QComboBox>(&panel, "modeComboBox");
+    QVERIFY(run && status && mode);
+    panel.setAnimation(loadTestAnimation("folding_box"));
+    QVERIFY2(status->text().contains(QStringLiteral("Press Run ")), qPrintable(status->text()));
+    mode->setCurrentIndex(mode->findData(int(SegmentationMode::RealTime)));
+    QCOMPARE(run->text(), QStringLiteral("Stream poses"));
+    QVERIFY2(status->text().contains(QStringLiteral("Press Stream poses ")), qPrintable(status->text()));
+    mode->setCurrentIndex(mode->findData(int(SegmentationMode::Global)));
+    QCOMPARE(run->text(), QStringLiteral("Run"));
+    QVERIFY2(status->text().contains(QStringLiteral("Press Run ")), qPrintable(status->text()));
 }
 
 TRIMLAB_WIDGET_TEST_MAIN(TestJobPresenter)
