@@ -4,7 +4,7 @@
 //   trimlab info SOURCE...
 //   trimlab bench [--scenes a,b] [--methods a,b] [--size WxH] [--json out.json]
 //   trimlab segment ANIMATION --clusters N --h H -o labels.json
-//   trimlab skin ANIMATION --bones B --method lbs|dqs -o out.glb
+//   trimlab skin ANIMATION --bones B [--method rigid|lbs|dqs] -o out.glb
 //   trimlab skeleton MESH [--nodes N] -o rig.glb --json skeleton.json
 //   trimlab trim SOURCE... --rule R [--csg EXPR] -o out.obj|.ply|.stl|.gltf|.glb
 #include "app/bench_verb.h"
@@ -18,6 +18,7 @@
 #include "app/trim_verb.h"
 
 #include "core/catalog/scene_source.h"
+#include "core/skinning/skinning_parameters.h"
 
 #include <QString>
 #include <QStringList>
@@ -40,26 +41,42 @@ QStringList argumentsAfterVerb(int argc, char** argv)
     return arguments;
 }
 
+// "a|b|c": the choices of a parameter, as a usage line shows them.
+QString choiceAlternatives(const trimlab::ParameterSpec& spec)
+{
+    QStringList names;
+    for (const trimlab::ChoiceValue& choice : spec.choices)
+        if (choice.commandLine)
+            names << QString::fromUtf8(choice.name.data(), qsizetype(choice.name.size()));
+    return names.join(QLatin1Char('|'));
+}
+
 void printUsage()
 {
+    // The skin line's methods come from the skinning table: the fit is optional (rigid
+    // by default), and a new method appears here without editing this text.
+    const QString skinLine = QStringLiteral("  trimlab skin ANIMATION --bones B [--method %1] -o out.glb\n")
+                                 .arg(choiceAlternatives(trimlab::skinning_parameters::kFit));
     trimlab::app::printLine(
-        "Usage:\n"
-        "  trimlab [FILE|demo:NAME]          open the GUI (default: demo:pushed-sphere)\n"
-        "  trimlab render SOURCE... -o out.png\n"
-        "                                    render an image (see trimlab render --help)\n"
-        "  trimlab info SOURCE...            print the mesh validation report\n"
-        "  trimlab trim SOURCE... --rule R -o out.obj\n"
-        "                                    export the trimmed solid as a closed mesh (see trimlab trim --help)\n"
-        "  trimlab bench [options]           time every multi-fragment method (see trimlab bench --help)\n"
-        "  trimlab segment ANIMATION [options] -o labels.json\n"
-        "                                    segment a mesh animation (see trimlab segment --help)\n"
-        "  trimlab skin ANIMATION --bones B --method lbs|dqs -o out.glb\n"
-        "                                    skin a mesh animation, export glTF (see trimlab skin --help)\n"
-        "  trimlab skeleton MESH [--nodes N] [-o rig.glb] [--json skeleton.json]\n"
-        "                                    extract a skeleton and skinning weights, export a rigged glTF\n"
-        "                                    (see trimlab skeleton --help)\n"
-        "SOURCE is a mesh file (.obj .ply .stl .off .gltf .glb, optionally .gz), a NURBS file\n"
-        "(.nurbs.json), a .trimlab project (render) or a built-in demo:");
+        QStringLiteral(
+            "Usage:\n"
+            "  trimlab [FILE|demo:NAME]          open the GUI (default: demo:pushed-sphere)\n"
+            "  trimlab render SOURCE... -o out.png\n"
+            "                                    render an image (see trimlab render --help)\n"
+            "  trimlab info SOURCE...            print the mesh validation report\n"
+            "  trimlab trim SOURCE... --rule R -o out.obj\n"
+            "                                    export the trimmed solid as a closed mesh (see trimlab trim --help)\n"
+            "  trimlab bench [options]           time every multi-fragment method (see trimlab bench --help)\n"
+            "  trimlab segment ANIMATION [options] -o labels.json\n"
+            "                                    segment a mesh animation (see trimlab segment --help)\n") +
+        skinLine +
+        QStringLiteral(
+            "                                    skin a mesh animation, export glTF (see trimlab skin --help)\n"
+            "  trimlab skeleton MESH [--nodes N] [-o rig.glb] [--json skeleton.json]\n"
+            "                                    extract a skeleton and skinning weights, export a rigged glTF\n"
+            "                                    (see trimlab skeleton --help)\n"
+            "SOURCE is a mesh file (.obj .ply .stl .off .gltf .glb, optionally .gz), a NURBS file\n"
+            "(.nurbs.json), a .trimlab project (render) or a built-in demo:"));
     // The demos come from the scene registry, so a new demo is listed without editing this.
     for (const trimlab::DemoEntry& demo : trimlab::builtInDemos())
         trimlab::app::printLine(

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// `trimlab skin ANIMATION --bones B --method lbs|dqs [options] -o out.glb`: approximates a
+/// `trimlab skin ANIMATION --bones B [--method rigid|lbs|dqs] [options] -o out.glb`: approximates a
 /// mesh animation by skinning (thesis chapter 4: B proxy bones from a segmentation into
 /// exactly B segments, a pose-to-pose or classical LBS/DQS fit, optional vertex and weight
 /// corrections) and exports it as glTF 2.0 (a skin with rigid joint animation, or morph

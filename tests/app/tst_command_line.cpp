@@ -10,6 +10,7 @@
 #include "core/io/pfm_image.h"
 #include "render/mfr/fragment_method.h"
 #include "core/catalog/scene_source.h"
+#include "core/skinning/skinning_parameters.h"
 #include "core/timeline/frame_chain.h"
 #include "core/timeline/stroke_replay.h"
 #include "core/timeline/stroke_script.h"
@@ -24,6 +25,7 @@
 #include <QFile>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace trimlab;
@@ -55,6 +57,7 @@ private slots:
     void infoPrintsTheValidationReport();
     void infoNumbersTheObjectsOfSeveralSources();
     void helpListsEveryBuiltInDemo();
+    void helpShowsTheSkinMethodOptionalWithEveryChoice();
     void openMeshRendersUntrimmedByDefault();
     void referenceBackendMatchesInProcessReference();
     void kplusBackendAgreesWithReference();
@@ -180,6 +183,23 @@ void TestCommandLine::helpListsEveryBuiltInDemo()
         QVERIFY2(run.out.contains(QString::fromUtf8(demo.description.data(), qsizetype(demo.description.size()))),
                  qPrintable(source));
         QVERIFY(!loadScene(demo.source).scene.empty());
+    }
+}
+
+// The skin verb fits rigid joints unless --method says otherwise: the overview must not
+// show --method as required, and it lists every method the verb accepts.
+void TestCommandLine::helpShowsTheSkinMethodOptionalWithEveryChoice()
+{
+    const Run run = runTrimlab({"--help"});
+    QCOMPARE(run.exitCode, 0);
+    const QStringList lines = run.out.split(QLatin1Char('\n'));
+    const auto skinLine = std::find_if(
+        lines.begin(), lines.end(), [](const QString& line) { return line.contains(QStringLiteral("trimlab skin ")); });
+    QVERIFY2(skinLine != lines.end(), qPrintable(run.out));
+    QVERIFY2(skinLine->contains(QStringLiteral("[--method ")), qPrintable(*skinLine));
+    for (const ChoiceValue& choice : skinning_parameters::kFit.choices) {
+        const QString name = QString::fromUtf8(choice.name.data(), qsizetype(choice.name.size()));
+        QVERIFY2(skinLine->contains(name), qPrintable(name + QStringLiteral(" missing from: ") + *skinLine));
     }
 }
 
