@@ -17,6 +17,13 @@ bool isFinite(const glm::dvec3& p)
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
 
+// The brush's distance: Euclidean, summed in x, y, z order.
+double distanceBetween(const glm::dvec3& a, const glm::dvec3& b)
+{
+    const glm::dvec3 d = a - b;
+    return std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+}
+
 // The selection, sorted and unique, checked against #C.
 std::vector<std::uint32_t> checkedSelection(const EditableSurface& surface, std::span<const std::uint32_t> selection,
                                             const char* caller)
@@ -60,8 +67,7 @@ std::vector<ControlPointTarget> controlBrushTargets(std::span<const glm::dvec3> 
         throw std::invalid_argument("controlBrushTargets: the brush strength must be finite");
     std::vector<ControlPointTarget> targets;
     for (std::size_t c = 0; c < controlPoints.size(); ++c) {
-        const glm::dvec3 d = controlPoints[c] - anchor;
-        const double distance = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+        const double distance = distanceBetween(controlPoints[c], anchor);
         const double weight = deform::falloff(brush.profile, distance / brush.radius) * brush.strength;
         const glm::dvec3 offset = weight * drag;
         if (weight == 0.0 || (offset.x == 0.0 && offset.y == 0.0 && offset.z == 0.0))
@@ -74,10 +80,8 @@ std::vector<ControlPointTarget> controlBrushTargets(std::span<const glm::dvec3> 
 double nearestControlPointDistance(std::span<const glm::dvec3> controlPoints, const glm::dvec3& anchor)
 {
     double nearest = std::numeric_limits<double>::infinity();
-    for (const glm::dvec3& p : controlPoints) {
-        const glm::dvec3 d = p - anchor;
-        nearest = std::min(nearest, std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z));
-    }
+    for (const glm::dvec3& p : controlPoints)
+        nearest = std::min(nearest, distanceBetween(p, anchor));
     return nearest;
 }
 

@@ -41,10 +41,8 @@ void TimelinePanel::createControls()
     m_slider->setPageStep(kPageStep);
     m_slider->setToolTip(tr("Pose: %1").arg(FrameSlider::inputHelp()));
     connect(m_slider, &QSlider::valueChanged, this, &TimelinePanel::onSliderMoved);
-    connect(m_slider, &FrameSlider::playToggleRequested, this, [this] {
-        if (m_play->isEnabled())
-            togglePlaying();
-    });
+    // As a click on Play: nothing while the button is disabled (fewer than two frames).
+    connect(m_slider, &FrameSlider::playToggleRequested, m_play, &QToolButton::click);
     m_poseLabel = new QLabel;
     m_poseLabel->setObjectName(QStringLiteral("poseLabel"));
     m_poseLabel->setMinimumWidth(160);

@@ -80,10 +80,8 @@ void DeformationTimelinePanel::createControls()
     connect(m_track, &DeformationTrack::frameClicked, this, &DeformationTimelinePanel::chooseFrame);
     connect(m_slider, &QSlider::valueChanged, this, &DeformationTimelinePanel::chooseFrame);
     connect(m_play, &QToolButton::clicked, this, &DeformationTimelinePanel::togglePlaying);
-    connect(m_slider, &FrameSlider::playToggleRequested, this, [this] {
-        if (m_play->isEnabled())
-            togglePlaying();
-    });
+    // As a click on Play: nothing while the button is disabled (fewer than two frames).
+    connect(m_slider, &FrameSlider::playToggleRequested, m_play, &QToolButton::click);
     connect(m_fps, &QSpinBox::valueChanged, this, [this](int fps) {
         m_timer.setInterval(1000 / fps);
         emit fpsChanged(fps);

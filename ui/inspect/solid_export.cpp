@@ -56,9 +56,8 @@ void SolidExport::exportTo(const QString& path)
     const Shown shown = m_shown();
     if (!shown.refusal.isEmpty() || m_task->isRunning()) {
         const QString reason = !shown.refusal.isEmpty() ? shown.refusal : tr("An export is already running.");
-        const QString remedy = !shown.refusal.isEmpty() ? shown.remedy : QString();
-        m_context.showMessage(QMessageBox::Information, tr("Export Trimmed Solid"), reason, remedy);
-        emit failed(path, remedy.isEmpty() ? reason : reason + QLatin1Char(' ') + remedy);
+        m_context.showMessage(QMessageBox::Information, tr("Export Trimmed Solid"), reason, shown.remedy);
+        emit failed(path, shown.remedy.isEmpty() ? reason : reason + QLatin1Char(' ') + shown.remedy);
         return;
     }
     m_path = path;
