@@ -54,6 +54,8 @@ void addMeasurements(QJsonObject& object, const BenchReport& report, const Bench
     object.insert("timeSource", QString::fromLatin1(source.data(), qsizetype(source.size())));
     object.insert("gpuMsMedian", cell.times.gpuTimed() ? QJsonValue(cell.times.medianGpuMilliseconds()) : QJsonValue());
     object.insert("wallMsMedian", cell.times.medianWallMilliseconds());
+    object.insert("pipelinedMsPerFrame", pipelinedMilliseconds(cell));
+    object.insert("pipelinedToGpu", optionalNumber(pipelinedToGpu(cell)));
     object.insert("frames", cell.times.frames());
     object.insert("views", cell.views);
     object.insert("geometryPasses", cell.geometryPasses);

@@ -30,6 +30,19 @@ std::optional<double> timeRatio(const BenchCell& cell, const BenchCell* base)
     return numerator / denominator;
 }
 
+double pipelinedMilliseconds(const BenchCell& cell)
+{
+    return render::medianOf(cell.pipelinedMs);
+}
+
+std::optional<double> pipelinedToGpu(const BenchCell& cell)
+{
+    const double gpuMs = cell.times.medianGpuMilliseconds();
+    if (!cell.rendered() || cell.pipelinedMs.empty() || gpuMs <= 0.0)
+        return std::nullopt;
+    return pipelinedMilliseconds(cell) / gpuMs;
+}
+
 QString lockId(const BenchCell& cell)
 {
     if (!cell.usesLock)

@@ -31,6 +31,10 @@ struct BenchCell {
     /// says why. Reported, not a failure.
     bool notApplicable = false;
     render::FrameTimes times; ///< every timed frame of every view
+    /// Per view: the same frames pipelined (issued back to back, results read later, as
+    /// the viewport does), total wall time / frames — the frame period when CPU and GPU
+    /// work overlap; against the GPU time it shows how far they do.
+    std::vector<double> pipelinedMs;
     int views = 0;
     int geometryPasses = 0;   ///< most over the views
     int fullscreenPasses = 0; ///< most over the views
@@ -90,6 +94,11 @@ struct BenchReport {
 /// Time of `cell` divided by the time of `base` (both rendered): GPU medians when both
 /// are GPU-timed, else wall medians. nullopt when either is missing or did not render.
 [[nodiscard]] std::optional<double> timeRatio(const BenchCell& cell, const BenchCell* base);
+/// The median over the views of the pipelined frame period (0 without one).
+[[nodiscard]] double pipelinedMilliseconds(const BenchCell& cell);
+/// The pipelined frame period / the median GPU time: near 1 when the CPU's work hides
+/// behind the GPU's. nullopt without a GPU time.
+[[nodiscard]] std::optional<double> pipelinedToGpu(const BenchCell& cell);
 /// "interlock", "spin-lock" or "none": the critical section the cell was measured with.
 [[nodiscard]] QString lockId(const BenchCell& cell);
 /// "kplus-array": the method's stable id.

@@ -154,6 +154,28 @@ void BenchRunner::measureView(BenchCell& cell, const BenchScene& scene, const Re
         cell.violation = QStringLiteral("view %1: %2 (%3)")
                              .arg(index)
                              .arg(QString::fromStdString(*violation), QString::fromStdString(agreement.summary()));
+    cell.pipelinedMs.push_back(pipelinedPeriod(scene, size, view.camera));
+}
+
+// The view's frames as the viewport issues them: back to back, each one's results read a
+// frame or more later (the renderer waits only when the GPU is a whole ring of frames
+// behind), so the period is the larger of the CPU's and the GPU's time per frame.
+double BenchRunner::pipelinedPeriod(const BenchScene& scene, QSize size, const Camera& camera)
+{
+    m_renderer.setPipelined(true);
+    QElapsedTimer clock;
+    clock.start();
+    try {
+        for (int frame = 0; frame < m_options.repeat; ++frame)
+            m_renderer.render(camera, scene.settings, size.width(), size.height());
+        m_renderer.finishFrames();
+    } catch (...) {
+        m_renderer.setPipelined(false);
+        throw;
+    }
+    const double period = double(clock.nsecsElapsed()) * 1e-6 / double(std::max(1, m_options.repeat));
+    m_renderer.setPipelined(false);
+    return period;
 }
 
 } // namespace trimlab::app

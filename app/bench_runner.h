@@ -4,8 +4,9 @@
 /// reference of every view on the camera path (bench_views.h), then every method in turn:
 /// one untimed warm-up frame (shader build, allocation), `repeat` timed frames per view,
 /// and the last frame of each view compared with the reference (core/trim/trim_agreement.h,
-/// the render tests' criteria). A method that throws is recorded with its error and the
-/// run goes on.
+/// the render tests' criteria), then the same frames pipelined as the viewport renders
+/// them (the frame period beside the GPU time). A method that throws is recorded with its
+/// error and the run goes on.
 
 #include "app/bench_options.h"
 #include "app/bench_results.h"
@@ -34,6 +35,8 @@ private:
                                           const std::vector<ViewReference>& views);
     void measureView(BenchCell& cell, const BenchScene& scene, const ReferenceRenderer& reference,
                      const ViewReference& view, int index);
+    /// `repeat` frames of `camera` pipelined: wall time / frames, the last one's results in.
+    [[nodiscard]] double pipelinedPeriod(const BenchScene& scene, QSize size, const Camera& camera);
 
     render::TrimRenderer& m_renderer;
     const BenchOptions& m_options;

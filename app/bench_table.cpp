@@ -12,24 +12,12 @@ struct Column {
     bool left; ///< left-aligned text, else right-aligned numbers
 };
 
-constexpr std::array<Column, 17> kColumns = {{
-    {"scene", 20, true},
-    {"size", 10, true},
-    {"method", 20, true},
-    {"lock", 9, true},
-    {"ms/frame", 9, false},
-    {"time", 5, true},
-    {"passes", 6, false},
-    {"MB", 8, false},
-    {"fragments", 11, false},
-    {"stored", 11, false},
-    {"lost", 9, false},
-    {"overflow px", 11, false},
-    {"unresolved", 10, false},
-    {"agree %", 8, false},
-    {"vs F2B", 7, false},
-    {"vs AB_LL", 8, false},
-    {"vs ilock", 8, false},
+constexpr std::array<Column, 19> kColumns = {{
+    {"scene", 20, true},    {"size", 10, true},         {"method", 20, true},      {"lock", 9, true},
+    {"ms/frame", 9, false}, {"time", 5, true},          {"pipe ms", 8, false},     {"pipe/GPU", 8, false},
+    {"passes", 6, false},   {"MB", 8, false},           {"fragments", 11, false},  {"stored", 11, false},
+    {"lost", 9, false},     {"overflow px", 11, false}, {"unresolved", 10, false}, {"agree %", 8, false},
+    {"vs F2B", 7, false},   {"vs AB_LL", 8, false},     {"vs ilock", 8, false},
 }};
 
 QString formatRow(const QStringList& fields)
@@ -69,6 +57,8 @@ QString cellLine(const BenchReport& report, const BenchCell& cell)
         QStringList{
             QString::number(cell.times.medianMilliseconds(), 'f', 2),
             QString::fromLatin1(cell.times.source().data(), qsizetype(cell.times.source().size())),
+            QString::number(pipelinedMilliseconds(cell), 'f', 2),
+            ratioText(pipelinedToGpu(cell)),
             QString::number(cell.geometryPasses),
             QString::number(cell.megabytes, 'f', 1),
             QString::number(cell.fragmentsInSpan),
@@ -113,6 +103,9 @@ QStringList benchHeaderLines(const BenchHeader& header)
         QStringLiteral("methods: %1").arg(methods.join(QStringLiteral(", "))),
         QStringLiteral("ms/frame: median over all timed frames of all views; time: GPU = GL_TIME_ELAPSED (every "
                        "frame had one), wall = the render call including the wait for the GPU"),
+        QStringLiteral("pipe ms: the same frames pipelined as the viewport renders them (issued back to back, results "
+                       "read a frame or more later), wall time / frames, median over the views; pipe/GPU: that "
+                       "period / the median GPU time (near 1: the CPU's work overlaps the GPU's)"),
         QStringLiteral("passes: geometry passes, most over the views; MB: method + render target + scene, most over "
                        "the views"),
         QStringLiteral("fragments (in the kept span), stored, lost, overflow px, unresolved: last frame of each view, "

@@ -114,8 +114,9 @@ TrimRenderer::TrimRenderer(QOpenGLContext& context)
       m_target(std::make_unique<RenderTarget>(m_gl)),
       m_counters(std::make_unique<FrameCounters>(m_gl)),
       m_method(createFragmentMethod(FragmentMethodKind::KPlusArray, m_gl)),
-      m_timer(m_gl)
+      m_results(std::make_unique<FrameResultRing>(m_gl))
 {
+    m_clock.start();
     // Build the default method's programs now so a broken shader is reported at start-up.
     m_shaders->program(QStringLiteral("pixel_state_clear"));
     m_shaders->program(QStringLiteral("kplus_resolve"), {QStringLiteral("K_MAX %1").arg(m_parameters.k)});
@@ -167,8 +168,7 @@ void TrimRenderer::render(GpuScene& scene, const TrimMode& mode, const Camera& c
     checkInspection(mode, settings, scene.objectCount());
     checkFrameLimits(m_method->kind(), m_capabilities, m_parameters,
                      m_method->estimateBytes(width, height, m_parameters), width, height);
-    QElapsedTimer wall;
-    wall.start();
+    const std::int64_t startNs = m_clock.nsecsElapsed();
     m_target->resize(width, height);
     const glm::dmat4 view = viewMatrix(camera);
     scene.setView(view);
@@ -196,26 +196,92 @@ void TrimRenderer::render(GpuScene& scene, const TrimMode& mode, const Camera& c
                     mode.referenceIsBase,
                     objectWindings};
 
-    m_gl.glBeginQuery(GL_TIME_ELAPSED, m_timer.id());
-    m_counters->reset();
-    m_method->render(frame);
-    m_gl.glEndQuery(GL_TIME_ELAPSED);
-
-    GLuint64 elapsedNs = 0;
-    m_gl.glGetQueryObjectui64v(m_timer.id(), GL_QUERY_RESULT, &elapsedNs); // waits for the GPU
+    // Characterization passes of a pipelined frame are not timed: the frame's time is
+    // its shown level's, and the ring keeps its slots for frames.
+    const bool timed = !m_pipelined || !mode.characterize;
+    std::vector<FrameResult> finished = m_results->poll();
+    const std::uint64_t serial = ++m_serial;
+    if (timed)
+        m_results->begin(serial, finished);
+    try {
+        m_counters->reset();
+        m_method->render(frame);
+    } catch (...) {
+        if (timed)
+            m_results->end(*m_counters); // its result is dropped: no pending frame names it
+        throw;
+    }
+    if (timed) {
+        m_results->end(*m_counters);
+        PendingFrame pending{FrameStats{}, startNs};
+        FrameStats& stats = pending.stats;
+        stats.serial = serial;
+        stats.method = m_method->kind();
+        stats.methodStats = m_method->stats();
+        const std::size_t inspectionBytes = objectWindings ? objectWindings->memoryBytes() : 0;
+        stats.bufferMegabytes =
+            double(stats.methodStats.bytes + m_target->memoryBytes() + scene.memoryBytes() + inspectionBytes) /
+            (1024.0 * 1024.0);
+        stats.width = width;
+        stats.height = height;
+        stats.k = m_parameters.k;
+        m_pending.push_back(pending);
+    }
+    (void)takeResults(finished);
+    if (!m_pipelined)
+        (void)takeResults(m_results->wait());
+    if (timed && !m_pending.empty() && m_pending.back().stats.serial == serial)
+        m_pending.back().stats.issueMilliseconds = double(m_clock.nsecsElapsed() - startNs) * 1e-6;
+    else if (timed && m_stats.serial == serial)
+        m_stats.issueMilliseconds = double(m_clock.nsecsElapsed() - startNs) * 1e-6;
     m_resetWatch.throwIfReset(); // after a reset the counters and the image are garbage
-    m_stats.method = m_method->kind();
-    m_stats.counts = m_counters->read();
-    m_stats.methodStats = m_method->stats();
-    m_stats.wallMilliseconds = double(wall.nsecsElapsed()) * 1e-6;
-    m_stats.gpuMilliseconds = plausibleGpuMilliseconds(elapsedNs, m_stats.wallMilliseconds);
-    const std::size_t inspectionBytes = objectWindings ? objectWindings->memoryBytes() : 0;
-    m_stats.bufferMegabytes =
-        double(m_stats.methodStats.bytes + m_target->memoryBytes() + scene.memoryBytes() + inspectionBytes) /
-        (1024.0 * 1024.0);
-    m_stats.width = width;
-    m_stats.height = height;
-    m_stats.k = m_parameters.k;
+}
+
+void TrimRenderer::setPipelined(bool pipelined)
+{
+    if (!pipelined)
+        finishFrames();
+    m_pipelined = pipelined;
+}
+
+bool TrimRenderer::collectFrames()
+{
+    const WideVectorStateScope wideVectorState; // the driver may leave it in use (wide_vector_state.h)
+    if (m_pending.empty())
+        return false;
+    const bool arrived = takeResults(m_results->poll());
+    m_resetWatch.throwIfReset();
+    return arrived;
+}
+
+void TrimRenderer::finishFrames()
+{
+    const WideVectorStateScope wideVectorState; // the driver may leave it in use (wide_vector_state.h)
+    if (m_pending.empty())
+        return;
+    (void)takeResults(m_results->wait());
+    m_resetWatch.throwIfReset();
+}
+
+// Results come in the order the frames were issued; the result of a frame whose render()
+// threw names no pending frame and is dropped.
+bool TrimRenderer::takeResults(const std::vector<FrameResult>& results)
+{
+    bool arrived = false;
+    for (const FrameResult& result : results) {
+        while (!m_pending.empty() && m_pending.front().stats.serial < result.serial)
+            m_pending.pop_front();
+        if (m_pending.empty() || m_pending.front().stats.serial != result.serial)
+            continue;
+        PendingFrame pending = m_pending.front();
+        m_pending.pop_front();
+        m_stats = pending.stats;
+        m_stats.counts = result.counts;
+        m_stats.wallMilliseconds = double(m_clock.nsecsElapsed() - pending.startNs) * 1e-6;
+        m_stats.gpuMilliseconds = plausibleGpuMilliseconds(result.elapsedNs, m_stats.wallMilliseconds);
+        arrived = true;
+    }
+    return arrived;
 }
 
 ObjectWindingBuffer* TrimRenderer::prepareInspection(const TrimSettings& settings, std::size_t objectCount, int width,

@@ -6,6 +6,7 @@
 /// and at destruction.
 
 #include "render/frame/frame_counters.h"
+#include "render/frame/frame_results.h"
 #include "render/gl/context_reset.h"
 #include "render/gl/gl_capabilities.h"
 #include "render/mfr/fragment_method.h"
@@ -15,9 +16,12 @@
 #include "core/trim/trim_settings.h"
 #include "core/view/camera.h"
 
+#include <QElapsedTimer>
 #include <QImage>
 #include <QStringList>
 
+#include <cstdint>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -31,16 +35,21 @@ class ObjectWindingBuffer;
 class RenderTarget;
 class ShaderLibrary;
 
-/// What the last frame cost and what it found.
+/// What a frame cost and what it found.
 struct FrameStats {
+    std::uint64_t serial = 0; ///< the renderer's number of the frame (1, 2, …)
     FragmentMethodKind method = FragmentMethodKind::KPlusArray;
     FrameCounts counts;
     MethodStats methodStats;
     /// GL_TIME_ELAPSED of the frame; negative when the driver's answer was implausible
     /// (llvmpipe returns garbage for the first timer query of a context).
     double gpuMilliseconds = 0.0;
-    /// Wall-clock time of render() including the wait for the GPU's results.
+    /// Wall-clock time from the start of render() until its results were in: the wait
+    /// for the GPU included; when pipelined, until the collection that found them.
     double wallMilliseconds = 0.0;
+    /// Wall-clock time of render() itself: the CPU's work of issuing the frame (and,
+    /// unless pipelined, the wait for the GPU).
+    double issueMilliseconds = 0.0;
     double bufferMegabytes = 0.0; ///< method storage + render target + scene buffers
     int width = 0;
     int height = 0;
@@ -127,6 +136,24 @@ public:
     /// Per-pixel fragment counts of the last frame (methods that keep them).
     [[nodiscard]] std::optional<PixelOccupancy> readOccupancy();
 
+    /// Frames wait for the GPU (the default: render() returns with the frame's results
+    /// in lastStats()), or are pipelined: render() only issues the frame, and its
+    /// results arrive a frame or more later through collectFrames() — the CPU prepares
+    /// the next frame while the GPU draws this one. Pipelined characterization passes of
+    /// the dynamic rules are not timed. Leaving pipelining waits for the pending frames.
+    void setPipelined(bool pipelined);
+    [[nodiscard]] bool pipelined() const { return m_pipelined; }
+    /// Takes the results of the frames the GPU has finished; never waits. True when
+    /// lastStats() changed. Throws GlContextLostError after a GPU reset.
+    bool collectFrames();
+    /// Waits for the results of every frame issued (a readback, a measurement).
+    void finishFrames();
+    /// Whether an issued frame's results are still to come.
+    [[nodiscard]] bool framesPending() const { return !m_pending.empty(); }
+    /// The number of the last frame render() issued (0 before the first).
+    [[nodiscard]] std::uint64_t lastIssuedFrame() const { return m_serial; }
+
+    /// The newest frame whose results are in (unless pipelined, the frame just rendered).
     [[nodiscard]] const FrameStats& lastStats() const { return m_stats; }
     [[nodiscard]] const GlCapabilities& capabilities() const { return m_capabilities; }
     /// Whether the driver tells this renderer's context about GPU resets
@@ -149,7 +176,19 @@ private:
     std::unique_ptr<FragmentMethod> m_method;
     std::unique_ptr<ObjectWindingBuffer> m_objectWindings; // created on first use
     MethodParameters m_parameters;
-    GlQuery m_timer;
+    /// A timed frame issued and waiting for its results: what the CPU knows of it.
+    struct PendingFrame {
+        FrameStats stats;
+        std::int64_t startNs = 0; ///< render()'s start on m_clock
+    };
+    /// Fills lastStats() from `results` (oldest first); true when any arrived.
+    bool takeResults(const std::vector<FrameResult>& results);
+
+    std::unique_ptr<FrameResultRing> m_results;
+    bool m_pipelined = false;
+    std::uint64_t m_serial = 0;
+    std::deque<PendingFrame> m_pending;
+    QElapsedTimer m_clock;
     FrameStats m_stats;
 };
 

@@ -24,7 +24,7 @@ void ViewportRenderer::contentChanged(ShownLayer layer)
 {
     if (layer == ShownLayer::Geometry && m_content->meshVersion() != m_meshesSeen) {
         m_meshesSeen = m_content->meshVersion();
-        m_lastFrame.reset();
+        forgetLastFrame();
         m_policy.reset(); // another scene: back to the chosen method
     }
     if (layer == ShownLayer::Chain) {
@@ -54,11 +54,13 @@ void ViewportRenderer::initialize(QOpenGLContext& context)
 {
     m_uploaded = {};
     m_renderer = std::make_unique<TrimRenderer>(context);
+    m_renderer->setPipelined(true);
     applyMethod();
 }
 
 void ViewportRenderer::release()
 {
+    m_issued.clear();  // their results go with the context
     m_dynamic.reset(); // its GL objects go first: it holds a reference to the renderer
     m_gpuPose.evaluator.reset();
     m_renderer.reset();
@@ -87,7 +89,7 @@ bool ViewportRenderer::render(const Camera& camera, QSize size, GLuint framebuff
             return true;
         } catch (const GpuMemoryError& e) {
             const FrameRecovery recovery = m_policy.outOfMemory(e.what(), frameDemands());
-            m_lastFrame.reset();
+            forgetLastFrame();
             if (recovery.action == FrameRecovery::Action::Refuse)
                 throw GpuMemoryError(recovery.message);
             notify(recovery.message);
@@ -99,7 +101,7 @@ bool ViewportRenderer::render(const Camera& camera, QSize size, GLuint framebuff
 
 FrameRecovery ViewportRenderer::contextLost(const std::string& reason)
 {
-    m_lastFrame.reset();
+    forgetLastFrame();
     return m_policy.contextLost(reason, frameDemands());
 }
 
@@ -263,20 +265,79 @@ void ViewportRenderer::renderDynamicFrame(const Camera& camera, QSize size)
 
 void ViewportRenderer::recordFrame(const Camera& camera, QSize size)
 {
+    FrameStats issued;
+    issued.serial = m_renderer->lastIssuedFrame();
+    m_issued.push_back(ViewFrame{camera, m_settings, m_parameters.k, m_parameters, size, issued, std::nullopt,
+                                 m_content->scene(), m_dynamicStats});
+    (void)adoptArrivedFrame();
+}
+
+const std::optional<DynamicFrameStats>& ViewportRenderer::lastDynamicStats() const
+{
+    static const std::optional<DynamicFrameStats> none;
+    return m_lastFrame ? m_lastFrame->dynamicStats : none;
+}
+
+void ViewportRenderer::forgetLastFrame()
+{
+    m_lastFrame.reset();
+    m_issued.clear();
+}
+
+bool ViewportRenderer::collectFrames()
+{
+    if (!m_renderer || m_issued.empty())
+        return false;
+    (void)m_renderer->collectFrames();
+    return adoptArrivedFrame();
+}
+
+void ViewportRenderer::finishFrames()
+{
+    if (!m_renderer || m_issued.empty())
+        return;
+    m_renderer->finishFrames();
+    (void)adoptArrivedFrame();
+}
+
+// A frame that lost fragments gets the largest per-pixel count of the method's storage,
+// read back (a wait) only while it is the frame the storage holds.
+bool ViewportRenderer::adoptArrivedFrame()
+{
     const FrameStats& stats = m_renderer->lastStats();
-    ViewFrame frame{camera, m_settings, m_parameters.k, m_parameters, size, stats, std::nullopt, m_content->scene()};
+    DynamicFrameStats superseded;
+    while (!m_issued.empty() && m_issued.front().stats.serial < stats.serial) {
+        if (const std::optional<DynamicFrameStats>& dynamic = m_issued.front().dynamicStats) {
+            superseded.characterizedLevels += dynamic->characterizedLevels;
+            superseded.characterizeMilliseconds += dynamic->characterizeMilliseconds;
+        }
+        m_issued.pop_front(); // superseded by a newer result
+    }
+    if (m_issued.empty() || m_issued.front().stats.serial != stats.serial)
+        return false;
+    ViewFrame frame = std::move(m_issued.front());
+    m_issued.pop_front();
+    if (frame.dynamicStats) {
+        frame.dynamicStats->characterizedLevels += superseded.characterizedLevels;
+        frame.dynamicStats->characterizeMilliseconds += superseded.characterizeMilliseconds;
+    }
+    frame.stats = stats;
     const FrameCounts& counts = stats.counts;
-    if (counts.overflowPixels > 0 || counts.unresolvedPixels > 0 || counts.fragmentsLost > 0) {
+    const bool lost = counts.overflowPixels > 0 || counts.unresolvedPixels > 0 || counts.fragmentsLost > 0;
+    if (lost && m_issued.empty() && stats.serial == m_renderer->lastIssuedFrame()) {
         const std::optional<PixelOccupancy> occupancy = m_renderer->readOccupancy();
         if (occupancy && !occupancy->held.empty())
             frame.largestPixelCount = *std::max_element(occupancy->held.begin(), occupancy->held.end());
     }
     m_lastFrame = std::move(frame);
+    return true;
 }
 
 MethodMeasurement ViewportRenderer::measure(FragmentMethodKind method, int frames, const Camera& camera, QSize size)
 {
     MethodMeasurement result;
+    finishFrames();
+    m_renderer->setPipelined(false); // each measured frame waits for its own time
     try {
         if (!m_content->scene())
             throw std::invalid_argument("There is no scene to render.");
@@ -293,9 +354,11 @@ MethodMeasurement ViewportRenderer::measure(FragmentMethodKind method, int frame
         result.lastStats = m_renderer->lastStats();
     } catch (...) {
         m_renderer->setMethod(m_policy.effectiveMethod());
+        m_renderer->setPipelined(true);
         throw;
     }
     m_renderer->setMethod(m_policy.effectiveMethod());
+    m_renderer->setPipelined(true);
     return result;
 }
 

@@ -15,6 +15,9 @@
 ///   CPU still, and what a GPU reset changes (a new scene goes back to the chosen method,
 ///   a new dynamic chain lifts a stop);
 /// - the record of the last successful frame (gone with a new scene).
+/// Frames are pipelined (TrimRenderer::setPipelined): render() issues and shows a frame
+/// without waiting for the GPU, and the frame becomes lastFrame() when its results
+/// arrive — collectFrames() (never waits) or finishFrames() (waits: readbacks, tests).
 /// Every call that touches the GPU needs the context of initialize() current.
 
 #include "render/dynamic_trim_renderer.h"
@@ -27,6 +30,7 @@
 #include <QSize>
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -37,7 +41,8 @@ class QOpenGLContext;
 
 namespace trimlab::render {
 
-/// What the last successful frame was rendered with (for tests, exports and readbacks).
+/// What a successful frame was rendered with and what it found (for the status bar,
+/// tests, exports and readbacks).
 struct ViewFrame {
     Camera camera;
     TrimSettings settings;
@@ -51,6 +56,10 @@ struct ViewFrame {
     std::optional<std::uint32_t> largestPixelCount;
     /// The scene as rendered (objects and model matrices), e.g. for the CPU reference.
     std::shared_ptr<const Scene> scene;
+    /// The dynamic renderer's numbers of the frame (nullopt for static frames). The
+    /// characterization passes of frames shown after the previous record but superseded
+    /// before their results arrived count here too: the work since that record.
+    std::optional<DynamicFrameStats> dynamicStats;
 };
 
 /// What ViewportRenderer::measure found.
@@ -84,8 +93,9 @@ public:
     void setMethodParameters(const MethodParameters& parameters);
     [[nodiscard]] const MethodParameters& methodParameters() const { return m_parameters; }
 
-    /// The dynamic renderer's numbers of the last frame (nullopt for static frames).
-    [[nodiscard]] const std::optional<DynamicFrameStats>& lastDynamicStats() const { return m_dynamicStats; }
+    /// The dynamic renderer's numbers of lastFrame() (nullopt for static frames and
+    /// without a frame).
+    [[nodiscard]] const std::optional<DynamicFrameStats>& lastDynamicStats() const;
 
     [[nodiscard]] const FramePolicy& policy() const { return m_policy; }
     /// Something changed that may let the chosen method fit again (the view size).
@@ -119,9 +129,19 @@ public:
     /// A GPU reset with `reason`: the policy's decision (frame_policy.h); the last frame
     /// is gone.
     [[nodiscard]] FrameRecovery contextLost(const std::string& reason);
-    /// The last successful frame, or nullopt.
+    /// The newest successful frame whose results have arrived, or nullopt. The image of
+    /// the render target may be of a newer frame until finishFrames().
     [[nodiscard]] const std::optional<ViewFrame>& lastFrame() const { return m_lastFrame; }
-    void forgetLastFrame() { m_lastFrame.reset(); }
+    /// Drops the frame record and the frames whose results are still to come.
+    void forgetLastFrame();
+    /// Takes the results the GPU has delivered; never waits. True when lastFrame()
+    /// changed. Throws GlContextLostError after a GPU reset.
+    bool collectFrames();
+    /// Waits for every issued frame's results: then lastFrame() is the frame the render
+    /// target holds. Throws GlContextLostError after a GPU reset.
+    void finishFrames();
+    /// Whether a frame was issued whose results have not arrived yet.
+    [[nodiscard]] bool framesPending() const { return !m_issued.empty(); }
     /// `camera` at `size` with `method`: one untimed warm-up frame, then `frames` timed
     /// ones, not shown; afterwards the renderer is back on the effective method.
     MethodMeasurement measure(FragmentMethodKind method, int frames, const Camera& camera, QSize size);
@@ -158,7 +178,10 @@ private:
     [[nodiscard]] bool evaluatePoseOnGpu(const ShownPose& pose);
     void renderFrame(const Camera& camera, QSize size, GLuint framebuffer);
     void renderDynamicFrame(const Camera& camera, QSize size);
+    /// Keeps the frame just issued until its results arrive.
     void recordFrame(const Camera& camera, QSize size);
+    /// The issued frame whose results lastStats() holds becomes lastFrame(); true if one did.
+    bool adoptArrivedFrame();
 
     std::shared_ptr<ShownContent> m_content;
     ContentSubscription m_subscription;
@@ -170,10 +193,11 @@ private:
     Uploaded m_uploaded;
     GpuPose m_gpuPose;
     PoseEvaluation m_poseEvaluation = PoseEvaluation::Uploaded;
-    std::uint64_t m_meshesSeen = 0; ///< the mesh version the policy and frame record last heard of
-    std::uint64_t m_chainSeen = 0;  ///< the chain id the policy last heard of
-    std::optional<DynamicFrameStats> m_dynamicStats;
+    std::uint64_t m_meshesSeen = 0;                  ///< the mesh version the policy and frame record last heard of
+    std::uint64_t m_chainSeen = 0;                   ///< the chain id the policy last heard of
+    std::optional<DynamicFrameStats> m_dynamicStats; ///< of the frame being issued
     std::optional<ViewFrame> m_lastFrame;
+    std::deque<ViewFrame> m_issued; ///< shown frames waiting for their results, oldest first
 };
 
 } // namespace trimlab::render

@@ -2,27 +2,21 @@
 
 #include "render/gl/bindings.h"
 
-#include <array>
-
 namespace trimlab::render {
-
-namespace {
-constexpr std::size_t kCounterCount = 9;
-}
 
 FrameCounters::FrameCounters(GlFunctions& gl) : m_gl(gl), m_buffer(gl)
 {
     m_gl.glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, m_buffer.id());
-    m_gl.glBufferData(GL_ATOMIC_COUNTER_BUFFER, kCounterCount * sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
-    checkAllocation(m_gl, "frame counters", kCounterCount * sizeof(GLuint));
+    m_gl.glBufferData(GL_ATOMIC_COUNTER_BUFFER, kBytes, nullptr, GL_DYNAMIC_COPY);
+    checkAllocation(m_gl, "frame counters", kBytes);
     reset();
 }
 
 void FrameCounters::reset()
 {
-    const std::array<GLuint, kCounterCount> zeros{};
+    const GLuint zero = 0;
     m_gl.glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, m_buffer.id());
-    m_gl.glBufferSubData(GL_ATOMIC_COUNTER_BUFFER, 0, sizeof(zeros), zeros.data());
+    m_gl.glClearBufferSubData(GL_ATOMIC_COUNTER_BUFFER, GL_R32UI, 0, kBytes, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
 
 void FrameCounters::bind()
@@ -30,12 +24,16 @@ void FrameCounters::bind()
     m_gl.glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, binding::kFrameCountersAtomic, m_buffer.id());
 }
 
-FrameCounts FrameCounters::read()
+void FrameCounters::copyTo(GLuint buffer)
 {
-    std::array<GLuint, kCounterCount> values{};
     m_gl.glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    m_gl.glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, m_buffer.id());
-    m_gl.glGetBufferSubData(GL_ATOMIC_COUNTER_BUFFER, 0, sizeof(values), values.data());
+    m_gl.glBindBuffer(GL_COPY_READ_BUFFER, m_buffer.id());
+    m_gl.glBindBuffer(GL_COPY_WRITE_BUFFER, buffer);
+    m_gl.glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, kBytes);
+}
+
+FrameCounts FrameCounters::decode(const Values& values)
+{
     return {values[0], values[1], values[2], values[3], values[4], values[5], values[6], values[7], values[8]};
 }
 

@@ -3,10 +3,13 @@
 /// Per-frame counters the shaders increment (an atomic counter buffer; the layout is in
 /// shaders/common/frame_counters.glsl): fragments in the span, stored and lost, pixels
 /// that overflowed or could not be resolved, fragments that gave up waiting for a lock.
+/// The CPU reads them a frame or more later (frame_results.h): reset and copy are GPU
+/// commands, so the frame that increments them never waits for them.
 
 #include "render/gl/gl_functions.h"
 #include "render/gl/gl_objects.h"
 
+#include <array>
 #include <cstdint>
 
 namespace trimlab::render {
@@ -26,11 +29,19 @@ struct FrameCounts {
 
 class FrameCounters {
 public:
+    static constexpr std::size_t kCount = 9;
+    using Values = std::array<GLuint, kCount>;
+    static constexpr std::size_t kBytes = sizeof(Values);
+
     explicit FrameCounters(GlFunctions& gl);
+    /// Zeroes the counters (a GPU command).
     void reset();
     void bind();
-    /// Reads the counters back (waits for the GPU).
-    [[nodiscard]] FrameCounts read();
+    /// Copies the counters into `buffer` (at least kBytes) once the frame's shaders have
+    /// written them (a GPU command).
+    void copyTo(GLuint buffer);
+    /// The counts of values copied back.
+    [[nodiscard]] static FrameCounts decode(const Values& values);
 
 private:
     GlFunctions& m_gl;

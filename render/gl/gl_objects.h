@@ -9,7 +9,8 @@
 
 namespace trimlab::render {
 
-template <void (GlFunctions::*Generate)(GLsizei, GLuint*), void (GlFunctions::*Delete)(GLsizei, const GLuint*)>
+template <void (QOpenGLFunctions_4_3_Core::*Generate)(GLsizei, GLuint*),
+          void (QOpenGLFunctions_4_3_Core::*Delete)(GLsizei, const GLuint*)>
 class GlName {
 public:
     GlName() = default;

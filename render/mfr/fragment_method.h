@@ -47,6 +47,11 @@ struct MethodInfo {
     /// composite transparency (X-ray) layers (the buffer methods). Clipping sets and
     /// capping work with every method.
     bool inspection;
+    /// Reads a result of its own frame back before the frame ends — the S-buffer family's
+    /// fragment total (it sizes the node buffer), the linked lists' node count (it grows
+    /// them), the peeling methods' occlusion query (it ends the peeling) — so its frames
+    /// make the CPU wait for the GPU even when frames are pipelined.
+    bool waitsMidFrame;
 };
 
 /// Every method, in menu order. Only those with an implementation are listed.

@@ -280,6 +280,7 @@ std::optional<QString> viewportAgrees(ViewportRenderer& view, const Camera& came
 {
     if (!view.render(camera, size, 0, [](const std::string&) {}))
         return QString("no GPU frame");
+    view.finishFrames();
     const ReferenceResult expected =
         ReferenceRenderer(*view.content()->posedScene()).render(camera, size.width(), size.height(), TrimSettings{});
     const test::MethodCase testCase{name, camera, TrimSettings{}, view.methodParameters(), size.width(), size.height()};

@@ -124,6 +124,8 @@ TrimImage TestViewportRenderer::renderFrame(ViewportRenderer& view, const Camera
         if (notices)
             notices->push_back(notice);
     });
+    if (rendered)
+        view.finishFrames(); // the frame's results, so that lastFrame() is this frame
     if (!rendered || !view.lastFrame())
         return {};
     return view.renderer().readTrimImage();

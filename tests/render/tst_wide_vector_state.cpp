@@ -92,6 +92,13 @@ void TestWideVectorState::contextAndRendererCallsEndTheState()
     QVERIFY(endsWideVectorState([&] { renderer.gpuScene().updatePositions(0, positions); }));
     QVERIFY(endsWideVectorState([&] { (void)renderer.gpuScene().readNormals(0); }));
     QVERIFY(renderer.lastStats().counts.fragmentsStored > 0); // the frames were real
+    // The viewport's pipelined frames: issued, then their results collected or waited for.
+    renderer.setPipelined(true);
+    QVERIFY(endsWideVectorState([&] { renderer.render(camera, settings, 64, 48); }));
+    QVERIFY(endsWideVectorState([&] { (void)renderer.collectFrames(); }));
+    renderer.render(camera, settings, 64, 48);
+    QVERIFY(endsWideVectorState([&] { renderer.finishFrames(); }));
+    QVERIFY(!renderer.framesPending());
 }
 
 QTEST_MAIN(TestWideVectorState)

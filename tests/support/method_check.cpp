@@ -48,6 +48,7 @@ std::optional<QString> checkFrameAgainstReference(render::TrimRenderer& renderer
                                                   const ReferenceResult& reference, const TieCheck& ties,
                                                   QString* summary, const MethodCriteria& criteria)
 {
+    renderer.finishFrames(); // a pipelined renderer's numbers of the frame its image holds
     const render::FragmentMethodKind method = renderer.method();
     const TrimImage gpu = renderer.readTrimImage();
     const TrimComparison comparison = compareTrimImages(gpu, reference.trim, reference.diagnostics, {}, ties);

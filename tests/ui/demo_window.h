@@ -43,8 +43,8 @@ inline std::unique_ptr<ui::MainWindow> showDemoWindow(const QString& ini, QSize 
 /// agrees; a frame covering less than a tenth of the view fails too.
 inline std::optional<QString> lastFrameDisagreement(ui::MainWindow& window, const QString& name)
 {
+    const TrimImage actual = window.viewport()->readTrimImage(); // first: lastFrame() is then its frame
     const ui::ViewportFrame frame = *window.viewport()->lastFrame();
-    const TrimImage actual = window.viewport()->readTrimImage();
     const ReferenceRenderer reference(window.scene()->scene);
     const int width = frame.pixelSize.width();
     const int height = frame.pixelSize.height();

@@ -111,8 +111,8 @@ inline ReferenceResult referenceOfLastFrame(ui::MainWindow& window)
 inline std::optional<QString> inspectDisagreement(ui::MainWindow& window, const QString& name,
                                                   double minCoveredFraction = 0.05)
 {
+    const TrimImage actual = window.viewport()->readTrimImage(); // first: lastFrame() is then its frame
     const ui::ViewportFrame frame = *window.viewport()->lastFrame();
-    const TrimImage actual = window.viewport()->readTrimImage();
     const ReferenceRenderer reference(*frame.scene);
     const int width = frame.pixelSize.width();
     const int height = frame.pixelSize.height();

@@ -49,9 +49,9 @@ struct FrameAgainstReference {
 /// `positions` (#V of object 0's mesh).
 inline FrameAgainstReference posedFrameAgainstReference(ui::MainWindow& window, const std::vector<glm::vec3>& positions)
 {
-    const ui::ViewportFrame frame = *window.viewport()->lastFrame();
     FrameAgainstReference result;
-    result.actual = window.viewport()->readTrimImage();
+    result.actual = window.viewport()->readTrimImage(); // first: lastFrame() is then its frame
+    const ui::ViewportFrame frame = *window.viewport()->lastFrame();
     Scene posed = window.scene()->scene;
     posed.objects.front().mesh.positions = positions;
     const ReferenceRenderer reference(posed);
@@ -66,9 +66,9 @@ inline FrameAgainstReference posedFrameAgainstReference(ui::MainWindow& window, 
 /// The last frame against the dynamic rules' reference of `chain`.
 inline FrameAgainstReference chainFrameAgainstReference(ui::MainWindow& window, const DynamicChain& chain)
 {
-    const ui::ViewportFrame frame = *window.viewport()->lastFrame();
     FrameAgainstReference result;
-    result.actual = window.viewport()->readTrimImage();
+    result.actual = window.viewport()->readTrimImage(); // first: lastFrame() is then its frame
+    const ui::ViewportFrame frame = *window.viewport()->lastFrame();
     result.expected = DynamicReferenceRenderer(chain).render(frame.camera, frame.pixelSize.width(),
                                                              frame.pixelSize.height(), frame.settings);
     result.comparison = compareTrimImages(result.actual, result.expected.trim, result.expected.diagnostics);

@@ -25,11 +25,14 @@ QString countText(std::uint64_t count)
     return QLocale().toString(qulonglong(count));
 }
 
+// The GPU's time and, beside it, the CPU's for issuing the frame: with pipelined frames the
+// two overlap, so the frame rate follows the larger.
 QString frameTimeText(const render::FrameStats& stats)
 {
+    const QString cpu = FrameStatsPanel::tr("CPU %1 ms").arg(stats.issueMilliseconds, 0, 'f', 2);
     if (stats.gpuMilliseconds >= 0.0)
-        return FrameStatsPanel::tr("%1 ms (GPU)").arg(stats.gpuMilliseconds, 0, 'f', 2);
-    return FrameStatsPanel::tr("%1 ms (wall)").arg(stats.wallMilliseconds, 0, 'f', 2);
+        return FrameStatsPanel::tr("%1 ms (GPU) · %2").arg(stats.gpuMilliseconds, 0, 'f', 2).arg(cpu);
+    return FrameStatsPanel::tr("%1 ms (wall) · %2").arg(stats.wallMilliseconds, 0, 'f', 2).arg(cpu);
 }
 
 QString lockText(const render::FrameStats& stats)
@@ -50,7 +53,8 @@ FrameStatsPanel::FrameStatsPanel(QWidget* parent) : QWidget(parent)
     layout->addLayout(form);
     m_method = addRow(form, tr("Method"), "statsMethodLabel", tr("The multi-fragment method of the last frame"));
     m_frameTime = addRow(form, tr("Time per frame"), "statsFrameTimeLabel",
-                         tr("GPU time of the last frame; wall-clock time when the driver's timer is unusable"));
+                         tr("GPU time of the last frame (wall-clock time when the driver's timer is unusable), and the "
+                            "CPU's time to issue it; the GPU draws one frame while the CPU prepares the next"));
     m_passes = addRow(form, tr("Geometry passes"), "statsGeometryPassesLabel",
                       tr("Times the scene was rasterised (and full-screen passes)"));
     m_memory =

@@ -14,6 +14,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QPainter>
+#include <QTimer>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -44,8 +45,13 @@ ViewportWidget::ViewportWidget(QWidget* parent)
       m_content(std::make_shared<render::ShownContent>()),
       m_view(m_content),
       m_repaint(m_content->subscribe([this](render::ShownLayer) { update(); })),
-      m_cpuStill(new CpuStillRender(this))
+      m_cpuStill(new CpuStillRender(this)),
+      m_resultPoll(new QTimer(this))
 {
+    // Often enough for a frame at hundreds of frames per second, rarely enough to leave
+    // the CPU to the frames themselves.
+    m_resultPoll->setInterval(2);
+    connect(m_resultPoll, &QTimer::timeout, this, &ViewportWidget::collectFrameResults);
     connect(m_cpuStill, &CpuStillRender::ready, this, qOverload<>(&ViewportWidget::update));
     connect(m_cpuStill, &CpuStillRender::failed, this, [this](const QString& message) {
         setError(tr("Neither the GPU nor the CPU reference could render this view: %1").arg(message));
@@ -310,22 +316,67 @@ std::optional<render::GlCapabilities> ViewportWidget::capabilities() const
 
 QImage ViewportWidget::readColorImage()
 {
-    if (!m_view.hasRenderer() || !m_view.lastFrame())
+    if (!m_view.hasRenderer() || (!m_view.lastFrame() && !m_view.framesPending()))
         return {};
     makeCurrent();
-    QImage image = m_view.renderer().readColor();
+    QImage image = finishFrames() && m_view.lastFrame() ? m_view.renderer().readColor() : QImage();
     doneCurrent();
     return image;
 }
 
 TrimImage ViewportWidget::readTrimImage()
 {
-    if (!m_view.hasRenderer() || !m_view.lastFrame())
+    if (!m_view.hasRenderer() || (!m_view.lastFrame() && !m_view.framesPending()))
         return {};
     makeCurrent();
-    TrimImage image = m_view.renderer().readTrimImage();
+    TrimImage image = finishFrames() && m_view.lastFrame() ? m_view.renderer().readTrimImage() : TrimImage();
     doneCurrent();
     return image;
+}
+
+bool ViewportWidget::finishFrames()
+{
+    try {
+        m_view.finishFrames();
+    } catch (const render::GlContextLostError& e) {
+        recoverFromContextLoss(QString::fromStdString(e.what()));
+        return false;
+    }
+    if (m_view.lastFrame() && m_view.lastFrame()->stats.serial != m_reportedFrame)
+        QTimer::singleShot(0, this, &ViewportWidget::reportArrivedFrame); // not from inside a readback
+    return true;
+}
+
+void ViewportWidget::collectFrameResults()
+{
+    if (!m_view.hasRenderer() || !m_view.framesPending()) {
+        reportArrivedFrame();
+        return;
+    }
+    makeCurrent();
+    try {
+        (void)m_view.collectFrames();
+    } catch (const render::GlContextLostError& e) {
+        doneCurrent();
+        m_resultPoll->stop();
+        recoverFromContextLoss(QString::fromStdString(e.what()));
+        return;
+    }
+    doneCurrent();
+    reportArrivedFrame();
+}
+
+void ViewportWidget::reportArrivedFrame()
+{
+    const auto& frame = m_view.lastFrame();
+    if (frame && frame->stats.serial != m_reportedFrame) {
+        m_reportedFrame = frame->stats.serial;
+        emit frameRendered(frame->stats);
+    }
+    if (m_view.hasRenderer() && m_view.framesPending())
+        m_resultPoll->start();
+    else
+        m_resultPoll->stop();
 }
 
 void ViewportWidget::initializeGL()
@@ -456,7 +507,7 @@ void ViewportWidget::renderFrame()
         paintMessage(m_error);
         return;
     }
-    emit frameRendered(m_view.lastFrame()->stats);
+    reportArrivedFrame();
 }
 
 QImage ViewportWidget::cpuStillImage() const

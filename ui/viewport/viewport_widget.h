@@ -4,6 +4,8 @@
 /// OrbitController. It
 /// renders only when something changed (scene, settings, camera, size) — never in a loop
 /// — at the widget's device-pixel size, and blits the result into its framebuffer.
+/// Painting never waits for the GPU: a frame's statistics arrive a frame or more later
+/// (frameRendered()), collected from the event loop; readbacks wait for them.
 ///
 /// Mouse: left drag orbits, right or middle drag (or Shift + left drag) pans, the wheel
 /// dollies toward the target (Ctrl + wheel toward the point under the cursor), a double
@@ -56,6 +58,8 @@
 #include <memory>
 #include <optional>
 #include <vector>
+
+class QTimer;
 
 namespace trimlab::ui {
 
@@ -213,7 +217,8 @@ public:
     [[nodiscard]] int contextsInitialized() const { return m_contextsInitialized; }
 
 signals:
-    /// After every successful frame.
+    /// When a successful frame's results arrived from the GPU (frames are pipelined: a
+    /// frame or more after it was painted; lastFrame() is then that frame).
     void frameRendered(const trimlab::render::FrameStats& stats);
     /// Once per distinct failure (renderer creation, scene upload or a frame).
     void renderError(const QString& message);
@@ -253,6 +258,14 @@ private:
     void applyPendingReset();
     void applyMethod();
     void renderFrame();
+    /// Takes the frame results the GPU has delivered (never waits) and reports them;
+    /// polled by m_resultPoll while results are pending.
+    void collectFrameResults();
+    /// frameRendered() for lastFrame() unless it was reported; polls while more are due.
+    void reportArrivedFrame();
+    /// Waits for the pending frames' results, so that the render target and lastFrame()
+    /// agree (the context must be current). False after a GPU reset (then handled).
+    bool finishFrames();
     void applyRecovery(const render::FrameRecovery& recovery);
     void paintCpuStill();
     void clearToBackground();
@@ -280,6 +293,8 @@ private:
     int m_contextsInitialized = 0;                  ///< initializeGL() calls
     std::unique_ptr<QOpenGLDebugLogger> m_debugLog; ///< with TRIMLAB_GL_DEBUG only (render/gl/gl_debug_log.h)
     CpuStillRender* m_cpuStill = nullptr;
+    QTimer* m_resultPoll = nullptr;    ///< runs while frame results are pending
+    std::uint64_t m_reportedFrame = 0; ///< the serial of the last frame frameRendered() reported
     Drag m_drag = Drag::None;
     QPointF m_lastMouse;
     double m_grabDepth = 0.0;

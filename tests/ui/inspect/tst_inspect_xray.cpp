@@ -38,8 +38,8 @@ void typeValue(QDoubleSpinBox* spin, double value)
 // Colors of the last frame against the reference; nullopt when they agree.
 std::optional<QString> colorDisagreement(MainWindow& window, const QString& name)
 {
+    const QImage actual = window.viewport()->readColorImage(); // first: lastFrame() is then its frame
     const ReferenceResult expected = referenceOfLastFrame(window);
-    const QImage actual = window.viewport()->readColorImage();
     const ColorComparison colors =
         compareColors(actual, window.viewport()->readTrimImage(), expected.color, expected.diagnostics, 2);
     qInfo("%s: %s", qPrintable(name), qPrintable(colors.summary()));

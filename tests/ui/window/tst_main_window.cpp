@@ -181,9 +181,9 @@ void TestMainWindow::ruleChangeRerendersAndMatchesReference()
         for (int x = 0; x < after.width(); ++x)
             changed += after.pixel(x, y) != before.pixel(x, y) ? 1 : 0;
     QVERIFY2(changed > 100, qPrintable(QStringLiteral("only %1 pixels changed").arg(changed)));
+    const TrimImage actual = window->viewport()->readTrimImage(); // first: lastFrame() is then its frame
 
     const ViewportFrame frame = *window->viewport()->lastFrame();
-    const TrimImage actual = window->viewport()->readTrimImage();
     const ReferenceRenderer reference(window->scene()->scene);
     const ReferenceResult expected =
         reference.render(frame.camera, frame.pixelSize.width(), frame.pixelSize.height(), frame.settings);
@@ -322,8 +322,8 @@ void TestMainWindow::thresholdRulePersists()
                 return frame && frame->settings.rule == StaticRule::absAtLeast(2);
             },
             kWaitMs));
+        const TrimImage actual = window->viewport()->readTrimImage(); // first: lastFrame() is then its frame
         const ViewportFrame frame = *window->viewport()->lastFrame();
-        const TrimImage actual = window->viewport()->readTrimImage();
         const ReferenceResult expected =
             ReferenceRenderer(window->scene()->scene)
                 .render(frame.camera, frame.pixelSize.width(), frame.pixelSize.height(), frame.settings);
