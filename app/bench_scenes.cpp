@@ -2,6 +2,7 @@
 
 #include "core/mesh/loop_subdivision.h"
 #include "core/mesh/mesh_validation.h"
+#include "core/scene/object_transform.h"
 #include "core/trim/csg_expression.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -106,17 +107,6 @@ void addEnclosingCube(LoadedScene& loaded, TrimSettings& settings, double keptFr
         settings.clip = ClipPlane{true, {0.0, -1.0, 0.0}, min.y + keptFraction * (max.y - min.y)};
 }
 
-/// `mesh`'s model matrix that puts its bounding box's centre at `center` with its largest
-/// extent equal to `size` (uniform scale, no rotation).
-glm::dmat4 fitInto(const TriangleMesh& mesh, const glm::dvec3& center, double size)
-{
-    const Bounds bounds = computeBounds(mesh);
-    const glm::dvec3 extent = bounds.max - bounds.min;
-    const double scale = size / std::max({extent.x, extent.y, extent.z});
-    return glm::scale(glm::translate(glm::dmat4(1.0), center), glm::dvec3(scale)) *
-           glm::translate(glm::dmat4(1.0), -bounds.center());
-}
-
 /// The GPU goal scene of docs/gpu-results.md: about half a million triangles, three CSG
 /// operands, trimming, a clipping plane with a hatched cap. The self-crossing dragon once
 /// Loop-subdivided (400k triangles, alternating border) united with the elephant (85k) and
@@ -139,7 +129,7 @@ BenchScene csgOfThree(const std::string& name, const std::filesystem::path& data
     for (const auto& [file, center] : others) {
         LoadedScene other = loadScene((dataDirectory / file).string());
         SceneObject object = std::move(other.scene.objects.at(0));
-        object.modelMatrix = fitInto(object.mesh, center, 0.55 * size);
+        object.modelMatrix = fitIntoCube(computeBounds(object.mesh), center, 0.55 * size);
         scene.loaded.reports.push_back(validateMesh(object.mesh));
         scene.loaded.scene.objects.push_back(std::move(object));
     }

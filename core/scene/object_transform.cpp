@@ -86,4 +86,12 @@ std::optional<ObjectTransform> decomposeObjectTransform(const glm::dmat4& model,
     return transform;
 }
 
+glm::dmat4 fitIntoCube(const Bounds& bounds, const glm::dvec3& center, double size)
+{
+    const glm::dvec3 extent = bounds.max - bounds.min;
+    const double scale = size / std::max({extent.x, extent.y, extent.z});
+    return glm::scale(glm::translate(glm::dmat4(1.0), center), glm::dvec3(scale)) *
+           glm::translate(glm::dmat4(1.0), -bounds.center());
+}
+
 } // namespace trimlab

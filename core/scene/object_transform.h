@@ -4,6 +4,8 @@
 /// three angles in degrees and a uniform scale. Its model matrix is always orientation
 /// preserving (SceneObject's requirement), so facing and winding keep their meaning.
 
+#include "core/mesh/triangle_mesh.h"
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -36,5 +38,10 @@ struct ObjectTransform {
 /// such a transform: a projective last row, a non-uniform scale, shear, a mirror or a
 /// non-finite entry.
 [[nodiscard]] std::optional<ObjectTransform> decomposeObjectTransform(const glm::dmat4& model, double tolerance = 1e-9);
+
+/// The model matrix that places an object whose own bounds are `bounds` with their centre
+/// at `center`, scaled uniformly so that their largest side is `size` (a composed
+/// benchmark scene: operands of one size crossing each other). `bounds` must not be empty.
+[[nodiscard]] glm::dmat4 fitIntoCube(const Bounds& bounds, const glm::dvec3& center, double size);
 
 } // namespace trimlab

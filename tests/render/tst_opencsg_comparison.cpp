@@ -61,14 +61,6 @@ std::vector<test::OpenCsgSolid> openCsgSolids(const Scene& scene)
     return out;
 }
 
-// The view depth of a window depth `d` under `camera`'s projection (d = 1: nothing).
-double viewDepthOf(double d, const Camera& camera)
-{
-    const double n = camera.zNear, f = camera.zFar;
-    const double z = 2.0 * d - 1.0;
-    return 2.0 * f * n / (f + n - z * (f - n));
-}
-
 QImage depthPicture(const std::vector<double>& depth, double lo, double hi)
 {
     QImage image(kWidth, kHeight, QImage::Format_RGB32);
@@ -184,7 +176,7 @@ void TestOpenCsgComparison::agreesWithOpenCsg()
             const std::size_t i = std::size_t(y) * kWidth + x;
             const TrimPixel& p = trim.at(x, y);
             ours[i] = p.covered() ? double(p.viewDepth) : INFINITY;
-            theirs[i] = window[i] < 1.0f ? viewDepthOf(window[i], camera) : INFINITY;
+            theirs[i] = window[i] < 1.0f ? test::openCsgViewDepth(window[i], camera.zNear, camera.zFar) : INFINITY;
             const bool a = std::isfinite(ours[i]), b = std::isfinite(theirs[i]);
             if (!a && !b)
                 continue;

@@ -50,6 +50,7 @@ private slots:
     void decomposeKeepsAnglesInRange();
     void decomposeRejectsWhatNoTransformExpresses();
     void placementsBeyondSinglePrecisionAreNamed();
+    void fitIntoCubeCentresAndScalesUniformly();
 };
 
 // A transform finite in double precision can still overflow the floats that the GPU,
@@ -200,6 +201,19 @@ void TestObjectTransform::decomposeRejectsWhatNoTransformExpresses()
     glm::dmat4 nan(1.0);
     nan[3][0] = std::numeric_limits<double>::quiet_NaN();
     QVERIFY(!decomposeObjectTransform(nan));
+}
+
+// A benchmark scene's operand: its bounds' centre lands on the given point and its largest
+// side gets the given size, the other sides in proportion (no stretch, no mirror).
+void TestObjectTransform::fitIntoCubeCentresAndScalesUniformly()
+{
+    const Bounds bounds{{1.0, 2.0, 3.0}, {3.0, 6.0, 4.0}}; // sides 2, 4, 1
+    const glm::dvec3 center(-5.0, 0.5, 7.0);
+    const glm::dmat4 model = fitIntoCube(bounds, center, 2.0);
+    QVERIFY(near(apply(model, bounds.center()), center));
+    QVERIFY(near(apply(model, bounds.max), center + glm::dvec3(0.5, 1.0, 0.25)));
+    QVERIFY(near(apply(model, bounds.min), center - glm::dvec3(0.5, 1.0, 0.25)));
+    QVERIFY(glm::determinant(glm::dmat3(model)) > 0.0);
 }
 
 QTEST_APPLESS_MAIN(TestObjectTransform)
