@@ -225,15 +225,12 @@ void TrimRenderer::render(GpuScene& scene, const TrimMode& mode, const Camera& c
         stats.width = width;
         stats.height = height;
         stats.k = m_parameters.k;
+        stats.issueMilliseconds = double(m_clock.nsecsElapsed() - startNs) * 1e-6;
         m_pending.push_back(pending);
     }
     (void)takeResults(finished);
     if (!m_pipelined)
         (void)takeResults(m_results->wait());
-    if (timed && !m_pending.empty() && m_pending.back().stats.serial == serial)
-        m_pending.back().stats.issueMilliseconds = double(m_clock.nsecsElapsed() - startNs) * 1e-6;
-    else if (timed && m_stats.serial == serial)
-        m_stats.issueMilliseconds = double(m_clock.nsecsElapsed() - startNs) * 1e-6;
     m_resetWatch.throwIfReset(); // after a reset the counters and the image are garbage
 }
 

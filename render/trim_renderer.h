@@ -47,8 +47,8 @@ struct FrameStats {
     /// Wall-clock time from the start of render() until its results were in: the wait
     /// for the GPU included; when pipelined, until the collection that found them.
     double wallMilliseconds = 0.0;
-    /// Wall-clock time of render() itself: the CPU's work of issuing the frame (and,
-    /// unless pipelined, the wait for the GPU).
+    /// Wall-clock time of the CPU's work of issuing the frame in render(), the wait for
+    /// the GPU's results left out.
     double issueMilliseconds = 0.0;
     double bufferMegabytes = 0.0; ///< method storage + render target + scene buffers
     int width = 0;

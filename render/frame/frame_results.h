@@ -45,8 +45,6 @@ public:
     [[nodiscard]] std::vector<FrameResult> poll();
     /// Results of every pending frame, oldest first; waits for the GPU.
     [[nodiscard]] std::vector<FrameResult> wait();
-    /// Whether an issued frame's results are still to be collected.
-    [[nodiscard]] bool pending() const { return m_pendingCount > 0; }
 
 private:
     struct Slot {
@@ -63,7 +61,7 @@ private:
     GlFunctions& m_gl;
     std::array<Slot, kSlots> m_slots;
     std::size_t m_next = 0;         ///< the slot the next begin() takes
-    std::size_t m_pendingCount = 0; ///< slots ended (or begun) and not yet collected
+    std::size_t m_pendingCount = 0; ///< slots ended and not yet collected
     bool m_begun = false;           ///< begin() without its end() yet
 };
 
