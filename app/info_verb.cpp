@@ -1,10 +1,12 @@
 #include "app/info_verb.h"
 
 #include "app/cli_messages.h"
+#include "app/parameter_options.h"
 #include "app/scene_composition.h"
 
 #include "core/catalog/scene_source.h"
 #include "core/trim/csg_expression.h"
+#include "core/trim/hole_closing.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -19,10 +21,14 @@ QString pointText(const glm::dvec3& p)
 }
 
 // One report per object, named by its id when the scene has several (the ids --csg,
-// --object-rule and --object-transform use), then the scene's extent in world space.
-int printReports(const std::vector<std::string>& sources, const std::vector<ObjectTransformOption>& transforms)
+// --object-rule and --object-transform use), then the scene's extent in world space; with
+// --close-holes, of the objects closed.
+int printReports(const std::vector<std::string>& sources, const std::vector<ObjectTransformOption>& transforms,
+                 bool closeHoles)
 {
     LoadedScene loaded = loadScenes(sources);
+    if (closeHoles)
+        closeHolesNoted(loaded);
     if (const std::optional<QString> error = applyObjectTransforms(transforms, loaded.scene)) {
         printError(*error);
         return 2;
@@ -61,6 +67,7 @@ int runInfoVerb(int argc, char** argv, const QStringList& arguments)
     parser.addPositionalArgument("sources", "Mesh files (.obj .ply .stl .off .gltf .glb, optionally .gz) or demo:NAME.",
                                  "SOURCE...");
     parser.addOption({"object-transform", objectTransformHelp(), "id=tx,ty,tz[,rx,ry,rz[,s]]"});
+    parser.addOption(commandLineOption(hole_closing_parameters::kCloseHoles));
     parser.addHelpOption();
     if (!parser.parse(QStringList{QStringLiteral("trimlab info")} + arguments)) {
         printError(parser.errorText());
@@ -76,11 +83,14 @@ int runInfoVerb(int argc, char** argv, const QStringList& arguments)
     for (const QString& text : parser.values("object-transform"))
         if (!error)
             error = parseObjectTransform(text, transforms);
+    bool closeHoles = false;
+    if (!error)
+        error = parseParameter(parser, hole_closing_parameters::kCloseHoles, closeHoles);
     if (error) {
         printError(*error);
         return 2;
     }
-    return runGuarded([&] { return printReports(sources, transforms); }, sources);
+    return runGuarded([&] { return printReports(sources, transforms, closeHoles); }, sources);
 }
 
 } // namespace trimlab::app

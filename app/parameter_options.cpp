@@ -53,7 +53,10 @@ QString refusal(const ParameterSpec& spec, const QString& given)
 
 QCommandLineOption commandLineOption(const ParameterSpec& spec)
 {
-    return QCommandLineOption(text(spec.flag), QString::fromStdString(parameterHelpText(spec)), valueName(spec));
+    const QString help = QString::fromStdString(parameterHelpText(spec));
+    if (spec.switchFlag)
+        return QCommandLineOption(text(spec.flag), help);
+    return QCommandLineOption(text(spec.flag), help, valueName(spec));
 }
 
 void addParameterOptions(QCommandLineParser& parser, std::span<const ParameterSpec* const> table)
@@ -68,6 +71,10 @@ std::optional<QString> parseParameter(const QCommandLineParser& parser, const Pa
     const QString flag = text(spec.flag);
     if (spec.flag.empty() || !parser.isSet(flag))
         return std::nullopt;
+    if (spec.switchFlag) {
+        value = 1.0;
+        return std::nullopt;
+    }
     const QString given = parser.value(flag);
     const std::optional<double> parsed = parseParameterValue(spec, given.toStdString());
     const ChoiceValue* choice =

@@ -133,7 +133,8 @@ std::optional<QString> parseParameters(const QCommandLineParser& parser, RenderO
           parseParameter(parser, inspect_parameters::kFresnel, xray.fresnelExponent),
           parseParameter(parser, inspect_parameters::kCapSpacing, options.capSpacingFraction),
           parseParameter(parser, kRepeat, options.repeat), parseParameter(parser, kThreads, options.threads),
-          parseParameter(parser, kFrame, frame)}) {
+          parseParameter(parser, kFrame, frame),
+          parseParameter(parser, hole_closing_parameters::kCloseHoles, options.closeHoles)}) {
         if (error)
             return error;
     }
@@ -192,6 +193,9 @@ std::optional<QString> parseDesignOptions(const QCommandLineParser& parser, Rend
     if (options.designed() && !options.objectTransforms.empty())
         return QStringLiteral("--object-transform places the objects of mesh sources; a design keeps its own "
                               "placement");
+    if (options.designed() && options.closeHoles)
+        return QStringLiteral("--close-holes closes mesh sources and animations; a design's base mesh is closed "
+                              "already (a design starts only on a closed mesh)");
     const QString classification = parser.value("classification");
     options.classificationGiven = parser.isSet("classification");
     if (classification == QLatin1String("static"))

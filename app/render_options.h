@@ -9,6 +9,7 @@
 #include "core/animation/pose_sets.h"
 #include "core/timeline/view_settings.h"
 #include "core/trim/inspect_parameters.h"
+#include "core/trim/hole_closing.h"
 #include "core/trim/trim_settings.h"
 #include "core/util/parameter_spec.h"
 #include "core/util/worker_threads_parameter.h"
@@ -56,7 +57,7 @@ inline constexpr ParameterSpec kFrame{
     .defaultText = "the last",
 };
 
-inline constexpr std::array<const ParameterSpec*, 11> kTable{
+inline constexpr std::array<const ParameterSpec*, 12> kTable{
     &render::method_parameters::kK,
     &render::method_parameters::kSharedCounters,
     &render::method_parameters::kMemoryBudget,
@@ -68,6 +69,7 @@ inline constexpr std::array<const ParameterSpec*, 11> kTable{
     &kRepeat,
     &kThreads,
     &kFrame,
+    &hole_closing_parameters::kCloseHoles,
 };
 static_assert(isWellFormedTable(kTable));
 
@@ -82,6 +84,9 @@ struct RenderOptions {
     /// Mesh files or "demo:NAME", one scene (loadScenes: object ids count across them), or
     /// one .trimlab project.
     std::vector<std::string> sources;
+    /// --close-holes: the holes of the mesh sources, or of the animation's poses, are
+    /// closed by fans before rendering (core/trim/hole_closing.h).
+    bool closeHoles = false;
     /// The one source is a design on its own (isDesignSource), looked at once.
     bool designSource = false;
     /// --object-transform: placements of objects of mesh sources.

@@ -446,7 +446,9 @@ QString poseClassificationText(const RenderOptions& options, const MeshAnimation
 int renderPoses(RenderOptions options)
 {
     const std::string& source = options.sources.front();
-    const MeshAnimation animation = loadAnimation(source);
+    AnimationLoadOptions load;
+    load.closeHoles = options.closeHoles;
+    const MeshAnimation animation = loadAnimation(source, load);
     const PoseSelection selection = *options.poses;
     const int count = int(animation.poseCount());
     if (selection.last >= count) {
@@ -547,6 +549,8 @@ int renderLoaded(RenderOptions options)
     if (options.designed())
         return renderDesigned(options);
     LoadedScene loaded = loadScenes(options.sources);
+    if (options.closeHoles)
+        closeHolesNoted(loaded);
     if (const std::optional<QString> error = applyObjectTransforms(options.objectTransforms, loaded.scene)) {
         printError(*error);
         return 2;

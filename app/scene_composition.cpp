@@ -1,5 +1,8 @@
 #include "app/scene_composition.h"
 
+#include "app/cli_messages.h"
+
+#include "core/catalog/closed_scene.h"
 #include "core/scene/world_geometry.h"
 #include "core/trim/csg_expression.h"
 #include "core/trim/csg_object_ids.h"
@@ -146,6 +149,13 @@ std::optional<QString> checkObjectIds(const CsgSettings& csg, std::size_t object
     return QStringLiteral("%1 %2").arg(problem->inExpression ? QStringLiteral("--csg")
                                                              : QStringLiteral("--object-rule"),
                                        QString::fromStdString(csgObjectIdReason(problem->id, objectCount)));
+}
+
+void closeHolesNoted(LoadedScene& loaded)
+{
+    const HoleClosing closing = closeSceneHoles(loaded);
+    printNote(QStringLiteral("closed %1 in %2")
+                  .arg(QString::fromStdString(holeClosingText(closing)), QString::fromStdString(loaded.displayName)));
 }
 
 } // namespace trimlab::app

@@ -41,6 +41,7 @@ std::optional<QString> parseParameters(const QCommandLineParser& parser, Segment
           parseParameter(parser, kMode, mode),
           parseParameter(parser, animation_load_parameters::kGltfFps, options.load.gltf.fps),
           parseParameter(parser, animation_load_parameters::kGltfAnimation, options.load.gltf.animation),
+          parseParameter(parser, hole_closing_parameters::kCloseHoles, options.load.closeHoles),
           parseParameter(parser, kThreads, options.settings.threads)}) {
         if (error)
             return error;

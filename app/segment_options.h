@@ -10,6 +10,7 @@
 #include "core/animation/animation_segmenter.h"
 #include "core/animation/segmentation_parameters.h"
 #include "core/animation/segmentation_record.h"
+#include "core/trim/hole_closing.h"
 
 #include <QString>
 #include <QStringList>
@@ -23,7 +24,7 @@ namespace trimlab::app {
 /// The rows of `trimlab segment`, in the order of --help.
 namespace segment_verb_parameters {
 
-inline constexpr std::array<const ParameterSpec*, 10> kTable{
+inline constexpr std::array<const ParameterSpec*, 11> kTable{
     &segmentation_parameters::kClusters,
     &segmentation_parameters::kH,
     &segmentation_parameters::kFeature,
@@ -33,6 +34,7 @@ inline constexpr std::array<const ParameterSpec*, 10> kTable{
     &segmentation_parameters::kMode,
     &animation_load_parameters::kGltfFps,
     &animation_load_parameters::kGltfAnimation,
+    &hole_closing_parameters::kCloseHoles,
     &segmentation_parameters::kThreads,
 };
 static_assert(isWellFormedTable(kTable));

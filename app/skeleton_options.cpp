@@ -4,6 +4,8 @@
 #include "app/output_paths.h"
 #include "app/parameter_options.h"
 
+#include "core/trim/hole_closing.h"
+
 #include <QCommandLineParser>
 
 #include <optional>
@@ -22,6 +24,7 @@ void addSkeletonOptions(QCommandLineParser& parser)
     parser.addPositionalArgument("mesh", "A closed, manifold, connected mesh (.obj .ply .stl .off .gltf .glb, "
                                          "optionally .gz) or demo:NAME.");
     addParameterOptions(parser, skeleton_parameters::kTable);
+    parser.addOption(commandLineOption(hole_closing_parameters::kCloseHoles));
     parser.addOptions({
         {{"o", "output"}, "Write the rigged mesh: .glb (binary) or .gltf (embedded buffer).", "file"},
         {"json", "Write the skeleton (joints, tree, bones, vertex-joint map, curve skeleton) as JSON.", "file"},
@@ -49,7 +52,8 @@ std::optional<QString> parseParameters(const QCommandLineParser& parser, Skeleto
           parseParameter(parser, kTargetNodes, o.extraction.targetNodes),
           parseParameter(parser, kRootJoint, o.extraction.rootJoint),
           parseParameter(parser, kHeatConstant, o.heatConstant),
-          parseParameter(parser, kLoopSubdivisions, o.loopLevels)}) {
+          parseParameter(parser, kLoopSubdivisions, o.loopLevels),
+          parseParameter(parser, hole_closing_parameters::kCloseHoles, o.closeHoles)}) {
         if (error)
             return error;
     }

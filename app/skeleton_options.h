@@ -2,7 +2,7 @@
 /// \file
 /// The options of `trimlab skeleton`: every flagged row of skeleton_parameters::kTable
 /// (core/skeleton/skeleton_parameters.h: contraction, simplification, refinement,
-/// selection, bone-heat constant, Loop subdivision), then the mesh and the outputs,
+/// selection, bone-heat constant, Loop subdivision), --close-holes, then the mesh and the outputs,
 /// parsed before the mesh is loaded so that bad arguments fail fast with one line.
 
 #include "core/skeleton/skeleton_extraction.h"
@@ -21,8 +21,9 @@ struct SkeletonVerbOptions {
     SkeletonOptions extraction;
     double heatConstant = skeleton_parameters::kHeatConstant.defaultValue; ///< c of the bone-heat weights
     int loopLevels = 0;
-    QString output; // .glb / .gltf, or empty
-    QString json;   // or empty
+    bool closeHoles = false; ///< --close-holes: close the mesh's holes before extraction
+    QString output;          // .glb / .gltf, or empty
+    QString json;            // or empty
 };
 
 /// Parses the arguments after "skeleton": the options, or a one-line error; `help`

@@ -5,6 +5,7 @@
 #include "app/terminal_progress.h"
 
 #include "core/mesh/loop_subdivision.h"
+#include "core/catalog/closed_scene.h"
 #include "core/catalog/scene_source.h"
 #include "core/scene/world_geometry.h"
 #include "core/skeleton/rigged_gltf.h"
@@ -27,10 +28,12 @@ namespace trimlab::app {
 
 namespace {
 
-// The mesh of a one-object source, in world coordinates.
-TriangleMesh loadSingleMesh(const std::string& source)
+// The mesh of a one-object source, in world coordinates, its holes closed when asked.
+TriangleMesh loadSingleMesh(const std::string& source, bool closeHoles)
 {
-    const LoadedScene loaded = loadScene(source);
+    LoadedScene loaded = loadScene(source);
+    if (closeHoles)
+        closeSceneHoles(loaded);
     if (loaded.scene.objects.size() != 1)
         throw std::runtime_error(source + ": has " + std::to_string(loaded.scene.objects.size()) +
                                  " objects; the skeleton verb takes one mesh");
@@ -150,7 +153,7 @@ int skeletonOfMesh(const SkeletonVerbOptions& o)
     SkeletonRun run;
     QElapsedTimer timer;
     timer.start();
-    TriangleMesh mesh = loadSingleMesh(o.source);
+    TriangleMesh mesh = loadSingleMesh(o.source, o.closeHoles);
     run.loadMs = lapMilliseconds(timer);
     run.inputVertices = mesh.vertexCount();
     if (o.loopLevels > 0) {

@@ -46,6 +46,7 @@ std::optional<QString> parseParameters(const QCommandLineParser& parser, SkinOpt
           parseParameter(parser, kExportFps, options.fps), parseParameter(parser, kExport, morph),
           parseParameter(parser, kInterpolation, step),
           parseParameter(parser, animation_load_parameters::kRestPose, options.load.restPose),
+          parseParameter(parser, hole_closing_parameters::kCloseHoles, options.load.closeHoles),
           parseParameter(parser, skin_verb_parameters::kThreads, options.fit.threads)}) {
         if (error)
             return error;

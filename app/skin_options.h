@@ -10,6 +10,7 @@
 #include "core/skinning/skinning_fitter.h"
 #include "core/skinning/skinning_gltf.h"
 #include "core/skinning/skinning_parameters.h"
+#include "core/trim/hole_closing.h"
 #include "core/util/worker_threads_parameter.h"
 
 #include <QString>
@@ -26,16 +27,12 @@ namespace skin_verb_parameters {
 
 inline constexpr ParameterSpec kThreads = workerThreadsParameter("", "Worker threads");
 
-inline constexpr std::array<const ParameterSpec*, 9> kTable{
-    &skinning_parameters::kBones,
-    &skinning_parameters::kFit,
-    &skinning_parameters::kChain,
-    &skinning_parameters::kInfluences,
-    &skinning_parameters::kExportFps,
-    &skinning_parameters::kExport,
-    &skinning_parameters::kInterpolation,
-    &animation_load_parameters::kRestPose,
-    &kThreads,
+inline constexpr std::array<const ParameterSpec*, 10> kTable{
+    &skinning_parameters::kBones,          &skinning_parameters::kFit,
+    &skinning_parameters::kChain,          &skinning_parameters::kInfluences,
+    &skinning_parameters::kExportFps,      &skinning_parameters::kExport,
+    &skinning_parameters::kInterpolation,  &animation_load_parameters::kRestPose,
+    &hole_closing_parameters::kCloseHoles, &kThreads,
 };
 static_assert(isWellFormedTable(kTable));
 

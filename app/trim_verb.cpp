@@ -2,13 +2,16 @@
 
 #include "app/cli_messages.h"
 #include "app/output_paths.h"
+#include "app/parameter_options.h"
 #include "app/scene_composition.h"
 #include "app/terminal_progress.h"
 
 #include "core/catalog/scene_source.h"
 #include "core/mesh/mesh_export.h"
 #include "core/solid/trimmed_solid.h"
+#include "core/trim/clip_set.h"
 #include "core/trim/csg_expression.h"
+#include "core/trim/hole_closing.h"
 #include "core/trim/static_rule.h"
 
 #include <QCommandLineParser>
@@ -26,6 +29,7 @@ struct TrimOptions {
     TrimSettings trim;
     bool ruleGiven = false;
     bool csgGiven = false;
+    bool closeHoles = false;
     QString output;
 };
 
@@ -48,10 +52,17 @@ void addTrimOptions(QCommandLineParser& parser)
          "expression"},
         {"object-rule", "Rule of one object for --csg, e.g. 1=parity. Repeatable.", "id=rule"},
         {"object-transform", objectTransformHelp(), "id=tx,ty,tz[,rx,ry,rz[,s]]"},
+        {"clip",
+         QStringLiteral("Cut the solid by the plane a,b,c,d, keeping a*x+b*y+c*z+d >= 0 (world space), and close it "
+                        "by a cap on the plane: the solid as `render --clip --cap` shows it. Repeat for up to %1 "
+                        "planes.")
+             .arg(kMaxClipPlanes),
+         "a,b,c,d"},
         {{"o", "output"},
          QStringLiteral("The mesh to write: %1.").arg(QString::fromStdString(meshExportFormatsText())),
          "file"},
     });
+    parser.addOption(commandLineOption(hole_closing_parameters::kCloseHoles));
     parser.addHelpOption();
 }
 
@@ -96,6 +107,18 @@ std::variant<TrimOptions, QString> parseTrimOptions(const QStringList& arguments
     for (const QString& text : parser.values("object-transform"))
         if (auto e = parseObjectTransform(text, options.transforms))
             return *e;
+    if (auto e = parseParameter(parser, hole_closing_parameters::kCloseHoles, options.closeHoles))
+        return *e;
+    if (parser.isSet("clip")) {
+        std::vector<std::string> texts;
+        for (const QString& text : parser.values("clip"))
+            texts.push_back(text.toStdString());
+        std::string error;
+        const std::optional<ClipSet> clips = parseClipSet(texts, &error);
+        if (!clips)
+            return QStringLiteral("--clip: ") + QString::fromStdString(error);
+        options.trim.setClipSet(*clips);
+    }
     return options;
 }
 
@@ -112,12 +135,18 @@ QString classificationText(const TrimSettings& trim)
     QString text = QString::fromStdString(ruleName(trim.rule));
     if (trim.csg.enabled())
         text += QStringLiteral(", CSG %1").arg(QString::fromStdString(formatCsgExpression(trim.csg.expression)));
+    const int planes = trim.clipSet().enabledCount();
+    if (planes > 0)
+        text += planes == 1 ? QStringLiteral(", cut by 1 clipping plane")
+                            : QStringLiteral(", cut by %1 clipping planes").arg(planes);
     return text;
 }
 
 int exportTrimmedSolid(TrimOptions options)
 {
     LoadedScene loaded = loadScenes(options.sources);
+    if (options.closeHoles)
+        closeHolesNoted(loaded);
     std::optional<QString> error = applyObjectTransforms(options.transforms, loaded.scene);
     adoptSaved(loaded, options);
     if (!error)
@@ -132,7 +161,7 @@ int exportTrimmedSolid(TrimOptions options)
                             QString::fromStdString(loaded.trimUnavailableReason())));
         return 1;
     }
-    const TrimmedSolid solid = trimmedSolid(loaded.scene, options.trim, terminalProgress());
+    const TrimmedSolid solid = cutTrimmedSolid(loaded.scene, options.trim, terminalProgress());
     const TrimmedSolidStats& s = solid.stats;
     const std::string comment = loaded.displayName + " trimmed by " + classificationText(options.trim).toStdString();
     saveTriangleMesh(options.output.toStdString(), solid.mesh, comment);

@@ -13,6 +13,7 @@
 #include "core/skinning/skinning_gltf.h"
 #include "core/skinning/skinning_parameters.h"
 #include "core/skinning/skinning_pipeline.h"
+#include "core/trim/hole_closing.h"
 
 #include <glm/gtc/type_ptr.hpp>
 #include <pybind11/stl.h>
@@ -47,10 +48,12 @@ MeshAnimation animationFromArrays(const py::object& poses, const py::object& tri
     return animation;
 }
 
-py::tuple loadAnimationArrays(const std::string& source, const py::object& restPose, const py::object& progress)
+py::tuple loadAnimationArrays(const std::string& source, const py::object& restPose, const py::object& closeHoles,
+                              const py::object& progress)
 {
     AnimationLoadOptions options;
     options.restPose = std::size_t(keywordInt(ap::kRestPose, restPose));
+    options.closeHoles = keywordBool(hole_closing_parameters::kCloseHoles, closeHoles);
     const MeshAnimation animation =
         runWithProgress(progress, [&](const TaskControl& control) { return loadAnimation(source, options, control); });
     std::vector<glm::uvec3> triangles = animation.triangles;
@@ -277,10 +280,12 @@ std::string skinDoc()
 void bindAnimation(py::module_& m)
 {
     m.def("load_animation", &loadAnimationArrays, py::arg("source"), py::kw_only(), keywordArgument(ap::kRestPose),
-          py::arg("progress") = py::none(),
-          "load_animation(source, *, rest_pose=0, progress=None) -> (poses, F)\n\nA mesh animation: a folder of "
-          "meshes, a numbered or wildcard pattern (dir/mesh_%04d.obj.gz, dir/mesh_*.obj) or a .gltf/.glb file. "
-          "poses: (k, n, 3) float64, F: (m, 3) int32. Raises MeshLoadError naming the file.");
+          keywordArgument(hole_closing_parameters::kCloseHoles), py::arg("progress") = py::none(),
+          "load_animation(source, *, rest_pose=0, close_holes=False, progress=None) -> (poses, F)\n\nA mesh "
+          "animation: a folder of meshes, a numbered or wildcard pattern (dir/mesh_%04d.obj.gz, dir/mesh_*.obj) or a "
+          ".gltf/.glb file. poses: (k, n, 3) float64, F: (m, 3) int32. close_holes: close each hole by a fan in "
+          "every pose (as close_holes() does a mesh). Raises MeshLoadError naming the file, also when a hole cannot "
+          "be closed.");
     m.def("segment", &segment, py::arg("poses"), py::arg("F"), py::kw_only(), keywordArgument(sp::kClusters),
           keywordArgument(sp::kH), keywordArgument(sp::kFeature), keywordArgument(sp::kReference),
           keywordArgument(sp::kMethod), keywordArgument(ap::kRestPose), keywordArgument(sp::kThreads),

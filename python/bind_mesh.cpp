@@ -7,6 +7,7 @@
 #include "core/mesh/mesh_export.h"
 #include "core/mesh/mesh_validation.h"
 #include "core/scene/world_geometry.h"
+#include "core/trim/hole_closing.h"
 #include "core/trim/winding_number.h"
 #include "core/util/parallel_for.h"
 
@@ -133,6 +134,19 @@ py::array_t<double> windingNumbers(const py::object& vertices, const py::object&
     return vectorArray(std::move(result));
 }
 
+py::tuple closeHolesArrays(const py::object& vertices, const py::object& triangles)
+{
+    const TriangleMesh mesh = meshFromArrays(vertices, triangles);
+    TriangleMesh closed;
+    try {
+        py::gil_scoped_release release;
+        closed = closedMesh(mesh);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(e.what());
+    }
+    return meshArrays(std::move(closed));
+}
+
 py::list demoSources()
 {
     py::list names;
@@ -183,12 +197,23 @@ an outward-oriented sphere), ill-conditioned on it. Returns a (p,) float64 array
 threads: 0 = every core. The GIL is released; progress(stage, done, total) is called
 between points, an exception it raises stops the work and reaches the caller.)doc";
 
+constexpr const char* kCloseHolesDoc = R"doc(close_holes(V, F) -> (V, F)
+
+The mesh with each hole closed by a fan: one new vertex per boundary loop (appended to V,
+at the centroid of the loop's corners) and a triangle from each loop edge to it (appended
+to F, oriented like the mesh), as `trimlab render --close-holes` and Edit > Close Holes
+do, so that the trim rules apply to an open mesh. A closed mesh comes back unchanged.
+
+Raises InputError when the boundary does not form loops, or when a fan would cross the
+surface (closing that hole would change the inside; fill it in a mesh editor).)doc";
+
 } // namespace
 
 void bindMesh(py::module_& m)
 {
     m.def("load", &load, py::arg("source"), kLoadDoc);
     m.def("load_scene", &loadSceneObjects, py::arg("source"), kLoadSceneDoc);
+    m.def("close_holes", &closeHolesArrays, py::arg("V"), py::arg("F"), kCloseHolesDoc);
     m.def("save", &save, py::arg("path"), py::arg("V"), py::arg("F"), py::arg("comment") = "", kSaveDoc);
     m.def("info", &info, py::arg("V"), py::arg("F"), py::arg("name") = "mesh", kInfoDoc);
     m.def("winding_numbers", &windingNumbers, py::arg("V"), py::arg("F"), py::arg("points"), py::kw_only(),

@@ -1,8 +1,11 @@
 #include "core/animation/animation_loader.h"
 
+#include "core/animation/closed_animation.h"
 #include "core/animation/sequence_files.h"
 #include "core/animation/sequence_loader.h"
 #include "core/mesh/mesh_load_error.h"
+
+#include <stdexcept>
 
 namespace trimlab {
 
@@ -15,7 +18,13 @@ MeshAnimation loadAnimation(const std::string& source, const AnimationLoadOption
                                         " does not exist; the animation has " + std::to_string(animation.poseCount()) +
                                         " poses (0 to " + std::to_string(animation.poseCount() - 1) + ")");
     animation.restPose = options.restPose;
-    return animation;
+    if (!options.closeHoles)
+        return animation;
+    try {
+        return closeAnimationHoles(animation);
+    } catch (const std::invalid_argument& e) {
+        throw MeshLoadError(source, std::string("cannot close its holes: ") + e.what());
+    }
 }
 
 } // namespace trimlab

@@ -16,13 +16,16 @@ struct AnimationLoadOptions {
     GltfAnimationOptions gltf; ///< for glTF sources only
     std::size_t restPose = 0;  ///< index of the rest pose in the loaded poses
     unsigned threads = 0;      ///< file loading threads (0 = hardware concurrency)
+    /// Close the holes of every pose (closeAnimationHoles) after loading.
+    bool closeHoles = false;
 };
 
 /// Loads `source`: a .gltf/.glb(.gz) file (gltf_animation.h), otherwise a folder or a
 /// numbered or wildcard pattern (sequence_files.h) loaded by loadMeshSequence, and sets
 /// the rest pose. Throws MeshLoadError naming the source or the offending file, also when
 /// `options.restPose` is not a pose index ("the rest pose 40 does not exist; the
-/// animation has 35 poses (0 to 34)"); OperationCancelled when asked to stop.
+/// animation has 35 poses (0 to 34)"), or when `options.closeHoles` and a hole cannot be
+/// closed (its reason: closed_animation.h); OperationCancelled when asked to stop.
 [[nodiscard]] MeshAnimation loadAnimation(const std::string& source, const AnimationLoadOptions& options = {},
                                           const TaskControl& control = {});
 

@@ -83,8 +83,8 @@ struct MeshValidationReport {
     [[nodiscard]] bool trimmable() const;
     /// "" when trimmable(); otherwise one or two sentences naming the first problem, its
     /// count and first instance, and what to do, e.g. "Trimming needs a closed surface:
-    /// 19 boundary edges (first between vertices 812 and 813). Close the holes (e.g. fill
-    /// them in a mesh editor) to use the trim modes."
+    /// 19 boundary edges (first between vertices 812 and 813). Close the holes (Edit ▸
+    /// Close Holes, --close-holes, or a mesh editor) to use the trim modes."
     [[nodiscard]] std::string trimUnavailableReason() const;
 };
 

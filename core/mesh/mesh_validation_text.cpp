@@ -106,7 +106,7 @@ std::string MeshValidationReport::trimUnavailableReason() const
     if (boundaryEdges.any())
         return "Trimming needs a closed surface: " + countNoun(boundaryEdges.count, "boundary edge", "boundary edges") +
                " (" + firstEdge(boundaryEdges) +
-               "). Close the holes (e.g. fill them in a mesh editor) to use the trim modes.";
+               "). Close the holes (Edit ▸ Close Holes, --close-holes, or a mesh editor) to use the trim modes.";
     if (inconsistentEdges.any())
         return "Trimming needs consistently oriented faces: " +
                countNoun(inconsistentEdges.count, "edge is", "edges are") + " used twice in the same direction (" +

@@ -87,7 +87,7 @@ std::string surfaceDefectText(const MeshValidationReport& r)
     if (r.boundaryEdges.any())
         return "Skeleton extraction needs a closed surface, but the mesh is open: " +
                countNoun(r.boundaryEdges.count, "boundary edge", "boundary edges") + " (" + edgeText(r.boundaryEdges) +
-               "). Close the holes (e.g. fill them in a mesh editor) and try again.";
+               "). Close the holes (Edit ▸ Close Holes, --close-holes, or a mesh editor) and try again.";
     if (r.nonManifoldEdges.any())
         return "Skeleton extraction needs a manifold surface, but " +
                countNoun(r.nonManifoldEdges.count, "edge is", "edges are") + " shared by more than two faces (" +

@@ -2,6 +2,7 @@
 
 #include "core/solid/cell_windings.h"
 #include "core/solid/refined_soup.h"
+#include "core/trim/clip_polytope.h"
 #include "core/trim/csg_expression.h"
 #include "core/trim/static_rule.h"
 
@@ -20,13 +21,17 @@ double millisecondsSince(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Whether the cell with windings `w` (one per object) belongs to the solid.
-bool keptCell(const TrimSettings& settings, const std::vector<int>& w)
+// Whether the cell with windings `w` (one per object) belongs to the solid. With `cut`,
+// the last object is the clip polytope: the cell must lie inside it too.
+bool keptCell(const TrimSettings& settings, const std::vector<int>& w, bool cut)
 {
+    const std::size_t objects = cut ? w.size() - 1 : w.size();
+    if (cut && w.back() <= 0)
+        return false;
     if (!settings.csg.enabled())
-        return isInterior(settings.rule, std::accumulate(w.begin(), w.end(), 0));
+        return isInterior(settings.rule, std::accumulate(w.begin(), w.begin() + std::ptrdiff_t(objects), 0));
     std::uint32_t inside = 0;
-    for (std::size_t o = 0; o < w.size() && o < std::size_t(kMaxCsgOperands); ++o)
+    for (std::size_t o = 0; o < objects && o < std::size_t(kMaxCsgOperands); ++o)
         if (isInterior(settings.objectRule(int(o)), w[o]))
             inside |= 1u << o;
     return evaluateCsg(settings.csg.expression, inside);
@@ -88,9 +93,8 @@ TriangleMesh roundedMesh(const solid::RefinedSoup& soup, const std::vector<std::
     return mesh;
 }
 
-} // namespace
-
-TrimmedSolid trimmedSolid(const Scene& scene, const TrimSettings& settings, const TaskControl& control)
+// trimmedSolid of `scene`, whose last object is the clip polytope when `cut`.
+TrimmedSolid solidOf(const Scene& scene, const TrimSettings& settings, bool cut, const TaskControl& control)
 {
     if (!settings.trimEnabled)
         throw std::invalid_argument("trimming is off: without a rule there is no solid to export");
@@ -117,8 +121,8 @@ TrimmedSolid trimmedSolid(const Scene& scene, const TrimSettings& settings, cons
         std::vector<int> behind = cells.front[f];
         for (std::size_t o = 0; o < behind.size(); ++o)
             behind[o] += face.delta[o];
-        const bool keptInFront = keptCell(settings, cells.front[f]);
-        if (keptInFront == keptCell(settings, behind))
+        const bool keptInFront = keptCell(settings, cells.front[f], cut);
+        if (keptInFront == keptCell(settings, behind, cut))
             continue;
         std::array<std::uint32_t, 3> v = face.vertices;
         if (keptInFront)
@@ -130,6 +134,29 @@ TrimmedSolid trimmedSolid(const Scene& scene, const TrimSettings& settings, cons
     stats.windingMs = millisecondsSince(start);
     countEdges(result.mesh, stats);
     return result;
+}
+
+} // namespace
+
+TrimmedSolid trimmedSolid(const Scene& scene, const TrimSettings& settings, const TaskControl& control)
+{
+    return solidOf(scene, settings, false, control);
+}
+
+TrimmedSolid cutTrimmedSolid(const Scene& scene, const TrimSettings& settings, const TaskControl& control)
+{
+    const ClipSet clips = settings.clipSet();
+    if (!clips.anyEnabled())
+        return trimmedSolid(scene, settings, control);
+    // A box around the scene, a tenth larger on every side, bounds the half-spaces: its
+    // own faces then lie outside everything the rule keeps.
+    Bounds box = scene.worldBounds();
+    const glm::dvec3 margin = 0.1 * (box.max - box.min) + glm::dvec3(1e-3 * std::max(box.radius(), 1e-30));
+    box.min -= margin;
+    box.max += margin;
+    Scene withRegion = scene;
+    withRegion.objects.push_back({"clip region", clipPolytope(clips, box), glm::dmat4(1.0)});
+    return solidOf(withRegion, settings, true, control);
 }
 
 } // namespace trimlab

@@ -52,4 +52,13 @@ struct TrimmedSolid {
 [[nodiscard]] TrimmedSolid trimmedSolid(const Scene& scene, const TrimSettings& settings,
                                         const TaskControl& control = {});
 
+/// The solid as a view cut by the enabled clipping planes of settings.clipSet() and capped
+/// shows it: trimmedSolid's solid intersected with the part of space every enabled plane
+/// keeps, so that it is closed on each plane by a cap (the faces of the clip polytope,
+/// clip_polytope.h, inside the solid). The same cells, winding numbers and rule as
+/// trimmedSolid, with the polytope as one more operand in the arrangement; with no plane
+/// enabled it is trimmedSolid's solid. Throws as trimmedSolid does.
+[[nodiscard]] TrimmedSolid cutTrimmedSolid(const Scene& scene, const TrimSettings& settings,
+                                           const TaskControl& control = {});
+
 } // namespace trimlab

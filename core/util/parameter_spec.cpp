@@ -149,6 +149,8 @@ std::string parameterRangeText(const ParameterSpec& spec)
 std::string parameterHelpText(const ParameterSpec& spec)
 {
     std::string text(spec.help);
+    if (spec.switchFlag)
+        return text + " (a switch; off unless given).";
     std::string range = spec.kind == ParameterKind::Integer || spec.kind == ParameterKind::Real
                             ? withUnit(parameterRangeText(spec), spec.unit)
                             : parameterRangeText(spec);

@@ -53,6 +53,9 @@ struct ParameterSpec {
     bool required = false;
     int decimals = 2;  ///< Real: the digits forms show
     double step = 0.0; ///< forms' single step; 0: 1 for Integer, (max − min) / 100 for Real
+    /// Boolean only, default off: the command line's --flag takes no value and turns it on
+    /// (a switch, like --close-holes); false: --flag on|off.
+    bool switchFlag = false;
 };
 
 /// True when `value` is a value of `spec`: finite and in [min, max] for Integer and Real,
@@ -74,7 +77,8 @@ struct ParameterSpec {
 
 /// The generated help: help, then the range with its unit and the meaning of min, then
 /// the default (with the meaning of min when it is min) or "Required.": "Worker threads
-/// (0 to 1024; 0 = all cores). Default: 0 (all cores)."
+/// (0 to 1024; 0 = all cores). Default: 0 (all cores)." A switch: help and "(a switch;
+/// off unless given)."
 [[nodiscard]] std::string parameterHelpText(const ParameterSpec& spec);
 
 /// The choice named `name` (any, GUI-only ones included), or nullptr.
@@ -98,6 +102,8 @@ void requireParameterValue(const ParameterSpec& spec, double value);
                 return true;
         return false;
     }
+    if (spec.switchFlag && (spec.kind != ParameterKind::Boolean || spec.defaultValue != 0.0))
+        return false;
     if (spec.kind == ParameterKind::Boolean)
         return spec.min == 0.0 && spec.max == 1.0 && (spec.defaultValue == 0.0 || spec.defaultValue == 1.0);
     const bool integral =

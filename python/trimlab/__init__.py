@@ -5,6 +5,7 @@ Meshes travel as NumPy arrays: vertices V (n, 3) float64, triangles F (m, 3) int
 function runs the same core code as the `trimlab` command line and the GUI panels:
 
     load, load_scene, save, info, winding_numbers, demos     meshes and their report
+    close_holes                                             an open mesh closed for the trim rules
     trim                                                    the exact trimmed solid (CSG too)
     render                                                  CPU reference or OpenGL images
     load_animation, segment, skin                           mesh animations, skinning fits
@@ -30,6 +31,7 @@ from ._trimlab import (
     SkeletonInputError,
     SkinningBonesError,
     SkinningFit,
+    close_holes,
     demos,
     info,
     load,
@@ -58,6 +60,7 @@ __all__ = [
     "SkeletonInputError",
     "SkinningBonesError",
     "SkinningFit",
+    "close_holes",
     "demos",
     "info",
     "load",

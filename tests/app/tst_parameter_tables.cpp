@@ -84,9 +84,12 @@ QString acceptedValue(const ParameterSpec& spec, int i)
 }
 
 /// Values one step outside the row: below and above the range (and a fraction for an
-/// integer), an unknown name, a word that is no boolean.
+/// integer), an unknown name, a word that is no boolean; none for a switch (it takes no
+/// value: a word after it is a source).
 QStringList refusedValues(const ParameterSpec& spec)
 {
+    if (spec.switchFlag)
+        return {};
     if (spec.kind == ParameterKind::Choice)
         return {QStringLiteral("no-such-value")};
     if (spec.kind == ParameterKind::Boolean)
@@ -123,9 +126,13 @@ void TestParameterTables::acceptsEveryValueOfEveryRow()
                 runs = std::max(runs, int(commandLineChoices(*spec).size()));
         for (int i = 0; i < runs; ++i) {
             QStringList arguments{QString::fromLatin1(verb.name)};
-            for (const ParameterSpec* spec : verb.table)
-                if (!spec->flag.empty())
-                    arguments << flag(*spec) << acceptedValue(*spec, i);
+            for (const ParameterSpec* spec : verb.table) {
+                if (spec->flag.empty())
+                    continue;
+                arguments << flag(*spec);
+                if (!spec->switchFlag)
+                    arguments << acceptedValue(*spec, i);
+            }
             const Run run = runTrimlab(arguments + verb.stop);
             QVERIFY2(stoppedAfterTable(run, verb), qPrintable(arguments.join(' ') + "\n" + run.err));
         }
@@ -171,6 +178,11 @@ void TestParameterTables::helpListsEveryRowWithItsRange()
                 continue;
             // QCommandLineParser lists a one-letter option as -k (--k works too).
             const QString shown = spec->flag.size() == 1 ? flag(*spec).mid(1) : flag(*spec);
+            if (spec->switchFlag) {
+                QVERIFY2(help.contains(shown + ' ') && !help.contains(shown + " <"), qPrintable(flag(*spec)));
+                QVERIFY2(help.contains(QStringLiteral("(a switch; off unless given)")), qPrintable(flag(*spec)));
+                continue;
+            }
             QVERIFY2(help.contains(shown + " <"), qPrintable(flag(*spec)));
             const QString range = QString::fromStdString(parameterRangeText(*spec)).simplified();
             QVERIFY2(help.contains(range), qPrintable(flag(*spec) + ": " + range));

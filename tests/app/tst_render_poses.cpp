@@ -1,7 +1,7 @@
 // `trimlab render ANIMATION --pose N | --poses A:B` as scripts call it: one image per
 // pose, named by the pattern, all with one camera fitted to the poses together, each
 // pose's ids agreeing with the CPU reference of that pose; bad selections and patterns
-// fail with one line before any work.
+// fail with one line before any work; --close-holes makes an open animation trimmable.
 #include "gl_test_context.h"
 #include "ids_png.h"
 #include "meeting_balls.h"
@@ -18,6 +18,8 @@
 
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <filesystem>
 
 using namespace trimlab;
 using trimlab::test::Run;
@@ -68,6 +70,7 @@ private slots:
     void dynamicRulesOverTheAnimation_data();
     void dynamicRulesOverTheAnimation();
     void poseSetsOverTheAnimation();
+    void closeHolesTrimsAnOpenAnimation();
 
 private:
     QTemporaryDir m_dir;
@@ -355,6 +358,57 @@ void TestRenderPoses::poseSetsOverTheAnimation()
     for (std::size_t p = 0; p < setsIds.pixels.size(); ++p)
         differing += setsIds.pixels[p].primitiveId != additiveIds.pixels[p].primitiveId ? 1 : 0;
     QVERIFY2(differing > 100, qPrintable(QString::number(differing)));
+}
+
+// horse-gallop (../shared/data: a captured gallop with two holes, 19 edges in all, in every pose)
+// cannot be trimmed as it is, and the refusal names the remedy. With --close-holes its
+// pose 5 renders under the confluent rule against the previous pose, and both backends
+// agree with the exact dynamic reference of the closed animation's chain (poses 1 to 5).
+void TestRenderPoses::closeHolesTrimsAnOpenAnimation()
+{
+    TRIMLAB_SKIP_WITHOUT_GL();
+    const std::filesystem::path horse = test::sharedDataPath("anim/horse-gallop");
+    if (!std::filesystem::exists(horse))
+        QSKIP("../shared/data/anim/horse-gallop is not here");
+    const QString source = QString::fromStdString(horse.string());
+    const QStringList pose5{
+        "render",    source,        "--pose",   "5",      "--dynamic-rule",
+        "confluent", "--reference", "previous", "--size", QStringLiteral("%1x%2").arg(kWidth).arg(kHeight)};
+    const Run refused = runTrimlab(pose5 + QStringList{"-o", m_dir.filePath("horse-open.png")});
+    QCOMPARE(refused.exitCode, 1);
+    QVERIFY2(refused.err.contains("19 boundary edges") && refused.err.contains("--close-holes"),
+             qPrintable(refused.err));
+    QVERIFY(!QFileInfo::exists(m_dir.filePath("horse-open.png")));
+
+    const QStringList closedPose5 = pose5 + QStringList{"--close-holes"};
+    const Run gpu = runTrimlab(
+        closedPose5 + QStringList{"--ids", m_dir.filePath("horse-ids.png"), "-o", m_dir.filePath("horse.png")});
+    QVERIFY2(gpu.exitCode == 0, qPrintable(gpu.err));
+    QVERIFY2(gpu.out.contains("confluent against the previous pose"), qPrintable(gpu.out));
+    const Run cpu = runTrimlab(closedPose5 + QStringList{"--backend", "reference", "--ids",
+                                                         m_dir.filePath("horse-reference-ids.png"), "-o",
+                                                         m_dir.filePath("horse-reference.png")});
+    QVERIFY2(cpu.exitCode == 0, qPrintable(cpu.err));
+
+    AnimationLoadOptions load;
+    load.closeHoles = true;
+    const MeshAnimation closed = loadAnimation(horse.string(), load);
+    QCOMPARE(closed.triangleCount(), loadAnimation(horse.string()).triangleCount() + 19);
+    const Camera camera = fitCamera(computeBounds(closed.poseMesh(5)), double(kWidth) / kHeight);
+    const DynamicChain chain =
+        animationChain(closed, 5, PoseReference::Previous, DynamicRule::Confluent, StaticRule::AlternatingBorder)
+            .value();
+    QCOMPARE(chain.levels.size(), std::size_t(5));
+    const ReferenceResult expected = DynamicReferenceRenderer(chain).render(camera, kWidth, kHeight, TrimSettings{});
+    const TrimImage expectedIds = test::idsOnly(withMeshIds(expected.trim, chain.levels.back().frame));
+    for (const char* file : {"horse-ids.png", "horse-reference-ids.png"}) {
+        const test::TrimComparison comparison = test::compareTrimImages(
+            test::decodeIdsPng(QImage(m_dir.filePath(QString::fromLatin1(file)))), expectedIds, expected.diagnostics);
+        qInfo("%s: %s", file, qPrintable(comparison.summary()));
+        QVERIFY(comparison.coveredPixels > 1000);
+        QVERIFY2(comparison.agreement() >= 0.999 && comparison.excludedFraction() <= 0.05,
+                 qPrintable(comparison.summary()));
+    }
 }
 
 QTEST_MAIN(TestRenderPoses)

@@ -1,13 +1,15 @@
 // `trimlab trim` as scripts call it: the trimmed solid of a demo and of a scene composed
 // from several sources (placed, CSG) written in every format, read back by TrimLab's own
 // loaders as a closed, consistently oriented surface with the volume the verb printed;
-// the glTF passes the Khronos validator; bad arguments exit 2, open surfaces 1.
+// the glTF passes the Khronos validator; bad arguments exit 2, open surfaces 1, unless
+// --close-holes closes them (for `trimlab info` too); --clip cuts the solid and caps it.
 #include "gltf_validation.h"
 #include "plain_obj.h"
 #include "run_trimlab.h"
 
 #include "core/catalog/scene_source.h"
 #include "core/mesh/mesh_validation.h"
+#include "core/mesh/hole_fans.h"
 #include "core/scene/shape_generators.h"
 
 #include <QRegularExpression>
@@ -38,6 +40,8 @@ private slots:
     void pushedSphereInEveryFormat_data();
     void pushedSphereInEveryFormat();
     void severalSourcesWithCsg();
+    void closeHolesTrimsAnOpenMesh();
+    void clipCutsAndCaps();
 
 private:
     QTemporaryDir m_dir;
@@ -124,6 +128,70 @@ void TestTrimVerb::severalSourcesWithCsg()
     const double ball05 = 4.0 / 3.0 * M_PI * 0.125;
     QVERIFY2(report.signedVolume < sphere && report.signedVolume > sphere - ball05,
              qPrintable(QString("%1 (sphere %2, ball %3)").arg(report.signedVolume).arg(sphere).arg(ball05)));
+}
+
+// A sphere with one triangle missing: refused as open, with the remedy named; with
+// --close-holes the hole gets a fan of 3 triangles and the solid is that closed sphere,
+// its volume the closed mesh's. `trimlab info --close-holes` reports the closed mesh.
+void TestTrimVerb::closeHolesTrimsAnOpenMesh()
+{
+    TriangleMesh holed = makeIcosphere(glm::dvec3(0.0), 1.0, 2);
+    holed.triangles.erase(holed.triangles.begin());
+    const QString path = m_dir.filePath("holed.obj");
+    QVERIFY(test::writePlainObj(holed, path));
+    const QString out = m_dir.filePath("holed-trimmed.obj");
+
+    const Run open = runTrimlab({"trim", path, "-o", out});
+    QCOMPARE(open.exitCode, 1);
+    QVERIFY2(open.err.contains("3 boundary edges") && open.err.contains("--close-holes"), qPrintable(open.err));
+    QVERIFY(!QFile::exists(out));
+
+    const Run closed = runTrimlab({"trim", path, "--close-holes", "-o", out});
+    QVERIFY2(closed.exitCode == 0, qPrintable(closed.err));
+    QVERIFY2(closed.err.contains("closed 1 hole of 3 edges in holed.obj"), qPrintable(closed.err));
+    const LoadedScene written = loadScene(out.toStdString());
+    const MeshValidationReport& report = written.reports.front();
+    QVERIFY2(report.trimmable(), report.trimUnavailableReason().c_str());
+    const double expected = validateMesh(closeHoles(holed)).signedVolume;
+    QVERIFY2(std::abs(report.signedVolume - expected) < 1e-6 * expected,
+             qPrintable(QStringLiteral("%1 vs %2").arg(report.signedVolume, 0, 'g', 17).arg(expected, 0, 'g', 17)));
+    QVERIFY2(std::abs(printedVolume(closed.out) - expected) < 1e-5 * expected, qPrintable(closed.out));
+
+    const QRegularExpression closedYes(QStringLiteral("closed:\\s+yes"));
+    const Run infoOpen = runTrimlab({"info", path});
+    QVERIFY2(infoOpen.exitCode == 0 && !infoOpen.out.contains(closedYes), qPrintable(infoOpen.out));
+    const Run infoClosed = runTrimlab({"info", path, "--close-holes"});
+    QVERIFY2(infoClosed.exitCode == 0 && infoClosed.out.contains(closedYes), qPrintable(infoClosed.out));
+    QVERIFY2(infoClosed.err.contains("closed 1 hole of 3 edges"), qPrintable(infoClosed.err));
+}
+
+// The pushed sphere cut by a plane and capped, then by the flipped plane: two closed
+// pieces whose volumes add up to the whole solid's; a bad plane exits with 2.
+void TestTrimVerb::clipCutsAndCaps()
+{
+    const QString whole = m_dir.filePath("whole.obj");
+    const QString front = m_dir.filePath("front.obj");
+    const QString back = m_dir.filePath("back.obj");
+    const Run all = runTrimlab({"trim", "demo:pushed-sphere", "-o", whole});
+    QVERIFY2(all.exitCode == 0, qPrintable(all.err));
+    const Run cutFront = runTrimlab({"trim", "demo:pushed-sphere", "--clip", "0.3,0,-1,0.1", "-o", front});
+    QVERIFY2(cutFront.exitCode == 0, qPrintable(cutFront.err));
+    QVERIFY2(cutFront.out.contains("cut by 1 clipping plane") && cutFront.out.contains("closed"),
+             qPrintable(cutFront.out));
+    const Run cutBack = runTrimlab({"trim", "demo:pushed-sphere", "--clip", "-0.3,0,1,-0.1", "-o", back});
+    QVERIFY2(cutBack.exitCode == 0, qPrintable(cutBack.err));
+    const double sum = printedVolume(cutFront.out) + printedVolume(cutBack.out);
+    QVERIFY(printedVolume(cutFront.out) > 0.0 && printedVolume(cutBack.out) > 0.0);
+    QVERIFY2(std::abs(sum - printedVolume(all.out)) <= 1e-5 * printedVolume(all.out),
+             qPrintable(QStringLiteral("%1 + %2 vs %3")
+                            .arg(printedVolume(cutFront.out))
+                            .arg(printedVolume(cutBack.out))
+                            .arg(printedVolume(all.out))));
+    for (const QString& path : {front, back}) {
+        const MeshValidationReport& report = loadScene(path.toStdString()).reports.front();
+        QVERIFY2(report.trimmable(), report.trimUnavailableReason().c_str());
+    }
+    TRIMLAB_VERIFY_ONE_LINE_ERROR(runTrimlab({"trim", "demo:sphere", "--clip", "0,0,0,1", "-o", front}), 2, "--clip");
 }
 
 QTEST_GUILESS_MAIN(TestTrimVerb)

@@ -92,3 +92,16 @@ def test_skin_can_be_cancelled(bar):
 
     with pytest.raises(KeyboardInterrupt):
         trimlab.skin(poses, F, bones=2, progress=cancel)
+
+
+def test_load_animation_can_close_the_holes_of_every_pose(bar):
+    path, poses, F = bar
+    closed_poses, closed_F = trimlab.load_animation(path, close_holes=True)
+    # The strip's one boundary loop of 10 edges: one centre per pose, ten fan triangles.
+    assert closed_poses.shape == (poses.shape[0], poses.shape[1] + 1, 3)
+    assert closed_F.shape == (len(F) + 10, 3)
+    for pose, closed in zip(poses, closed_poses):
+        assert np.array_equal(closed[:-1], pose)
+        assert trimlab.info(closed, closed_F)["closed"]
+    with pytest.raises(trimlab.ParameterError):
+        trimlab.load_animation(path, close_holes="sometimes")

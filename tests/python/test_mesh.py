@@ -104,3 +104,28 @@ def test_winding_numbers_inside_and_outside(data):
 def test_output_triangles_share_their_buffer_with_the_result(data):
     V, F = trimlab.load(str(data / "meshes" / "cube.obj"))
     assert F.base is not None and not F.flags.owndata
+
+
+def test_close_holes_makes_an_open_mesh_trimmable():
+    V, F = trimlab.load("demo:sphere")
+    closed_volume = trimlab.info(V, F)["signed_volume"]
+    open_F = F[1:]
+    report = trimlab.info(V, open_F)
+    assert not report["trimmable"] and "--close-holes" in report["trim_unavailable_reason"]
+    V2, F2 = trimlab.close_holes(V, open_F)
+    assert V2.shape == (len(V) + 1, 3) and F2.shape == (len(F) + 2, 3)
+    assert np.array_equal(V2[: len(V)], V) and np.array_equal(F2[: len(open_F)], open_F)
+    assert np.allclose(V2[-1], V[F[0]].mean(axis=0))
+    closed = trimlab.info(V2, F2)
+    assert closed["trimmable"] and closed["genus"] == 0
+    # The fan of a hole of three edges lies in the plane of the missing triangle.
+    assert closed["signed_volume"] == pytest.approx(closed_volume, rel=1e-6)
+    same_V, same_F = trimlab.close_holes(V, F)
+    assert np.array_equal(same_V, V) and np.array_equal(same_F, F)
+
+
+def test_close_holes_refuses_a_boundary_that_is_no_loop():
+    V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 1]], dtype=float)
+    F = np.array([[0, 1, 2], [3, 1, 2]], dtype=np.int32)
+    with pytest.raises(trimlab.InputError):
+        trimlab.close_holes(V, F)

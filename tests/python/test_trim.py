@@ -77,3 +77,17 @@ def test_progress_is_reported_and_an_exception_from_it_cancels(pushed):
 
     with pytest.raises(trimlab.Cancelled):
         trimlab.trim(*pushed, progress=lambda stage, done, total: False)
+
+
+def test_trim_with_clip_planes_cuts_and_caps():
+    V, F = trimlab.load("demo:pushed-sphere")
+    _, _, whole = trimlab.trim(V, F, stats=True)
+    Vf, Ff, front = trimlab.trim(V, F, clip=[(0.3, 0.0, -1.0, 0.1)], stats=True)
+    _, _, back = trimlab.trim(V, F, clip=[(-0.3, 0.0, 1.0, -0.1)], stats=True)
+    assert front["open_edges"] == 0 and trimlab.info(Vf, Ff)["trimmable"]
+    assert 0 < front["signed_volume"] < whole["signed_volume"]
+    assert front["signed_volume"] + back["signed_volume"] == pytest.approx(whole["signed_volume"], rel=1e-5)
+    with pytest.raises(trimlab.InputError):
+        trimlab.trim(V, F, clip=[(0.0, 0.0, 0.0, 1.0)])
+    with pytest.raises(trimlab.InputError):
+        trimlab.trim(V, F, clip=[(1.0, 0.0, 0.0)])

@@ -1,6 +1,7 @@
 #include "ui/common/loaded_animation.h"
 
 #include "core/animation/animation_loader.h"
+#include "core/animation/closed_animation.h"
 #include "core/mesh/mesh_validation.h"
 #include "core/skinning/file_skin_model.h"
 
@@ -40,20 +41,33 @@ std::shared_ptr<const LoadedScene> restSceneOf(const MeshAnimation& animation, c
     return scene;
 }
 
-} // namespace
-
-LoadedAnimation loadAnimationForDisplay(const std::string& source, const TaskControl& control)
+// The display of `animation` opened from `source`.
+LoadedAnimation displayed(std::shared_ptr<const MeshAnimation> animation, const std::string& source, double loadMs)
 {
-    const auto start = std::chrono::steady_clock::now();
-    auto animation = std::make_shared<const MeshAnimation>(loadAnimation(source, {}, control));
     LoadedAnimation loaded;
-    loaded.loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    loaded.loadMs = loadMs;
     loaded.restScene = restSceneOf(*animation, source);
     loaded.bounds = poseBounds(*animation);
     if (std::optional<SkinningModel> skin = fileSkinningModel(*animation))
         loaded.fileSkin = std::make_shared<const SkinningModel>(std::move(*skin));
     loaded.animation = std::move(animation);
     return loaded;
+}
+
+} // namespace
+
+LoadedAnimation loadAnimationForDisplay(const std::string& source, const TaskControl& control)
+{
+    const auto start = std::chrono::steady_clock::now();
+    auto animation = std::make_shared<const MeshAnimation>(loadAnimation(source, {}, control));
+    const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return displayed(std::move(animation), source, loadMs);
+}
+
+LoadedAnimation withHolesClosed(const LoadedAnimation& loaded, HoleClosing* closing)
+{
+    auto closed = std::make_shared<const MeshAnimation>(closeAnimationHoles(*loaded.animation, closing));
+    return displayed(std::move(closed), loaded.restScene->source, loaded.loadMs);
 }
 
 } // namespace trimlab::ui

@@ -9,6 +9,7 @@
 #include "core/skinning/skinning_model.h"
 #include "core/util/task_control.h"
 #include "core/catalog/scene_source.h"
+#include "core/trim/hole_closing.h"
 
 #include <memory>
 #include <string>
@@ -33,5 +34,11 @@ struct LoadedAnimation {
 /// thread: throws what loadAnimation throws (MeshLoadError naming the file,
 /// OperationCancelled).
 [[nodiscard]] LoadedAnimation loadAnimationForDisplay(const std::string& source, const TaskControl& control);
+
+/// `loaded` with the holes of every pose closed (closeAnimationHoles), and into `closing`
+/// what was closed: its rest scene and bounds redone, no file skin (the skin binds the
+/// open mesh's vertices only, so the viewport uploads each pose). Throws
+/// std::invalid_argument as closeAnimationHoles does (a fan crossing a pose's surface).
+[[nodiscard]] LoadedAnimation withHolesClosed(const LoadedAnimation& loaded, HoleClosing* closing = nullptr);
 
 } // namespace trimlab::ui

@@ -32,8 +32,10 @@ void WindowContext::showStatus(const QString& text, int timeoutMs) const
 {
     const QString message = printable(text);
     m_window.statusBar()->showMessage(message, timeoutMs);
-    // A long message is cut at the frame numbers on the right: hovering shows all of it.
+    // A long message is cut at the frame numbers on the right: hovering shows all of it,
+    // and View ▸ Messages keeps it.
     m_window.statusBar()->setToolTip(message);
+    m_log.add(MessageLog::Kind::Status, message);
 }
 
 void WindowContext::showMessage(QMessageBox::Icon icon, const QString& title, const QString& text,
@@ -45,6 +47,11 @@ void WindowContext::showMessage(QMessageBox::Icon icon, const QString& title, co
     box->setInformativeText(printable(details));
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
+    const MessageLog::Kind kind = icon == QMessageBox::Critical  ? MessageLog::Kind::Error
+                                  : icon == QMessageBox::Warning ? MessageLog::Kind::Warning
+                                                                 : MessageLog::Kind::Information;
+    const QString info = printable(details);
+    m_log.add(kind, info.isEmpty() ? printable(text) : printable(text) + QLatin1Char('\n') + info);
 }
 
 QDockWidget* WindowContext::addSideDock(const QString& title, const QString& objectName, QWidget* content,

@@ -11,6 +11,7 @@
 /// reference (the window outlives its workspaces).
 
 #include "ui/common/current_document.h"
+#include "ui/common/message_log.h"
 #include "ui/common/scene_host.h"
 
 #include <QMessageBox>
@@ -29,8 +30,8 @@ inline constexpr int kStatusMessageMs = 5000;
 
 class WindowContext {
 public:
-    WindowContext(QMainWindow& window, QSettings& settings, SceneHost& host, CurrentDocument& document)
-        : m_window(window), m_settings(settings), m_host(host), m_document(document)
+    WindowContext(QMainWindow& window, QSettings& settings, SceneHost& host, CurrentDocument& document, MessageLog& log)
+        : m_window(window), m_settings(settings), m_host(host), m_document(document), m_log(log)
     {
     }
 
@@ -43,9 +44,12 @@ public:
     /// what export dialogs suggest as a file name, followed by their own ending.
     [[nodiscard]] QString sceneBaseName(const QString& fallback) const;
 
+    /// Both record the message in log() too.
     void showStatus(const QString& message, int timeoutMs = kStatusMessageMs) const;
     /// Window-modal and non-blocking: loading and rendering continue behind it.
     void showMessage(QMessageBox::Icon icon, const QString& title, const QString& text, const QString& details) const;
+    /// Every message shown so far (ui/common/message_log.h).
+    [[nodiscard]] MessageLog& log() const { return m_log; }
 
     /// A dock on the right (or left) side titled `title` holding `content` in a frameless
     /// scroll area; `objectName` names it in the saved window state. With `tabWith` it is
@@ -72,6 +76,7 @@ private:
     QSettings& m_settings;
     SceneHost& m_host;
     CurrentDocument& m_document;
+    MessageLog& m_log;
 };
 
 } // namespace trimlab::ui

@@ -71,7 +71,7 @@ QString HistoryExports::suggestedPath(const QString& suffix) const
     const QString name = document && !document->filePath().isEmpty()
                              ? QFileInfo(document->filePath()).completeBaseName()
                              : QStringLiteral("deformation");
-    return loadLastDirectory(m_settings) + QLatin1Char('/') + name + suffix;
+    return loadSaveDirectory(m_settings) + QLatin1Char('/') + name + suffix;
 }
 
 bool HistoryExports::exportObjSequence(const QString& directory, const QString& baseName, QString* error)

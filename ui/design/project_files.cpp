@@ -125,7 +125,7 @@ bool ProjectFiles::saveAs()
     if (!canSave())
         return false;
     const QString suggested =
-        currentPath().isEmpty() ? loadLastDirectory(m_settings) + QStringLiteral("/untitled.") + QLatin1String(kSuffix)
+        currentPath().isEmpty() ? loadSaveDirectory(m_settings) + QStringLiteral("/untitled.") + QLatin1String(kSuffix)
                                 : currentPath();
     QString path = QFileDialog::getSaveFileName(m_window, tr("Save Project As"), suggested, dialogFilter());
     if (path.isEmpty())

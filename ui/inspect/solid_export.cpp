@@ -10,6 +10,7 @@
 #include <QFileInfo>
 #include <QMainWindow>
 #include <QMessageBox>
+#include <QPushButton>
 
 namespace trimlab::ui {
 
@@ -41,17 +42,33 @@ void SolidExport::showExportDialog()
         m_context.showMessage(QMessageBox::Information, tr("Export Trimmed Solid"), shown.refusal, shown.remedy);
         return;
     }
-    const QString path = m_context.askSavePath(
-        tr("Export Trimmed Solid"),
-        {tr("Wavefront OBJ (*.obj)"), tr("PLY, binary (*.ply)"), tr("STL, binary (*.stl)"), tr("glTF binary (*.glb)"),
-         tr("glTF (*.gltf)")},
-        (shown.name.isEmpty() ? QStringLiteral("trimmed") : shown.name + QStringLiteral("-trimmed")) +
-            QStringLiteral(".obj"));
+    Extent extent = Extent::Whole;
+    if (shown.settings.clipSet().anyEnabled()) {
+        QMessageBox ask(QMessageBox::Question, tr("Export Trimmed Solid"),
+                        tr("Clipping planes cut the view. Export the solid as shown, cut by the planes and closed by "
+                           "caps on them, or the whole solid?"),
+                        QMessageBox::Cancel, &m_context.window());
+        ask.setObjectName(QStringLiteral("exportExtentBox"));
+        QPushButton* asShown = ask.addButton(tr("As Shown (Cut and Capped)"), QMessageBox::AcceptRole);
+        asShown->setObjectName(QStringLiteral("exportAsShownButton"));
+        ask.addButton(tr("Whole Solid"), QMessageBox::AcceptRole)->setObjectName(QStringLiteral("exportWholeButton"));
+        ask.setDefaultButton(asShown);
+        ask.exec();
+        if (ask.clickedButton() == nullptr || ask.clickedButton() == ask.button(QMessageBox::Cancel))
+            return;
+        extent = ask.clickedButton() == asShown ? Extent::AsShown : Extent::Whole;
+    }
+    const QString base = shown.name.isEmpty() ? QStringLiteral("trimmed") : shown.name + QStringLiteral("-trimmed");
+    const QString path =
+        m_context.askSavePath(tr("Export Trimmed Solid"),
+                              {tr("Wavefront OBJ (*.obj)"), tr("PLY, binary (*.ply)"), tr("STL, binary (*.stl)"),
+                               tr("glTF binary (*.glb)"), tr("glTF (*.gltf)")},
+                              base + (extent == Extent::AsShown ? QStringLiteral("-cut.obj") : QStringLiteral(".obj")));
     if (!path.isEmpty())
-        exportTo(path);
+        exportTo(path, extent);
 }
 
-void SolidExport::exportTo(const QString& path)
+void SolidExport::exportTo(const QString& path, Extent extent)
 {
     const Shown shown = m_shown();
     if (!shown.refusal.isEmpty() || m_task->isRunning()) {
@@ -61,10 +78,12 @@ void SolidExport::exportTo(const QString& path)
         return;
     }
     m_path = path;
-    const std::string comment = shown.name.toStdString() + " trimmed by " + ruleName(shown.settings.rule);
-    m_task->start([scene = shown.scene, settings = shown.settings, file = path.toStdString(),
-                   comment](const TaskControl& control) {
-        const TrimmedSolid solid = trimmedSolid(*scene, settings, control);
+    const std::string comment = shown.name.toStdString() + " trimmed by " + ruleName(shown.settings.rule) +
+                                (extent == Extent::AsShown ? ", cut by the clipping planes and capped" : "");
+    m_task->start([scene = shown.scene, settings = shown.settings, file = path.toStdString(), comment,
+                   extent](const TaskControl& control) {
+        const TrimmedSolid solid = extent == Extent::AsShown ? cutTrimmedSolid(*scene, settings, control)
+                                                             : trimmedSolid(*scene, settings, control);
         control.throwIfCancelled();
         saveTriangleMesh(file, solid.mesh, comment);
         return solid.stats;

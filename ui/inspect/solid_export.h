@@ -4,7 +4,9 @@
 /// expression, as exact geometry (core/solid/trimmed_solid.h), computed off the UI thread
 /// with a progress dialog and Cancel, written as OBJ, PLY, STL or glTF through a
 /// temporary file. Refused with the reason when the view shows no solid (trimming off,
-/// an open surface, the dynamic rules of a history).
+/// an open surface, the dynamic rules of a history). When clipping planes cut the view,
+/// the dialog offers the solid as shown — cut by the planes and closed by caps
+/// (cutTrimmedSolid) — beside the whole solid.
 
 #include "core/scene/scene.h"
 #include "core/solid/trimmed_solid.h"
@@ -43,12 +45,18 @@ public:
     SolidExport(const WindowContext& context, ShownSource shown, QObject* parent = nullptr);
     ~SolidExport() override;
 
-    /// Asks for the file, then exportTo().
+    /// What is exported of the solid shown.
+    enum class Extent {
+        Whole,   ///< trimmedSolid: the clipping planes play no part
+        AsShown, ///< cutTrimmedSolid: cut by the enabled clipping planes and capped
+    };
+
+    /// Asks which extent (when clipping planes are on) and for the file, then exportTo().
     void showExportDialog();
     /// Starts the export of what is shown to `path` (its extension picks the format);
     /// exported() or failed() follows, nothing when canceled. A refusal is shown at once
     /// and reported through failed().
-    void exportTo(const QString& path);
+    void exportTo(const QString& path, Extent extent = Extent::Whole);
     [[nodiscard]] bool isExporting() const;
 
 signals:

@@ -20,6 +20,7 @@
 #include "ui/common/mesh_file_filter.h"
 #include "ui/window/dock_tab_bars.h"
 #include "ui/window/help_dialogs.h"
+#include "ui/window/messages_panel.h"
 #include "ui/window/scene_statistics.h"
 #include "ui/window/scene_switch.h"
 
@@ -37,6 +38,7 @@
 #include <QMenuBar>
 #include <QMimeData>
 #include <QSettings>
+#include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
 
@@ -98,8 +100,10 @@ MainWindow::MainWindow(std::unique_ptr<QSettings> settings, QWidget* parent)
     createCentralView();
     m_document = new CurrentDocument(this);
     m_switch = new SceneSwitch(this, m_viewport, *m_document);
-    m_context = std::make_unique<WindowContext>(*this, *m_settings, *m_switch, *m_document);
+    m_log = new MessageLog(this);
+    m_context = std::make_unique<WindowContext>(*this, *m_settings, *m_switch, *m_document, *m_log);
     createWorkspaces();
+    createMessagesDock();
     createFileMenu();
     createEditMenu();
     m_surface->addCreateMenu(menuBar());
@@ -246,6 +250,16 @@ void MainWindow::createEditMenu()
     edit->addAction(m_design->brushAction());
     edit->addAction(m_design->newSetAction());
     edit->addAction(m_surface->controlPointsAction());
+    edit->addSeparator();
+    // Open meshes and animations (captured scans, horse-gallop) have holes the trim rules
+    // cannot classify; closing them by fans is the remedy their refusal names.
+    QAction* closeHoles = edit->addAction(tr("Close &Holes"), m_switch, &SceneSwitch::closeShownHoles);
+    closeHoles->setObjectName(QStringLiteral("closeHolesAction"));
+    closeHoles->setStatusTip(tr("Close each hole of the open mesh or animation by a fan to its centroid, so that "
+                                "the trim rules apply"));
+    closeHoles->setEnabled(false);
+    connect(m_switch, &SceneSwitch::sceneShown, closeHoles,
+            [this, closeHoles] { closeHoles->setEnabled(m_switch->shownHasHoles()); });
     QToolBar* tools = addToolBar(tr("Design"));
     tools->setObjectName(QStringLiteral("designToolBar"));
     tools->addAction(m_design->brushAction());
@@ -291,6 +305,26 @@ void MainWindow::createViewMenu()
     addDockToggle(view, m_design->brushDock(), tr("&Brush Panel"));
     addDockToggle(view, m_surface->dock(), tr("S&urface Panel"));
     addDockToggle(view, m_design->timelineDock(), tr("&Deformation Timeline"));
+    addDockToggle(view, m_messagesDock, tr("M&essages"));
+    m_messagesDock->toggleViewAction()->setObjectName(QStringLiteral("showMessagesAction"));
+}
+
+void MainWindow::createMessagesDock()
+{
+    m_messagesDock =
+        m_context->addBottomDock(tr("Messages"), QStringLiteral("messagesDock"), new MessagesPanel(*m_log));
+    m_messagesDock->hide(); // until asked for (restoreSettings brings back a dock left open)
+    statusBar()->installEventFilter(this);
+    statusBar()->setToolTip(tr("Click for every message so far (View ▸ Messages)"));
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == statusBar() && event->type() == QEvent::MouseButtonRelease) {
+        m_messagesDock->show();
+        m_messagesDock->raise();
+    }
+    return QMainWindow::eventFilter(watched, event);
 }
 
 // Front, back, left, right, top and bottom on 1, 3 and 7 as on Blender's numeric keypad
@@ -518,7 +552,8 @@ void MainWindow::showExportDialog()
 void MainWindow::showSceneStatistics()
 {
     if (!m_statistics) {
-        m_statistics = new SceneStatisticsDialog(m_viewport->content(), this);
+        m_statistics = new SceneStatisticsDialog(
+            m_viewport->content(), [this] { return shownSolid(); }, this);
         // Follows what is shown while it stays open.
         connect(m_switch, &SceneSwitch::sceneShown, m_statistics, [this] { m_statistics->showScene(scene()); });
     }

@@ -44,6 +44,7 @@
 
 #include <memory>
 
+class QDockWidget;
 class QMenu;
 class QSettings;
 
@@ -54,6 +55,7 @@ class AnimationWorkspace;
 class CurrentDocument;
 class DesignWorkspace;
 class InspectWorkspace;
+class MessageLog;
 class RenderWorkspace;
 class SceneLoader;
 class SceneSwitch;
@@ -115,6 +117,9 @@ public:
     [[nodiscard]] DesignWorkspace* designWorkspace() const { return m_design; }
     [[nodiscard]] SurfaceWorkspace* surfaceWorkspace() const { return m_surface; }
     [[nodiscard]] SkeletonWorkspace* skeletonWorkspace() const { return m_skeleton; }
+    /// Every message shown (status lines and boxes); View ▸ Messages lists it.
+    [[nodiscard]] MessageLog* messageLog() const { return m_log; }
+    [[nodiscard]] QDockWidget* messagesDock() const { return m_messagesDock; }
 
 signals:
     /// A scene is shown; `source` as given to openSource().
@@ -130,6 +135,8 @@ signals:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    /// A click on the status bar opens the Messages dock.
+    bool eventFilter(QObject* watched, QEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
@@ -142,6 +149,7 @@ private:
     void createFileMenu();
     void createEditMenu();
     void createViewMenu();
+    void createMessagesDock();
     void createHelpMenu();
     void addViewPresets(QMenu* view);
     void connectWorkspaces();
@@ -172,6 +180,8 @@ private:
     SkeletonWorkspace* m_skeleton = nullptr;
     InspectWorkspace* m_inspect = nullptr;
     SolidExport* m_solidExport = nullptr;
+    MessageLog* m_log = nullptr;
+    QDockWidget* m_messagesDock = nullptr;
 };
 
 } // namespace trimlab::ui

@@ -1,7 +1,15 @@
 #include "ui/window/scene_statistics.h"
 
+#include "ui/common/background_job.h"
+#include "ui/common/rule_labels.h"
+
+#include "core/trim/csg_expression.h"
+
 #include <QDialogButtonBox>
 #include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
 #include <QTextEdit>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -13,10 +21,75 @@ namespace {
 /// Milliseconds a burst of content changes is gathered into one report.
 constexpr int kRefreshDelayMs = 100;
 
+QString number(double value)
+{
+    return QString::number(value, 'g', 6);
+}
+
+// "the alternating border rule" or "the CSG 0 - 1".
+QString classificationText(const TrimSettings& settings)
+{
+    if (settings.csg.enabled())
+        return SceneStatisticsDialog::tr("the CSG %1")
+            .arg(QString::fromStdString(formatCsgExpression(settings.csg.expression)));
+    return SceneStatisticsDialog::tr("the %1 rule").arg(ruleLabel(settings.rule).toLower());
+}
+
+QString crossingsText(const SelfIntersections& crossings)
+{
+    if (crossings.pairs == 0)
+        return SceneStatisticsDialog::tr("does not cross itself");
+    const QString pairs = crossings.pairs == 1
+                              ? SceneStatisticsDialog::tr("1 triangle pair crosses")
+                              : SceneStatisticsDialog::tr("%1 triangle pairs cross").arg(crossings.pairs);
+    return SceneStatisticsDialog::tr("%1 (%2 triangles involved)").arg(pairs).arg(crossings.triangles);
+}
+
 } // namespace
 
-SceneStatisticsDialog::SceneStatisticsDialog(std::shared_ptr<const render::ShownContent> content, QWidget* parent)
-    : QDialog(parent), m_content(std::move(content)), m_refresh(new QTimer(this))
+SceneMeasures measureShown(const SolidExport::Shown& shown, const TaskControl& control)
+{
+    SceneMeasures measures;
+    measures.settings = shown.settings;
+    if (shown.refusal.isEmpty())
+        measures.solid = measureTrimmedSolid(*shown.scene, shown.settings, control);
+    else
+        measures.noSolid = shown.remedy.isEmpty() ? shown.refusal : shown.refusal + QLatin1Char(' ') + shown.remedy;
+    if (shown.scene)
+        for (const SceneObject& object : shown.scene->objects) {
+            measures.objectNames.push_back(QString::fromStdString(object.name));
+            measures.crossings.push_back(selfIntersections(object.mesh, control));
+        }
+    return measures;
+}
+
+QString sceneMeasuresText(const SceneMeasures& measures)
+{
+    QStringList lines;
+    if (measures.solid) {
+        const SolidMeasures& solid = *measures.solid;
+        lines << SceneStatisticsDialog::tr("Trimmed solid under %1 (exact): volume %2, surface area %3 (scene units)")
+                     .arg(classificationText(measures.settings), number(solid.volume), number(solid.area));
+        for (const PlaneSection& section : solid.sections)
+            lines << SceneStatisticsDialog::tr("  cross-section in clipping plane %1: area %2")
+                         .arg(section.plane + 1)
+                         .arg(number(section.area));
+    } else {
+        lines << SceneStatisticsDialog::tr("No trimmed solid to measure: %1").arg(measures.noSolid);
+    }
+    for (std::size_t i = 0; i < measures.crossings.size(); ++i)
+        lines << SceneStatisticsDialog::tr("Self-intersections of %1: %2")
+                     .arg(measures.objectNames[i], crossingsText(measures.crossings[i]));
+    return lines.join(QLatin1Char('\n'));
+}
+
+SceneStatisticsDialog::SceneStatisticsDialog(std::shared_ptr<const render::ShownContent> content,
+                                             SolidExport::ShownSource shownSolid, QWidget* parent)
+    : QDialog(parent),
+      m_content(std::move(content)),
+      m_refresh(new QTimer(this)),
+      m_shownSolid(std::move(shownSolid)),
+      m_job(new BackgroundJob<SceneMeasures>(this))
 {
     setObjectName(QStringLiteral("sceneStatisticsDialog"));
     setWindowTitle(tr("Mesh Statistics"));
@@ -26,6 +99,34 @@ SceneStatisticsDialog::SceneStatisticsDialog(std::shared_ptr<const render::Shown
     m_text->setReadOnly(true);
     m_text->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont)); // the report's columns line up
     layout->addWidget(m_text);
+    auto* measureRow = new QHBoxLayout;
+    m_measure = new QPushButton(tr("&Measure"), this);
+    m_measure->setObjectName(QStringLiteral("measureSolidButton"));
+    m_measure->setToolTip(tr("Measure the trimmed solid shown (exactly: its volume, surface area and the "
+                             "cross-section in each clipping plane) and count where each object crosses itself"));
+    m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setObjectName(QStringLiteral("cancelMeasureButton"));
+    m_cancel->setEnabled(false);
+    measureRow->addWidget(m_measure);
+    measureRow->addWidget(m_cancel);
+    measureRow->addStretch(1);
+    layout->addLayout(measureRow);
+    m_measures = new QLabel(this);
+    m_measures->setObjectName(QStringLiteral("solidMeasuresText"));
+    m_measures->setWordWrap(true);
+    m_measures->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_measures);
+    connect(m_measure, &QPushButton::clicked, this, &SceneStatisticsDialog::measure);
+    connect(m_cancel, &QPushButton::clicked, m_job, &BackgroundJobBase::cancel);
+    connect(m_job, &BackgroundJobBase::succeeded, this,
+            [this] { m_measures->setText(sceneMeasuresText(m_job->result())); });
+    connect(m_job, &BackgroundJobBase::failed, this,
+            [this](const QString& message) { m_measures->setText(tr("The measurement failed: %1").arg(message)); });
+    connect(m_job, &BackgroundJobBase::canceled, this, [this] { m_measures->setText(tr("Measurement canceled.")); });
+    connect(m_job, &BackgroundJobBase::finished, this, [this] {
+        showMeasuring(false);
+        emit measured();
+    });
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);
@@ -34,16 +135,60 @@ SceneStatisticsDialog::SceneStatisticsDialog(std::shared_ptr<const render::Shown
     m_refresh->setInterval(kRefreshDelayMs);
     connect(m_refresh, &QTimer::timeout, this, &SceneStatisticsDialog::refresh);
     m_follow = m_content->subscribe([this](render::ShownLayer layer) {
-        if ((layer == render::ShownLayer::Geometry || layer == render::ShownLayer::Pose) && isVisible())
+        if (layer != render::ShownLayer::Geometry && layer != render::ShownLayer::Pose)
+            return;
+        forgetMeasures();
+        if (isVisible())
             m_refresh->start();
     });
 }
+
+SceneStatisticsDialog::~SceneStatisticsDialog() = default;
 
 void SceneStatisticsDialog::showScene(const std::shared_ptr<const LoadedScene>& scene)
 {
     m_scene = scene;
     m_refresh->stop();
+    forgetMeasures();
     refresh();
+}
+
+void SceneStatisticsDialog::measure()
+{
+    if (m_job->isRunning())
+        return;
+    const SolidExport::Shown shown = m_shownSolid();
+    if (!shown.scene) {
+        m_measures->setText(tr("Nothing is shown."));
+        return;
+    }
+    showMeasuring(true);
+    m_measures->setText(tr("Measuring…"));
+    m_job->start([shown](const TaskControl& control) { return measureShown(shown, control); });
+}
+
+bool SceneStatisticsDialog::isMeasuring() const
+{
+    return m_job->isRunning();
+}
+
+QString SceneStatisticsDialog::measuresText() const
+{
+    return m_measures->text();
+}
+
+// What was measured belongs to a frame no longer shown.
+void SceneStatisticsDialog::forgetMeasures()
+{
+    if (m_job->isRunning())
+        m_job->cancel();
+    m_measures->setText(tr("Measure computes the trimmed solid's volume, area and sections for the frame shown."));
+}
+
+void SceneStatisticsDialog::showMeasuring(bool running)
+{
+    m_measure->setEnabled(!running);
+    m_cancel->setEnabled(running);
 }
 
 void SceneStatisticsDialog::refresh()

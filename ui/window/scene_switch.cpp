@@ -3,6 +3,7 @@
 #include "ui/animation/animation_opener.h"
 #include "ui/animation/animation_workspace.h"
 #include "ui/common/current_document.h"
+#include "ui/common/loaded_animation.h"
 #include "ui/common/window_context.h"
 #include "ui/design/design_workspace.h"
 #include "ui/design/history_exports.h"
@@ -18,6 +19,7 @@
 #include "ui/common/scene_loader.h"
 
 #include "core/animation/mesh_animation.h"
+#include "core/catalog/closed_scene.h"
 #include "core/catalog/scene_source.h"
 #include "core/catalog/surface_scenes.h"
 #include "core/mesh/mesh_validation.h"
@@ -32,6 +34,7 @@
 #include <QStatusBar>
 #include <QWidget>
 
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <string_view>
@@ -255,6 +258,12 @@ void SceneSwitch::cancelPendingLoads()
 
 void SceneSwitch::onSceneLoaded(std::shared_ptr<const LoadedScene> loaded)
 {
+    showLoadedScene(std::move(loaded), std::nullopt);
+}
+
+void SceneSwitch::showLoadedScene(std::shared_ptr<const LoadedScene> loaded,
+                                  const std::optional<timeline::DocumentSettings>& settings)
+{
     m_features.animation->clear();
     m_features.design->endSession(); // before the viewport takes the new scene
     const Bounds bounds = loaded->scene.worldBounds();
@@ -263,7 +272,8 @@ void SceneSwitch::onSceneLoaded(std::shared_ptr<const LoadedScene> loaded)
                                 : loaded->scene.objects.size() > 1 ? Document::Kind::Scene
                                                                    : Document::Kind::Mesh;
     const QString name = QString::fromStdString(loaded->displayName);
-    showScene(std::move(loaded), bounds, newDocument(kind, name, openedSettings(nullptr, bounds, false)));
+    showScene(std::move(loaded), bounds,
+              newDocument(kind, name, settings.value_or(openedSettings(nullptr, bounds, false))));
     startDesignSession();
     const QString source = QString::fromStdString(m_scene->source);
     if (!isDemoSource(m_scene->source))
@@ -277,10 +287,16 @@ void SceneSwitch::onSceneLoaded(std::shared_ptr<const LoadedScene> loaded)
 
 void SceneSwitch::onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loaded)
 {
+    showLoadedAnimation(std::move(loaded), std::nullopt);
+}
+
+void SceneSwitch::showLoadedAnimation(std::shared_ptr<const LoadedAnimation> loaded,
+                                      const std::optional<timeline::DocumentSettings>& settings)
+{
     m_features.design->endSession(); // an animation's poses are not a deformation history
     showScene(loaded->restScene, loaded->bounds,
               newDocument(Document::Kind::Animation, QString::fromStdString(loaded->restScene->displayName),
-                          openedSettings(nullptr, loaded->bounds, false)),
+                          settings.value_or(openedSettings(nullptr, loaded->bounds, false))),
               true);
     m_features.skeleton->panel()->setScene(nullptr); // the timeline drives the poses of an animation
     m_viewport->setMotionBounds(loaded->bounds);     // Fit frames every pose; none crosses the far plane
@@ -295,6 +311,43 @@ void SceneSwitch::onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loade
                               .arg(animation.triangleCount())
                               .arg(trimUnavailableNote(*m_scene)));
     emit animationLoaded(source);
+}
+
+bool SceneSwitch::shownHasHoles() const
+{
+    if (!m_scene)
+        return false;
+    return std::any_of(m_scene->reports.begin(), m_scene->reports.end(),
+                       [](const MeshValidationReport& report) { return report.boundaryEdges.any(); });
+}
+
+void SceneSwitch::closeShownHoles()
+{
+    if (!shownHasHoles() || isLoading() || !confirmReplacingShown())
+        return;
+    const QString name = QString::fromStdString(m_scene->displayName);
+    const std::optional<timeline::DocumentSettings> settings =
+        m_document.get() ? std::optional(m_document.get()->settings()) : std::nullopt;
+    const std::shared_ptr<const LoadedAnimation> animation = m_features.animation->animation();
+    HoleClosing closing;
+    try {
+        if (animation && m_features.inspect->showsAnimation()) {
+            showLoadedAnimation(std::make_shared<const LoadedAnimation>(withHolesClosed(*animation, &closing)),
+                                settings);
+        } else {
+            auto closed = std::make_shared<LoadedScene>(*m_scene);
+            closing = closeSceneHoles(*closed);
+            showLoadedScene(std::move(closed), settings);
+        }
+    } catch (const std::exception& e) {
+        m_context->showMessage(QMessageBox::Warning, tr("Cannot close the holes"),
+                               tr("The holes of “%1” cannot be closed; nothing was changed.").arg(name),
+                               QString::fromUtf8(e.what()));
+        return;
+    }
+    m_context->showStatus(
+        tr("%1: closed %2%3")
+            .arg(name, QString::fromStdString(holeClosingText(closing)), trimUnavailableNote(*m_scene)));
 }
 
 void SceneSwitch::onProjectOpened(std::shared_ptr<const timeline::Project> project, const QString& path)

@@ -24,6 +24,7 @@
 #include <QStringList>
 
 #include <memory>
+#include <optional>
 
 namespace trimlab::timeline {
 struct Project;
@@ -71,6 +72,14 @@ public:
     void openSource(const QString& source);
     void openAnimation(const QString& source);
     [[nodiscard]] bool isLoading() const;
+    /// Edit ▸ Close Holes: whether the shown mesh, scene or animation has boundary edges.
+    [[nodiscard]] bool shownHasHoles() const;
+    /// Shows the mesh or animation shown with its holes closed (core/trim/hole_closing.h)
+    /// as a new document with the same view settings, which the trim modes can classify
+    /// where the holes were the only defect; says what was closed in the status bar. A
+    /// hole that cannot be closed (a fan would cross the surface) is reported in a
+    /// message, and what is shown stays. Asks to save unsaved work first, like opening.
+    void closeShownHoles();
     /// Whether anything was asked to open yet (the first start opens the default demo
     /// only when nothing was).
     [[nodiscard]] bool openRequested() const { return m_openRequested; }
@@ -107,6 +116,12 @@ private:
     [[nodiscard]] bool openHistoryDemo(const QString& source);
     void onSceneLoaded(std::shared_ptr<const LoadedScene> loaded);
     void onAnimationLoaded(std::shared_ptr<const LoadedAnimation> loaded);
+    /// What onSceneLoaded and onAnimationLoaded do, the new document's view settings
+    /// `settings` (nullopt: the defaults for the bounds).
+    void showLoadedScene(std::shared_ptr<const LoadedScene> loaded,
+                         const std::optional<timeline::DocumentSettings>& settings);
+    void showLoadedAnimation(std::shared_ptr<const LoadedAnimation> loaded,
+                             const std::optional<timeline::DocumentSettings>& settings);
     void onProjectOpened(std::shared_ptr<const timeline::Project> project, const QString& path);
     void onObjectsAppended(const QString& source, const QString& displayName);
     void showSceneProject(const timeline::Project& project, const QString& path);

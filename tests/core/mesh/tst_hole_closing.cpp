@@ -1,12 +1,17 @@
 // Closing a mesh's holes by fans (core/mesh/boundary_loops, hole_fans) and an animation's
 // holes in every pose (core/animation/closed_animation): the closed mesh is a closed,
 // consistently oriented manifold with the Euler characteristic of the surface without
-// holes, and every pose gets the same new triangles with its own centroids.
+// holes, and every pose gets the same new triangles with its own centroids. A fan that
+// would pass through the surface is refused (core/trim/hole_closing), in a mesh and in
+// the one pose of an animation where it happens.
 #include "core/animation/closed_animation.h"
+#include "core/catalog/closed_scene.h"
+#include "core/mesh/mesh_load_error.h"
 #include "core/mesh/boundary_loops.h"
 #include "core/mesh/hole_fans.h"
 #include "core/mesh/mesh_validation.h"
 #include "core/scene/shape_generators.h"
+#include "core/trim/hole_closing.h"
 
 #include <QtTest>
 
@@ -52,6 +57,17 @@ TriangleMesh openCylinder(std::uint32_t sides)
     return mesh;
 }
 
+// A small tetrahedron (its own component) around the axis, straddling the plane z = 1 of
+// openCylinder's top loop: the top loop's fan passes through its faces.
+void addTetrahedronThroughTheTop(TriangleMesh& mesh)
+{
+    const auto first = std::uint32_t(mesh.positions.size());
+    mesh.positions.insert(mesh.positions.end(),
+                          {{0.0f, 0.0f, 0.8f}, {0.2f, 0.0f, 1.2f}, {-0.1f, 0.17f, 1.2f}, {-0.1f, -0.17f, 1.2f}});
+    for (const glm::uvec3& t : {glm::uvec3(0, 2, 1), glm::uvec3(0, 3, 2), glm::uvec3(0, 1, 3), glm::uvec3(1, 2, 3)})
+        mesh.triangles.push_back(t + first);
+}
+
 void requireClosedSphere(const TriangleMesh& mesh)
 {
     const MeshValidationReport report = validateMesh(mesh);
@@ -74,6 +90,10 @@ private slots:
     void closedMeshIsUnchanged();
     void everyPoseGetsTheSameFans();
     void inconsistentBoundaryIsRefused();
+    void closedMeshSaysWhatItClosed();
+    void aFanThroughTheSurfaceIsRefused();
+    void thePoseWhereAFanCrossesIsNamed();
+    void aSceneIsClosedObjectByObject();
 };
 
 void TestHoleClosing::loopsRunAgainstTheMesh()
@@ -98,7 +118,7 @@ void TestHoleClosing::holedSphereBecomesASphere()
 
 void TestHoleClosing::cylinderGetsTwoCaps()
 {
-    const TriangleMesh closed = closeHoles(openCylinder(8));
+    const TriangleMesh closed = closedMesh(openCylinder(8)); // the rim's walls do not count as crossings
     requireClosedSphere(closed);
     // The centres: the bottom loop's (vertex 16) on the axis at z = 0, the top's at z = 1.
     QVERIFY(std::abs(closed.positions[16].x) < 1e-6f && std::abs(closed.positions[16].y) < 1e-6f);
@@ -147,6 +167,105 @@ void TestHoleClosing::inconsistentBoundaryIsRefused()
     // (not boundary) and the boundary path 0 -> ... cannot return.
     const std::vector<glm::uvec3> triangles = {{0, 1, 2}, {3, 1, 2}};
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)boundaryLoops(triangles));
+}
+
+void TestHoleClosing::closedMeshSaysWhatItClosed()
+{
+    const TriangleMesh open = holedSphere();
+    HoleClosing closing;
+    const TriangleMesh closed = closedMesh(open, &closing);
+    QCOMPARE(closed, closeHoles(open));
+    QCOMPARE(closing.holes, std::size_t(2));
+    QCOMPARE(closing.edges, std::size_t(6));
+    QCOMPARE(holeClosingText(closing), std::string("2 holes of 6 edges"));
+    QCOMPARE(holeClosingText(HoleClosing{1, 20}), std::string("1 hole of 20 edges"));
+    const TriangleMesh sphere = makeIcosphere(glm::dvec3(0.0), 1.0, 1);
+    QCOMPARE(closedMesh(sphere, &closing), sphere);
+    QCOMPARE(holeClosingText(closing), std::string("no holes"));
+}
+
+// The top fan would cut the tetrahedron: the points of the tetrahedron above the cap would
+// get winding number 2 or 0 instead of 1. The bottom hole is far from it; the error names
+// the top one (8 edges, first corner 8) and a triangle of the tetrahedron (16 to 19).
+void TestHoleClosing::aFanThroughTheSurfaceIsRefused()
+{
+    TriangleMesh mesh = openCylinder(8);
+    addTetrahedronThroughTheTop(mesh);
+    const HoleFans fans = holeFans(mesh.triangles, mesh.vertexCount());
+    const std::optional<FanCrossing> crossing =
+        firstFanCrossing(fans, mesh.triangles, withHoleCentres(fans, mesh.positions));
+    QVERIFY(crossing);
+    QCOMPARE(crossing->loop, std::size_t(1));
+    QVERIFY(crossing->meshTriangle >= 16 && crossing->meshTriangle < 20);
+    try {
+        (void)closedMesh(mesh);
+        QFAIL("a fan through the tetrahedron was applied");
+    } catch (const std::invalid_argument& e) {
+        const std::string message = e.what();
+        QVERIFY2(message.find("the hole of 8 edges at vertex 8 would cross triangle 1") != std::string::npos, e.what());
+        QVERIFY2(message.find("fill that hole in a mesh editor") != std::string::npos, e.what());
+    }
+    // Lowered below the rim, the tetrahedron is clear of the cap.
+    for (std::size_t v = 16; v < 20; ++v)
+        mesh.positions[v].z -= 0.5f;
+    QVERIFY(!firstFanCrossing(fans, mesh.triangles, withHoleCentres(fans, mesh.positions)));
+}
+
+// Pose 0 has the tetrahedron inside the cylinder, pose 1 lifts it through the top loop.
+void TestHoleClosing::thePoseWhereAFanCrossesIsNamed()
+{
+    TriangleMesh mesh = openCylinder(8);
+    addTetrahedronThroughTheTop(mesh);
+    MeshAnimation animation;
+    animation.triangles = mesh.triangles;
+    std::vector<glm::vec3> inside = mesh.positions;
+    for (std::size_t v = 16; v < 20; ++v)
+        inside[v].z -= 0.5f;
+    animation.poses = {inside, mesh.positions};
+    HoleClosing closing;
+    try {
+        (void)closeAnimationHoles(animation, &closing);
+        QFAIL("the crossing fan of pose 1 was applied");
+    } catch (const std::invalid_argument& e) {
+        QVERIFY2(std::string(e.what()).starts_with("pose 1: the fan closing the hole of 8 edges"), e.what());
+    }
+    animation.poses.pop_back();
+    const MeshAnimation closed = closeAnimationHoles(animation, &closing);
+    QCOMPARE(closing.holes, std::size_t(2));
+    QCOMPARE(closed.triangleCount(), mesh.triangleCount() + 16);
+}
+
+// A scene of a holed sphere and a closed one: the holed object is closed and its report
+// redone (trimmable now), the closed one untouched. An object whose fan would cross is
+// refused naming the source and the object, and the scene stays as it was.
+void TestHoleClosing::aSceneIsClosedObjectByObject()
+{
+    LoadedScene loaded;
+    loaded.source = "two.obj";
+    loaded.scene.objects.push_back({"holed", holedSphere(), glm::dmat4(1.0)});
+    loaded.scene.objects.push_back({"whole", makeIcosphere(glm::dvec3(3.0, 0.0, 0.0), 1.0, 1), glm::dmat4(1.0)});
+    for (const SceneObject& object : loaded.scene.objects)
+        loaded.reports.push_back(validateMesh(object.mesh));
+    QVERIFY(!loaded.trimmable());
+    const TriangleMesh whole = loaded.scene.objects[1].mesh;
+    const HoleClosing closing = closeSceneHoles(loaded);
+    QCOMPARE(closing.holes, std::size_t(2));
+    QVERIFY2(loaded.trimmable(), loaded.trimUnavailableReason().c_str());
+    QCOMPARE(loaded.scene.objects[1].mesh, whole);
+
+    TriangleMesh crossing = openCylinder(8);
+    addTetrahedronThroughTheTop(crossing);
+    loaded.scene.objects.push_back({"tube", crossing, glm::dmat4(1.0)});
+    loaded.reports.push_back(validateMesh(crossing));
+    const LoadedScene before = loaded;
+    try {
+        (void)closeSceneHoles(loaded);
+        QFAIL("the crossing fan was applied");
+    } catch (const MeshLoadError& e) {
+        QCOMPARE(e.file(), std::string("two.obj"));
+        QVERIFY2(e.reason().starts_with("object 'tube': cannot close its holes: the fan closing"), e.what());
+    }
+    QCOMPARE(loaded.scene.objects.back().mesh, before.scene.objects.back().mesh);
 }
 
 QTEST_APPLESS_MAIN(TestHoleClosing)

@@ -136,9 +136,10 @@ void TestMeshValidation::openSquareHasBoundary()
     QVERIFY(r.manifold());
     QVERIFY(!r.trimmable());
     QVERIFY(!r.eulerCharacteristic && !r.genus);
-    QCOMPARE(r.trimUnavailableReason(),
-             std::string("Trimming needs a closed surface: 4 boundary edges (first between vertices 0 and 1). "
-                         "Close the holes (e.g. fill them in a mesh editor) to use the trim modes."));
+    QCOMPARE(
+        r.trimUnavailableReason(),
+        std::string("Trimming needs a closed surface: 4 boundary edges (first between vertices 0 and 1). "
+                    "Close the holes (Edit ▸ Close Holes, --close-holes, or a mesh editor) to use the trim modes."));
 }
 
 void TestMeshValidation::flippedFaceIsInconsistent()

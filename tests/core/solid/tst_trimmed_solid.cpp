@@ -13,6 +13,7 @@
 #include "core/catalog/demo_shapes.h"
 #include "core/scene/object_transform.h"
 #include "core/scene/shape_generators.h"
+#include "core/trim/clip_polytope.h"
 #include "core/trim/csg_expression.h"
 #include "core/trim/reference_renderer.h"
 #include "core/trim/static_rule.h"
@@ -90,6 +91,48 @@ Scene exportedScene(const TrimmedSolid& solid)
     Scene scene;
     scene.objects.push_back({"export", solid.mesh, glm::dmat4(1.0)});
     return scene;
+}
+
+// `rule`, and the CSG expression `csg` unless it is empty.
+TrimSettings classification(StaticRule rule, const QString& csg)
+{
+    TrimSettings settings;
+    settings.rule = rule;
+    if (!csg.isEmpty())
+        settings.csg.expression = parseCsgExpression(csg.toStdString(), nullptr).value();
+    return settings;
+}
+
+constexpr int kSamples = 1500;
+
+// kSamples random points in the scene's box: how many `settings` (and every enabled plane
+// of `clips`) keep, at how many the export's winding says otherwise, and at how many it
+// is neither 0 nor 1.
+struct SampleCheck {
+    int kept = 0;
+    int mismatches = 0;
+    int otherWindings = 0;
+};
+
+SampleCheck checkSamples(const Scene& input, const TrimSettings& settings, const TrimmedSolid& solid,
+                         const ClipSet& clips, unsigned seed)
+{
+    const std::vector<WorldTriangle> original = worldTriangles(input);
+    const std::vector<WorldTriangle> exported = worldTriangles(exportedScene(solid));
+    const Bounds bounds = input.worldBounds();
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    SampleCheck check;
+    for (int i = 0; i < kSamples; ++i) {
+        const glm::dvec3 p =
+            bounds.min + (bounds.max - bounds.min) * glm::dvec3(unit(random), unit(random), unit(random));
+        const bool keep = keptBy(settings, windingsAt(original, input.objects.size(), p)) && clips.keeps(p);
+        const int inExport = windingsAt(exported, 1, p)[0];
+        check.kept += keep ? 1 : 0;
+        check.mismatches += (inExport == 1) != keep ? 1 : 0;
+        check.otherWindings += inExport != 0 && inExport != 1 ? 1 : 0;
+    }
+    return check;
 }
 
 // Pixels of the trim of `scene` under `settings` and of the export under the positive
@@ -191,6 +234,9 @@ private slots:
     void matchesTheTrim();
     void coincidentOppositeFacesCancel();
     void trimmingOffIsRefused();
+    void clipPolytopeIsClosedAndConvex();
+    void cutByClippingPlanesAsShown_data();
+    void cutByClippingPlanesAsShown();
 };
 
 void TestTrimmedSolid::matchesTheTrim_data()
@@ -228,10 +274,7 @@ void TestTrimmedSolid::matchesTheTrim()
     QFETCH(long, openEdges);
     QFETCH(bool, compareViews);
     const Scene input = sceneNamed(scene);
-    TrimSettings settings;
-    settings.rule = rule;
-    if (!csg.isEmpty())
-        settings.csg.expression = parseCsgExpression(csg.toStdString(), nullptr).value();
+    const TrimSettings settings = classification(rule, csg);
     const TrimmedSolid solid = trimmedSolid(input, settings);
     const TrimmedSolidStats& s = solid.stats;
     qInfo("%zu input triangles -> %zu refined faces (%zu pieces, %zu components) -> %zu kept; %zu open, %zu "
@@ -244,28 +287,15 @@ void TestTrimmedSolid::matchesTheTrim()
     QVERIFY(s.signedVolume > 0.0);
 
     // Random points: inside the export exactly where the scene's windings are kept.
-    const std::vector<WorldTriangle> original = worldTriangles(input);
-    const std::vector<WorldTriangle> exported = worldTriangles(exportedScene(solid));
+    const SampleCheck samples = checkSamples(input, settings, solid, ClipSet{}, 7);
     const Bounds bounds = input.worldBounds();
-    std::mt19937 random(7);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    int kept = 0, mismatches = 0;
-    constexpr int kSamples = 1500;
-    for (int i = 0; i < kSamples; ++i) {
-        const glm::dvec3 p =
-            bounds.min + (bounds.max - bounds.min) * glm::dvec3(unit(random), unit(random), unit(random));
-        const bool keep = keptBy(settings, windingsAt(original, input.objects.size(), p));
-        const int inExport = windingsAt(exported, 1, p)[0];
-        QVERIFY2(inExport == 0 || inExport == 1, qPrintable(QString("winding %1 in the export").arg(inExport)));
-        kept += keep ? 1 : 0;
-        mismatches += (inExport == 1) != keep ? 1 : 0;
-    }
     const double boxVolume =
         (bounds.max.x - bounds.min.x) * (bounds.max.y - bounds.min.y) * (bounds.max.z - bounds.min.z);
-    qInfo("%d of %d samples kept (volume estimate %.4f, exported %.4f); %d disagree", kept, kSamples,
-          boxVolume * kept / kSamples, s.signedVolume, mismatches);
-    QCOMPARE(mismatches, 0);
-    QVERIFY(kept > 0);
+    qInfo("%d of %d samples kept (volume estimate %.4f, exported %.4f); %d disagree", samples.kept, kSamples,
+          boxVolume * samples.kept / kSamples, s.signedVolume, samples.mismatches);
+    QCOMPARE(samples.otherWindings, 0);
+    QCOMPARE(samples.mismatches, 0);
+    QVERIFY(samples.kept > 0);
 
     if (!compareViews)
         return;
@@ -306,6 +336,86 @@ void TestTrimmedSolid::trimmingOffIsRefused()
     settings.trimEnabled = false;
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                              (void)trimmedSolid(oneObject("sphere", makeIcosphere(glm::dvec3(0.0), 1.0, 1)), settings));
+}
+
+// The unit cube cut by z <= 0.5, then also by the slanted x + y <= 1: closed, outward,
+// with the volumes 1/2 and 1/4; planes that keep nothing of the box give no mesh.
+void TestTrimmedSolid::clipPolytopeIsClosedAndConvex()
+{
+    Bounds cube;
+    cube.extend(glm::dvec3(0.0));
+    cube.extend(glm::dvec3(1.0));
+    ClipSet clips = ClipSet::single(ClipPlane{true, {0.0, 0.0, -1.0}, 0.5});
+    const TriangleMesh half = clipPolytope(clips, cube);
+    const MeshValidationReport halfReport = validateMesh(half);
+    QVERIFY2(halfReport.trimmable() && halfReport.manifold(), formatReport(halfReport, "half").c_str());
+    QCOMPARE(half.positions.size(), std::size_t(8));
+    QVERIFY(std::abs(halfReport.signedVolume - 0.5) < 1e-6);
+    clips.planes[1] = ClipPlane{true, {-1.0, -1.0, 0.0}, 1.0};
+    const MeshValidationReport quarter = validateMesh(clipPolytope(clips, cube));
+    QVERIFY2(quarter.trimmable() && quarter.genus == 0, formatReport(quarter, "quarter").c_str());
+    QVERIFY2(std::abs(quarter.signedVolume - 0.25) < 1e-6, qPrintable(QString::number(quarter.signedVolume)));
+    clips.planes[2] = ClipPlane{true, {0.0, 0.0, 1.0}, -2.0}; // z >= 2: nothing of the cube
+    QVERIFY(clipPolytope(clips, cube).triangles.empty());
+}
+
+void TestTrimmedSolid::cutByClippingPlanesAsShown_data()
+{
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<StaticRule>("rule");
+    QTest::addColumn<QString>("csg");
+    QTest::newRow("pushed sphere, alternating border") << "pushed-sphere" << StaticRule::AlternatingBorder << "";
+    QTest::newRow("ball bitten out of the sphere") << "ball-sphere" << StaticRule::Nonzero << "0 - 1";
+}
+
+// The solid as the view cut and capped shows it: closed; inside exactly where the rule
+// keeps the scene and both planes keep the point; seen from 20 directions the same
+// surfaces as the CPU reference of the cut, capped scene; and the two sides of one plane
+// add up to the whole solid.
+void TestTrimmedSolid::cutByClippingPlanesAsShown()
+{
+    QFETCH(QString, scene);
+    QFETCH(StaticRule, rule);
+    QFETCH(QString, csg);
+    const Scene input = sceneNamed(scene);
+    TrimSettings settings = classification(rule, csg);
+    ClipSet clips;
+    clips.planes[0] = ClipPlane{true, glm::normalize(glm::dvec3(0.2, -0.1, -1.0)), 0.05};
+    clips.planes[1] = ClipPlane{true, {-1.0, 0.0, 0.0}, 0.6};
+    settings.setClipSet(clips);
+    settings.cap.enabled = true;
+    const TrimmedSolid cut = cutTrimmedSolid(input, settings);
+    const TrimmedSolidStats& s = cut.stats;
+    qInfo("cut: %zu kept faces, %zu open, %zu non-manifold edges, volume %.6f", s.keptFaces, s.openEdges,
+          s.nonManifoldEdges, s.signedVolume);
+    QCOMPARE(s.openEdges, std::size_t(0));
+    QCOMPARE(s.contradictions, std::size_t(0));
+    QVERIFY(s.signedVolume > 0.0);
+
+    const SampleCheck samples = checkSamples(input, settings, cut, clips, 11);
+    QCOMPARE(samples.otherWindings, 0);
+    QCOMPARE(samples.mismatches, 0);
+    QVERIFY(samples.kept > 0);
+
+    const ViewAgreement views = agreementFromViews(input, settings, cut);
+    qInfo("views: %ld of %ld covered pixels agree", views.agreeing, views.covered);
+    QVERIFY(views.covered > 500);
+    QVERIFY2(views.agreeing >= views.covered * 999 / 1000,
+             qPrintable(QString("%1 of %2").arg(views.agreeing).arg(views.covered)));
+
+    TrimSettings one = settings;
+    one.setClipSet(ClipSet::single(clips.planes[0]));
+    TrimSettings other = settings;
+    other.setClipSet(ClipSet::single(clips.planes[0].flipped()));
+    const TrimmedSolid whole = trimmedSolid(input, settings);
+    const double front = cutTrimmedSolid(input, one).stats.signedVolume;
+    const double back = cutTrimmedSolid(input, other).stats.signedVolume;
+    QVERIFY2(std::abs(front + back - whole.stats.signedVolume) <= 1e-5 * whole.stats.signedVolume,
+             qPrintable(QStringLiteral("%1 + %2 vs %3").arg(front).arg(back).arg(whole.stats.signedVolume)));
+    // Without a plane the cut is the whole solid.
+    TrimSettings uncut = settings;
+    uncut.setClipSet(ClipSet{});
+    QCOMPARE(cutTrimmedSolid(input, uncut).mesh, whole.mesh);
 }
 
 QTEST_APPLESS_MAIN(TestTrimmedSolid)

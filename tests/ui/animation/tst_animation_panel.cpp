@@ -44,6 +44,7 @@
 
 #include <QtTest>
 
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
@@ -62,6 +63,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QThreadPool>
+#include <QStatusBar>
 #include <QToolButton>
 
 #include <cmath>
@@ -138,6 +140,7 @@ private slots:
     void playbackAndGltfAndDrop();
     void playbackKeepsTimeOnASlowView();
     void dynamicRuleCarriesTheClassificationFromPoseToPose();
+    void closeHolesPlaysAnOpenAnimationTrimmed();
     void skinnedGltfPlaysOnTheGpu();
     void brokenAnimationNamesTheFile();
     void cancelOpeningKeepsTheScene();
@@ -226,6 +229,66 @@ std::optional<QString> TestAnimationPanel::dynamicPoseDisagreement(MainWindow& w
     if (!chain)
         return name + QStringLiteral(": the rest pose has no chain");
     return test::frameDisagreement(test::chainFrameAgainstReference(window, *chain), name);
+}
+
+// horse-gallop opens with the trim controls off: every pose has two holes, of 19 edges in all. Edit ▸
+// Close Holes closes it in every pose, the trim modes become available, and the timeline
+// plays it trimmed: under the confluent rule against the previous pose, each pose stepped
+// to agrees with the exact dynamic reference of the closed animation's chain, and Play
+// advances through trimmed poses. A closed animation leaves the action off.
+void TestAnimationPanel::closeHolesPlaysAnOpenAnimationTrimmed()
+{
+    const QString horse = QString::fromStdString(test::sharedDataPath("anim/horse-gallop").string());
+    if (!QFileInfo::exists(horse))
+        QSKIP("../shared/data/anim/horse-gallop is not here");
+    auto window = showWindow(QStringLiteral("close-holes"));
+    QVERIFY(openAndWait(*window, horse));
+    auto* closeHoles = child<QAction>(window.get(), "closeHolesAction");
+    QVERIFY(closeHoles->isEnabled());
+    QVERIFY(!window->scene()->trimmable());
+    QVERIFY(!window->viewport()->lastFrame()->settings.trimEnabled);
+    const std::size_t openTriangles = window->animation()->animation->triangleCount();
+
+    QSignalSpy loaded(window.get(), &MainWindow::animationLoaded);
+    QVERIFY(waitForNewFrame(*window, [&] { closeHoles->trigger(); }));
+    QCOMPARE(loaded.size(), 1);
+    QVERIFY2(window->scene()->trimmable(), window->scene()->trimUnavailableReason().c_str());
+    QCOMPARE(window->animation()->animation->triangleCount(), openTriangles + 19);
+    QVERIFY(!closeHoles->isEnabled());
+    QVERIFY(window->viewport()->lastFrame()->settings.trimEnabled);
+    QVERIFY2(window->statusBar()->currentMessage().contains(QStringLiteral("closed 2 holes of 19 edges")),
+             qPrintable(window->statusBar()->currentMessage()));
+
+    auto* rule = child<QComboBox>(window.get(), "poseRuleCombo");
+    QVERIFY(waitForNewFrame(*window, [&] { rule->setCurrentIndex(rule->findData(int(DynamicRule::Confluent))); }));
+    QCOMPARE(window->animationWorkspace()->poseHistoryBar()->choices().reference, PoseReference::Previous);
+    auto* slider = child<QSlider>(window.get(), "poseSlider");
+    slider->setFocus();
+    for (int pose : {1, 2}) {
+        QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(slider, Qt::Key_Right); }));
+        QCOMPARE(window->animationWorkspace()->timelinePanel()->pose(), pose);
+        if (const auto problem =
+                dynamicPoseDisagreement(*window, pose, PoseReference::Previous, DynamicRule::Confluent))
+            QFAIL(qPrintable(*problem));
+    }
+
+    TimelinePanel* timeline = window->animationWorkspace()->timelinePanel();
+    QSignalSpy poses(timeline, &TimelinePanel::poseChanged);
+    auto* play = child<QToolButton>(window.get(), "playButton");
+    QTest::mouseClick(play, Qt::LeftButton);
+    QVERIFY(QTest::qWaitFor([&] { return poses.count() >= 2; }, kWaitMs));
+    QTest::mouseClick(play, Qt::LeftButton);
+    QVERIFY(!timeline->isPlaying());
+    const int played = timeline->pose();
+    QVERIFY(played > 2);
+    slider->setFocus();
+    QVERIFY(waitForNewFrame(*window, [&] { QTest::keyClick(slider, Qt::Key_Right); }));
+    QCOMPARE(timeline->pose(), played + 1);
+    QVERIFY(window->viewport()->lastFrame()->settings.trimEnabled);
+    QCOMPARE(window->viewport()->lastDynamicStats().value().levels, played + 1);
+
+    QVERIFY(openAndWait(*window, testAnimation("folding_box")));
+    QVERIFY(!closeHoles->isEnabled());
 }
 
 // The folding box (three poses of a closed tube, the last one folded through itself): the

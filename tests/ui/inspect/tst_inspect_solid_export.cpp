@@ -2,7 +2,7 @@
 // panel holds it, exported off the UI thread, is the closed mesh the core computes for
 // the frame's own scene and settings (read back by TrimLab's loader); a view without a
 // solid (trimming off, a design under dynamic rules) is refused with its reason first and
-// writes nothing.
+// writes nothing. Cut by a clipping plane, the solid as shown is exported cut and capped.
 #include "inspect_window.h"
 #include "message_box_closer.h"
 #include "test_paths.h"
@@ -37,6 +37,7 @@ private slots:
     void exportsTheCsgShown();
     void refusesWithoutASolid();
     void refusesDynamicRulesWithTheReasonFirst();
+    void exportsTheCutAsShown();
 
 private:
     QTemporaryDir m_dir;
@@ -108,6 +109,28 @@ void TestInspectSolidExport::refusesDynamicRulesWithTheReasonFirst()
     const QString message = closer.seen().front();
     QVERIFY2(message.startsWith(QStringLiteral("Dynamic rules cannot be exported exactly")), qPrintable(message));
     QVERIFY2(message.contains(QStringLiteral("Static rule")), qPrintable(message));
+}
+
+// The trio cut by the Render panel's first clipping plane: exported as shown, the file is
+// the closed solid cutTrimmedSolid gives for the frame, smaller than the whole solid.
+void TestInspectSolidExport::exportsTheCutAsShown()
+{
+    auto window = showInspectWindow(m_dir.filePath(QStringLiteral("cut.ini")), QStringLiteral("demo:csg-trio"));
+    QTest::mouseClick(revealed(child<QCheckBox>(window.get(), "clipPlaneEnabled0")), Qt::LeftButton);
+    QVERIFY(waitForFrame(*window, [](const ViewportFrame& f) { return f.settings.clipSet().anyEnabled(); }));
+    const ViewportFrame frame = *window->viewport()->lastFrame();
+
+    const QString path = m_dir.filePath(QStringLiteral("trio-cut.obj"));
+    QSignalSpy exported(window->solidExport(), &SolidExport::exported);
+    window->solidExport()->exportTo(path, SolidExport::Extent::AsShown);
+    QVERIFY(exported.count() == 1 || exported.wait(60000));
+    const TrimmedSolid expected = cutTrimmedSolid(*frame.scene, frame.settings);
+    const double whole = trimmedSolid(*frame.scene, frame.settings).stats.signedVolume;
+    const MeshValidationReport& report = loadScene(path.toStdString()).reports.front();
+    QVERIFY2(report.trimmable(), formatReport(report, "cut").c_str());
+    QVERIFY(std::abs(report.signedVolume - expected.stats.signedVolume) <= 1e-4 * expected.stats.signedVolume);
+    QVERIFY2(report.signedVolume < 0.9 * whole,
+             qPrintable(QStringLiteral("%1 of %2").arg(report.signedVolume).arg(whole)));
 }
 
 QTEST_MAIN(TestInspectSolidExport)

@@ -2,7 +2,11 @@
 // File ▸ Replay Stroke Script pushed the top of a unit sphere down through its bottom,
 // the dialog gives the shown frame's bounds and volume (what `trimlab info` prints for
 // that mesh), not the rest sphere's, and it follows the frame shown while it is open.
+// Measure gives the trimmed solid's volume, area and section in the clipping plane, and
+// each object's self-intersections, as the core measures the frame shown, or why the
+// view shows no solid.
 #include "design_window.h"
+#include "inspect_window.h"
 #include "gl_test_context.h"
 #include "message_box_closer.h"
 #include "named_child.h"
@@ -17,11 +21,16 @@
 #include "render/shown_content.h"
 
 #include "core/mesh/mesh_validation.h"
+#include "core/trim/csg_expression.h"
+#include "ui/inspect/inspect_scene.h"
+#include "ui/inspect/inspect_workspace.h"
 #include "core/scene/shape_generators.h"
 
 #include <QtTest>
 
 #include <QAction>
+#include <QCheckBox>
+#include <QPushButton>
 #include <QTemporaryDir>
 #include <QTextEdit>
 
@@ -56,6 +65,7 @@ class TestMeshStatistics : public QObject {
 private slots:
     void initTestCase();
     void reportsTheFrameShown();
+    void measuresTheTrimmedSolidShown();
 
 private:
     QTemporaryDir m_dir;
@@ -109,6 +119,72 @@ void TestMeshStatistics::reportsTheFrameShown()
     window->designWorkspace()->showFrame(1);
     QVERIFY2(QTest::qWaitFor([&] { return dialog->text().contains(shownReport); }, kWaitMs),
              qPrintable(dialog->text()));
+    dialog->close();
+}
+
+// The csg-trio's (0 | 1) - 2 cut by the first clipping plane: Measure runs off the UI
+// thread and reports the exact solid of the frame shown (its volume is the export's), the
+// plane's section, and how often each object crosses itself (the pushed sphere does, the
+// ball and the ring do not). With trimming off there
+// is no solid, and the reason is given; the crossings are still counted.
+void TestMeshStatistics::measuresTheTrimmedSolidShown()
+{
+    auto window =
+        test::showInspectWindow(m_dir.filePath(QStringLiteral("measure.ini")), QStringLiteral("demo:csg-trio"));
+    InspectScene* scene = window->inspectWorkspace()->scene();
+    CsgSettings csg = scene->csg();
+    csg.expression = parseCsgExpression("(0 | 1) - 2", nullptr).value();
+    scene->editCsg(csg, QStringLiteral("test CSG"));
+    QVERIFY(test::waitForFrame(*window, [&](const ViewportFrame& f) { return f.settings.csg == csg; }));
+    QTest::mouseClick(test::revealed(test::child<QCheckBox>(window.get(), "clipPlaneEnabled0")), Qt::LeftButton);
+    QVERIFY(test::waitForFrame(*window, [](const ViewportFrame& f) { return f.settings.clipSet().anyEnabled(); }));
+    const ViewportFrame frame = *window->viewport()->lastFrame();
+
+    (void)statisticsText(*window);
+    auto* dialog = window->findChild<SceneStatisticsDialog*>();
+    QVERIFY(dialog && dialog->isVisible());
+    QSignalSpy measured(dialog, &SceneStatisticsDialog::measured);
+    QTest::mouseClick(test::child<QPushButton>(dialog, "measureSolidButton"), Qt::LeftButton);
+    QVERIFY(dialog->isMeasuring() || !measured.isEmpty());
+    QVERIFY(measured.count() == 1 || measured.wait(60000));
+
+    const SolidMeasures expected = measureTrimmedSolid(*frame.scene, frame.settings);
+    QVERIFY(std::abs(expected.volume - trimmedSolid(*frame.scene, frame.settings).stats.signedVolume) <= 0.0);
+    QCOMPARE(expected.sections.size(), std::size_t(1));
+    QVERIFY(expected.volume > 0.0 && expected.sections.front().area > 0.0);
+    const QString text = dialog->measuresText();
+    qInfo("%s", qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("volume %1,").arg(expected.volume, 0, 'g', 6)), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("surface area %1 ").arg(expected.area, 0, 'g', 6)), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("cross-section in clipping plane 1: area %1")
+                               .arg(expected.sections.front().area, 0, 'g', 6)),
+             qPrintable(text));
+    QVERIFY2(
+        text.contains(QStringLiteral("the CSG %1").arg(QString::fromStdString(formatCsgExpression(csg.expression)))),
+        qPrintable(text));
+    int crossingObjects = 0;
+    for (const SceneObject& object : frame.scene->objects) {
+        const SelfIntersections crossings = selfIntersections(object.mesh);
+        crossingObjects += crossings.pairs > 0 ? 1 : 0;
+        const QString crossingText = crossings.pairs == 0
+                                         ? QStringLiteral("does not cross itself")
+                                         : QStringLiteral("%1 triangle pairs cross (%2 triangles involved)")
+                                               .arg(crossings.pairs)
+                                               .arg(crossings.triangles);
+        QVERIFY2(
+            text.contains(
+                QStringLiteral("Self-intersections of %1: %2").arg(QString::fromStdString(object.name), crossingText)),
+            qPrintable(text));
+    }
+    QCOMPARE(crossingObjects, 1); // the pushed sphere
+
+    QTest::keyClick(test::revealed(test::child<QCheckBox>(window.get(), "trimCheckBox")), Qt::Key_Space);
+    QVERIFY(test::waitForFrame(*window, [](const ViewportFrame& f) { return !f.settings.trimEnabled; }));
+    QTest::mouseClick(test::child<QPushButton>(dialog, "measureSolidButton"), Qt::LeftButton);
+    QVERIFY(measured.count() == 2 || measured.wait(60000));
+    QVERIFY2(dialog->measuresText().startsWith(QStringLiteral("No trimmed solid to measure: Trimming is off")),
+             qPrintable(dialog->measuresText()));
+    QVERIFY(dialog->measuresText().contains(QStringLiteral("Self-intersections of")));
     dialog->close();
 }
 
