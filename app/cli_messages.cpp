@@ -48,6 +48,12 @@ void printNote(const QString& text)
     std::fprintf(stderr, "trimlab: note: %s\n", terminalBytes(indentContinuationLines(text)).constData());
 }
 
+void noteHolesClosed(const std::string& name, const HoleClosing& closing)
+{
+    printNote(QStringLiteral("closed %1 in %2")
+                  .arg(QString::fromStdString(holeClosingText(closing)), QString::fromStdString(name)));
+}
+
 QString verbHelpText(const QCommandLineParser& parser, const QString& verb)
 {
     QString text = parser.helpText();

@@ -3,6 +3,8 @@
 /// How batch verbs talk: results on stdout, one-line errors and notes on stderr, and every
 /// failure mapped to an exit code instead of an uncaught exception.
 
+#include "core/trim/hole_closing.h"
+
 #include <QString>
 
 class QCommandLineParser;
@@ -20,6 +22,9 @@ void printLine(const QString& text);
 void printError(const QString& text);
 /// "trimlab: note: <text>" on stderr.
 void printNote(const QString& text);
+/// --close-holes: the note of what was closed in `name` ("closed 2 holes of 19 edges in
+/// horse-gallop"), a fan that crosses the surface included (holeClosingText).
+void noteHolesClosed(const std::string& name, const HoleClosing& closing);
 
 /// The parser's help text with its usage line naming the verb ("Usage: trimlab render
 /// [options] source") instead of whatever argv[0] was.

@@ -448,7 +448,10 @@ int renderPoses(RenderOptions options)
     const std::string& source = options.sources.front();
     AnimationLoadOptions load;
     load.closeHoles = options.closeHoles;
-    const MeshAnimation animation = loadAnimation(source, load);
+    HoleClosing closing;
+    const MeshAnimation animation = loadAnimation(source, load, {}, &closing);
+    if (options.closeHoles)
+        noteHolesClosed(std::filesystem::path(source).filename().string(), closing);
     const PoseSelection selection = *options.poses;
     const int count = int(animation.poseCount());
     if (selection.last >= count) {

@@ -153,9 +153,7 @@ std::optional<QString> checkObjectIds(const CsgSettings& csg, std::size_t object
 
 void closeHolesNoted(LoadedScene& loaded)
 {
-    const HoleClosing closing = closeSceneHoles(loaded);
-    printNote(QStringLiteral("closed %1 in %2")
-                  .arg(QString::fromStdString(holeClosingText(closing)), QString::fromStdString(loaded.displayName)));
+    noteHolesClosed(loaded.displayName, closeSceneHoles(loaded));
 }
 
 } // namespace trimlab::app

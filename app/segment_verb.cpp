@@ -63,7 +63,10 @@ int segmentAnimation(const SegmentOptions& options)
 {
     QElapsedTimer timer;
     timer.start();
-    MeshAnimation animation = loadAnimation(options.source, options.load);
+    HoleClosing closing;
+    MeshAnimation animation = loadAnimation(options.source, options.load, {}, &closing);
+    if (options.load.closeHoles)
+        noteHolesClosed(options.source, closing);
     const double loadMs = elapsedMs(timer);
     const std::shared_ptr<const SegmentationResult> result = segmentLoaded(std::move(animation), options);
     const AnimationSegmenter& segmenter = *result->segmenter;

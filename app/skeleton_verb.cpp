@@ -33,7 +33,7 @@ TriangleMesh loadSingleMesh(const std::string& source, bool closeHoles)
 {
     LoadedScene loaded = loadScene(source);
     if (closeHoles)
-        closeSceneHoles(loaded);
+        noteHolesClosed(loaded.displayName, closeSceneHoles(loaded));
     if (loaded.scene.objects.size() != 1)
         throw std::runtime_error(source + ": has " + std::to_string(loaded.scene.objects.size()) +
                                  " objects; the skeleton verb takes one mesh");

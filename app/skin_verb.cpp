@@ -130,7 +130,10 @@ int skinAnimation(const SkinOptions& o)
     SkinRun run;
     QElapsedTimer timer;
     timer.start();
-    const MeshAnimation animation = loadAnimation(o.source, o.load, control);
+    HoleClosing closing;
+    const MeshAnimation animation = loadAnimation(o.source, o.load, control, &closing);
+    if (o.load.closeHoles)
+        noteHolesClosed(o.source, closing);
     run.loadMs = lapMilliseconds(timer);
     run.poses = animation.poseCount();
     run.vertices = animation.vertexCount();

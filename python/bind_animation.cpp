@@ -54,8 +54,10 @@ py::tuple loadAnimationArrays(const std::string& source, const py::object& restP
     AnimationLoadOptions options;
     options.restPose = std::size_t(keywordInt(ap::kRestPose, restPose));
     options.closeHoles = keywordBool(hole_closing_parameters::kCloseHoles, closeHoles);
-    const MeshAnimation animation =
-        runWithProgress(progress, [&](const TaskControl& control) { return loadAnimation(source, options, control); });
+    HoleClosing closing;
+    const MeshAnimation animation = runWithProgress(
+        progress, [&](const TaskControl& control) { return loadAnimation(source, options, control, &closing); });
+    warnOfCrossingFans(closing);
     std::vector<glm::uvec3> triangles = animation.triangles;
     return py::make_tuple(posesArray(animation.poses), trianglesArray(std::move(triangles)));
 }
@@ -284,8 +286,8 @@ void bindAnimation(py::module_& m)
           "load_animation(source, *, rest_pose=0, close_holes=False, progress=None) -> (poses, F)\n\nA mesh "
           "animation: a folder of meshes, a numbered or wildcard pattern (dir/mesh_%04d.obj.gz, dir/mesh_*.obj) or a "
           ".gltf/.glb file. poses: (k, n, 3) float64, F: (m, 3) int32. close_holes: close each hole by a fan in "
-          "every pose (as close_holes() does a mesh). Raises MeshLoadError naming the file, also when a hole cannot "
-          "be closed.");
+          "every pose (as close_holes() does a mesh; a RuntimeWarning names the first pose where a fan crosses the "
+          "surface). Raises MeshLoadError naming the file.");
     m.def("segment", &segment, py::arg("poses"), py::arg("F"), py::kw_only(), keywordArgument(sp::kClusters),
           keywordArgument(sp::kH), keywordArgument(sp::kFeature), keywordArgument(sp::kReference),
           keywordArgument(sp::kMethod), keywordArgument(ap::kRestPose), keywordArgument(sp::kThreads),

@@ -138,12 +138,14 @@ py::tuple closeHolesArrays(const py::object& vertices, const py::object& triangl
 {
     const TriangleMesh mesh = meshFromArrays(vertices, triangles);
     TriangleMesh closed;
+    HoleClosing closing;
     try {
         py::gil_scoped_release release;
-        closed = closedMesh(mesh);
+        closed = closedMesh(mesh, &closing);
     } catch (const std::invalid_argument& e) {
         throw InputError(e.what());
     }
+    warnOfCrossingFans(closing);
     return meshArrays(std::move(closed));
 }
 
@@ -204,8 +206,9 @@ at the centroid of the loop's corners) and a triangle from each loop edge to it 
 to F, oriented like the mesh), as `trimlab render --close-holes` and Edit > Close Holes
 do, so that the trim rules apply to an open mesh. A closed mesh comes back unchanged.
 
-Raises InputError when the boundary does not form loops, or when a fan would cross the
-surface (closing that hole would change the inside; fill it in a mesh editor).)doc";
+Raises InputError when the boundary does not form loops. A fan that crosses the surface
+is applied with a RuntimeWarning naming the hole and the triangle: the trim may be wrong
+between them.)doc";
 
 } // namespace
 

@@ -94,6 +94,15 @@ void translate(std::exception_ptr pointer)
 
 } // namespace
 
+void warnOfCrossingFans(const HoleClosing& closing)
+{
+    if (closing.crossing.empty())
+        return;
+    const std::string text = "closed " + holeClosingText(closing);
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, text.c_str(), 1) != 0)
+        throw py::error_already_set();
+}
+
 void registerErrors(py::module_& module)
 {
     ErrorClasses& c = classes();

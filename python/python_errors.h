@@ -19,6 +19,8 @@
 /// An exception the progress callback raises is not translated: it reaches the caller as
 /// raised (python_progress.h).
 
+#include "core/trim/hole_closing.h"
+
 #include <pybind11/pybind11.h>
 
 #include <stdexcept>
@@ -57,6 +59,11 @@ class RenderError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
+
+/// A RuntimeWarning with the crossing of `closing` (holeClosingText) when a fan of closed
+/// holes crosses the surface; nothing otherwise. Call with the GIL held; a warning the
+/// filters turn into an error is raised.
+void warnOfCrossingFans(const HoleClosing& closing);
 
 /// Creates the exception classes in `module` and translates TrimLab's C++ exceptions
 /// (core's typed errors, the classes above, OperationCancelled; other std::invalid_argument

@@ -9,7 +9,8 @@
 
 namespace trimlab {
 
-MeshAnimation loadAnimation(const std::string& source, const AnimationLoadOptions& options, const TaskControl& control)
+MeshAnimation loadAnimation(const std::string& source, const AnimationLoadOptions& options, const TaskControl& control,
+                            HoleClosing* closing)
 {
     MeshAnimation animation = isGltfSource(source) ? loadGltfAnimation(source, options.gltf, control)
                                                    : loadMeshSequence(sequenceFiles(source), control, options.threads);
@@ -21,7 +22,7 @@ MeshAnimation loadAnimation(const std::string& source, const AnimationLoadOption
     if (!options.closeHoles)
         return animation;
     try {
-        return closeAnimationHoles(animation);
+        return closeAnimationHoles(animation, closing);
     } catch (const std::invalid_argument& e) {
         throw MeshLoadError(source, std::string("cannot close its holes: ") + e.what());
     }

@@ -2,7 +2,6 @@
 
 #include "core/mesh/hole_fans.h"
 
-#include <stdexcept>
 #include <string>
 
 namespace trimlab {
@@ -10,18 +9,26 @@ namespace trimlab {
 MeshAnimation closeAnimationHoles(const MeshAnimation& animation, HoleClosing* closing)
 {
     const HoleFans fans = holeFans(animation.triangles, animation.vertexCount());
-    if (closing)
-        *closing = HoleClosing{fans.loops.size(), fans.triangles.size()};
-    if (fans.empty())
+    HoleClosing report{fans.loops.size(), fans.triangles.size(), {}, 0};
+    if (fans.empty()) {
+        if (closing)
+            *closing = report;
         return animation;
+    }
     MeshAnimation closed = animation;
     closed.skin = nullptr; // its bind positions lack the centres: the poses stand alone
     for (std::size_t p = 0; p < closed.poses.size(); ++p) {
         closed.poses[p] = withHoleCentres(fans, animation.poses[p]);
-        if (const std::optional<FanCrossing> crossing = firstFanCrossing(fans, animation.triangles, closed.poses[p]))
-            throw std::invalid_argument("pose " + std::to_string(p) + ": " + fanCrossingMessage(fans, *crossing));
+        const std::optional<FanCrossing> crossing = firstFanCrossing(fans, animation.triangles, closed.poses[p]);
+        if (!crossing)
+            continue;
+        if (report.crossing.empty())
+            report.crossing = "pose " + std::to_string(p) + ": " + fanCrossingMessage(fans, *crossing);
+        ++report.crossingMeshes;
     }
     closed.triangles.insert(closed.triangles.end(), fans.triangles.begin(), fans.triangles.end());
+    if (closing)
+        *closing = report;
     return closed;
 }
 

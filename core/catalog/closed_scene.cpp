@@ -15,12 +15,11 @@ HoleClosing closeSceneHoles(LoadedScene& loaded)
     std::vector<TriangleMesh> closed;
     closed.reserve(loaded.scene.objects.size());
     for (const SceneObject& object : loaded.scene.objects) {
+        const std::string where = loaded.scene.objects.size() > 1 ? "object '" + object.name + "': " : std::string();
         HoleClosing closing;
         try {
-            closed.push_back(closedMesh(object.mesh, &closing));
+            closed.push_back(closedMesh(object.mesh, &closing, where));
         } catch (const std::invalid_argument& e) {
-            const std::string where =
-                loaded.scene.objects.size() > 1 ? "object '" + object.name + "': " : std::string();
             throw MeshLoadError(loaded.source, where + "cannot close its holes: " + e.what());
         }
         total += closing;

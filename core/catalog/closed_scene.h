@@ -10,10 +10,10 @@
 
 namespace trimlab {
 
-/// Closes the holes of every object of `loaded` in place and returns what was closed.
-/// Throws MeshLoadError naming the source and the object when a hole cannot be closed
-/// (a fan would cross the surface, or the boundary does not form loops); `loaded` is
-/// unchanged then.
+/// Closes the holes of every object of `loaded` in place and returns what was closed, with
+/// the first fan that crosses its object's surface (named "object 'NAME': " in a scene of
+/// several). Throws MeshLoadError naming the source and the object when a boundary does
+/// not form loops; `loaded` is unchanged then.
 HoleClosing closeSceneHoles(LoadedScene& loaded);
 
 } // namespace trimlab

@@ -225,6 +225,21 @@ bool evaluate(const std::vector<CsgNode>& nodes, std::size_t index, std::uint32_
     return result;
 }
 
+// Marks the operands of the subtree at `index` (pre-order) in `mask` when `subtracted`;
+// returns the index after the subtree.
+std::size_t markSubtracted(const std::vector<CsgNode>& nodes, std::size_t index, bool subtracted, std::uint32_t& mask)
+{
+    const CsgNode& node = nodes[index++];
+    if (node.operation == CsgOperation::Operand) {
+        if (subtracted && node.objectId >= 0 && node.objectId < 32)
+            mask |= 1u << node.objectId;
+        return index;
+    }
+    for (int i = 0; i < node.operandCount; ++i)
+        index = markSubtracted(nodes, index, subtracted || (node.operation == CsgOperation::Difference && i > 0), mask);
+    return index;
+}
+
 } // namespace
 
 CsgExpression CsgExpression::operand(int objectId)
@@ -271,6 +286,14 @@ std::uint32_t csgOperandMask(const CsgExpression& expression)
     for (const CsgNode& node : expression.nodes())
         if (node.operation == CsgOperation::Operand && node.objectId >= 0 && node.objectId < 32)
             mask |= 1u << node.objectId;
+    return mask;
+}
+
+std::uint32_t csgSubtractedMask(const CsgExpression& expression)
+{
+    std::uint32_t mask = 0;
+    if (!expression.empty())
+        markSubtracted(expression.nodes(), 0, false, mask);
     return mask;
 }
 

@@ -104,6 +104,12 @@ using CsgTruthTable = std::array<std::uint32_t, (1u << kMaxCsgOperands) / 32u>;
 /// Bit o set iff object o is an operand somewhere in the tree.
 [[nodiscard]] std::uint32_t csgOperandMask(const CsgExpression& expression);
 
+/// Bit o set iff object o is subtracted somewhere in the tree: an operand under a
+/// Difference node's second or later operand. What such an object shows of itself in the
+/// result is the wall it carved (its inside, seen from the cavity), which the shading
+/// tells apart from an inside seen through a cut (trim_shading.h, kCarvedWallColor).
+[[nodiscard]] std::uint32_t csgSubtractedMask(const CsgExpression& expression);
+
 /// The largest object id the tree refers to (−1 when empty).
 [[nodiscard]] int csgMaxObjectId(const CsgExpression& expression);
 

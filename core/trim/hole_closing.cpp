@@ -5,7 +5,6 @@
 #include <glm/geometric.hpp>
 
 #include <limits>
-#include <stdexcept>
 
 namespace trimlab {
 
@@ -87,6 +86,9 @@ HoleClosing& HoleClosing::operator+=(const HoleClosing& other)
 {
     holes += other.holes;
     edges += other.edges;
+    if (crossing.empty())
+        crossing = other.crossing;
+    crossingMeshes += other.crossingMeshes;
     return *this;
 }
 
@@ -94,8 +96,13 @@ std::string holeClosingText(const HoleClosing& closing)
 {
     if (closing.holes == 0)
         return "no holes";
-    return std::to_string(closing.holes) + (closing.holes == 1 ? " hole of " : " holes of ") +
-           std::to_string(closing.edges) + (closing.edges == 1 ? " edge" : " edges");
+    std::string text = std::to_string(closing.holes) + (closing.holes == 1 ? " hole of " : " holes of ") +
+                       std::to_string(closing.edges) + (closing.edges == 1 ? " edge" : " edges");
+    if (!closing.crossing.empty())
+        text += "; warning: " + closing.crossing;
+    if (closing.crossingMeshes > 1)
+        text += " (fans cross in " + std::to_string(closing.crossingMeshes) + " poses or objects)";
+    return text;
 }
 
 std::optional<FanCrossing> firstFanCrossing(const HoleFans& fans, std::span<const glm::uvec3> triangles,
@@ -120,19 +127,20 @@ std::optional<FanCrossing> firstFanCrossing(const HoleFans& fans, std::span<cons
     return std::nullopt;
 }
 
-TriangleMesh closedMesh(const TriangleMesh& mesh, HoleClosing* closing)
+TriangleMesh closedMesh(const TriangleMesh& mesh, HoleClosing* closing, const std::string& where)
 {
     const HoleFans fans = holeFans(mesh.triangles, mesh.positions.size());
-    if (closing) {
-        closing->holes = fans.loops.size();
-        closing->edges = fans.triangles.size();
-    }
+    if (closing)
+        *closing = HoleClosing{fans.loops.size(), fans.triangles.size(), {}, 0};
     if (fans.empty())
         return mesh;
     TriangleMesh closed;
     closed.positions = withHoleCentres(fans, mesh.positions);
-    if (const std::optional<FanCrossing> crossing = firstFanCrossing(fans, mesh.triangles, closed.positions))
-        throw std::invalid_argument(fanCrossingMessage(fans, *crossing));
+    if (const std::optional<FanCrossing> crossing = firstFanCrossing(fans, mesh.triangles, closed.positions);
+        crossing && closing) {
+        closing->crossing = where + fanCrossingMessage(fans, *crossing);
+        closing->crossingMeshes = 1;
+    }
     closed.triangles = mesh.triangles;
     closed.triangles.insert(closed.triangles.end(), fans.triangles.begin(), fans.triangles.end());
     return closed;
@@ -142,8 +150,8 @@ std::string fanCrossingMessage(const HoleFans& fans, const FanCrossing& crossing
 {
     const std::vector<std::uint32_t>& loop = fans.loops[crossing.loop];
     return "the fan closing the hole of " + std::to_string(loop.size()) + " edges at vertex " +
-           std::to_string(loop.front()) + " would cross triangle " + std::to_string(crossing.meshTriangle) +
-           " of the mesh, so closing it would change the inside; fill that hole in a mesh editor instead";
+           std::to_string(loop.front()) + " crosses triangle " + std::to_string(crossing.meshTriangle) +
+           ", so the trim may be wrong between them (fill that hole in a mesh editor to be sure)";
 }
 
 } // namespace trimlab

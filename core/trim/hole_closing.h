@@ -1,12 +1,14 @@
 #pragma once
 /// \file
-/// Closing holes so that the trim rules apply (core/mesh/hole_fans.h), refusing a fan that
-/// would pass through the mesh. Why the check: a fan is a cap through the centroid of
-/// its loop; on a small, nearly planar hole it only seals the hole, but on a long twisted
-/// loop (or a pose that folds the rim inward) it may cross the surface, and every point
-/// between the crossing and the hole would get a winding number off by one — a wrong
-/// trim with no visible cause. The check is what a user needs to trust the closed mesh:
-/// a fan that crosses is refused with the hole it closes named, never applied silently.
+/// Closing holes so that the trim rules apply (core/mesh/hole_fans.h), with a check that
+/// says where a fan passes through the mesh. Why the check: a fan is a cap through the
+/// centroid of its loop; on a small, nearly planar hole it only seals the hole, but on a
+/// narrow or twisted loop (or a pose that folds the rim inward) it may cross the surface,
+/// and the points between the crossing and the hole get a winding number off by one — a
+/// wrong trim there with no visible cause. The thesis's captured animations have such
+/// holes (walking-cat's slit, horse-collapse's folding hooves), and refusing them would
+/// leave them untrimmable, so the fans are applied and the crossing is reported with the
+/// hole, the triangle and the pose named: the user knows where not to trust the trim.
 ///
 /// The test runs in double precision on the watertight ray–triangle test
 /// (ray_triangle.h): each spoke of a fan (from a loop corner to the centre) against the
@@ -41,7 +43,7 @@ inline constexpr ParameterSpec kCloseHoles{
     .max = 1,
     .defaultValue = 0,
     .help = "Close each hole of an open mesh or animation by a fan to its centroid, so that the trim rules apply "
-            "(refused where a fan would cross the surface)",
+            "(a fan that crosses the surface is reported)",
     .switchFlag = true,
 };
 static_assert(isWellFormed(kCloseHoles));
@@ -60,25 +62,33 @@ struct FanCrossing {
 [[nodiscard]] std::optional<FanCrossing> firstFanCrossing(const HoleFans& fans, std::span<const glm::uvec3> triangles,
                                                           std::span<const glm::vec3> positions);
 
-/// The refusal of `crossing`: the hole (its size and first corner), the triangle it
-/// would cross, and what to do instead.
+/// The warning of `crossing`: the hole (its size and first corner), the triangle its fan
+/// crosses, and what that means: "the fan closing the hole of 16 edges at vertex 2017
+/// crosses triangle 3619, so the trim may be wrong between them (fill that hole in a mesh
+/// editor to be sure)".
 [[nodiscard]] std::string fanCrossingMessage(const HoleFans& fans, const FanCrossing& crossing);
 
-/// What closing did: holes closed and the boundary edges they had.
+/// What closing did: holes closed, the boundary edges they had, and the first fan that
+/// crosses the surface (its warning, with the pose or object where it happens) with the
+/// number of meshes — poses of an animation, objects of a scene — where fans cross.
 struct HoleClosing {
     std::size_t holes = 0;
     std::size_t edges = 0;
+    std::string crossing; ///< "" when no fan crosses
+    std::size_t crossingMeshes = 0;
 
     HoleClosing& operator+=(const HoleClosing& other);
 };
 
-/// "1 hole of 20 edges", "3 holes of 57 edges", "no holes".
+/// "1 hole of 20 edges", "3 holes of 57 edges", "no holes"; then the crossing's warning
+/// when there is one ("2 holes of 19 edges; warning: pose 3: the fan closing ...", with
+/// "(fans cross in 5 poses or objects)" when there are more).
 [[nodiscard]] std::string holeClosingText(const HoleClosing& closing);
 
-/// `mesh` with its holes closed by fans (closeHoles) and what was closed. Throws
-/// std::invalid_argument naming the hole when a fan crosses the mesh ("the fan closing
-/// the hole of 20 edges at vertex 812 would cross triangle 4051 ...") and as
-/// boundaryLoops does when the boundary edges do not form loops.
-[[nodiscard]] TriangleMesh closedMesh(const TriangleMesh& mesh, HoleClosing* closing = nullptr);
+/// `mesh` with its holes closed by fans (closeHoles) and into `closing` what was closed,
+/// the first crossing of a fan included (prefixed by `where`, e.g. "pose 3: "). Throws
+/// std::invalid_argument as boundaryLoops does when the boundary edges do not form loops.
+[[nodiscard]] TriangleMesh closedMesh(const TriangleMesh& mesh, HoleClosing* closing = nullptr,
+                                      const std::string& where = {});
 
 } // namespace trimlab

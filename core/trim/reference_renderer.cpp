@@ -1,6 +1,7 @@
 #include "core/trim/reference_renderer.h"
 
 #include "core/scene/world_geometry.h"
+#include "core/trim/csg_expression.h"
 #include "core/trim/transparency.h"
 #include "core/trim/trim_shading.h"
 #include "core/util/memory_budget.h"
@@ -31,7 +32,8 @@ struct ReferenceRenderer::RowContext {
     int width;
     int height;
     const TrimSettings& settings;
-    ClipSet clips; ///< settings.clipSet(), built once
+    ClipSet clips;               ///< settings.clipSet(), built once
+    std::uint32_t carvedObjects; ///< csgSubtractedMask of the CSG (0 without one)
     const RayWalker* walker;
     ReferenceResult& result;
     std::vector<RayHit> hits;
@@ -75,11 +77,13 @@ glm::dvec3 ReferenceRenderer::hitNormal(const RayHit& hit, const glm::dvec3& toV
     return length > 0.0 ? normal / length : toViewer;
 }
 
-glm::vec3 ReferenceRenderer::shadeHit(const RayHit& hit, const PixelRay& ray, const TrimPixel& pixel) const
+glm::vec3 ReferenceRenderer::shadeHit(const RayHit& hit, const PixelRay& ray, const TrimPixel& pixel,
+                                      std::uint32_t carvedObjects) const
 {
     const glm::dvec3 toViewer = -glm::normalize(ray.direction);
     const glm::dvec3 normal = hitNormal(hit, toViewer);
-    const glm::vec3 shaded = shadeTrimPoint(hit.facing, normal, toViewer);
+    const bool carved = hit.objectId >= 0 && hit.objectId < 32 && ((carvedObjects >> hit.objectId) & 1u) != 0u;
+    const glm::vec3 shaded = shadeTrimPoint(hit.facing, normal, toViewer, carved);
     if (!pixel.collision && pixel.coplanarCount < 2)
         return shaded;
     const float lighting = kAmbient + (1.0f - kAmbient) * static_cast<float>(std::abs(glm::dot(normal, toViewer)));
@@ -108,7 +112,7 @@ glm::vec3 ReferenceRenderer::xrayPixel(RowContext& context, const PixelRay& ray,
     for (const WalkLayer& layer : context.layers) {
         const RayHit& hit = context.hits[layer.index];
         const bool shown = std::ptrdiff_t(layer.index) == walk.shownIndex;
-        const glm::vec3 color = shadeHit(hit, ray, shown ? pixel : TrimPixel{});
+        const glm::vec3 color = shadeHit(hit, ray, shown ? pixel : TrimPixel{}, 0u); // X-ray: as its GLSL twin
         const double cosine = std::abs(glm::dot(hitNormal(hit, toViewer), toViewer));
         context.fragments.push_back(
             {hit.t * rayLength, layer.boundary, layer.interiorBefore, glm::dvec3(color), cosine});
@@ -156,7 +160,7 @@ void ReferenceRenderer::renderRow(RowContext& context, int y) const
                 float(edgeDistancePixels(camera, context.width, context.height, x, y,
                                          {object.positions[t[0]], object.positions[t[1]], object.positions[t[2]]}));
             if (!context.settings.xray())
-                color = shadeHit(hit, ray, pixel);
+                color = shadeHit(hit, ray, pixel, context.carvedObjects);
             ++context.stats.coveredPixels;
         }
         std::uint8_t* rgba = context.result.color.at(x, y);
@@ -194,8 +198,19 @@ ReferenceResult ReferenceRenderer::render(const Camera& camera, int width, int h
     threads = effectiveThreadCount(threads, blockCount);
     std::vector<ReferenceStats> partial(blockCount);
     const auto renderBlock = [&](std::size_t block) {
-        RowContext context{camera, width, height, settings, settings.clipSet(), walker ? &walker : nullptr, result, {},
-                           {},     {},    {},     {}};
+        RowContext context{camera,
+                           width,
+                           height,
+                           settings,
+                           settings.clipSet(),
+                           settings.csg.enabled() ? csgSubtractedMask(settings.csg.expression) : 0u,
+                           walker ? &walker : nullptr,
+                           result,
+                           {},
+                           {},
+                           {},
+                           {},
+                           {}};
         const int rowEnd = std::min(height, int(block + 1) * kRowsPerBlock);
         for (int y = int(block) * kRowsPerBlock; y < rowEnd; ++y)
             renderRow(context, y);

@@ -93,8 +93,10 @@ private:
     struct RowContext;
 
     void renderRow(RowContext& context, int y) const;
-    /// Smooth-normal shading of the shown hit, with the pixel's highlights.
-    [[nodiscard]] glm::vec3 shadeHit(const RayHit& hit, const PixelRay& ray, const TrimPixel& pixel) const;
+    /// Smooth-normal shading of the shown hit, with the pixel's highlights; a back face of
+    /// an object in `carvedObjects` (csgSubtractedMask) is a carved wall.
+    [[nodiscard]] glm::vec3 shadeHit(const RayHit& hit, const PixelRay& ray, const TrimPixel& pixel,
+                                     std::uint32_t carvedObjects) const;
     /// Flat shading and world-space pattern of a cap.
     [[nodiscard]] glm::vec3 shadeCapPixel(const RowContext& context, const PixelRay& ray, const TrimWalk& walk) const;
     /// Unit smooth world normal at a hit (the face normal where the vertex normals cancel).

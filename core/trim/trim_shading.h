@@ -14,6 +14,9 @@ namespace trimlab {
 inline constexpr glm::vec3 kFrontFacingColor{0.96f, 0.78f, 0.26f};
 inline constexpr glm::vec3 kBackFacingColor{0.28f, 0.50f, 0.96f};
 inline constexpr glm::vec3 kBackgroundColor{0.16f, 0.17f, 0.20f};
+/// The back face of an object a CSG expression subtracts (csgSubtractedMask): the wall
+/// the difference carved, teal, so that it is not taken for an inside seen through a cut.
+inline constexpr glm::vec3 kCarvedWallColor{0.24f, 0.70f, 0.62f};
 inline constexpr float kAmbient = 0.25f;
 
 /// Caps are drawn in the front-facing color (the object's color: the cut shows the solid
@@ -26,6 +29,9 @@ inline constexpr float kCollisionTint = 0.65f;
 /// Headlight Lambert shading. `normal`: unit surface normal (any orientation);
 /// `toViewer`: unit vector from the point to the eye; `facing`: +1 or −1.
 [[nodiscard]] glm::vec3 shadeTrimPoint(int facing, const glm::dvec3& normal, const glm::dvec3& toViewer);
+/// shadeTrimPoint of a back face, with `carved`: in kCarvedWallColor (a wall a CSG
+/// difference carved) instead of the back-facing blue.
+[[nodiscard]] glm::vec3 shadeTrimPoint(int facing, const glm::dvec3& normal, const glm::dvec3& toViewer, bool carved);
 
 /// An orthonormal basis (u, v) of the plane with unit normal `n`, chosen from n alone (so
 /// a cap's pattern is fixed in world space): u = normalize(cross(n, a)) with a the world

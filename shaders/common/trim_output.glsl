@@ -24,6 +24,7 @@ const float COLLISION_TINT = 0.65;
 const uint FLOAT_BITS_INFINITY = 0x7F800000u;
 
 uniform mat4 u_projection;
+uniform uint u_carvedObjects; // csgSubtractedMask of the CSG (0 without one)
 uniform vec2 u_viewportSize;
 uniform vec2 u_tanHalfFov; // (tan(fovx/2), tan(fovy/2))
 
@@ -85,7 +86,9 @@ void emitShownPixel(uvec2 f, int windingAtStart, bool overflowed)
     SurfacePoint surface = surfacePoint(fragmentObject(f), fragmentPrimitive(f), viewPos);
     vec3 normal = interpolatedViewNormal(surface);
     vec3 toViewer = normalize(-viewPos);
+    bool carved = !front && ((u_carvedObjects >> fragmentObject(f)) & 1u) != 0u;
     vec3 shaded = u_vertexColors ? shadeColoredPoint(interpolatedColor(surface), front, normal, toViewer)
+                  : carved       ? shadeCarvedWall(normal, toViewer)
                                  : shadeTrimPoint(front, normal, toViewer);
     bool collision = shownCollision();
     int coplanar = min(shownCoplanarCount(), 255);

@@ -129,3 +129,19 @@ def test_close_holes_refuses_a_boundary_that_is_no_loop():
     F = np.array([[0, 1, 2], [3, 1, 2]], dtype=np.int32)
     with pytest.raises(trimlab.InputError):
         trimlab.close_holes(V, F)
+
+
+def test_close_holes_warns_where_a_fan_crosses_the_surface():
+    # An open tube around z with a small tetrahedron through its top opening: the top
+    # loop's fan cuts the tetrahedron.
+    sides = 8
+    angles = 2 * np.pi * np.arange(sides) / sides
+    ring = np.stack([np.cos(angles), np.sin(angles), np.zeros(sides)], axis=1)
+    V = np.concatenate([ring, ring + [0, 0, 1],
+                        [[0, 0, 0.8], [0.2, 0, 1.2], [-0.1, 0.17, 1.2], [-0.1, -0.17, 1.2]]])
+    F = [[s, (s + 1) % sides, sides + (s + 1) % sides] for s in range(sides)]
+    F += [[s, sides + (s + 1) % sides, sides + s] for s in range(sides)]
+    F += [[16, 18, 17], [16, 19, 18], [16, 17, 19], [17, 18, 19]]
+    with pytest.warns(RuntimeWarning, match="crosses triangle 1[6-9]"):
+        V2, F2 = trimlab.close_holes(V, np.array(F, dtype=np.int32))
+    assert trimlab.info(V2, F2)["closed"]

@@ -2,8 +2,9 @@
 // method_check.h, >= 99.9 % of compared pixels): multi-plane clipping (a box) and capping
 // with every method, n-ary CSG (union, intersection, difference, a 3-operand tree) of
 // self-crossing demo surfaces and of a real mesh placed twice with its own transforms,
-// with capping and collision highlighting, on every buffer method; and the clear refusal
-// of the methods that cannot carry the per-object walk.
+// with capping and collision highlighting, on every buffer method, the walls a difference
+// carved in their own color; and the clear refusal of the methods that cannot carry the
+// per-object walk.
 #include "gl_test_context.h"
 #include "method_check.h"
 #include "reference_scene_cache.h"
@@ -11,10 +12,14 @@
 
 #include "core/catalog/demo_scenes.h"
 #include "core/catalog/scene_source.h"
+#include "core/scene/shape_generators.h"
+#include "core/trim/reference_renderer.h"
+#include "core/trim/trim_shading.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <QColor>
 #include <QtTest>
 
 using namespace trimlab;
@@ -118,6 +123,7 @@ private slots:
     void peelingMethodsRefuseThePerObjectWalk();
     void badExpressionsAreRefused();
     void framesCountCapsAndCollisions();
+    void carvedWallsHaveTheirColor();
 
 private:
     test::ReferenceSceneCache::Entry& prepare(const std::string& name) { return m_scenes.prepare(*m_renderer, name); }
@@ -250,6 +256,43 @@ void TestInspectMethods::framesCountCapsAndCollisions()
     QVERIFY(collisions > 20);
     QCOMPARE(m_renderer->lastStats().counts.capPixels, caps);
     QCOMPARE(m_renderer->lastStats().counts.collisionPixels, collisions);
+}
+
+// A ball bitten out of the top of a sphere (0 - 1) seen from above: on every method that
+// takes CSG, the cavity's floor — the ball's inside — has the carved-wall color of the CPU
+// reference (trim_shading.h), not the blue of an inside seen through a cut.
+void TestInspectMethods::carvedWallsHaveTheirColor()
+{
+    Scene scene;
+    scene.objects.push_back({"sphere", makeIcosphere(glm::dvec3(0.0), 1.0, 4), glm::dmat4(1.0)});
+    scene.objects.push_back({"ball", makeIcosphere({0.0, 0.0, 1.0}, 0.5, 3), glm::dmat4(1.0)});
+    Camera camera;
+    camera.eye = {0.0, 0.0, 4.0};
+    camera = withDepthRange(camera, scene.worldBounds());
+    TrimSettings settings;
+    settings.rule = StaticRule::Nonzero;
+    settings.csg.expression = expression("0 - 1");
+    constexpr int kSide = 61;
+    const ReferenceResult reference = ReferenceRenderer(scene).render(camera, kSide, kSide, settings, 1);
+    const std::uint8_t* expected = reference.color.at(kSide / 2, kSide / 2);
+    QCOMPARE(reference.trim.at(kSide / 2, kSide / 2).objectId, 1);
+    QVERIFY(std::abs(int(expected[0]) - int(std::lround(255 * kCarvedWallColor[0]))) <= 2);
+    m_renderer->setScene(scene);
+    for (const MethodInfo& info : fragmentMethods()) {
+        if (!info.inspection)
+            continue;
+        m_renderer->setMethod(info.kind);
+        m_renderer->render(camera, settings, kSide, kSide);
+        const QColor shown = m_renderer->readColor().pixelColor(kSide / 2, kSide / 2);
+        const int channels[3] = {shown.red(), shown.green(), shown.blue()};
+        for (int c = 0; c < 3; ++c)
+            QVERIFY2(std::abs(channels[c] - int(expected[c])) <= 3,
+                     qPrintable(QStringLiteral("%1: %2 instead of %3, %4, %5")
+                                    .arg(QString::fromLatin1(info.id.data()), shown.name())
+                                    .arg(expected[0])
+                                    .arg(expected[1])
+                                    .arg(expected[2])));
+    }
 }
 
 QTEST_MAIN(TestInspectMethods)

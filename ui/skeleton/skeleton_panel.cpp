@@ -418,6 +418,7 @@ void SkeletonPanel::showResult()
         if (m_overlay)
             m_overlay->setSkeleton({}, {}, -1, m_model);
         m_legend->setVisible(false);
+        updateAngleBoxes(); // no bone: no angles (not the last run's)
     }
     showTimes();
     showQuality();

@@ -348,6 +348,10 @@ void SceneSwitch::closeShownHoles()
     m_context->showStatus(
         tr("%1: closed %2%3")
             .arg(name, QString::fromStdString(holeClosingText(closing)), trimUnavailableNote(*m_scene)));
+    if (!closing.crossing.empty())
+        m_context->showMessage(QMessageBox::Warning, tr("Close Holes"),
+                               tr("A fan that closes a hole of “%1” crosses its surface.").arg(name),
+                               QString::fromStdString(closing.crossing));
 }
 
 void SceneSwitch::onProjectOpened(std::shared_ptr<const timeline::Project> project, const QString& path)

@@ -76,9 +76,10 @@ public:
     [[nodiscard]] bool shownHasHoles() const;
     /// Shows the mesh or animation shown with its holes closed (core/trim/hole_closing.h)
     /// as a new document with the same view settings, which the trim modes can classify
-    /// where the holes were the only defect; says what was closed in the status bar. A
-    /// hole that cannot be closed (a fan would cross the surface) is reported in a
-    /// message, and what is shown stays. Asks to save unsaved work first, like opening.
+    /// where the holes were the only defect; says what was closed in the status bar, and in
+    /// a warning where a fan crosses the surface. A boundary that cannot be closed (it
+    /// forms no loops) is reported in a message, and what is shown stays. Asks to save
+    /// unsaved work first, like opening.
     void closeShownHoles();
     /// Whether anything was asked to open yet (the first start opens the default demo
     /// only when nothing was).

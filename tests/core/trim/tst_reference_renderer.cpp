@@ -4,6 +4,7 @@
 #include "core/catalog/demo_scenes.h"
 #include "core/catalog/demo_shapes.h"
 #include "core/scene/shape_generators.h"
+#include "core/trim/csg_expression.h"
 #include "core/trim/reference_renderer.h"
 #include "core/trim/trim_shading.h"
 #include "core/trim/winding_number.h"
@@ -145,6 +146,7 @@ private slots:
     void nestedSpheres();
     void doublyCoveredSphere();
     void cameraInsideSphere();
+    void carvedWallsHaveTheirColor();
     void tiltedClipPlane_data();
     void tiltedClipPlane();
     void pushedSphereTunnel();
@@ -367,6 +369,44 @@ void TestReferenceRenderer::cameraInsideSphere()
     const std::uint8_t* centre = result.color.at(40, 30);
     for (int c = 0; c < 3; ++c) // looking at the inside head-on: the back color, diffuse ≈ 1
         QVERIFY(std::abs(int(centre[c]) - int(std::lround(255 * kBackFacingColor[c]))) <= 1);
+}
+
+// A ball bitten out of the top of a sphere (CSG 0 - 1), seen from above: the cavity's
+// floor is the ball's inside — a wall the difference carved, in its own color, not the
+// blue of an inside seen through a cut (which the sphere alone, cut open, still shows).
+// The subtracted operands are those after the first of a difference, at any depth.
+void TestReferenceRenderer::carvedWallsHaveTheirColor()
+{
+    const auto subtracted = [](const char* text) {
+        return csgSubtractedMask(parseCsgExpression(text, nullptr).value());
+    };
+    QCOMPARE(subtracted("0 - 1"), 0b10u);
+    QCOMPARE(subtracted("0 - 1 - 2"), 0b110u);
+    QCOMPARE(subtracted("(0 | 1) - 2"), 0b100u);
+    QCOMPARE(subtracted("0 - (1 - 2)"), 0b110u);
+    QCOMPARE(subtracted("0 | 1 & 2"), 0u);
+    QCOMPARE(csgSubtractedMask(CsgExpression{}), 0u);
+
+    const Scene scene = sceneOf({makeIcosphere(glm::dvec3(0.0), 1.0, 4), makeIcosphere({0.0, 0.0, 1.0}, 0.5, 3)});
+    const Camera camera = cameraAt({0.0, 0.0, 4.0}, {0.0, 0.0, 0.0}, scene);
+    TrimSettings bitten = settingsFor(StaticRule::Nonzero);
+    bitten.csg.expression = parseCsgExpression("0 - 1", nullptr).value();
+    const ReferenceRenderer renderer(scene);
+    const ReferenceResult result = renderer.render(camera, 81, 61, bitten, 1);
+    const TrimPixel& floor = result.trim.at(40, 30);
+    QCOMPARE(floor.objectId, 1);
+    QCOMPARE(int(floor.facing), -1);
+    const std::uint8_t* centre = result.color.at(40, 30);
+    for (int c = 0; c < 3; ++c) // the floor head-on: diffuse ≈ 1
+        QVERIFY2(std::abs(int(centre[c]) - int(std::lround(255 * kCarvedWallColor[c]))) <= 2,
+                 qPrintable(QStringLiteral("channel %1: %2").arg(c).arg(centre[c])));
+
+    const ReferenceResult cut =
+        ReferenceRenderer(sceneOf({makeIcosphere(glm::dvec3(0.0), 1.0, 4)}))
+            .render(camera, 81, 61, settingsFor(StaticRule::Nonzero, true, ClipPlane{true, {0, 0, -1}, 0.0}), 1);
+    const std::uint8_t* inside = cut.color.at(40, 30);
+    for (int c = 0; c < 3; ++c)
+        QVERIFY(std::abs(int(inside[c]) - int(std::lround(255 * kBackFacingColor[c]))) <= 2);
 }
 
 void TestReferenceRenderer::tiltedClipPlane_data()

@@ -416,6 +416,18 @@ void TestSkeletonPanel::runStagesPoseAndReset()
     QCOMPARE(times->item(0, 0)->text(), QStringLiteral("–"));
     QVERIFY(panel->shownPositions() == rest); // a new rig starts at rest
     QVERIFY(boxes.seen().isEmpty());
+
+    // A new mesh drops the result, and the bone's angles with it (they showed the last
+    // run's pose on a mesh without a skeleton).
+    QVERIFY(waitForNewFrame(*window, [&] { typeInto(child<QDoubleSpinBox>(panel, "skeletonAngleXSpinBox"), 30.0); }));
+    QSignalSpy opened(window.get(), &MainWindow::sceneLoaded);
+    window->openSource(QStringLiteral("demo:sphere"));
+    QVERIFY(opened.count() == 1 || opened.wait(kWaitMs));
+    QVERIFY(!panel->result());
+    for (const char* name : {"skeletonAngleXSpinBox", "skeletonAngleYSpinBox", "skeletonAngleZSpinBox"}) {
+        QCOMPARE(child<QDoubleSpinBox>(panel, name)->value(), 0.0);
+        QVERIFY(!child<QDoubleSpinBox>(panel, name)->isEnabled());
+    }
 }
 
 // Posing under the dynamic rules (a classification that persists between sessions)
