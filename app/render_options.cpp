@@ -152,16 +152,9 @@ std::optional<QString> parseRule(const QString& text, RenderOptions& options)
 
 std::optional<QString> parseGeometryOptions(const QCommandLineParser& parser, RenderOptions& options)
 {
+    if (std::optional<QString> clipError = parseClipOptions(parser, options.trim))
+        return clipError;
     std::string error;
-    if (parser.isSet("clip")) {
-        std::vector<std::string> texts;
-        for (const QString& text : parser.values("clip"))
-            texts.push_back(text.toStdString());
-        const std::optional<ClipSet> clips = parseClipSet(texts, &error);
-        if (!clips)
-            return QStringLiteral("--clip: ") + QString::fromStdString(error);
-        options.trim.setClipSet(*clips);
-    }
     if (parser.isSet("camera")) {
         options.camera = parseCamera(parser.value("camera").toStdString(), &error);
         if (!options.camera)

@@ -4,11 +4,16 @@
 
 #include "core/catalog/closed_scene.h"
 #include "core/scene/world_geometry.h"
+#include "core/trim/clip_set.h"
 #include "core/trim/csg_expression.h"
 #include "core/trim/csg_object_ids.h"
 #include "core/trim/static_rule.h"
 
+#include <QCommandLineParser>
+
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace trimlab::app {
 
@@ -149,6 +154,21 @@ std::optional<QString> checkObjectIds(const CsgSettings& csg, std::size_t object
     return QStringLiteral("%1 %2").arg(problem->inExpression ? QStringLiteral("--csg")
                                                              : QStringLiteral("--object-rule"),
                                        QString::fromStdString(csgObjectIdReason(problem->id, objectCount)));
+}
+
+std::optional<QString> parseClipOptions(const QCommandLineParser& parser, TrimSettings& trim)
+{
+    if (!parser.isSet("clip"))
+        return std::nullopt;
+    std::vector<std::string> texts;
+    for (const QString& text : parser.values("clip"))
+        texts.push_back(text.toStdString());
+    std::string error;
+    const std::optional<ClipSet> clips = parseClipSet(texts, &error);
+    if (!clips)
+        return QStringLiteral("--clip: ") + QString::fromStdString(error);
+    trim.setClipSet(*clips);
+    return std::nullopt;
 }
 
 void closeHolesNoted(LoadedScene& loaded)

@@ -37,8 +37,9 @@ struct ObjectTransformOption {
 [[nodiscard]] std::optional<QString> parseObjectTransform(const QString& text, std::vector<ObjectTransformOption>& out);
 
 /// --close-holes on a loaded scene: closes the holes of its objects (closeSceneHoles,
-/// which throws MeshLoadError naming the object when a hole cannot be closed) and notes
-/// on stderr what was closed ("closed 1 hole of 20 edges in horse.obj").
+/// which throws MeshLoadError naming the object when a boundary forms no loops) and notes
+/// on stderr what was closed ("closed 1 hole of 20 edges in horse.obj"), a fan that
+/// crosses the surface included.
 void closeHolesNoted(LoadedScene& loaded);
 
 /// Sets each listed object's model matrix; an error naming the option when an id is not
@@ -52,6 +53,9 @@ void closeHolesNoted(LoadedScene& loaded);
 
 /// --rule: a static rule name or "none" (trimming off).
 [[nodiscard]] std::optional<QString> parseRuleOption(const QString& text, TrimSettings& trim);
+/// Every --clip of `parser` (render and trim) into trim's clipping set (parseClipSet), or
+/// the "--clip: ..." error; nothing when none was given.
+[[nodiscard]] std::optional<QString> parseClipOptions(const QCommandLineParser& parser, TrimSettings& trim);
 /// --object-rule ID=RULE.
 [[nodiscard]] std::optional<QString> parseObjectRuleOption(const QString& text, CsgSettings& csg);
 /// --csg EXPRESSION.

@@ -1,11 +1,11 @@
 #include "app/skeleton_verb.h"
 
 #include "app/cli_messages.h"
+#include "app/scene_composition.h"
 #include "app/skeleton_options.h"
 #include "app/terminal_progress.h"
 
 #include "core/mesh/loop_subdivision.h"
-#include "core/catalog/closed_scene.h"
 #include "core/catalog/scene_source.h"
 #include "core/scene/world_geometry.h"
 #include "core/skeleton/rigged_gltf.h"
@@ -33,7 +33,7 @@ TriangleMesh loadSingleMesh(const std::string& source, bool closeHoles)
 {
     LoadedScene loaded = loadScene(source);
     if (closeHoles)
-        noteHolesClosed(loaded.displayName, closeSceneHoles(loaded));
+        closeHolesNoted(loaded);
     if (loaded.scene.objects.size() != 1)
         throw std::runtime_error(source + ": has " + std::to_string(loaded.scene.objects.size()) +
                                  " objects; the skeleton verb takes one mesh");

@@ -109,16 +109,8 @@ std::variant<TrimOptions, QString> parseTrimOptions(const QStringList& arguments
             return *e;
     if (auto e = parseParameter(parser, hole_closing_parameters::kCloseHoles, options.closeHoles))
         return *e;
-    if (parser.isSet("clip")) {
-        std::vector<std::string> texts;
-        for (const QString& text : parser.values("clip"))
-            texts.push_back(text.toStdString());
-        std::string error;
-        const std::optional<ClipSet> clips = parseClipSet(texts, &error);
-        if (!clips)
-            return QStringLiteral("--clip: ") + QString::fromStdString(error);
-        options.trim.setClipSet(*clips);
-    }
+    if (auto e = parseClipOptions(parser, options.trim))
+        return *e;
     return options;
 }
 

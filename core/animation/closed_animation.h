@@ -15,8 +15,9 @@ namespace trimlab {
 /// `animation` closed, and into `closing` (when given) what was closed with the first
 /// pose where a fan crosses that pose's mesh ("pose 3: " + fanCrossingMessage) and the
 /// number of such poses; unchanged when it has no boundary edges. Throws
-/// std::invalid_argument when its boundary edges do not form loops (boundary_loops.h). The closed animation has no skin (AnimationSkin binds the
-/// open mesh's vertices only); its poses are kept as they are.
+/// std::invalid_argument when its boundary edges do not form loops (boundary_loops.h).
+/// The closed animation has no skin (AnimationSkin binds the open mesh's vertices only);
+/// its poses are kept as they are.
 [[nodiscard]] MeshAnimation closeAnimationHoles(const MeshAnimation& animation, HoleClosing* closing = nullptr);
 
 } // namespace trimlab

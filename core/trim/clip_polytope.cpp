@@ -11,39 +11,33 @@ namespace trimlab {
 
 namespace {
 
-// A plane keeping n·x + d >= 0, n of unit length.
-struct HalfSpace {
-    glm::dvec3 n;
-    double d;
-
-    [[nodiscard]] double evaluate(const glm::dvec3& p) const { return glm::dot(n, p) + d; }
-};
-
-std::vector<HalfSpace> halfSpaces(const ClipSet& clips, const Bounds& box)
+// The box's six planes and the enabled clipping planes, each with a unit normal.
+std::vector<ClipPlane> halfSpaces(const ClipSet& clips, const Bounds& box)
 {
-    std::vector<HalfSpace> spaces;
+    std::vector<ClipPlane> spaces;
     for (int axis = 0; axis < 3; ++axis) {
         glm::dvec3 n(0.0);
         n[axis] = 1.0;
-        spaces.push_back({n, -box.min[axis]});
-        spaces.push_back({-n, box.max[axis]});
+        spaces.push_back({true, n, -box.min[axis]});
+        spaces.push_back({true, -n, box.max[axis]});
     }
     for (const ClipPlane& plane : clips.planes) {
         const double length = glm::length(plane.normal);
         if (plane.enabled && length > 0.0)
-            spaces.push_back({plane.normal / length, plane.offset / length});
+            spaces.push_back({true, plane.normal / length, plane.offset / length});
     }
     return spaces;
 }
 
 // The point on all three planes, or nullopt when they do not meet in one point.
-std::optional<glm::dvec3> meet(const HalfSpace& a, const HalfSpace& b, const HalfSpace& c)
+std::optional<glm::dvec3> meet(const ClipPlane& a, const ClipPlane& b, const ClipPlane& c)
 {
-    const glm::dvec3 bc = glm::cross(b.n, c.n);
-    const double det = glm::dot(a.n, bc);
+    const glm::dvec3 bc = glm::cross(b.normal, c.normal);
+    const double det = glm::dot(a.normal, bc);
     if (std::abs(det) < 1e-12)
         return std::nullopt;
-    return (-a.d * bc - b.d * glm::cross(c.n, a.n) - c.d * glm::cross(a.n, b.n)) / det;
+    return (-a.offset * bc - b.offset * glm::cross(c.normal, a.normal) - c.offset * glm::cross(a.normal, b.normal)) /
+           det;
 }
 
 } // namespace
@@ -53,7 +47,7 @@ TriangleMesh clipPolytope(const ClipSet& clips, const Bounds& box)
     TriangleMesh mesh;
     if (!box.valid())
         return mesh;
-    const std::vector<HalfSpace> spaces = halfSpaces(clips, box);
+    const std::vector<ClipPlane> spaces = halfSpaces(clips, box);
     const double tolerance = 1e-9 * std::max(glm::length(box.max - box.min), 1e-30);
     std::vector<glm::dvec3> vertices;
     for (std::size_t i = 0; i < spaces.size(); ++i)
@@ -61,7 +55,7 @@ TriangleMesh clipPolytope(const ClipSet& clips, const Bounds& box)
             for (std::size_t k = j + 1; k < spaces.size(); ++k) {
                 const std::optional<glm::dvec3> p = meet(spaces[i], spaces[j], spaces[k]);
                 if (!p || std::any_of(spaces.begin(), spaces.end(),
-                                      [&](const HalfSpace& s) { return s.evaluate(*p) < -tolerance; }))
+                                      [&](const ClipPlane& s) { return s.evaluate(*p) < -tolerance; }))
                     continue;
                 if (std::none_of(vertices.begin(), vertices.end(),
                                  [&](const glm::dvec3& v) { return glm::length(v - *p) <= 10.0 * tolerance; }))
@@ -71,7 +65,7 @@ TriangleMesh clipPolytope(const ClipSet& clips, const Bounds& box)
         return mesh;
     for (const glm::dvec3& v : vertices)
         mesh.positions.push_back(glm::vec3(v));
-    for (const HalfSpace& space : spaces) {
+    for (const ClipPlane& space : spaces) {
         std::vector<std::uint32_t> face;
         for (std::uint32_t v = 0; v < vertices.size(); ++v)
             if (std::abs(space.evaluate(vertices[v])) <= 10.0 * tolerance)
@@ -83,7 +77,7 @@ TriangleMesh clipPolytope(const ClipSet& clips, const Bounds& box)
         for (std::uint32_t v : face)
             faceCentre += vertices[v];
         faceCentre /= double(face.size());
-        const glm::dvec3 outward = -space.n;
+        const glm::dvec3 outward = -space.normal;
         const glm::dvec3 u = glm::normalize(vertices[face.front()] - faceCentre);
         const glm::dvec3 w = glm::cross(outward, u);
         const auto angle = [&](std::uint32_t v) {

@@ -4,35 +4,23 @@
 
 #include <glm/geometric.hpp>
 
-#include <limits>
-
 namespace trimlab {
 
 namespace {
 
-struct Box {
-    glm::dvec3 lower{std::numeric_limits<double>::infinity()};
-    glm::dvec3 upper{-std::numeric_limits<double>::infinity()};
-
-    void extend(const glm::dvec3& p)
-    {
-        lower = glm::min(lower, p);
-        upper = glm::max(upper, p);
-    }
-    [[nodiscard]] bool meets(const Box& other) const
-    {
-        return glm::all(glm::lessThanEqual(lower, other.upper)) && glm::all(glm::lessThanEqual(other.lower, upper));
-    }
-};
+bool meets(const Bounds& a, const Bounds& b)
+{
+    return glm::all(glm::lessThanEqual(a.min, b.max)) && glm::all(glm::lessThanEqual(b.min, a.max));
+}
 
 glm::dvec3 at(std::span<const glm::vec3> positions, std::uint32_t v)
 {
     return glm::dvec3(positions[v]);
 }
 
-Box triangleBox(const glm::uvec3& t, std::span<const glm::vec3> positions)
+Bounds triangleBox(const glm::uvec3& t, std::span<const glm::vec3> positions)
 {
-    Box box;
+    Bounds box;
     for (int i = 0; i < 3; ++i)
         box.extend(at(positions, t[i]));
     return box;
@@ -112,12 +100,12 @@ std::optional<FanCrossing> firstFanCrossing(const HoleFans& fans, std::span<cons
     for (std::size_t l = 0; l < fans.loops.size(); ++l) {
         const std::span<const glm::uvec3> fan(fans.triangles.data() + first, fans.loops[l].size());
         first += fans.loops[l].size();
-        Box fanBox;
+        Bounds fanBox;
         for (const glm::uvec3& t : fan)
             for (int i = 0; i < 3; ++i)
                 fanBox.extend(at(positions, t[i]));
         for (std::size_t m = 0; m < triangles.size(); ++m) {
-            if (!triangleBox(triangles[m], positions).meets(fanBox))
+            if (!meets(triangleBox(triangles[m], positions), fanBox))
                 continue;
             for (const glm::uvec3& t : fan)
                 if (trianglesCross(positions, t, triangles[m]))

@@ -203,7 +203,7 @@ ReferenceResult ReferenceRenderer::render(const Camera& camera, int width, int h
                            height,
                            settings,
                            settings.clipSet(),
-                           settings.csg.enabled() ? csgSubtractedMask(settings.csg.expression) : 0u,
+                           csgSubtractedMask(settings.csg.expression),
                            walker ? &walker : nullptr,
                            result,
                            {},

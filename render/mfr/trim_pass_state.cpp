@@ -57,8 +57,7 @@ void setObjectWalkUniforms(const TrimFrame& frame, GLuint program)
     const GLsizei objects = frame.objectWindings ? frame.objectWindings->objects() : 1;
     gl.glUniform1iv(gl.glGetUniformLocation(program, "u_objectRules"), objects, rules.data());
     gl.glUniform1i(gl.glGetUniformLocation(program, "u_csgEnabled"), settings.csg.enabled() ? 1 : 0);
-    gl.glUniform1ui(gl.glGetUniformLocation(program, "u_carvedObjects"),
-                    settings.csg.enabled() ? csgSubtractedMask(settings.csg.expression) : 0u);
+    gl.glUniform1ui(gl.glGetUniformLocation(program, "u_carvedObjects"), csgSubtractedMask(settings.csg.expression));
     gl.glUniform1uiv(gl.glGetUniformLocation(program, "u_csgTable"), GLsizei(table.size()), table.data());
     gl.glUniform1i(gl.glGetUniformLocation(program, "u_highlightCollisions"), settings.highlight.collisions ? 1 : 0);
 }

@@ -38,7 +38,7 @@ struct LoadedAnimation {
 /// `loaded` with the holes of every pose closed (closeAnimationHoles), and into `closing`
 /// what was closed: its rest scene and bounds redone, no file skin (the skin binds the
 /// open mesh's vertices only, so the viewport uploads each pose). Throws
-/// std::invalid_argument as closeAnimationHoles does (a fan crossing a pose's surface).
+/// std::invalid_argument as closeAnimationHoles does (a boundary that forms no loops).
 [[nodiscard]] LoadedAnimation withHolesClosed(const LoadedAnimation& loaded, HoleClosing* closing = nullptr);
 
 } // namespace trimlab::ui

@@ -3,7 +3,7 @@
 /// Every message the window gave — status lines and message boxes — with its time, the
 /// history a status bar cannot keep: a long line is cut at the window's width, and the
 /// next message replaces it within seconds. WindowContext records into it; the Messages
-/// dock (ui/window/messages_dock.h) shows it. Oldest entries go beyond kMaxEntries.
+/// dock (ui/window/messages_panel.h) shows it. Oldest entries go beyond kMaxEntries.
 
 #include <QDateTime>
 #include <QObject>

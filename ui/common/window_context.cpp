@@ -42,16 +42,17 @@ void WindowContext::showMessage(QMessageBox::Icon icon, const QString& title, co
                                 const QString& details) const
 {
     // Plain text: a file name or a message quoting a file is never read as HTML.
-    auto* box = new QMessageBox(icon, title, printable(text), QMessageBox::Ok, &m_window);
+    const QString message = printable(text);
+    const QString info = printable(details);
+    auto* box = new QMessageBox(icon, title, message, QMessageBox::Ok, &m_window);
     box->setTextFormat(Qt::PlainText);
-    box->setInformativeText(printable(details));
+    box->setInformativeText(info);
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
     const MessageLog::Kind kind = icon == QMessageBox::Critical  ? MessageLog::Kind::Error
                                   : icon == QMessageBox::Warning ? MessageLog::Kind::Warning
                                                                  : MessageLog::Kind::Information;
-    const QString info = printable(details);
-    m_log.add(kind, info.isEmpty() ? printable(text) : printable(text) + QLatin1Char('\n') + info);
+    m_log.add(kind, info.isEmpty() ? message : message + QLatin1Char('\n') + info);
 }
 
 QDockWidget* WindowContext::addSideDock(const QString& title, const QString& objectName, QWidget* content,
