@@ -4,6 +4,7 @@
 #include "core/io/gltf_builder.h"
 #include "core/skeleton/rig_validation.h"
 #include "core/io/atomic_write.h"
+#include "core/io/file_extension.h"
 
 #include <tiny_gltf.h>
 
@@ -13,7 +14,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <sstream>
@@ -148,7 +148,7 @@ struct Frame {
     glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
 };
 
-// Frame 0: the skeleton root node; frame 1 + b: the joint node of bone b.
+// Frame 0: the root joint; frame 1 + b: the joint node of bone b.
 std::vector<Frame> restFrames(const SkeletonRig& rig)
 {
     std::vector<Frame> frames(1 + rig.bones.size());
@@ -181,14 +181,23 @@ glm::dmat4 trsMatrix(const glm::dvec3& translation, const glm::dquat& rotation)
     return glm::translate(glm::dmat4(1.0), translation) * glm::mat4_cast(rotation);
 }
 
+// The inverse bind matrix of a joint, inverted from its world matrix as written.
+void appendInverseBind(std::vector<float>& inverseBind, const glm::dmat4& world)
+{
+    const glm::mat4 ibm(glm::inverse(world));
+    const float* m = &ibm[0][0];
+    inverseBind.insert(inverseBind.end(), m, m + 16);
+}
+
 // Writes the local TRS (eq. 16: M_L = M_W(parent)⁻¹·M_W) of every node and returns the
-// inverse bind matrices, inverted from the world matrices of the written floats.
+// inverse bind matrices in skin order (the bones, then the root joint), inverted from the
+// world matrices of the written floats.
 std::vector<float> addJointNodes(tinygltf::Model& model, const SkeletonRig& rig, const std::vector<Frame>& frames)
 {
     const int firstJoint = int(model.nodes.size()) + 1;
     std::vector<glm::dmat4> world(frames.size());
     tinygltf::Node root;
-    root.name = "skeleton";
+    root.name = "root";
     const glm::dvec3 rootPosition = asFloat(frames[0].position);
     root.translation = {rootPosition.x, rootPosition.y, rootPosition.z};
     world[0] = trsMatrix(rootPosition, glm::dquat(1.0, 0.0, 0.0, 0.0));
@@ -203,18 +212,21 @@ std::vector<float> addJointNodes(tinygltf::Model& model, const SkeletonRig& rig,
         joints[b].translation = {t.x, t.y, t.z};
         joints[b].rotation = {r.x, r.y, r.z, r.w};
         world[1 + b] = world[parentFrame(rig, b)] * trsMatrix(t, r);
-        const glm::mat4 ibm(glm::inverse(world[1 + b]));
-        const float* m = &ibm[0][0];
-        inverseBind.insert(inverseBind.end(), m, m + 16);
+        appendInverseBind(inverseBind, world[1 + b]);
         const int node = firstJoint + int(b);
         (rig.bones[b].parentBone < 0 ? root : joints[std::size_t(rig.bones[b].parentBone)]).children.push_back(node);
     }
+    appendInverseBind(inverseBind, world[0]);
     model.scenes[0].nodes.push_back(int(model.nodes.size()));
     model.nodes.push_back(root);
     model.nodes.insert(model.nodes.end(), joints.begin(), joints.end());
     return inverseBind;
 }
 
+// The root joint is a joint of the skin (listed last, so JOINTS_0 value b still means
+// bone b; no vertex is bound to it): a joint hierarchy under a non-joint node carrying
+// the root's translation imports in Blender with that translation as a pose on every
+// root bone, so clearing the pose moved the whole character.
 void addSkin(tinygltf::Model& model, const SkeletonRig& rig)
 {
     tinygltf::Skin skin;
@@ -223,6 +235,7 @@ void addSkin(tinygltf::Model& model, const SkeletonRig& rig)
     const std::vector<float> inverseBind = addJointNodes(model, rig, restFrames(rig));
     for (std::size_t b = 0; b < rig.bones.size(); ++b)
         skin.joints.push_back(skin.skeleton + 1 + int(b));
+    skin.joints.push_back(skin.skeleton);
     skin.inverseBindMatrices = io::addGltfFloatAccessor(model, inverseBind, TINYGLTF_TYPE_MAT4, false);
     model.skins.push_back(skin);
 }
@@ -244,7 +257,7 @@ void addChannel(tinygltf::Model& model, tinygltf::Animation& animation, int inpu
 
 // Keyframe 0 s: rest; 1 s: the pose. A posed joint's world frame is its bone's motion
 // applied to its rest frame, so its local rotation is R_parent⁻¹·R(q_b)·R_b and its local
-// translation does not change; the skeleton node moves by rootTranslation.
+// translation does not change; the root joint moves by rootTranslation.
 void addPoseAnimation(tinygltf::Model& model, const SkeletonRig& rig, const SkeletonPose& pose)
 {
     (void)boneMotions(rig, pose); // validates the pose against the rig
@@ -252,29 +265,22 @@ void addPoseAnimation(tinygltf::Model& model, const SkeletonRig& rig, const Skel
     tinygltf::Animation animation;
     animation.name = "pose";
     const int input = io::addGltfFloatAccessor(model, {0.0f, 1.0f}, TINYGLTF_TYPE_SCALAR, true);
-    const int skeletonNode = model.skins[0].skeleton;
+    const int rootNode = model.skins[0].skeleton;
     const glm::vec3 rest(frames[0].position), moved(frames[0].position + pose.rootTranslation);
-    addChannel(model, animation, input, skeletonNode, "translation",
-               {rest.x, rest.y, rest.z, moved.x, moved.y, moved.z}, TINYGLTF_TYPE_VEC3);
+    addChannel(model, animation, input, rootNode, "translation", {rest.x, rest.y, rest.z, moved.x, moved.y, moved.z},
+               TINYGLTF_TYPE_VEC3);
     for (std::size_t b = 0; b < rig.bones.size(); ++b) {
         const glm::dquat toParent = glm::conjugate(frames[parentFrame(rig, b)].rotation);
         const glm::dquat atRest = asFloat(toParent * frames[1 + b].rotation);
         glm::dquat posed = asFloat(toParent * glm::normalize(pose.rotations[b]) * frames[1 + b].rotation);
         if (glm::dot(posed, atRest) < 0.0)
             posed = -posed; // slerp takes the short way
-        addChannel(model, animation, input, skeletonNode + 1 + int(b), "rotation",
+        addChannel(model, animation, input, rootNode + 1 + int(b), "rotation",
                    {float(atRest.x), float(atRest.y), float(atRest.z), float(atRest.w), float(posed.x), float(posed.y),
                     float(posed.z), float(posed.w)},
                    TINYGLTF_TYPE_VEC4);
     }
     model.animations.push_back(animation);
-}
-
-bool hasGlbExtension(const std::filesystem::path& path)
-{
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext == ".glb";
 }
 
 } // namespace
@@ -312,7 +318,7 @@ std::string riggedGltf(const TriangleMesh& mesh, const SkeletonRig& rig, const B
 void exportRiggedGltf(const TriangleMesh& mesh, const SkeletonRig& rig, const BoneWeights& weights,
                       const std::filesystem::path& path, const RiggedGltfOptions& options)
 {
-    io::writeFileAtomically(path, riggedGltf(mesh, rig, weights, hasGlbExtension(path), options));
+    io::writeFileAtomically(path, riggedGltf(mesh, rig, weights, io::lowercaseExtension(path) == ".glb", options));
 }
 
 } // namespace trimlab

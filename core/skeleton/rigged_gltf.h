@@ -6,11 +6,14 @@
 ///
 /// Layout:
 /// - Node 0 "mesh": the mesh (no transform; glTF ignores a skinned mesh node's transform),
-///   skin 0. Node 1 "skeleton": the root node, at the rig's root joint. Nodes 2 … B+1
-///   "bone_b": one joint node per bone b, placed at the bone's head, child of its parent
-///   bone's node (or of "skeleton" for a bone that starts at the root joint). The scene
-///   holds nodes 0 and 1. The skin's joints are nodes 2 … B+1 in bone order, so JOINTS_0
-///   value b means bone b; skin.skeleton = 1.
+///   skin 0. Node 1 "root": the root joint, translated to the rig's root joint. Nodes
+///   2 … B+1 "bone_b": one joint node per bone b, placed at the bone's head, child of its
+///   parent bone's node (or of "root" for a bone that starts at the root joint). The scene
+///   holds nodes 0 and 1. The skin's joints are nodes 2 … B+1 in bone order, then node 1,
+///   so JOINTS_0 value b means bone b and the root joint (index B) binds no vertex;
+///   skin.skeleton = 1. Every ancestor of a joint is a joint, so the rest pose is the
+///   bind pose and a client that rebuilds bones from the skin (Blender) opens the rig in
+///   its rest position, with one root bone and no pose on it.
 /// - Orientation: joint node b is turned so that its local +Y axis points from the head
 ///   to the tail (the shortest rotation from +Y; a bone pointing along −Y turns by π about
 ///   +X; a zero-length bone keeps the identity). The paper defines a bone "as a vector
@@ -32,7 +35,7 @@
 ///   absorbs the rounding); unused slots have joint 0 and weight 0, and an influence whose
 ///   float weight is 0 is written as unused.
 /// - Optional pose (RiggedGltfOptions::pose): an animation "pose" with keyframes at 0 s
-///   (rest) and 1 s (the pose): every joint's rotation and the skeleton node's
+///   (rest) and 1 s (the pose): every bone joint's rotation and the root joint's
 ///   translation, LINEAR. A glTF viewer then shows at 1 s exactly the LBS of
 ///   skeleton_pose.h with those weights (joint matrix = bone motion).
 

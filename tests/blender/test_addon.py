@@ -1,7 +1,8 @@
 """The TrimLab add-on in Debian's Blender, headless: installs it from a zip, enables it,
 runs every operator on a small mesh and checks the result against the trimlab module —
 the trimmed volume to 1e-9, the skinned mesh against the fit's reconstruction, the
-skeleton's bones and its rest pose, and an error as the operator's report.
+skeleton's bones and its rest pose, and an error as the operator's report — and opens the
+rig `trimlab skeleton` exports with Blender's glTF importer, in its rest position.
 
     blender -b --factory-startup --python test_addon.py -- MODULE_DIR ADDON_DIR DATA_DIR OUT_DIR \
         SHARED_DATA_DIR TRIMLAB_EXECUTABLE
@@ -246,6 +247,49 @@ def test_extract_skeleton():
         b.matrix_basis.identity()
     bpy.context.view_layer.update()
     check(np.abs(evaluated_vertices(obj) - rest).max() < 1e-6, "the cleared pose leaves an offset")
+
+
+def import_gltf(path):
+    """Blender's own glTF importer. Debian 12's Blender still names numpy's removed
+    np.bool in it; the alias (numpy's own bool) lets the real importer run."""
+    if "bool" not in np.__dict__:
+        np.bool = bool
+    check(bpy.ops.import_scene.gltf(filepath=path) == {"FINISHED"}, f"Blender did not import {path}")
+
+
+# The rig `trimlab skeleton` writes opens in Blender in its rest position: one root bone, no
+# pose on any bone, and clearing the pose leaves every vertex where the file's mesh is
+# (before, the root's translation became a pose on 4 root bones and Clear Pose moved the
+# cat by 29 % of its size).
+def test_cli_rig_opens_in_rest_pose():
+    clear_scene()
+    mesh = os.path.join(shared_dir, "static", "odedstein-cat-low-resolution.obj.gz")
+    out = os.path.join(out_dir, "cat-rig.glb")
+    run = subprocess.run([trimlab_exe, "skeleton", mesh, "-o", out], capture_output=True, text=True)
+    check(run.returncode == 0, f"trimlab skeleton failed: {run.stderr}")
+    bones = int(re.search(r"(\d+) bones", run.stdout).group(1))
+    import_gltf(out)
+    arm = next(o for o in bpy.data.objects if o.type == "ARMATURE")
+    obj = next(o for o in bpy.data.objects if o.type == "MESH")
+    roots = [b.name for b in arm.data.bones if b.parent is None]
+    check(roots == ["root"], f"root bones {roots}, expected one named root")
+    check(len(arm.data.bones) == bones + 1, f"{len(arm.data.bones)} Blender bones for {bones} rig bones and the root")
+    posed = [b.name for b in arm.pose.bones if np.abs(np.array(b.matrix_basis) - np.eye(4)).max() > 1e-5]
+    check(not posed, f"bones imported with a pose: {posed[:5]}")
+    V, _ = trimlab.load(mesh)
+    file_mesh = V[:, [0, 2, 1]] * np.array([1.0, -1.0, 1.0])  # glTF's +Y up as Blender's +Z up
+    world = np.array(obj.matrix_world)
+    rest = evaluated_vertices(obj) @ world[:3, :3].T + world[:3, 3]
+    diagonal = np.linalg.norm(file_mesh.max(axis=0) - file_mesh.min(axis=0))
+    check(np.abs(rest - file_mesh).max() < 1e-5 * diagonal, "the imported rest pose moves the mesh")
+    for b in arm.pose.bones:
+        b.matrix_basis.identity()
+    bpy.context.view_layer.update()
+    cleared = evaluated_vertices(obj) @ world[:3, :3].T + world[:3, 3]
+    check(np.abs(cleared - file_mesh).max() < 1e-5 * diagonal, "clearing the pose moves the mesh")
+    arm.pose.bones["bone_0"].rotation_quaternion = (0.9, 0.3, 0.0, 0.0)
+    bpy.context.view_layer.update()
+    check(np.abs(evaluated_vertices(obj) - rest).max() > 1e-3 * diagonal, "posing a bone does not move the mesh")
 
 
 def main():

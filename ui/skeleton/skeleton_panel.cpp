@@ -1,6 +1,8 @@
 #include "ui/skeleton/skeleton_panel.h"
 
 #include "ui/common/run_cancel_row.h"
+#include "ui/common/undo_buttons.h"
+#include "ui/skeleton/skeleton_pose_command.h"
 
 #include "ui/common/heat_map_legend.h"
 #include "ui/common/job_presenter.h"
@@ -22,6 +24,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QListWidget>
 #include <QProgressBar>
@@ -33,7 +36,9 @@
 
 #include <glm/matrix.hpp>
 
+#include <algorithm>
 #include <filesystem>
+#include <iterator>
 
 namespace trimlab::ui {
 
@@ -237,6 +242,9 @@ QWidget* SkeletonPanel::createPoseGroup()
     m_resetPose = new QPushButton(tr("Reset pose"));
     m_resetPose->setObjectName(QStringLiteral("resetSkeletonPoseButton"));
     connect(m_resetPose, &QPushButton::clicked, this, &SkeletonPanel::resetPose);
+    m_poseUndoButtons =
+        new UndoButtons(QStringLiteral("undoSkeletonPoseButton"), QStringLiteral("redoSkeletonPoseButton"), this);
+    m_poseUndoButtons->setStack(&m_poseUndo);
     m_rootHere = new QPushButton(tr("Root here"));
     m_rootHere->setObjectName(QStringLiteral("skeletonRootHereButton"));
     m_rootHere->setToolTip(tr("Make the selected bone's head the root joint (selects the rig again)"));
@@ -247,6 +255,8 @@ QWidget* SkeletonPanel::createPoseGroup()
     auto* row = new QHBoxLayout;
     row->addWidget(m_poseTool);
     row->addWidget(m_resetPose);
+    row->addWidget(m_poseUndoButtons->undoButton());
+    row->addWidget(m_poseUndoButtons->redoButton());
     row->addWidget(m_rootHere);
     auto* layout = new QVBoxLayout(group);
     layout->addWidget(m_boneList);
@@ -291,7 +301,10 @@ void SkeletonPanel::setViewport(ViewportWidget* viewport)
     m_content = render::ContentPublisher(viewport->content(), render::ContentOwner::Skeleton);
     m_overlay = new SkeletonOverlay(viewport);
     m_tool = new SkeletonPoseTool(viewport, m_overlay, this);
-    connect(m_tool, &SkeletonPoseTool::boneSelected, this, &SkeletonPanel::selectBone);
+    connect(m_tool, &SkeletonPoseTool::boneSelected, this, [this](int bone) {
+        closeGesture(); // a press starts a drag: a step of its own
+        selectBone(bone);
+    });
     connect(m_tool, &SkeletonPoseTool::rotateRequested, this, &SkeletonPanel::rotateBone);
 }
 
@@ -317,6 +330,8 @@ void SkeletonPanel::setScene(std::shared_ptr<const LoadedScene> scene)
     }
     m_result.reset();
     m_pose = {};
+    m_poseUndo.clear();
+    closeGesture();
     m_posed.clear();
     m_shown.clear();
     m_colors.clear();
@@ -384,6 +399,8 @@ void SkeletonPanel::onSucceeded()
     m_result = m_job->takeResult();
     m_resultChoices = m_runChoices;
     m_pose = restPose(m_result->rig);
+    m_poseUndo.clear(); // the steps turned the bones of the previous rig
+    closeGesture();
     m_selectedBone = m_result->rig.bones.empty() ? -1 : 0;
     const SkeletonRig& rig = m_result->rig;
     onEnded(tr("Done: %1 joints, %2 bones (curve skeleton: %3 nodes) in %4 s%5.")
@@ -479,10 +496,14 @@ void SkeletonPanel::onBoneAnglesEdited()
 {
     if (!m_result || m_selectedBone < 0)
         return;
+    const auto* box = qobject_cast<const QDoubleSpinBox*>(sender());
+    const int axis = int(std::find(std::begin(m_angles), std::end(m_angles), box) - std::begin(m_angles));
     const glm::dvec3 degrees(m_angles[0]->value(), m_angles[1]->value(), m_angles[2]->value());
-    m_pose.rotations[std::size_t(m_selectedBone)] =
-        boneRotationFromLocalDegrees(m_result->rig, m_selectedBone, degrees);
-    updatePose();
+    SkeletonPose after = m_pose;
+    after.rotations[std::size_t(m_selectedBone)] = boneRotationFromLocalDegrees(m_result->rig, m_selectedBone, degrees);
+    const QString axisName = axis < 3 ? QString(QChar(u'x' + axis)) : QString();
+    pushPose(after, m_selectedBone, axis < 3 ? axis : kMouseGesture,
+             tr("%1 angle of bone %2").arg(axisName).arg(m_selectedBone));
 }
 
 void SkeletonPanel::rotateBone(int bone, const glm::dvec3& worldAxis, double radians)
@@ -491,20 +512,68 @@ void SkeletonPanel::rotateBone(int bone, const glm::dvec3& worldAxis, double rad
         return;
     // Directions go from world to object space with the inverse of the model's linear part.
     const glm::dvec3 axis = glm::inverse(glm::dmat3(m_model)) * worldAxis;
-    rotateBoneAboutAxis(m_result->rig, m_pose, bone, axis, radians);
-    if (bone != m_selectedBone)
-        selectBone(bone);
-    updateAngleBoxes();
-    updatePose();
+    SkeletonPose after = m_pose;
+    rotateBoneAboutAxis(m_result->rig, after, bone, axis, radians);
+    pushPose(after, bone, kMouseGesture, tr("turn bone %1").arg(bone));
 }
 
 void SkeletonPanel::resetPose()
 {
     if (!m_result)
         return;
-    m_pose = restPose(m_result->rig);
-    updateAngleBoxes();
+    const SkeletonPose rest = restPose(m_result->rig);
+    closeGesture();
+    if (m_pose.rotations == rest.rotations && m_pose.rootTranslation == rest.rootTranslation)
+        return; // nothing to reset: no step
+    m_poseUndo.push(new SkeletonPoseCommand(
+        tr("reset pose"), m_pose, rest, -1, -1, false,
+        [this](const SkeletonPose& pose, int bone, bool refresh) { applyPose(pose, bone, refresh); }));
+}
+
+void SkeletonPanel::pushPose(const SkeletonPose& after, int bone, int source, const QString& text)
+{
+    if (m_gestureSource != source || m_gestureBone != bone) {
+        m_gestureSource = source;
+        m_gestureBone = bone;
+        ++m_gesture;
+    }
+    m_poseUndo.push(new SkeletonPoseCommand(
+        text, m_pose, after, bone, m_gesture, source != kMouseGesture,
+        [this](const SkeletonPose& pose, int shownBone, bool refresh) { applyPose(pose, shownBone, refresh); }));
+}
+
+// The one place a pose change is shown: the commands call it on push, undo and redo.
+void SkeletonPanel::applyPose(const SkeletonPose& pose, int bone, bool refreshAngles)
+{
+    if (!m_result)
+        return;
+    m_pose = pose;
+    if (bone >= 0 && bone != m_selectedBone)
+        selectBone(bone);
+    else if (refreshAngles)
+        updateAngleBoxes();
     updatePose();
+}
+
+// Ctrl+Z / Ctrl+Shift+Z inside the panel undo and redo pose steps; claiming the shortcut
+// override keeps the window's Edit ▸ Undo on the same keys from taking them.
+bool SkeletonPanel::event(QEvent* event)
+{
+    if (event->type() == QEvent::ShortcutOverride && m_result &&
+        isUndoOrRedoKey(*static_cast<const QKeyEvent*>(event))) {
+        event->accept();
+        return true;
+    }
+    return QWidget::event(event);
+}
+
+void SkeletonPanel::keyPressEvent(QKeyEvent* event)
+{
+    if (m_result && applyUndoKey(m_poseUndo, *event)) {
+        closeGesture();
+        return;
+    }
+    QWidget::keyPressEvent(event);
 }
 
 // Skins the mesh to m_pose and shows it: the interactive path of every pose edit.

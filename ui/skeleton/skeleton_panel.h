@@ -26,6 +26,11 @@
 ///   the trim renderer shows the self-trimmed solid where the pose makes the surface
 ///   cross itself — under the dynamic rules too, whose chain the design history ends in
 ///   the pose shown. Reset pose goes back to the rest pose.
+/// - Posing undo: every pose change is a step on the panel's own undo stack
+///   (skeleton_pose_command.h; one mouse drag, or a run of edits of one angle box, is one
+///   step): Undo/Redo beside Reset pose, and Ctrl+Z / Ctrl+Shift+Z while the panel has
+///   focus (claimed there, so the window's Edit ▸ Undo of strokes is not reached). A new
+///   result or scene starts an empty stack.
 /// - Export rigged glTF… / Export skeleton JSON… (exportGltfRequested() /
 ///   exportJsonRequested(): the window asks for a file and calls exportRiggedGltf() /
 ///   exportSkeletonJson()).
@@ -45,6 +50,7 @@
 
 #include <QPointer>
 #include <QString>
+#include <QUndoStack>
 #include <QWidget>
 
 #include <glm/mat4x4.hpp>
@@ -72,6 +78,7 @@ class JobPresenter;
 class SkeletonOverlay;
 class SkeletonPoseTool;
 class SkeletonSettingsForm;
+class UndoButtons;
 class ViewportWidget;
 
 class SkeletonPanel : public QWidget {
@@ -105,6 +112,7 @@ public:
     void rotateBone(int bone, const glm::dvec3& worldAxis, double radians);
     void resetPose();
     [[nodiscard]] const SkeletonPose& pose() const { return m_pose; }
+    [[nodiscard]] QUndoStack* poseUndoStack() { return &m_poseUndo; }
     /// Object 0's positions as last handed to the viewport, and the colours (#V or empty).
     [[nodiscard]] const std::vector<glm::vec3>& shownPositions() const { return m_shown; }
     [[nodiscard]] const std::vector<std::uint32_t>& displayColors() const { return m_colors; }
@@ -134,6 +142,10 @@ signals:
     void exportJsonRequested();
     void poseToolToggled(bool on);
 
+protected:
+    bool event(QEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
 private:
     QWidget* createRunRow();
     QWidget* createViewGroup();
@@ -148,6 +160,11 @@ private:
     void showTimes();
     void showQuality();
     void updatePose();
+    /// Pushes the change from m_pose to `after` as one step of the gesture of `source`
+    /// (kMouseGesture or an angle box 0–2) on `bone`.
+    void pushPose(const SkeletonPose& after, int bone, int source, const QString& text);
+    void applyPose(const SkeletonPose& pose, int bone, bool refreshAngles);
+    void closeGesture() { m_gestureSource = kNoGesture; }
     void applyDisplay();
     void showPositions();
     void updateAngleBoxes();
@@ -169,6 +186,7 @@ private:
     QDoubleSpinBox* m_angles[3] = {nullptr, nullptr, nullptr};
     QCheckBox* m_poseTool = nullptr;
     QPushButton* m_resetPose = nullptr;
+    UndoButtons* m_poseUndoButtons = nullptr;
     QPushButton* m_rootHere = nullptr;
     QPushButton* m_exportGltf = nullptr;
     QPushButton* m_exportJson = nullptr;
@@ -190,6 +208,12 @@ private:
     SkeletonChoices m_resultChoices; ///< what m_result was made with
     SkeletonChoices m_runChoices;    ///< what the running job was started with
     SkeletonPose m_pose;
+    QUndoStack m_poseUndo;
+    static constexpr int kNoGesture = -2;
+    static constexpr int kMouseGesture = -1;
+    int m_gestureSource = kNoGesture; ///< what the open gesture edits: the mouse, an angle box or nothing
+    int m_gestureBone = -1;
+    int m_gesture = 0; ///< the open gesture's number (commands of one gesture merge)
     std::vector<glm::vec3> m_posed;
     std::vector<glm::vec3> m_shown;
     std::vector<std::uint32_t> m_colors;

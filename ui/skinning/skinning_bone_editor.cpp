@@ -1,5 +1,7 @@
 #include "ui/skinning/skinning_bone_editor.h"
 
+#include "ui/common/undo_buttons.h"
+
 #include <QDoubleSpinBox>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -7,7 +9,6 @@
 #include <QListWidget>
 #include <QPixmap>
 #include <QPushButton>
-#include <QUndoStack>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -89,25 +90,15 @@ QWidget* SkinningBoneEditor::createButtonRow()
     m_apply->setObjectName(QStringLiteral("applyBoneEditButton"));
     m_apply->setToolTip(tr("Give the bone this extra motion at the shown pose; later poses follow (eq. 4.18), "
                            "earlier poses do not change"));
-    m_undo = new QPushButton(tr("Undo"));
-    m_undo->setObjectName(QStringLiteral("undoSkinningEditButton"));
-    m_redo = new QPushButton(tr("Redo"));
-    m_redo->setObjectName(QStringLiteral("redoSkinningEditButton"));
+    m_undoButtons =
+        new UndoButtons(QStringLiteral("undoSkinningEditButton"), QStringLiteral("redoSkinningEditButton"), this);
     connect(m_apply, &QPushButton::clicked, this, &SkinningBoneEditor::apply);
-    connect(m_undo, &QPushButton::clicked, this, [this] {
-        if (m_stack)
-            m_stack->undo();
-    });
-    connect(m_redo, &QPushButton::clicked, this, [this] {
-        if (m_stack)
-            m_stack->redo();
-    });
     auto* row = new QWidget;
     auto* layout = new QHBoxLayout(row);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_apply);
-    layout->addWidget(m_undo);
-    layout->addWidget(m_redo);
+    layout->addWidget(m_undoButtons->undoButton());
+    layout->addWidget(m_undoButtons->redoButton());
     return row;
 }
 
@@ -143,16 +134,7 @@ void SkinningBoneEditor::setLengthScale(double length)
 
 void SkinningBoneEditor::setUndoStack(QUndoStack* stack)
 {
-    if (m_stack)
-        disconnect(m_stack, nullptr, this, nullptr);
-    m_stack = stack;
-    if (m_stack) {
-        connect(m_stack, &QUndoStack::canUndoChanged, this, &SkinningBoneEditor::updateButtons);
-        connect(m_stack, &QUndoStack::canRedoChanged, this, &SkinningBoneEditor::updateButtons);
-        connect(m_stack, &QUndoStack::undoTextChanged, this, &SkinningBoneEditor::updateButtons);
-        connect(m_stack, &QUndoStack::redoTextChanged, this, &SkinningBoneEditor::updateButtons);
-    }
-    updateButtons();
+    m_undoButtons->setStack(stack);
 }
 
 int SkinningBoneEditor::selectedBone() const
@@ -201,11 +183,6 @@ void SkinningBoneEditor::updateButtons()
         box->setEnabled(m_editable && haveBone);
     for (QDoubleSpinBox* box : m_translation)
         box->setEnabled(m_editable && haveBone);
-    m_undo->setEnabled(m_stack && m_stack->canUndo());
-    m_redo->setEnabled(m_stack && m_stack->canRedo());
-    m_undo->setToolTip(m_stack && m_stack->canUndo() ? tr("Undo %1 (Ctrl+Z)").arg(m_stack->undoText()) : QString());
-    m_redo->setToolTip(m_stack && m_stack->canRedo() ? tr("Redo %1 (Ctrl+Shift+Z)").arg(m_stack->redoText())
-                                                     : QString());
 }
 
 } // namespace trimlab::ui

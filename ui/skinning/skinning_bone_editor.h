@@ -10,7 +10,6 @@
 
 #include "core/animation/color_wheel.h"
 
-#include <QPointer>
 #include <QWidget>
 
 #include <span>
@@ -22,6 +21,8 @@ class QPushButton;
 class QUndoStack;
 
 namespace trimlab::ui {
+
+class UndoButtons;
 
 class SkinningBoneEditor : public QWidget {
     Q_OBJECT
@@ -58,9 +59,7 @@ private:
     QDoubleSpinBox* m_rotation[3] = {};
     QDoubleSpinBox* m_translation[3] = {};
     QPushButton* m_apply = nullptr;
-    QPushButton* m_undo = nullptr;
-    QPushButton* m_redo = nullptr;
-    QPointer<QUndoStack> m_stack;
+    UndoButtons* m_undoButtons = nullptr;
     bool m_editable = false;
 };
 

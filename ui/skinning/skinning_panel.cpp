@@ -6,6 +6,7 @@
 #include "ui/common/loaded_animation.h"
 #include "ui/common/parameter_form.h"
 #include "ui/common/run_cancel_row.h"
+#include "ui/common/undo_buttons.h"
 #include "ui/skinning/skinning_bone_editor.h"
 #include "ui/skinning/skinning_error_chart.h"
 #include "ui/skinning/skinning_session.h"
@@ -58,17 +59,6 @@ QString stageTimesText(const SkinningFitResult& result)
     parts << SkinningPanel::tr("error %1").arg(milliseconds(t.errorMs))
           << SkinningPanel::tr("total %1").arg(milliseconds(t.totalMs));
     return parts.join(QStringLiteral(" · "));
-}
-
-bool isUndoKey(const QKeyEvent& key)
-{
-    return key.matches(QKeySequence::Undo);
-}
-
-bool isRedoKey(const QKeyEvent& key)
-{
-    return key.matches(QKeySequence::Redo) ||
-           key.keyCombination() == QKeyCombination(Qt::ControlModifier | Qt::ShiftModifier, Qt::Key_Z);
 }
 
 } // namespace
@@ -538,7 +528,7 @@ bool SkinningPanel::event(QEvent* event)
 {
     if (event->type() == QEvent::ShortcutOverride && m_session) {
         const auto* key = static_cast<QKeyEvent*>(event);
-        if (isUndoKey(*key) || isRedoKey(*key)) {
+        if (isUndoOrRedoKey(*key)) {
             event->accept();
             return true;
         }
@@ -548,14 +538,8 @@ bool SkinningPanel::event(QEvent* event)
 
 void SkinningPanel::keyPressEvent(QKeyEvent* event)
 {
-    if (m_session && isUndoKey(*event)) {
-        m_session->undoStack()->undo();
+    if (m_session && applyUndoKey(*m_session->undoStack(), *event))
         return;
-    }
-    if (m_session && isRedoKey(*event)) {
-        m_session->undoStack()->redo();
-        return;
-    }
     QWidget::keyPressEvent(event);
 }
 

@@ -1,7 +1,9 @@
 // The pieces of core/io that the document readers and writers share: the document error's
 // three parts, typed JSON fields with their paths, the nesting guard, the up-front check
-// of output paths, and the glTF builder's views, accessors, scene and morph animation.
+// of output paths, lower-case extensions, and the glTF builder's views, accessors, scene
+// and morph animation.
 #include "core/io/document_file_error.h"
+#include "core/io/file_extension.h"
 #include "core/io/gltf_builder.h"
 #include "core/io/json_fields.h"
 #include "core/io/json_nesting.h"
@@ -51,6 +53,15 @@ class TestIoParts : public QObject {
     Q_OBJECT
 
 private slots:
+    void extensionsCompareInLowerCase()
+    {
+        QCOMPARE(io::lowercaseExtension("out/Mesh.GLB"), std::string(".glb"));
+        QCOMPARE(io::lowercaseExtension("a.b/Rig.GlTf"), std::string(".gltf"));
+        QCOMPARE(io::lowercaseExtension("scan.obj.GZ"), std::string(".gz")); // the last one only
+        QCOMPARE(io::lowercaseExtension("folder.d/README"), std::string());
+        QCOMPARE(io::lowercaseExtension(".hidden"), std::string()); // a dot file has no extension
+    }
+
     void documentErrorsReadFileWhereReason()
     {
         const SampleFileError inside("scene.trimlab", "frames[3].after", "CRC mismatch");

@@ -20,6 +20,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -135,11 +136,19 @@ void TestSkeletonExport::gltfReimportsWithTheSameJointsAndWeights()
     const GltfAnimatedGeometry geometry = readAnimatedGeometry(model, parents, "t.gltf");
     QCOMPARE(geometry.skins.size(), std::size_t(1));
     const GltfSkin& skin = geometry.skins[0];
-    QCOMPARE(skin.joints.size(), m_rig.bones.size());
-    // The hierarchy: joint b's node is a child of its parent bone's node, or of the
-    // skeleton root for bones that start at the root joint.
+    // One joint per bone, then the root joint; the root is the skin's skeleton and a
+    // scene root, and every ancestor of a joint is a joint (Blender turns the transform
+    // of a non-joint ancestor into a pose on the root bones).
+    QCOMPARE(skin.joints.size(), m_rig.bones.size() + 1);
     const int skeleton = model.skins[0].skeleton;
+    QCOMPARE(int(skin.joints.back()), skeleton);
     QCOMPARE(parents[std::size_t(skeleton)], -1);
+    for (const std::size_t joint : skin.joints)
+        for (int up = parents[joint]; up >= 0; up = parents[std::size_t(up)])
+            QVERIFY2(std::find(skin.joints.begin(), skin.joints.end(), std::size_t(up)) != skin.joints.end(),
+                     qPrintable(QString("node %1 above joint %2 is not a joint").arg(up).arg(joint)));
+    // The hierarchy: joint b's node is a child of its parent bone's node, or of the
+    // root joint for bones that start at the root joint.
     for (std::size_t b = 0; b < m_rig.bones.size(); ++b) {
         const int parentBone = m_rig.bones[b].parentBone;
         const int expected = parentBone < 0 ? skeleton : int(skin.joints[std::size_t(parentBone)]);
@@ -172,6 +181,12 @@ void TestSkeletonExport::gltfReimportsWithTheSameJointsAndWeights()
         for (const auto& [bone, w] : original)
             QVERIFY2(read.count(bone) && std::abs(read.at(bone) - w) < 1e-6, qPrintable(QString("vertex %1").arg(v)));
     }
+    // The file's pose is the bind pose: every joint matrix is the identity.
+    for (const glm::dmat4& m : jointMatrices(skin, world))
+        for (int c = 0; c < 4; ++c)
+            QVERIFY(glm::length(m[c] - glm::dmat4(1.0)[c]) < 1e-5);
+    const glm::dvec3 rootAt = glm::dvec3(world[std::size_t(skeleton)][3]);
+    QVERIFY(glm::length(rootAt - m_rig.joints[std::size_t(m_rig.root)]) < 1e-5);
     const std::vector<glm::dvec3> bind = geometry.pose(nodes, world);
     for (std::size_t v = 0; v < m_t.vertexCount(); ++v)
         QVERIFY(glm::length(bind[v] - glm::dvec3(m_t.positions[v])) < 1e-5);

@@ -52,7 +52,9 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <optional>
 #include <set>
+#include <utility>
 
 using namespace trimlab;
 using namespace trimlab::ui;
@@ -113,6 +115,18 @@ std::pair<int, std::size_t> mostWeightedLeaf(const SkeletonRig& rig, const BoneW
     return {bone, most};
 }
 
+/// Bone `bone` of the panel's overlay on screen, head and tail (nullopt when either is
+/// off the view).
+std::optional<std::pair<QPointF, QPointF>> screenBone(const SkeletonPanel& panel, const SkeletonRig& rig, int bone)
+{
+    const auto points = panel.overlay()->projectedJoints();
+    const auto& head = points[std::size_t(rig.bones[std::size_t(bone)].head)];
+    const auto& tail = points[std::size_t(rig.bones[std::size_t(bone)].tail)];
+    if (!head || !tail)
+        return std::nullopt;
+    return std::pair{*head, *tail};
+}
+
 } // namespace
 
 class TestSkeletonPanel : public QObject {
@@ -121,6 +135,7 @@ private slots:
     void initTestCase();
     void projectionFollowsTheCamera();
     void runStagesPoseAndReset();
+    void poseStepsUndoAndRedo();
     void posingFollowsTheDynamicRules();
     void cancelDuringRunChangesNothing();
     void openMeshIsRefusedInThePanel();
@@ -354,13 +369,12 @@ void TestSkeletonPanel::runStagesPoseAndReset()
     auto* poseTool = child<QCheckBox>(panel, "skeletonPoseToolCheckBox");
     poseTool->setChecked(true);
     QVERIFY(!window->designWorkspace()->brushAction()->isChecked());
-    const auto points = panel->overlay()->projectedJoints();
-    const auto& head = points[std::size_t(rig.bones[std::size_t(bone)].head)];
-    const auto& tail = points[std::size_t(rig.bones[std::size_t(bone)].tail)];
-    QVERIFY(head && tail);
-    const QPoint grab = ((*head + *tail) * 0.5).toPoint();
-    const QPointF along = *tail - *head;
-    const QPoint to = (*head + QPointF(-along.y(), along.x())).toPoint(); // a quarter turn
+    const auto onScreen = screenBone(*panel, rig, bone);
+    QVERIFY(onScreen);
+    const auto& [head, tail] = *onScreen;
+    const QPoint grab = ((head + tail) * 0.5).toPoint();
+    const QPointF along = tail - head;
+    const QPoint to = (head + QPointF(-along.y(), along.x())).toPoint(); // a quarter turn
     // The overlay paints the selected bone in its highlight colour over the GL frame.
     {
         const QImage shot = viewport->grab().toImage().convertToFormat(QImage::Format_RGB32);
@@ -372,16 +386,16 @@ void TestSkeletonPanel::runStagesPoseAndReset()
                 QDir(qEnvironmentVariable("TRIMLAB_TEST_OUTPUT_DIR")).filePath(QStringLiteral("skeleton-frame.png")));
         }
         const double ratio = shot.devicePixelRatio();
-        const QRectF box = QRectF(*head, *tail).normalized().adjusted(-2, -2, 2, 2);
+        const QRectF box = QRectF(head, tail).normalized().adjusted(-2, -2, 2, 2);
         int highlighted = 0;
         for (int y = int(box.top() * ratio); y <= int(box.bottom() * ratio); ++y)
             for (int x = int(box.left() * ratio); x <= int(box.right() * ratio); ++x) {
                 const QColor c = shot.valid(x, y) ? shot.pixelColor(x, y) : QColor();
                 highlighted += c.red() > 200 && c.green() > 150 && c.green() < 230 && c.blue() < 80 ? 1 : 0;
             }
-        const QPoint mid = ((*head + *tail) * 0.5 * ratio).toPoint();
+        const QPoint mid = ((head + tail) * 0.5 * ratio).toPoint();
         qInfo("overlay: ratio %g, shot %dx%d, bone (%.1f,%.1f)-(%.1f,%.1f), mid colour %s, %d highlighted pixels",
-              ratio, shot.width(), shot.height(), head->x(), head->y(), tail->x(), tail->y(),
+              ratio, shot.width(), shot.height(), head.x(), head.y(), tail.x(), tail.y(),
               qPrintable(shot.pixelColor(mid).name()), highlighted);
         QVERIFY2(highlighted > 0, "no highlighted bone pixel in the viewport");
     }
@@ -393,8 +407,8 @@ void TestSkeletonPanel::runStagesPoseAndReset()
     QTest::mouseRelease(viewport, Qt::LeftButton, Qt::NoModifier, to);
     // The turn is the angle the cursor swept about the projected head (about a quarter
     // turn; the integer mouse positions make it a little different).
-    const double swept = std::remainder(std::atan2(to.y() - head->y(), to.x() - head->x()) -
-                                            std::atan2(grab.y() - head->y(), grab.x() - head->x()),
+    const double swept = std::remainder(std::atan2(to.y() - head.y(), to.x() - head.x()) -
+                                            std::atan2(grab.y() - head.y(), grab.x() - head.x()),
                                         2.0 * std::numbers::pi);
     const glm::dquat dragged = panel->pose().rotations[std::size_t(bone)];
     qInfo("drag: bone %.1f px long on screen, swept %.2f°, rotation w %.6f", std::hypot(along.x(), along.y()),
@@ -428,6 +442,102 @@ void TestSkeletonPanel::runStagesPoseAndReset()
         QCOMPARE(child<QDoubleSpinBox>(panel, name)->value(), 0.0);
         QVERIFY(!child<QDoubleSpinBox>(panel, name)->isEnabled());
     }
+}
+
+// Posing is undoable step by step: typing 40 into one angle box (two value changes) is
+// one step, another box a second, a drag in the view (many moves) a third, Reset pose a
+// fourth. Undo (the button, then Ctrl+Z in the panel) walks back through exactly those
+// poses to the rest mesh, bit for bit, selecting the bone each step turned; Ctrl+Shift+Z
+// walks forward again. A new rig starts with nothing to undo.
+void TestSkeletonPanel::poseStepsUndoAndRedo()
+{
+    auto window = extractedStar(QStringLiteral("undo"));
+    QVERIFY(window);
+    SkeletonPanel* panel = window->skeletonWorkspace()->panel();
+    ViewportWidget* viewport = window->viewport();
+    const SkeletonRig& rig = panel->result()->rig;
+    auto* undo = child<QPushButton>(panel, "undoSkeletonPoseButton");
+    auto* redo = child<QPushButton>(panel, "redoSkeletonPoseButton");
+    auto* bones = child<QListWidget>(panel, "skeletonBoneList");
+    QVERIFY(!undo->isEnabled() && !redo->isEnabled());
+    const std::vector<glm::vec3> rest = panel->shownPositions();
+    const auto [bone, most] = mostWeightedLeaf(rig, panel->result()->weights->weights());
+    QVERIFY(bone >= 0 && most > 0);
+    const int other = bone == 0 ? 1 : 0;
+
+    std::vector<std::vector<glm::vec3>> shown{rest};
+    std::vector<SkeletonPose> poses{panel->pose()};
+    auto record = [&] {
+        shown.push_back(panel->shownPositions());
+        poses.push_back(panel->pose());
+    };
+    bones->setCurrentRow(bone);
+    typeInto(child<QDoubleSpinBox>(panel, "skeletonAngleXSpinBox"), 40.0);
+    record();
+    bones->setCurrentRow(other);
+    typeInto(child<QDoubleSpinBox>(panel, "skeletonAngleZSpinBox"), -25.0);
+    record();
+    QCOMPARE(panel->poseUndoStack()->count(), 2);
+    QVERIFY(undo->isEnabled() && !redo->isEnabled());
+
+    child<QCheckBox>(panel, "skeletonPoseToolCheckBox")->setChecked(true);
+    const auto onScreen = screenBone(*panel, rig, bone);
+    QVERIFY(onScreen);
+    const auto& [head, tail] = *onScreen;
+    const QPoint grab = ((head + tail) * 0.5).toPoint();
+    const QPointF along = tail - head;
+    QTest::mousePress(viewport, Qt::LeftButton, Qt::NoModifier, grab);
+    for (const double t : {0.3, 0.6, 1.0}) {
+        const QPoint to = (head + along * (1.0 - t) + QPointF(-along.y(), along.x()) * t).toPoint();
+        QMouseEvent move(QEvent::MouseMove, QPointF(to), viewport->mapToGlobal(QPointF(to)), Qt::NoButton,
+                         Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(viewport, &move);
+    }
+    QTest::mouseRelease(viewport, Qt::LeftButton, Qt::NoModifier, (head + QPointF(-along.y(), along.x())).toPoint());
+    child<QCheckBox>(panel, "skeletonPoseToolCheckBox")->setChecked(false);
+    QVERIFY(panel->pose().rotations != poses.back().rotations);
+    record();
+    QCOMPARE(panel->poseUndoStack()->count(), 3); // the drag is one step
+    QTest::mouseClick(child<QPushButton>(panel, "resetSkeletonPoseButton"), Qt::LeftButton);
+    QVERIFY(panel->shownPositions() == rest);
+    record();
+    QCOMPARE(panel->poseUndoStack()->count(), 4);
+    QTest::mouseClick(child<QPushButton>(panel, "resetSkeletonPoseButton"), Qt::LeftButton);
+    QCOMPARE(panel->poseUndoStack()->count(), 4); // at rest already: no step
+
+    // Back: the button once, then Ctrl+Z in the panel.
+    const int turned[4] = {bone, other, bone, -1}; // the bone each step turned (none: reset)
+    for (int step = 3; step >= 0; --step) {
+        if (step == 3)
+            QTest::mouseClick(undo, Qt::LeftButton);
+        else
+            QTest::keyClick(bones, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY2(panel->shownPositions() == shown[std::size_t(step)], qPrintable(QString("undo to %1").arg(step)));
+        QVERIFY(panel->pose().rotations == poses[std::size_t(step)].rotations);
+        if (turned[step] >= 0)
+            QCOMPARE(panel->selectedBone(), turned[step]);
+    }
+    QVERIFY(!undo->isEnabled() && redo->isEnabled());
+    QCOMPARE(child<QDoubleSpinBox>(panel, "skeletonAngleXSpinBox")->value(), 0.0);
+    // Forward again.
+    for (int step = 1; step <= 4; ++step) {
+        QTest::keyClick(bones, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QVERIFY2(panel->shownPositions() == shown[std::size_t(step)], qPrintable(QString("redo to %1").arg(step)));
+    }
+    QVERIFY(undo->isEnabled() && !redo->isEnabled());
+    // Undoing the reset and the drag shows the typed angle of the first step again.
+    QTest::mouseClick(undo, Qt::LeftButton);
+    QTest::mouseClick(undo, Qt::LeftButton);
+    QVERIFY(panel->shownPositions() == shown[2]);
+    bones->setCurrentRow(bone);
+    QCOMPARE(child<QDoubleSpinBox>(panel, "skeletonAngleXSpinBox")->value(), 40.0);
+
+    // A new rig: nothing to undo.
+    QSignalSpy finished(panel->task(), &BackgroundJobBase::finished);
+    child<QSpinBox>(panel, "skeletonNodesSpinBox")->setValue(25);
+    QVERIFY(QTest::qWaitFor([&] { return !finished.isEmpty(); }, kWaitMs));
+    QCOMPARE(panel->poseUndoStack()->count(), 0);
+    QVERIFY(!undo->isEnabled() && !redo->isEnabled());
 }
 
 // Posing under the dynamic rules (a classification that persists between sessions)
