@@ -13,8 +13,8 @@
 #include "core/animation/animation_loader.h"
 #include "core/animation/pose_history_plan.h"
 #include "core/animation/pose_sets.h"
+#include "core/catalog/pose_scene.h"
 #include "core/catalog/scene_source.h"
-#include "core/mesh/mesh_validation.h"
 #include "core/timeline/frame_chain.h"
 #include "core/trim/dynamic_frame_scene.h"
 #include "core/trim/dynamic_reference_renderer.h"
@@ -402,17 +402,6 @@ bool adoptSavedSettings(const LoadedScene& loaded, RenderOptions& options)
     return true;
 }
 
-// One pose of a mesh animation as a scene of one object, validated like a loaded mesh.
-LoadedScene poseScene(const MeshAnimation& animation, int pose, const std::string& name)
-{
-    LoadedScene loaded;
-    TriangleMesh mesh = animation.poseMesh(std::size_t(pose));
-    loaded.reports.push_back(validateMesh(mesh));
-    loaded.displayName = name + " pose " + std::to_string(pose);
-    loaded.scene.objects.push_back({name, std::move(mesh), glm::dmat4(1.0)});
-    return loaded;
-}
-
 // "confluent against the previous pose (alternating-border on the rest pose 0)", or the
 // static settings.
 QString poseClassificationText(const RenderOptions& options, const MeshAnimation& animation, int pose)
@@ -482,7 +471,7 @@ int renderPoses(RenderOptions options)
     }
     options.ruleGiven = options.ruleGiven || options.poseRule.has_value(); // a dynamic rule cannot render untrimmed
     for (int pose = selection.first; pose <= selection.last; ++pose) {
-        poses.push_back(poseScene(animation, pose, name));
+        poses.push_back(animationPoseScene(animation, std::size_t(pose), name, name + " pose " + std::to_string(pose)));
         bounds.extend(poses.back().scene.worldBounds());
         if (!resolveTrimAvailability(poses.back(), options))
             return 1;

@@ -3,11 +3,16 @@
 #include "app/cli_messages.h"
 #include "app/output_paths.h"
 #include "app/parameter_options.h"
+#include "app/pose_frames.h"
 #include "app/scene_composition.h"
 #include "app/terminal_progress.h"
 
+#include "core/animation/animation_loader.h"
 #include "core/catalog/scene_source.h"
 #include "core/mesh/mesh_export.h"
+#include "core/mesh/mesh_sequence_gltf.h"
+#include "core/skinning/skinning_parameters.h"
+#include "core/solid/trimmed_animation.h"
 #include "core/solid/trimmed_solid.h"
 #include "core/trim/clip_set.h"
 #include "core/trim/csg_expression.h"
@@ -17,6 +22,8 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
+#include <cstdio>
+#include <filesystem>
 #include <variant>
 
 namespace trimlab::app {
@@ -31,6 +38,8 @@ struct TrimOptions {
     bool csgGiven = false;
     bool closeHoles = false;
     QString output;
+    std::optional<PoseSelection> poses; ///< the source is an animation: trim these poses
+    double fps = 24.0;                  ///< of the glTF sequence of --poses
 };
 
 void addTrimOptions(QCommandLineParser& parser)
@@ -59,11 +68,56 @@ void addTrimOptions(QCommandLineParser& parser)
              .arg(kMaxClipPlanes),
          "a,b,c,d"},
         {{"o", "output"},
-         QStringLiteral("The mesh to write: %1.").arg(QString::fromStdString(meshExportFormatsText())),
+         QStringLiteral("The mesh to write: %1. With --poses, one file per pose with the pose number in its name "
+                        "as %d or %04d (trimmed_%04d.obj), or one .gltf/.glb without it that plays the poses in turn.")
+             .arg(QString::fromStdString(meshExportFormatsText())),
          "file"},
+        {"pose",
+         "The source is a mesh animation (a folder or numbered pattern of meshes, or a glTF file): export its pose "
+         "N (0 = the first) trimmed by --rule.",
+         "N"},
+        {"poses",
+         "The source is a mesh animation: export poses A to B, each trimmed on its own by --rule (the dynamic rules "
+         "have no exact export).",
+         "A:B"},
     });
+    parser.addOption(commandLineOption(skinning_parameters::kExportFps));
     parser.addOption(commandLineOption(hole_closing_parameters::kCloseHoles));
     parser.addHelpOption();
+}
+
+bool isGltfPath(const QString& path)
+{
+    return path.endsWith(QLatin1String(".gltf"), Qt::CaseInsensitive) ||
+           path.endsWith(QLatin1String(".glb"), Qt::CaseInsensitive);
+}
+
+// --pose / --poses: one animation source, one object, and -o a pose-numbered name or one
+// glTF for the whole sequence.
+std::optional<QString> parsePoseOptions(const QCommandLineParser& parser, TrimOptions& options)
+{
+    if (auto e = parsePoseSelection(parser.value("pose"), parser.value("poses"), options.poses))
+        return e;
+    if (auto e = parseParameter(parser, skinning_parameters::kExportFps, options.fps))
+        return e;
+    if (!options.poses) {
+        if (parser.isSet("fps"))
+            return QStringLiteral("--fps is the rate of the glTF sequence of --poses; give --poses A:B");
+        return std::nullopt;
+    }
+    if (options.sources.size() != 1)
+        return QStringLiteral("--pose and --poses export one mesh animation source (a folder, a numbered pattern or "
+                              "a glTF file), not several sources");
+    if (options.csgGiven || !options.transforms.empty() || !parser.values("object-rule").isEmpty())
+        return QStringLiteral("--csg, --object-rule and --object-transform combine several objects; an animation is "
+                              "one object");
+    if (options.poses->sequence && !hasPoseNumber(options.output) && !isGltfPath(options.output))
+        return QStringLiteral("--poses writes one file per pose: -o '%1' needs the pose number in its name as %d or "
+                              "%04d (trimmed_%04d.obj), or a .gltf/.glb name for one file that plays the sequence")
+            .arg(options.output);
+    if (!options.poses->sequence && hasPoseNumber(options.output))
+        options.output = posePath(options.output, options.poses->first);
+    return std::nullopt;
 }
 
 std::variant<TrimOptions, QString> parseTrimOptions(const QStringList& arguments, QString* help)
@@ -111,6 +165,8 @@ std::variant<TrimOptions, QString> parseTrimOptions(const QStringList& arguments
         return *e;
     if (auto e = parseClipOptions(parser, options.trim))
         return *e;
+    if (auto e = parsePoseOptions(parser, options))
+        return *e;
     return options;
 }
 
@@ -132,6 +188,17 @@ QString classificationText(const TrimSettings& trim)
         text += planes == 1 ? QStringLiteral(", cut by 1 clipping plane")
                             : QStringLiteral(", cut by %1 clipping planes").arg(planes);
     return text;
+}
+
+QString solidLine(const QString& what, const QString& output, const TrimmedSolid& solid)
+{
+    const TrimmedSolidStats& s = solid.stats;
+    return QStringLiteral("%1 -> %2: %3 triangles, %4 vertices, %5; volume %6")
+        .arg(what, output)
+        .arg(solid.mesh.triangles.size())
+        .arg(solid.mesh.positions.size())
+        .arg(s.openEdges == 0 ? QStringLiteral("closed") : QStringLiteral("%1 open edges").arg(s.openEdges))
+        .arg(s.signedVolume, 0, 'g', 8);
 }
 
 int exportTrimmedSolid(TrimOptions options)
@@ -157,12 +224,9 @@ int exportTrimmedSolid(TrimOptions options)
     const TrimmedSolidStats& s = solid.stats;
     const std::string comment = loaded.displayName + " trimmed by " + classificationText(options.trim).toStdString();
     saveTriangleMesh(options.output.toStdString(), solid.mesh, comment);
-    printLine(QStringLiteral("%1: %2 -> %3: %4 triangles, %5 vertices, %6; volume %7")
-                  .arg(QString::fromStdString(loaded.displayName), classificationText(options.trim), options.output)
-                  .arg(solid.mesh.triangles.size())
-                  .arg(solid.mesh.positions.size())
-                  .arg(s.openEdges == 0 ? QStringLiteral("closed") : QStringLiteral("%1 open edges").arg(s.openEdges))
-                  .arg(s.signedVolume, 0, 'g', 8));
+    printLine(solidLine(
+        QStringLiteral("%1: %2").arg(QString::fromStdString(loaded.displayName), classificationText(options.trim)),
+        options.output, solid));
     printLine(QStringLiteral("arrangement: %1 input triangles (%2 degenerate dropped) refined into %3 faces (%4 "
                              "cancelled), %5 connected pieces; refine %6 ms, windings %7 ms")
                   .arg(s.inputTriangles)
@@ -188,6 +252,68 @@ int exportTrimmedSolid(TrimOptions options)
     return 0;
 }
 
+// --pose / --poses: each pose of the animation trimmed on its own, written as it is done
+// (one file per pose), or gathered into one glTF that plays them.
+int exportTrimmedPoses(const TrimOptions& options)
+{
+    const std::string& source = options.sources.front();
+    AnimationLoadOptions load;
+    load.closeHoles = options.closeHoles;
+    HoleClosing closing;
+    const MeshAnimation animation = loadAnimation(source, load, {}, &closing);
+    const std::string name = std::filesystem::path(source).filename().string();
+    if (options.closeHoles)
+        noteHolesClosed(name, closing);
+    const PoseSelection& selection = *options.poses;
+    if (std::size_t(selection.last) >= animation.poseCount()) {
+        printError(QStringLiteral("%1 has %2 poses (0 to %3); pose %4 does not exist")
+                       .arg(QString::fromStdString(source))
+                       .arg(animation.poseCount())
+                       .arg(animation.poseCount() - 1)
+                       .arg(selection.last));
+        return 2;
+    }
+    const bool oneFile = !selection.sequence || !hasPoseNumber(options.output);
+    const QString classification = classificationText(options.trim);
+    std::vector<SequenceMesh> gathered;
+    double totalVolume = 0.0;
+    try {
+        trimAnimationPoses(
+            animation, std::size_t(selection.first), std::size_t(selection.last), options.trim,
+            [&](std::size_t pose, const TrimmedSolid& solid) {
+                const std::string what = name + " pose " + std::to_string(pose);
+                totalVolume += solid.stats.signedVolume;
+                if (oneFile && selection.sequence) {
+                    printLine(solidLine(QString::fromStdString(what), options.output, solid));
+                    char label[32];
+                    std::snprintf(label, sizeof label, "pose_%04zu", pose);
+                    gathered.push_back({label, solid.mesh});
+                    return;
+                }
+                const QString path = selection.sequence ? posePath(options.output, int(pose)) : options.output;
+                saveTriangleMesh(path.toStdString(), solid.mesh, what + " trimmed by " + classification.toStdString());
+                printLine(solidLine(QString::fromStdString(what), path, solid));
+            },
+            terminalProgress());
+    } catch (const std::invalid_argument& e) {
+        printError(QStringLiteral("%1: %2").arg(QString::fromStdString(source), QString::fromUtf8(e.what())));
+        return 1;
+    }
+    if (oneFile && selection.sequence) {
+        saveMeshSequenceGltf(options.output.toStdString(), gathered, 1.0 / options.fps,
+                             name + " trimmed by " + classification.toStdString());
+        printLine(QStringLiteral("wrote %1: %2 poses, one node each, shown in turn at %3 fps")
+                      .arg(options.output)
+                      .arg(gathered.size())
+                      .arg(options.fps));
+    }
+    printLine(QStringLiteral("%1 poses trimmed by %2; total volume %3")
+                  .arg(selection.last - selection.first + 1)
+                  .arg(classification)
+                  .arg(totalVolume, 0, 'g', 8));
+    return 0;
+}
+
 } // namespace
 
 int runTrimVerb(int argc, char** argv, const QStringList& arguments)
@@ -198,7 +324,8 @@ int runTrimVerb(int argc, char** argv, const QStringList& arguments)
     if (const std::optional<int> exitCode = exitIfNotParsed(parsed, help))
         return *exitCode;
     const TrimOptions& options = std::get<TrimOptions>(parsed);
-    return runGuarded([&] { return exportTrimmedSolid(options); }, options.sources);
+    return runGuarded([&] { return options.poses ? exportTrimmedPoses(options) : exportTrimmedSolid(options); },
+                      options.sources);
 }
 
 } // namespace trimlab::app

@@ -1,24 +1,16 @@
 #include "core/animation/segmentation_record.h"
 
+#include "core/io/file_extension.h"
 #include "core/animation/segment_coloring.h"
 #include "core/animation/segmentation_gltf.h"
 #include "core/animation/vertex_areas.h"
 
 #include <algorithm>
-#include <cctype>
 #include <stdexcept>
 
 namespace trimlab {
 
 namespace {
-
-std::string lowerExtension(const std::filesystem::path& path)
-{
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return extension;
-}
 
 void fillCounts(SegmentationRecord& record, const AnimationSegmenter& segmenter)
 {
@@ -39,7 +31,7 @@ void fillCounts(SegmentationRecord& record, const AnimationSegmenter& segmenter)
 
 std::optional<SegmentationFileFormat> segmentationFileFormat(const std::filesystem::path& path)
 {
-    const std::string extension = lowerExtension(path);
+    const std::string extension = io::lowercaseExtension(path);
     if (extension == ".json")
         return SegmentationFileFormat::Json;
     if (extension == ".csv")

@@ -1,5 +1,6 @@
 #include "core/mesh/mesh_export.h"
 
+#include "core/io/file_extension.h"
 #include "core/io/atomic_write.h"
 #include "core/io/gltf_builder.h"
 #include "core/mesh/obj_writer.h"
@@ -8,7 +9,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <sstream>
@@ -19,13 +19,6 @@ namespace trimlab {
 namespace {
 
 static_assert(std::endian::native == std::endian::little, "the binary writers assume a little-endian machine");
-
-std::string lowerExtension(const std::filesystem::path& path)
-{
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 template <class T>
 void append(std::string& out, const T& value)
@@ -108,7 +101,7 @@ std::string gltfBytes(const TriangleMesh& mesh, std::string_view comment, bool b
 
 bool isMeshExportPath(const std::filesystem::path& path)
 {
-    const std::string ext = lowerExtension(path);
+    const std::string ext = io::lowercaseExtension(path);
     return ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".gltf" || ext == ".glb";
 }
 
@@ -119,7 +112,7 @@ std::string meshExportFormatsText()
 
 void saveTriangleMesh(const std::filesystem::path& path, const TriangleMesh& mesh, std::string_view comment)
 {
-    const std::string ext = lowerExtension(path);
+    const std::string ext = io::lowercaseExtension(path);
     if (ext == ".obj") {
         saveMeshObj(path, mesh, {}, comment);
         return;

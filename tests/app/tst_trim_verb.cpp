@@ -2,12 +2,17 @@
 // from several sources (placed, CSG) written in every format, read back by TrimLab's own
 // loaders as a closed, consistently oriented surface with the volume the verb printed;
 // the glTF passes the Khronos validator; bad arguments exit 2, open surfaces 1, unless
-// --close-holes closes them (for `trimlab info` too); --clip cuts the solid and caps it.
+// --close-holes closes them (for `trimlab info` too); --clip cuts the solid and caps it;
+// --poses exports an animation pose by pose, as files or as one glTF that plays them.
 #include "gltf_validation.h"
+#include "gltf_values.h"
 #include "plain_obj.h"
 #include "run_trimlab.h"
+#include "test_paths.h"
 
 #include "core/catalog/scene_source.h"
+#include "core/io/file_bytes.h"
+#include "core/mesh/gltf_document.h"
 #include "core/mesh/mesh_validation.h"
 #include "core/mesh/hole_fans.h"
 #include "core/scene/shape_generators.h"
@@ -42,6 +47,10 @@ private slots:
     void severalSourcesWithCsg();
     void closeHolesTrimsAnOpenMesh();
     void clipCutsAndCaps();
+    void posesExportEachPoseTrimmed();
+    void posesAsOneGltfSequence();
+    void posesRefuseBadArguments_data();
+    void posesRefuseBadArguments();
 
 private:
     QTemporaryDir m_dir;
@@ -192,6 +201,137 @@ void TestTrimVerb::clipCutsAndCaps()
         QVERIFY2(report.trimmable(), report.trimUnavailableReason().c_str());
     }
     TRIMLAB_VERIFY_ONE_LINE_ERROR(runTrimlab({"trim", "demo:sphere", "--clip", "0,0,0,1", "-o", front}), 2, "--clip");
+}
+
+namespace {
+
+const QString kFoldingBox = QString::fromStdString(test::testDataPath("animations/folding_box").string());
+
+// The "... -> PATH: ...; volume V" line of pose `pose` in the verb's output.
+double poseVolume(const QString& out, int pose)
+{
+    const QRegularExpression line(QStringLiteral("pose %1 -> [^\n]*volume ([-0-9.e+]+)").arg(pose));
+    const QRegularExpressionMatch m = line.match(out);
+    return m.hasMatch() ? m.captured(1).toDouble() : std::nan("");
+}
+
+} // namespace
+
+// The folding box animation: poses 0 and 1 are simple, pose 2 folds through itself. Each
+// pose's file is the trim of that pose alone (the same volume as `trim` of the pose's own
+// mesh file), closed, and pose 2's is smaller than its self-crossing input.
+void TestTrimVerb::posesExportEachPoseTrimmed()
+{
+    const QString pattern = m_dir.filePath("box_%04d.obj");
+    const Run run = runTrimlab({"trim", kFoldingBox, "--poses", "0:2", "-o", pattern});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains("3 poses trimmed by alternating-border"), qPrintable(run.out));
+    for (int pose = 0; pose <= 2; ++pose) {
+        const QString path = m_dir.filePath(QStringLiteral("box_%1.obj").arg(pose, 4, 10, QLatin1Char('0')));
+        QVERIFY2(QFile::exists(path), qPrintable(path));
+        const MeshValidationReport& written = loadScene(path.toStdString()).reports.front();
+        QVERIFY2(written.trimmable(), written.trimUnavailableReason().c_str());
+        const QString own = m_dir.filePath(QStringLiteral("own_%1.obj").arg(pose));
+        const QString input = QStringLiteral("%1/pose_%2.obj").arg(kFoldingBox).arg(pose);
+        const Run single = runTrimlab({"trim", input, "-o", own});
+        QVERIFY2(single.exitCode == 0, qPrintable(single.err));
+        const double expected = printedVolume(single.out);
+        QVERIFY2(std::abs(poseVolume(run.out, pose) - expected) <= 1e-9 * expected, qPrintable(run.out));
+        QVERIFY2(std::abs(written.signedVolume - expected) <= 1e-5 * expected,
+                 qPrintable(QStringLiteral("pose %1: %2 vs %3").arg(pose).arg(written.signedVolume).arg(expected)));
+        if (pose == 2) {
+            const double crossing = loadScene(input.toStdString()).reports.front().signedVolume;
+            QVERIFY2(expected < crossing - 0.1, qPrintable(QStringLiteral("%1 vs %2").arg(expected).arg(crossing)));
+        }
+    }
+    // --pose N writes the one pose, to a plain name or to the pattern's name for N.
+    const Run one = runTrimlab({"trim", kFoldingBox, "--pose", "2", "-o", m_dir.filePath("one_%d.stl")});
+    QVERIFY2(one.exitCode == 0, qPrintable(one.err));
+    QVERIFY(QFile::exists(m_dir.filePath("one_2.stl")));
+    QVERIFY2(std::abs(poseVolume(one.out, 2) - poseVolume(run.out, 2)) <= 1e-12, qPrintable(one.out));
+}
+
+// One .glb for the sequence: it validates, holds one node per pose under "sequence" with
+// that pose's trimmed triangles, and an animation that shows node k alone from k/fps on
+// (STEP scale keys).
+void TestTrimVerb::posesAsOneGltfSequence()
+{
+    const QString out = m_dir.filePath("box-sequence.glb");
+    const Run run = runTrimlab({"trim", kFoldingBox, "--poses", "0:2", "--fps", "10", "-o", out});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains("3 poses, one node each, shown in turn at 10 fps"), qPrintable(run.out));
+    test::requireValidGltf(out.toStdString());
+    QVERIFY(!QTest::currentTestFailed());
+    const tinygltf::Model model =
+        parseGltfDocument(io::readFileBytes(out.toStdString(), std::size_t(1) << 30), "box-sequence.glb", {});
+    QCOMPARE(model.scenes.size(), std::size_t(1));
+    const tinygltf::Node& root = model.nodes[std::size_t(model.scenes[0].nodes.at(0))];
+    QCOMPARE(root.name, std::string("sequence"));
+    QCOMPARE(root.children.size(), std::size_t(3));
+    QCOMPARE(model.animations.size(), std::size_t(1));
+    const tinygltf::Animation& animation = model.animations[0];
+    QCOMPARE(animation.channels.size(), std::size_t(3));
+    for (int k = 0; k < 3; ++k) {
+        const int node = root.children[std::size_t(k)];
+        const tinygltf::Node& child = model.nodes[std::size_t(node)];
+        QCOMPARE(child.name, QStringLiteral("pose_%1").arg(k, 4, 10, QLatin1Char('0')).toStdString());
+        const QString single = m_dir.filePath(QStringLiteral("seq_%1.obj").arg(k));
+        QVERIFY(runTrimlab({"trim", kFoldingBox, "--pose", QString::number(k), "-o", single}).exitCode == 0);
+        const std::size_t triangles = loadScene(single.toStdString()).scene.objects.front().mesh.triangles.size();
+        const tinygltf::Primitive& primitive = model.meshes[std::size_t(child.mesh)].primitives.at(0);
+        QCOMPARE(model.accessors[std::size_t(primitive.indices)].count, 3 * triangles);
+        QCOMPARE(child.scale.empty(), k == 0); // only the first pose shows without the animation
+        const auto channel = std::find_if(animation.channels.begin(), animation.channels.end(),
+                                          [&](const tinygltf::AnimationChannel& c) { return c.target_node == node; });
+        QVERIFY(channel != animation.channels.end());
+        QCOMPARE(channel->target_path, std::string("scale"));
+        const tinygltf::AnimationSampler& sampler = animation.samplers[std::size_t(channel->sampler)];
+        QCOMPARE(sampler.interpolation, std::string("STEP"));
+        // STEP: the scale at time t is the value of the last key at or before t. At pose j's
+        // time j/fps node k has scale 1 exactly when j = k.
+        const std::vector<float> times = test::gltfFloats(model, sampler.input);
+        const std::vector<float> scales = test::gltfFloats(model, sampler.output);
+        QCOMPARE(scales.size(), 3 * times.size());
+        for (int j = 0; j < 3; ++j) {
+            const float t = float(j) / 10.0f;
+            std::size_t key = 0;
+            while (key + 1 < times.size() && times[key + 1] <= t)
+                ++key;
+            QVERIFY(times[0] <= t);
+            QCOMPARE(scales[3 * key], j == k ? 1.0f : 0.0f);
+        }
+    }
+}
+
+void TestTrimVerb::posesRefuseBadArguments_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("message");
+    const QString bar = QString::fromStdString(test::testDataPath("animations/bar").string());
+    QTest::newRow("no pose number") << QStringList{"trim", kFoldingBox, "--poses", "0:2", "-o", "x.obj"} << 2
+                                    << "needs the pose number";
+    QTest::newRow("fps without poses") << QStringList{"trim", "demo:sphere", "--fps", "30", "-o", "x.obj"} << 2
+                                       << "--fps is the rate";
+    QTest::newRow("csg of an animation") << QStringList{"trim",  kFoldingBox, "--poses", "0:1",
+                                                        "--csg", "0",         "-o",      "x_%d.obj"}
+                                         << 2 << "one object";
+    QTest::newRow("pose past the end") << QStringList{"trim", kFoldingBox, "--poses", "0:9", "-o", "x_%d.obj"} << 2
+                                       << "pose 9 does not exist";
+    QTest::newRow("open animation") << QStringList{"trim", bar, "--poses", "0:2", "-o", "x_%d.obj"} << 1
+                                    << "--close-holes";
+}
+
+void TestTrimVerb::posesRefuseBadArguments()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(int, exitCode);
+    QFETCH(QString, message);
+    for (QString& argument : arguments)
+        if (argument.startsWith(QLatin1String("x")))
+            argument = m_dir.filePath(argument);
+    TRIMLAB_VERIFY_ONE_LINE_ERROR(runTrimlab(arguments), exitCode, message);
+    QVERIFY(QDir(m_dir.path()).entryList({QStringLiteral("x*")}).isEmpty()); // nothing written
 }
 
 QTEST_GUILESS_MAIN(TestTrimVerb)

@@ -292,6 +292,33 @@ def test_cli_rig_opens_in_rest_pose():
     check(np.abs(evaluated_vertices(obj) - rest).max() > 1e-3 * diagonal, "posing a bone does not move the mesh")
 
 
+# An animation trimmed pose by pose as one glTF (`trimlab trim ANIM --poses A:B -o x.glb`)
+# plays in Blender: one object per pose, and at frame k (pose k at k/24 s, Blender's
+# 24 fps) pose k alone has scale 1, with the volume the command line printed for it.
+def test_cli_trimmed_poses_play_in_blender():
+    clear_scene()
+    source = os.path.join(data_dir, "animations", "folding_box")
+    out = os.path.join(out_dir, "folding-box-poses.glb")
+    run = subprocess.run([trimlab_exe, "trim", source, "--poses", "0:2", "-o", out], capture_output=True, text=True)
+    check(run.returncode == 0, f"trimlab trim --poses failed: {run.stderr}")
+    volumes = [float(v) for v in re.findall(r"pose \d+ -> .*volume (\S+)", run.stdout)]
+    check(len(volumes) == 3, f"no volume per pose in: {run.stdout}")
+    import_gltf(out)
+    poses = sorted((o for o in bpy.data.objects if o.type == "MESH"), key=lambda o: o.name)
+    check([o.name for o in poses] == ["pose_0000", "pose_0001", "pose_0002"], f"objects {[o.name for o in poses]}")
+    scene = bpy.context.scene
+    check(scene.render.fps == 24, f"scene fps {scene.render.fps}")
+    for frame in range(3):
+        scene.frame_set(frame)
+        shown = [round(o.matrix_world.to_scale().x, 6) for o in poses]
+        check(shown == [1.0 if k == frame else 0.0 for k in range(3)], f"frame {frame}: scales {shown}")
+        obj = poses[frame]
+        V = mesh_vertices(obj.data, obj.matrix_world)
+        measured = trimlab.info(V, mesh_triangles(obj.data))["signed_volume"]
+        check(abs(measured - volumes[frame]) <= 1e-5 * abs(volumes[frame]),
+              f"pose {frame}: volume {measured} in Blender, {volumes[frame]} printed")
+
+
 def main():
     check(hasattr(bpy.types, "TRIMLAB_MT_object"), "the TrimLab menu is not registered")
     tests = [value for key, value in sorted(globals().items()) if key.startswith("test_")]

@@ -2,7 +2,7 @@
 
 #include "core/animation/animation_loader.h"
 #include "core/animation/closed_animation.h"
-#include "core/mesh/mesh_validation.h"
+#include "core/catalog/pose_scene.h"
 #include "core/skinning/file_skin_model.h"
 
 #include <chrono>
@@ -33,12 +33,8 @@ Bounds poseBounds(const MeshAnimation& animation)
 
 std::shared_ptr<const LoadedScene> restSceneOf(const MeshAnimation& animation, const std::string& source)
 {
-    auto scene = std::make_shared<LoadedScene>();
-    scene->source = source;
-    scene->displayName = displayNameOf(source);
-    scene->scene.objects.push_back({scene->displayName, animation.poseMesh(animation.restPose), glm::dmat4(1.0)});
-    scene->reports.push_back(validateMesh(scene->scene.objects.front().mesh));
-    return scene;
+    const std::string name = displayNameOf(source);
+    return std::make_shared<LoadedScene>(animationPoseScene(animation, animation.restPose, name, name, source));
 }
 
 // The display of `animation` opened from `source`.

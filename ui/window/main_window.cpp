@@ -3,6 +3,8 @@
 #include "render/image_file.h"
 
 #include "ui/animation/animation_workspace.h"
+#include "ui/animation/timeline_panel.h"
+#include "ui/common/loaded_animation.h"
 #include "ui/animation/open_animation_dialog.h"
 #include "ui/common/current_document.h"
 #include "ui/common/window_context.h"
@@ -189,6 +191,11 @@ SolidExport::Shown MainWindow::shownSolid() const
     shown.scene = m_viewport->content()->posedScene(); // the frame shown, not the rest mesh
     shown.settings = frame->settings;
     shown.name = m_context->sceneBaseName(QStringLiteral("trimlab"));
+    if (const std::shared_ptr<const LoadedAnimation> playing = animation(); playing && playing->restScene == loaded) {
+        shown.animation = playing->animation;
+        shown.pose = m_animation->timelinePanel()->pose();
+        shown.fps = m_animation->timelinePanel()->fps();
+    }
     if (!loaded->trimmable())
         shown.refusal = tr("The scene has no inside: %1").arg(QString::fromStdString(loaded->trimUnavailableReason()));
     else if (!frame->settings.trimEnabled) {

@@ -3,6 +3,7 @@
 // the frame's own scene and settings (read back by TrimLab's loader); a view without a
 // solid (trimming off, a design under dynamic rules) is refused with its reason first and
 // writes nothing. Cut by a clipping plane, the solid as shown is exported cut and capped.
+// An animation shown exports every pose, each trimmed on its own, as one glTF sequence.
 #include "inspect_window.h"
 #include "message_box_closer.h"
 #include "test_paths.h"
@@ -11,10 +12,16 @@
 #include "ui/inspect/inspect_workspace.h"
 #include "ui/inspect/solid_export.h"
 #include "ui/design/design_workspace.h"
+#include "ui/animation/animation_workspace.h"
+#include "ui/animation/timeline_panel.h"
+#include "ui/common/loaded_animation.h"
 #include "ui/viewport/viewport_widget.h"
 #include "render/shown_content.h"
 
+#include "core/catalog/pose_scene.h"
 #include "core/catalog/scene_source.h"
+#include "core/io/file_bytes.h"
+#include "core/mesh/gltf_document.h"
 #include "core/mesh/mesh_validation.h"
 #include "core/trim/csg_expression.h"
 
@@ -38,6 +45,7 @@ private slots:
     void refusesWithoutASolid();
     void refusesDynamicRulesWithTheReasonFirst();
     void exportsTheCutAsShown();
+    void exportsEveryPoseOfAnAnimation();
 
 private:
     QTemporaryDir m_dir;
@@ -131,6 +139,52 @@ void TestInspectSolidExport::exportsTheCutAsShown()
     QVERIFY(std::abs(report.signedVolume - expected.stats.signedVolume) <= 1e-4 * expected.stats.signedVolume);
     QVERIFY2(report.signedVolume < 0.9 * whole,
              qPrintable(QStringLiteral("%1 of %2").arg(report.signedVolume).arg(whole)));
+}
+
+// The folding box (pose 2 folds through itself) opened as an animation: every pose is
+// exported, each trimmed on its own, into one .glb whose node k holds the solid the core
+// trims from pose k. A mesh shown has no poses: refused, nothing written.
+void TestInspectSolidExport::exportsEveryPoseOfAnAnimation()
+{
+    auto window = showInspectWindow(m_dir.filePath(QStringLiteral("poses.ini")), QStringLiteral("demo:sphere"));
+    const QString refusedPath = m_dir.filePath(QStringLiteral("sphere-poses.glb"));
+    MessageBoxCloser closer;
+    QSignalSpy failed(window->solidExport(), &SolidExport::failed);
+    window->solidExport()->exportPosesTo(refusedPath);
+    QCOMPARE(failed.count(), 1);
+    QVERIFY2(failed.front().at(1).toString().contains(QStringLiteral("No animation is shown")),
+             qPrintable(failed.front().at(1).toString()));
+    QVERIFY(!QFile::exists(refusedPath));
+
+    const QString source = QString::fromStdString(test::testDataPath("animations/folding_box").string());
+    QSignalSpy loaded(window.get(), &MainWindow::animationLoaded);
+    window->openAnimation(source);
+    QVERIFY(QTest::qWaitFor([&] { return !loaded.isEmpty() && !window->isLoading(); }, kInspectWaitMs));
+    QVERIFY(waitForFrame(*window, [&](const ViewportFrame& f) { return f.settings.trimEnabled; }));
+    const std::shared_ptr<const MeshAnimation> animation = window->animation()->animation;
+    QCOMPARE(animation->poseCount(), std::size_t(3));
+
+    const QString path = m_dir.filePath(QStringLiteral("box-poses.glb"));
+    QSignalSpy exported(window->solidExport(), &SolidExport::posesExported);
+    window->solidExport()->exportPosesTo(path);
+    QVERIFY(exported.count() == 1 || exported.wait(60000));
+    QCOMPARE(exported.front().at(1).value<std::size_t>(), std::size_t(3));
+    const TrimSettings settings = window->viewport()->lastFrame()->settings;
+    const tinygltf::Model model =
+        parseGltfDocument(io::readFileBytes(path.toStdString(), std::size_t(1) << 28), "box-poses.glb", {});
+    QCOMPARE(model.meshes.size(), std::size_t(3));
+    double total = 0.0;
+    for (std::size_t pose = 0; pose < 3; ++pose) {
+        const LoadedScene scene = animationPoseScene(*animation, pose, "pose", "pose");
+        const TrimmedSolid expected = trimmedSolid(scene.scene, settings);
+        total += expected.stats.signedVolume;
+        const tinygltf::Primitive& primitive = model.meshes[pose].primitives.at(0);
+        QCOMPARE(model.accessors[std::size_t(primitive.indices)].count, 3 * expected.mesh.triangles.size());
+    }
+    const double reported = exported.front().at(2).toDouble();
+    QVERIFY2(std::abs(reported - total) <= 1e-9 * total,
+             qPrintable(QStringLiteral("%1 vs %2").arg(reported).arg(total)));
+    QVERIFY(window->statusBar()->currentMessage().contains(QStringLiteral("Exported 3 trimmed poses")));
 }
 
 QTEST_MAIN(TestInspectSolidExport)
