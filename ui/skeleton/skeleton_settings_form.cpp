@@ -8,6 +8,7 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QToolButton>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QVBoxLayout>
@@ -23,9 +24,8 @@ SkeletonSettingsForm::SkeletonSettingsForm(QWidget* parent) : QWidget(parent)
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(createContractionGroup());
-    layout->addWidget(createSimplificationGroup());
     layout->addWidget(createSelectionGroup());
+    layout->addWidget(createSolverSection());
     setChoices({});
     for (QDoubleSpinBox* box : findChildren<QDoubleSpinBox*>())
         connect(box, &QDoubleSpinBox::valueChanged, this, &SkeletonSettingsForm::changed);
@@ -37,6 +37,36 @@ SkeletonSettingsForm::SkeletonSettingsForm(QWidget* parent) : QWidget(parent)
     connect(m_nodes, &QSpinBox::valueChanged, this, &SkeletonSettingsForm::nodesOrRootChanged);
     connect(m_root, &QSpinBox::valueChanged, this, &SkeletonSettingsForm::nodesOrRootChanged);
     connect(m_skinning, &QComboBox::currentIndexChanged, this, &SkeletonSettingsForm::skinningChanged);
+}
+
+// The contraction and simplification parameters are the solver's: folded away under one
+// toggle (closed at first) so that Run follows the choices a user makes on every mesh.
+QWidget* SkeletonSettingsForm::createSolverSection()
+{
+    auto* section = new QWidget;
+    auto* toggle = new QToolButton;
+    toggle->setObjectName(QStringLiteral("skeletonSolverToggle"));
+    toggle->setText(tr("Solver settings (contraction, simplification)"));
+    toggle->setCheckable(true);
+    toggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    toggle->setArrowType(Qt::RightArrow);
+    toggle->setAutoRaise(true);
+    auto* groups = new QWidget;
+    groups->setObjectName(QStringLiteral("skeletonSolverGroups"));
+    auto* inner = new QVBoxLayout(groups);
+    inner->setContentsMargins(0, 0, 0, 0);
+    inner->addWidget(createContractionGroup());
+    inner->addWidget(createSimplificationGroup());
+    groups->setVisible(false);
+    connect(toggle, &QToolButton::toggled, groups, [toggle, groups](bool open) {
+        toggle->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
+        groups->setVisible(open);
+    });
+    auto* layout = new QVBoxLayout(section);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(toggle);
+    layout->addWidget(groups);
+    return section;
 }
 
 QWidget* SkeletonSettingsForm::createContractionGroup()

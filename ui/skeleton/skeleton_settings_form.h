@@ -1,7 +1,9 @@
 #pragma once
 /// \file
 /// The Skeleton panel's parameter form: one group per stage of skeleton extraction by
-/// mesh contraction (Berenguer & Moreno III.A–E) — contraction (W_L⁰, s_L, the caps of W_L
+/// mesh contraction (Berenguer & Moreno III.A–E), the selection first (what a user sets on
+/// every mesh) and the solver's stages folded under a "Solver settings" toggle, closed at
+/// first — contraction (W_L⁰, s_L, the caps of W_L
 /// and W_H, iterations, ordering AMD/COLAMD/METIS, solver CHOLMOD/LDLT), simplification
 /// (δ, w_a, w_b), refinement (on/off), selection (target nodes, root joint automatic or
 /// an index), weights (c) — and the skinning used for posing (LBS/DQS). Every control
@@ -39,6 +41,7 @@ private:
     QWidget* createContractionGroup();
     QWidget* createSimplificationGroup();
     QWidget* createSelectionGroup();
+    QWidget* createSolverSection();
 
     QDoubleSpinBox* m_initialWeight = nullptr;
     QDoubleSpinBox* m_growth = nullptr;

@@ -43,6 +43,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextStream>
+#include <QToolButton>
 #include <QElapsedTimer>
 
 #include <glm/geometric.hpp>
@@ -141,6 +142,7 @@ private slots:
     void openMeshIsRefusedInThePanel();
     void exportsWriteValidFiles();
     void settingsRoundTrip();
+    void runFollowsTheChoicesSolverFolded();
 
 private:
     [[nodiscard]] std::unique_ptr<MainWindow> showWindow(const QString& settingsName);
@@ -693,6 +695,26 @@ void TestSkeletonPanel::settingsRoundTrip()
     }
     auto again = showWindow(QStringLiteral("persist"));
     QVERIFY(same(again->skeletonWorkspace()->panel()->choices(), choices));
+}
+
+// The panel opens with the choices a user makes on every mesh (target nodes, root) and
+// Run right after them; the solver's contraction and simplification parameters are folded
+// under a toggle, closed at first, and open with it. Before, seven solver fields stood
+// above Run.
+void TestSkeletonPanel::runFollowsTheChoicesSolverFolded()
+{
+    auto window = showWindow(QStringLiteral("order"));
+    SkeletonPanel* panel = window->skeletonWorkspace()->panel();
+    auto y = [&](const char* name) { return child<QWidget>(panel, name)->mapTo(panel, QPoint(0, 0)).y(); };
+    auto* iterations = child<QSpinBox>(panel, "skeletonIterationsSpinBox");
+    QVERIFY(!iterations->isVisibleTo(panel));
+    QVERIFY(child<QSpinBox>(panel, "skeletonNodesSpinBox")->isVisibleTo(panel));
+    QVERIFY(y("skeletonNodesSpinBox") < y("runSkeletonButton"));
+    QVERIFY(y("skeletonSolverToggle") < y("runSkeletonButton"));
+    QTest::mouseClick(child<QToolButton>(panel, "skeletonSolverToggle"), Qt::LeftButton);
+    QVERIFY(iterations->isVisibleTo(panel));
+    QTest::mouseClick(child<QToolButton>(panel, "skeletonSolverToggle"), Qt::LeftButton);
+    QVERIFY(!iterations->isVisibleTo(panel));
 }
 
 QTEST_MAIN(TestSkeletonPanel)
