@@ -9,6 +9,7 @@
 
 #include "core/animation/animation_loader.h"
 #include "core/catalog/scene_source.h"
+#include "core/io/file_extension.h"
 #include "core/mesh/mesh_export.h"
 #include "core/mesh/mesh_sequence_gltf.h"
 #include "core/skinning/skinning_parameters.h"
@@ -22,7 +23,6 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
-#include <cstdio>
 #include <filesystem>
 #include <variant>
 
@@ -88,8 +88,8 @@ void addTrimOptions(QCommandLineParser& parser)
 
 bool isGltfPath(const QString& path)
 {
-    return path.endsWith(QLatin1String(".gltf"), Qt::CaseInsensitive) ||
-           path.endsWith(QLatin1String(".glb"), Qt::CaseInsensitive);
+    const std::string extension = io::lowercaseExtension(path.toStdString());
+    return extension == ".gltf" || extension == ".glb";
 }
 
 // --pose / --poses: one animation source, one object, and -o a pose-numbered name or one
@@ -285,9 +285,7 @@ int exportTrimmedPoses(const TrimOptions& options)
                 totalVolume += solid.stats.signedVolume;
                 if (oneFile && selection.sequence) {
                     printLine(solidLine(QString::fromStdString(what), options.output, solid));
-                    char label[32];
-                    std::snprintf(label, sizeof label, "pose_%04zu", pose);
-                    gathered.push_back({label, solid.mesh});
+                    gathered.push_back({trimmedPoseName(pose), solid.mesh});
                     return;
                 }
                 const QString path = selection.sequence ? posePath(options.output, int(pose)) : options.output;

@@ -4,12 +4,20 @@
 #include "core/util/parallel_for.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace trimlab {
+
+std::string trimmedPoseName(std::size_t pose)
+{
+    char name[32];
+    std::snprintf(name, sizeof name, "pose_%04zu", pose);
+    return name;
+}
 
 void trimAnimationPoses(const MeshAnimation& animation, std::size_t first, std::size_t last,
                         const TrimSettings& settings, const TrimmedPoseSink& each, const TaskControl& control)

@@ -12,12 +12,17 @@
 
 #include <cstddef>
 #include <functional>
+#include <string>
 
 namespace trimlab {
 
 /// Called after each pose with its number and its solid, in pose order (the caller writes
 /// it and lets it go, so a long animation never holds every solid at once).
 using TrimmedPoseSink = std::function<void(std::size_t pose, const TrimmedSolid& solid)>;
+
+/// The name a trimmed pose goes by in a sequence file: "pose_0007" (zero-padded to four
+/// digits, so the names sort in pose order up to pose 9999).
+[[nodiscard]] std::string trimmedPoseName(std::size_t pose);
 
 /// Trims poses `first` … `last` (inclusive) of `animation` under `settings`, as many poses
 /// at once as there are cores, and hands them to `each` in pose order (the solids do not

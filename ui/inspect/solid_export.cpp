@@ -14,7 +14,6 @@
 #include <QMessageBox>
 #include <QPushButton>
 
-#include <cstdio>
 #include <optional>
 
 namespace trimlab::ui {
@@ -167,9 +166,7 @@ void SolidExport::exportPosesTo(const QString& path, Extent extent)
         trimAnimationPoses(
             *animation, 0, animation->poseCount() - 1, settings,
             [&](std::size_t pose, const TrimmedSolid& solid) {
-                char name[32];
-                std::snprintf(name, sizeof name, "pose_%04zu", pose);
-                meshes.push_back({name, solid.mesh});
+                meshes.push_back({trimmedPoseName(pose), solid.mesh});
                 written.stats = solid.stats;
                 written.totalVolume += solid.stats.signedVolume;
             },

@@ -86,6 +86,8 @@ void TestTrimmedAnimation::eachPoseIsTrimmedOnItsOwn()
         },
         control);
     QCOMPARE(seen, (std::vector<std::size_t>{1, 2}));
+    QCOMPARE(trimmedPoseName(7), std::string("pose_0007"));
+    QCOMPARE(trimmedPoseName(12345), std::string("pose_12345"));
     QCOMPARE(progress, (std::vector<std::pair<std::size_t, std::size_t>>{{0, 2}, {1, 2}, {2, 2}}));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, trimAnimationPoses(animation, 2, 3, settings, {}));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, trimAnimationPoses(animation, 2, 1, settings, {}));
