@@ -3,6 +3,7 @@
 #include "core/util/union_find.h"
 
 #include <algorithm>
+#include <chrono>
 #include <optional>
 #include <queue>
 #include <unordered_map>
@@ -47,36 +48,40 @@ std::unordered_map<std::uint64_t, std::vector<EdgeFace>> edgeFaces(const Refined
 }
 
 // Sorts the faces around edge (a, b) by their angle about d = b - a (counter-clockwise
-// looking against d), starting from the first face. Exact: no angle is computed, the
-// half-plane and the sign of a cross product decide.
-void sortAroundEdge(const RefinedSoup& soup, const ExactPoint& a, const ExactVector& d, std::vector<EdgeFace>& faces)
+// looking against d), starting from the first face. Exact, by orientation predicates on
+// the points alone (no construction): a face's third corner c lies in the half-turn
+// after the first face's when orientation(a, b, c_first, c) is positive, and of two in
+// one half-turn p comes first when orientation(a, b, c_p, c_q) is. Faces of one source
+// lie in one plane, on opposite sides of the edge: half a turn apart, decided without
+// the predicate that would be exactly zero (and fall back to rationals).
+void sortAroundEdge(const RefinedSoup& soup, std::uint32_t a, std::uint32_t b, std::vector<EdgeFace>& faces)
 {
-    const auto across = [&](const EdgeFace& e) {
-        const ExactVector u = soup.points[e.third] - a;
-        return u * (d * d) - d * (u * d); // u without its part along d (scaled)
+    const ExactPoint& A = soup.points[a];
+    const ExactPoint& B = soup.points[b];
+    const EdgeFace first = faces.front();
+    const ExactPoint& reference = soup.points[first.third];
+    const auto halfTurn = [&](const EdgeFace& e) { // 0: angle in [0, pi), 1: [pi, 2 pi)
+        if (e.face == first.face)
+            return 0;
+        if (soup.faces[e.face].source == soup.faces[first.face].source)
+            return 1;
+        const ExactPoint& c = soup.points[e.third];
+        const CGAL::Orientation side = CGAL::orientation(A, B, reference, c);
+        if (side != CGAL::COPLANAR)
+            return side == CGAL::POSITIVE ? 0 : 1;
+        return CGAL::coplanar_orientation(A, B, reference, c) == CGAL::POSITIVE ? 0 : 1;
     };
-    const ExactVector e1 = across(faces.front());
-    const ExactVector e2 = CGAL::cross_product(d, e1);
-    struct Keyed {
-        EdgeFace face;
-        ExactKernel::FT x, y;
-        int half; ///< 0: angle in [0, pi), 1: [pi, 2 pi)
-    };
-    std::vector<Keyed> keyed;
+    std::vector<std::pair<int, EdgeFace>> keyed;
     keyed.reserve(faces.size());
-    for (const EdgeFace& e : faces) {
-        const ExactVector u = across(e);
-        Keyed k{e, u * e1, u * e2, 0};
-        k.half = (CGAL::is_negative(k.y) || (CGAL::is_zero(k.y) && CGAL::is_negative(k.x))) ? 1 : 0;
-        keyed.push_back(std::move(k));
-    }
-    std::stable_sort(keyed.begin(), keyed.end(), [](const Keyed& p, const Keyed& q) {
-        if (p.half != q.half)
-            return p.half < q.half;
-        return CGAL::is_positive(p.x * q.y - p.y * q.x);
+    for (const EdgeFace& e : faces)
+        keyed.emplace_back(halfTurn(e), e);
+    std::stable_sort(keyed.begin(), keyed.end(), [&](const auto& p, const auto& q) {
+        if (p.first != q.first)
+            return p.first < q.first;
+        return CGAL::orientation(A, B, soup.points[p.second.third], soup.points[q.second.third]) == CGAL::POSITIVE;
     });
     for (std::size_t i = 0; i < faces.size(); ++i)
-        faces[i] = keyed[i].face;
+        faces[i] = keyed[i].second;
 }
 
 // Whether face f's front looks towards growing angles about d = b - a at the edge: its
@@ -91,17 +96,21 @@ bool frontFacesGrowingAngle(const RefinedSoup& soup, std::uint32_t a, const Edge
     return false;
 }
 
-// Joins the two face sides that look into each wedge between consecutive faces.
-void joinWedges(const RefinedSoup& soup, UnionFind& sides)
+// Joins the two face sides that look into each wedge between consecutive faces; returns
+// the number of edges sorted.
+std::size_t joinWedges(const RefinedSoup& soup, UnionFind& sides)
 {
+    std::size_t sorted = 0;
     for (auto& [key, faces] : edgeFaces(soup)) {
         if (faces.size() < 2)
             continue; // an open edge: the windings are not defined there (counted as contradictions)
         const std::uint32_t a = std::uint32_t(key >> 32);
         // Two faces are in order whatever their angles; more (along an intersection
         // curve) are sorted exactly.
-        if (faces.size() > 2)
-            sortAroundEdge(soup, soup.points[a], soup.points[std::uint32_t(key & 0xffffffffu)] - soup.points[a], faces);
+        if (faces.size() > 2) {
+            sortAroundEdge(soup, a, std::uint32_t(key & 0xffffffffu), faces);
+            ++sorted;
+        }
         for (std::size_t i = 0; i < faces.size(); ++i) {
             const EdgeFace& f = faces[i];
             const EdgeFace& g = faces[(i + 1) % faces.size()];
@@ -110,6 +119,7 @@ void joinWedges(const RefinedSoup& soup, UnionFind& sides)
             sides.unite(sideOfF, sideOfG);
         }
     }
+    return sorted;
 }
 
 // The winding numbers just in front of face `start` (at its centroid), by counting the
@@ -186,10 +196,18 @@ ExactKernel::FT boundingReach(const RefinedSoup& soup)
 
 CellWindings cellWindings(const RefinedSoup& soup, const TaskControl& control)
 {
+    auto start = std::chrono::steady_clock::now();
+    const auto lap = [&start](double& ms) {
+        const auto now = std::chrono::steady_clock::now();
+        ms += std::chrono::duration<double, std::milli>(now - start).count();
+        start = now;
+    };
+    CellWindings result;
     const std::size_t faceCount = soup.faces.size();
     UnionFind sides(2 * faceCount);
-    joinWedges(soup, sides);
+    result.sortedEdges = joinWedges(soup, sides);
     control.throwIfCancelled();
+    lap(result.wedgesMs);
 
     // Groups, and the faces between them: behind = in front + delta.
     std::unordered_map<std::size_t, std::size_t> groupOf;
@@ -207,7 +225,6 @@ CellWindings cellWindings(const RefinedSoup& soup, const TaskControl& control)
         facesOfGroup[frontGroup[f]].push_back(f);
         facesOfGroup[backGroup[f]].push_back(f);
     }
-    CellWindings result;
     result.boundaryPieces = facesOfGroup.size();
     const std::size_t objects = faceCount > 0 ? soup.faces.front().delta.size() : 0;
     std::vector<std::optional<std::vector<int>>> winding(facesOfGroup.size());
@@ -240,7 +257,9 @@ CellWindings cellWindings(const RefinedSoup& soup, const TaskControl& control)
             }
         }
         // ... then one ray fixes the piece's offset.
+        lap(result.walkMs);
         const std::vector<int> absolute = absoluteFront(soup, seed, reach);
+        lap(result.raysMs);
         for (std::size_t g : members)
             for (std::size_t o = 0; o < objects; ++o)
                 (*winding[g])[o] += absolute[o];

@@ -24,6 +24,8 @@ struct CellWindings {
     /// Faces whose two sides the union-find put in one group with different windings:
     /// 0 unless the input was not closed (then the windings are not defined).
     std::size_t contradictions = 0;
+    std::size_t sortedEdges = 0;                       ///< edges where more than two faces meet
+    double wedgesMs = 0.0, walkMs = 0.0, raysMs = 0.0; ///< the stages' times (exact_profile.h)
 };
 
 [[nodiscard]] CellWindings cellWindings(const RefinedSoup& soup, const TaskControl& control);

@@ -8,6 +8,7 @@
 #include <glm/vec4.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -128,9 +129,11 @@ RefinedSoup refineScene(const Scene& scene, const TaskControl& control)
 
     const std::vector<Stack> stacks = stackTriangles(triangles, scene.objects.size());
     std::vector<std::size_t> stackOf;
-    const std::vector<ArrangedTriangle> pieces = arrangeTriangles(exactTriangles(stacks, stackOf), control);
+    const std::vector<ArrangedTriangle> pieces =
+        arrangeTriangles(exactTriangles(stacks, stackOf), control, &soup.profile);
     control.throwIfCancelled();
     control.report("refine", 1, 2);
+    const auto mergeStart = std::chrono::steady_clock::now();
 
     // Equal points become one vertex; faces over the same three vertices one face.
     std::map<ExactPoint, std::uint32_t, PointLess> pointIndex;
@@ -152,7 +155,7 @@ RefinedSoup refineScene(const Scene& scene, const TaskControl& control)
         bool reversed = false;
         const auto [it, inserted] = faceIndex.emplace(unorientedKey(v, reversed), soup.faces.size());
         if (inserted) {
-            soup.faces.push_back({v, std::vector<int>(objectCount, 0)});
+            soup.faces.push_back({v, std::vector<int>(objectCount, 0), std::uint32_t(piece.source)});
             firstReversed.push_back(reversed);
         }
         RefinedFace& face = soup.faces[it->second];
@@ -167,6 +170,8 @@ RefinedSoup refineScene(const Scene& scene, const TaskControl& control)
                           std::size_t(std::count_if(stacks.begin(), stacks.end(),
                                                     [](const Stack& stack) { return cancels(stack.delta); }));
     soup.faces.erase(cancelled, soup.faces.end());
+    soup.profile.mergeMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mergeStart).count();
     control.report("refine", 2, 2);
     return soup;
 }

@@ -8,6 +8,7 @@
 /// stack of coincident faces, which may cancel). Internal to core/solid.
 
 #include "core/solid/exact_kernel.h"
+#include "core/solid/exact_profile.h"
 #include "core/util/task_control.h"
 
 #include <array>
@@ -24,6 +25,9 @@ struct RefinedFace {
     std::array<std::uint32_t, 3> vertices{}; ///< counter-clockwise seen from the front
     /// delta[o]: the winding number of object o behind the face minus in front of it.
     std::vector<int> delta;
+    /// The input triangle (after stacking) the face's first piece came from: two faces
+    /// with one source lie in one plane.
+    std::uint32_t source = 0;
 };
 
 struct RefinedSoup {
@@ -32,6 +36,7 @@ struct RefinedSoup {
     std::size_t inputTriangles = 0;
     std::size_t degenerateTriangles = 0; ///< zero-area input triangles, dropped (they bound nothing)
     std::size_t cancelledFaces = 0;      ///< stacks of coincident faces whose deltas sum to zero
+    ExactProfile profile;                ///< the arrangement's sizes and times
 };
 
 /// Refines the scene's triangles (model matrices applied in double precision; those

@@ -7,7 +7,9 @@
 /// that real meshes contain (a vertex of one triangle on another's edge, as on the shared
 /// cow and diplodocus, and coplanar overlaps three at a time). Internal to core/solid.
 ///
-/// Method: candidate pairs by their bounding boxes; per pair the exact intersection
+/// Method: candidate pairs by their bounding boxes; the input's corners are doubles, so
+/// exact predicates on those doubles clear most pairs without a construction (on every
+/// core); for the rest the exact intersection
 /// (nothing, a point, a segment, or a coplanar overlap); triangles that overlap in a
 /// plane form one group, every group (a lone triangle too) is triangulated once in its
 /// plane with its edges and everything that meets it as constraints, and every piece of
@@ -17,6 +19,7 @@
 /// of them exactly, hence equal.
 
 #include "core/solid/exact_kernel.h"
+#include "core/solid/exact_profile.h"
 #include "core/util/task_control.h"
 
 #include <array>
@@ -32,8 +35,12 @@ struct ArrangedTriangle {
 
 /// Splits non-degenerate `triangles` along their intersections. Every output piece lies
 /// in its source triangle and runs the same way round; the pieces of one source tile it.
-/// Checks `control` for cancellation (throws OperationCancelled).
+/// Every corner must be a double (an exact point made from doubles, as refineScene makes
+/// them; std::invalid_argument otherwise). The result does not depend on the number of
+/// cores. Checks `control` for cancellation (throws OperationCancelled); adds its sizes
+/// and times to `profile` when given.
 [[nodiscard]] std::vector<ArrangedTriangle> arrangeTriangles(const std::vector<std::array<ExactPoint, 3>>& triangles,
-                                                             const TaskControl& control);
+                                                             const TaskControl& control,
+                                                             ExactProfile* profile = nullptr);
 
 } // namespace trimlab::solid

@@ -107,12 +107,18 @@ TrimmedSolid solidOf(const Scene& scene, const TrimSettings& settings, bool cut,
     stats.degenerateTriangles = soup.degenerateTriangles;
     stats.refinedFaces = soup.faces.size();
     stats.cancelledFaces = soup.cancelledFaces;
+    stats.profile = soup.profile;
 
     start = std::chrono::steady_clock::now();
     const solid::CellWindings cells = solid::cellWindings(soup, control);
     stats.boundaryPieces = cells.boundaryPieces;
     stats.components = cells.components;
     stats.contradictions = cells.contradictions;
+    stats.profile.sortedEdges = cells.sortedEdges;
+    stats.profile.rays = cells.components;
+    stats.profile.wedgesMs = cells.wedgesMs;
+    stats.profile.walkMs = cells.walkMs;
+    stats.profile.raysMs = cells.raysMs;
 
     // The faces between a kept and a dropped cell, facing out of the kept one.
     std::vector<std::array<std::uint32_t, 3>> kept;

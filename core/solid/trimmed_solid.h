@@ -9,6 +9,7 @@
 /// result is non-manifold; those edges are counted, not repaired.
 
 #include "core/mesh/triangle_mesh.h"
+#include "core/solid/exact_profile.h"
 #include "core/scene/scene.h"
 #include "core/trim/trim_settings.h"
 #include "core/util/task_control.h"
@@ -35,6 +36,7 @@ struct TrimmedSolidStats {
     double signedVolume = 0.0;        ///< of the result as written (float positions), in world units³
     double refineMs = 0.0;
     double windingMs = 0.0;
+    ExactProfile profile; ///< the stages of refineMs and windingMs
 };
 
 struct TrimmedSolid {

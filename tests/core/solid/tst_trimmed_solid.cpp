@@ -207,8 +207,31 @@ Scene coplanarTrio()
     return scene;
 }
 
+// The hardest shape of the exact export's profile (EMBER case 582, a CAD part): long
+// sliver triangles whose bounding boxes overlap by the thousand, most pairs of which
+// meet nowhere or at a shared corner only. Here a long thin rod of slivers, pierced by a
+// ball and a second rod crossing it.
+Scene sliverRods()
+{
+    const std::array<glm::dvec2, 4> profile{glm::dvec2(0.0, -2.0), glm::dvec2(0.15, -2.0), glm::dvec2(0.15, 2.0),
+                                            glm::dvec2(0.0, 2.0)};
+    const TriangleMesh rod = makeSurfaceOfRevolution(profile, 96);
+    Scene scene = oneObject("rod", rod);
+    ObjectTransform crossing;
+    crossing.rotationDegrees = {0.0, 0.0, 70.0};
+    crossing.translation = {0.05, 0.3, 0.02};
+    scene.objects.push_back({"crossing rod", rod, crossing.modelMatrix()});
+    ObjectTransform ball;
+    ball.translation = {0.1, -1.1, 0.0};
+    ball.scale = 0.3;
+    scene.objects.push_back({"ball", makeIcosphere(glm::dvec3(0.0), 1.0, 2), ball.modelMatrix()});
+    return scene;
+}
+
 Scene sceneNamed(const QString& name)
 {
+    if (name == "sliver-rods")
+        return sliverRods();
     if (name == "pushed-sphere")
         return oneObject("pushed", makePushedSphere(24, 14));
     if (name == "crossing-loop")
@@ -262,6 +285,9 @@ void TestTrimmedSolid::matchesTheTrim_data()
     QTest::newRow("coplanar trio nonzero") << "coplanar-trio" << StaticRule::Nonzero << QString() << 0L << true;
     QTest::newRow("coplanar trio a - b - c")
         << "coplanar-trio" << StaticRule::PositiveIndex << "0 - 1 - 2" << 0L << false;
+    QTest::newRow("sliver rods nonzero") << "sliver-rods" << StaticRule::Nonzero << QString() << 0L << true;
+    QTest::newRow("sliver rods minus ball")
+        << "sliver-rods" << StaticRule::PositiveIndex << "(0 | 1) - 2" << 0L << true;
     QTest::newRow("cow alternating border")
         << "selfintersect/cgal-cow.off.gz" << StaticRule::AlternatingBorder << QString() << 0L << true;
 }
