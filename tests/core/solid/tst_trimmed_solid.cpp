@@ -7,6 +7,7 @@
 #include "view_directions.h"
 
 #include "core/solid/trimmed_solid.h"
+#include "core/solid/exact_profile.h"
 
 #include "core/catalog/demo_scenes.h"
 #include "core/catalog/scene_source.h"
@@ -256,6 +257,7 @@ private slots:
     void matchesTheTrim_data();
     void matchesTheTrim();
     void coincidentOppositeFacesCancel();
+    void profileCountsTheStages();
     void trimmingOffIsRefused();
     void clipPolytopeIsClosedAndConvex();
     void cutByClippingPlanesAsShown_data();
@@ -354,6 +356,52 @@ void TestTrimmedSolid::coincidentOppositeFacesCancel()
     QCOMPARE(separate.stats.keptFaces, std::size_t(0));
     QCOMPARE(separate.stats.refinedFaces, sphere.triangles.size());
     QCOMPARE(separate.stats.contradictions, std::size_t(0));
+}
+
+// The profile's sizes follow the input: apart, two spheres give no pair to construct and
+// nothing to split (their neighbours share edges and corners only); crossing slivers give pairs, constructions and split triangles, all
+// bounded by the input; two boxes on one floor give
+// groups of coplanar faces in the two planes they share. The stages' times add up
+// to no more than the two phases they divide.
+void TestTrimmedSolid::profileCountsTheStages()
+{
+    TrimSettings settings;
+    settings.rule = StaticRule::Nonzero;
+    Scene apart = oneObject("left", makeIcosphere(glm::dvec3(-2.0, 0.0, 0.0), 1.0, 1));
+    apart.objects.push_back({"right", makeIcosphere(glm::dvec3(2.0, 0.0, 0.0), 1.0, 1), glm::dmat4(1.0)});
+    const TrimmedSolidStats separate = trimmedSolid(apart, settings).stats;
+    QVERIFY(separate.profile.candidatePairs > 0); // neighbours in each sphere: decided without constructing
+    QCOMPARE(separate.profile.constructedPairs, std::size_t(0));
+    QCOMPARE(separate.profile.splitTriangles, std::size_t(0));
+    QCOMPARE(separate.profile.coplanarGroups, std::size_t(0));
+    QCOMPARE(separate.profile.rays, std::size_t(2));
+
+    const TrimmedSolidStats slivers = trimmedSolid(sliverRods(), settings).stats;
+    const ExactProfile& p = slivers.profile;
+    QVERIFY(p.constructedPairs > 0);
+    QVERIFY(p.constructedPairs <= p.candidatePairs);
+    QVERIFY(p.splitTriangles > 0);
+    QVERIFY(p.splitTriangles <= slivers.inputTriangles);
+    QVERIFY(p.sortedEdges > 0); // the rods' axis ends: every slice meets there
+    QCOMPARE(p.rays, slivers.components);
+    const double refineStages = p.boxesMs + p.pairsMs + p.constructMs + p.triangulateMs + p.mergeMs;
+    const double windingStages = p.wedgesMs + p.walkMs + p.raysMs;
+    for (double ms : {p.boxesMs, p.pairsMs, p.constructMs, p.triangulateMs, p.mergeMs, p.wedgesMs, p.walkMs, p.raysMs})
+        QVERIFY(ms >= 0.0);
+    QVERIFY2(refineStages <= slivers.refineMs + 1.0,
+             qPrintable(QString("%1 of %2 ms").arg(refineStages).arg(slivers.refineMs)));
+    QVERIFY2(windingStages <= slivers.windingMs + 1.0,
+             qPrintable(QString("%1 of %2 ms").arg(windingStages).arg(slivers.windingMs)));
+
+    // Two boxes on one floor, overlapping: their bottoms overlap in the plane z = 0 and so
+    // do their tops in z = 1.
+    Scene boxes = oneObject("box", makeBox(glm::dvec3(0.0), glm::dvec3(1.0)));
+    boxes.objects.push_back(
+        {"shifted", makeBox(glm::dvec3(0.5, 0.5, 0.0), glm::dvec3(1.5, 1.5, 1.0)), glm::dmat4(1.0)});
+    const ExactProfile floors = trimmedSolid(boxes, settings).stats.profile;
+    QVERIFY(floors.coplanarGroups >= 2); // at least one per plane
+    QVERIFY(floors.largestCoplanarGroup >= 2);
+    QVERIFY(floors.largestCoplanarGroup <= 4); // the four triangles of one plane at most
 }
 
 void TestTrimmedSolid::trimmingOffIsRefused()
