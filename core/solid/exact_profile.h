@@ -10,7 +10,7 @@
 namespace trimlab {
 
 struct ExactProfile {
-    std::size_t candidatePairs = 0;   ///< triangle pairs whose bounding boxes overlap
+    std::size_t candidatePairs = 0;   ///< triangle pairs whose bounding boxes (and parts' boxes) overlap
     std::size_t constructedPairs = 0; ///< pairs whose intersection was constructed exactly
     std::size_t splitTriangles = 0;   ///< input triangles triangulated with what others leave on them
     std::size_t coplanarGroups = 0;   ///< groups of two or more triangles overlapping in one plane
@@ -18,8 +18,7 @@ struct ExactProfile {
     std::size_t sortedEdges = 0; ///< edges where more than two faces meet (sorted by angle)
     std::size_t rays = 0;        ///< rays cast to fix the windings of connected pieces
 
-    double boxesMs = 0.0;       ///< candidate pairs by bounding boxes
-    double pairsMs = 0.0;       ///< predicates on the input decide most pairs
+    double pairsMs = 0.0;       ///< candidate pairs by bounding boxes, decided by predicates on the input
     double constructMs = 0.0;   ///< exact intersections of the remaining pairs
     double triangulateMs = 0.0; ///< constrained triangulation of the split triangles
     double mergeMs = 0.0;       ///< equal points and coincident faces merged

@@ -12,6 +12,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 namespace trimlab::solid {
 
@@ -95,24 +96,37 @@ bool cancels(const std::vector<int>& delta)
     return std::all_of(delta.begin(), delta.end(), [](int d) { return d == 0; });
 }
 
-// The stacks that do not cancel, as exact triangles, with the index of their stack.
+// The stacks that do not cancel, as exact triangles, with the index of their stack. Equal
+// corners are one exact point (one handle), so that the merge and the arrangement's
+// triangulations recognise them by identity.
 std::vector<std::array<ExactPoint, 3>> exactTriangles(const std::vector<Stack>& stacks,
                                                       std::vector<std::size_t>& stackOf)
 {
+    std::map<std::array<double, 3>, ExactPoint> corners;
+    const auto exactCorner = [&](const glm::dvec3& c) -> const ExactPoint& {
+        const std::array<double, 3> key{c.x, c.y, c.z};
+        const auto found = corners.find(key);
+        if (found != corners.end())
+            return found->second;
+        return corners.emplace(key, ExactPoint(c.x, c.y, c.z)).first->second;
+    };
     std::vector<std::array<ExactPoint, 3>> triangles;
     for (std::size_t s = 0; s < stacks.size(); ++s) {
         if (cancels(stacks[s].delta))
             continue;
         const auto& c = stacks[s].corners;
-        triangles.push_back({ExactPoint(c[0].x, c[0].y, c[0].z), ExactPoint(c[1].x, c[1].y, c[1].z),
-                             ExactPoint(c[2].x, c[2].y, c[2].z)});
+        triangles.push_back({exactCorner(c[0]), exactCorner(c[1]), exactCorner(c[2])});
         stackOf.push_back(s);
     }
     return triangles;
 }
 
+// Lexicographic order; one handle is equal to itself without evaluating it.
 struct PointLess {
-    bool operator()(const ExactPoint& a, const ExactPoint& b) const { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; }
+    bool operator()(const ExactPoint& a, const ExactPoint& b) const
+    {
+        return !CGAL::identical(a, b) && CGAL::compare_xyz(a, b) == CGAL::SMALLER;
+    }
 };
 
 } // namespace
@@ -137,6 +151,7 @@ RefinedSoup refineScene(const Scene& scene, const TaskControl& control)
 
     // Equal points become one vertex; faces over the same three vertices one face.
     std::map<ExactPoint, std::uint32_t, PointLess> pointIndex;
+    std::unordered_map<CGAL::Handle::Id_type, std::uint32_t> indexOfHandle; ///< handles seen before
     std::map<std::array<std::uint32_t, 3>, std::size_t> faceIndex;
     std::vector<bool> firstReversed; ///< per face: the unorientedKey flag of its first face
     const std::size_t objectCount = scene.objects.size();
@@ -144,10 +159,16 @@ RefinedSoup refineScene(const Scene& scene, const TaskControl& control)
         std::array<std::uint32_t, 3> v{};
         for (int k = 0; k < 3; ++k) {
             const ExactPoint& p = piece.corners[std::size_t(k)];
+            const auto seen = indexOfHandle.find(p.id());
+            if (seen != indexOfHandle.end()) {
+                v[std::size_t(k)] = seen->second;
+                continue;
+            }
             const auto [it, inserted] = pointIndex.emplace(p, std::uint32_t(soup.points.size()));
             if (inserted)
                 soup.points.push_back(p);
             v[std::size_t(k)] = it->second;
+            indexOfHandle.emplace(p.id(), it->second);
         }
         if (CGAL::collinear(soup.points[v[0]], soup.points[v[1]], soup.points[v[2]]))
             continue; // bounds nothing

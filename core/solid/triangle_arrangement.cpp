@@ -10,11 +10,14 @@
 #include <CGAL/intersections.h>
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <stdexcept>
+#include <unordered_map>
 #include <utility>
 
 namespace trimlab::solid {
@@ -49,24 +52,22 @@ using InputKernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using InputPoint = InputKernel::Point_3;
 using InputCorners = std::array<InputPoint, 3>;
 
+/// A point another triangle leaves on a triangle, and where on that triangle it lies when
+/// the construction tells without a predicate: inside its edge from corner `edge` to the
+/// next, or (kAnywhere) wherever point location finds it.
+constexpr std::uint8_t kAnywhere = 3;
+
+struct MarkPoint {
+    ExactPoint point;
+    std::uint8_t edge = kAnywhere;
+};
+
 /// What other triangles leave on a triangle: points where they touch it, segments where
 /// they cross it.
 struct Marks {
-    std::vector<ExactPoint> points;
-    std::vector<std::array<ExactPoint, 2>> segments;
+    std::vector<MarkPoint> points;
+    std::vector<std::array<MarkPoint, 2>> segments;
 };
-
-std::vector<std::pair<std::size_t, std::size_t>> overlappingBoxes(const std::vector<Corners>& triangles)
-{
-    std::vector<Box> boxes;
-    boxes.reserve(triangles.size());
-    for (std::size_t i = 0; i < triangles.size(); ++i) // exact boxes: the corners are doubles
-        boxes.emplace_back(triangles[i][0].bbox() + triangles[i][1].bbox() + triangles[i][2].bbox(), i);
-    std::vector<std::pair<std::size_t, std::size_t>> pairs;
-    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(),
-                                  [&](const Box& a, const Box& b) { pairs.emplace_back(a.info(), b.info()); });
-    return pairs;
-}
 
 // The side of the plane of `t` that `p` lies on.
 CGAL::Orientation sideOf(const InputCorners& t, const InputPoint& p)
@@ -102,6 +103,42 @@ std::size_t next(std::size_t k, std::size_t step)
 {
     return (k + step) % 3;
 }
+
+// The crossings of input edges with other triangles' planes, one exact point per edge
+// and plane however many triangles share the edge: a point reached from the triangles on
+// both sides of an edge and from the triangle it crosses is then one handle, which the
+// triangulations and the merge recognise by identity instead of evaluating it exactly.
+class EdgeCrossings {
+public:
+    /// Where the edge from corner k to corner k + 1 of triangle t crosses the plane of
+    /// triangle `other` (its ends strictly on opposite sides).
+    const ExactPoint& crossing(const Corners& t, const InputCorners& input, std::size_t k, const Corners& plane,
+                               std::size_t other)
+    {
+        std::size_t from = k, to = next(k, 1);
+        if (CGAL::compare_xyz(input[from], input[to]) == CGAL::LARGER)
+            std::swap(from, to);
+        const InputPoint &p = input[from], &q = input[to];
+        const Key key{p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), double(other)};
+        const auto found = known_.find(key);
+        if (found != known_.end())
+            return found->second;
+        return known_.emplace(key, segmentCrossing(t[from], t[to], plane)).first->second;
+    }
+
+private:
+    using Key = std::array<double, 7>; ///< the edge's ends in lexicographic order, the plane's triangle
+    struct KeyHash {
+        std::size_t operator()(const Key& key) const
+        {
+            std::size_t h = 0;
+            for (double x : key)
+                h = h * 1000003u ^ std::hash<double>{}(x);
+            return h;
+        }
+    };
+    std::unordered_map<Key, ExactPoint, KeyHash> known_;
+};
 
 /// What the predicates on the input say of a pair whose boxes overlap.
 struct PairContact {
@@ -206,30 +243,41 @@ bool cutsMeetOnlyAtCorner(const Corners& a, const Corners& b, std::size_t i, std
     return CGAL::angle(p, a[i], q) == CGAL::OBTUSE;
 }
 
-// Where triangle `t` meets the plane of `other` (t's corners on its sides: `side`, not
+// Where triangle i meets the plane of triangle j (i's corners on its sides: `side`, not
 // all on one side, not all in the plane): its corners in the plane and the crossings of
-// its edges, one or two distinct points. Each crossing is one shallow construction from
-// the input doubles, so the rare predicate that must evaluate it exactly stays cheap.
-std::vector<ExactPoint> meetingWithPlane(const Corners& t, const std::array<CGAL::Orientation, 3>& side,
-                                         const Corners& other)
+// its edges, one or two distinct points, each tagged with the edge of i it lies in. Each
+// crossing is one shallow construction from the input doubles, so the rare predicate
+// that must evaluate it exactly stays cheap.
+std::vector<MarkPoint> meetingWithPlane(std::size_t i, const std::array<CGAL::Orientation, 3>& side, std::size_t j,
+                                        const std::vector<Corners>& triangles, const std::vector<InputCorners>& input,
+                                        EdgeCrossings& crossings)
 {
-    std::vector<ExactPoint> points;
+    std::vector<MarkPoint> points;
     for (std::size_t k = 0; k < 3; ++k) {
         if (side[k] == CGAL::COPLANAR)
-            points.push_back(t[k]);
+            points.push_back({triangles[i][k]}); // a corner: its own handle
         else if (oppositeSides(side[k], side[next(k, 1)]))
-            points.push_back(segmentCrossing(t[k], t[next(k, 1)], other));
+            points.push_back({crossings.crossing(triangles[i], input[i], k, triangles[j], j), std::uint8_t(k)});
     }
     return points;
 }
 
 // The ends of a run of points on one line, by the lexicographic order (monotone along
 // any line).
-std::array<ExactPoint, 2> ends(const std::vector<ExactPoint>& points)
+std::array<MarkPoint, 2> ends(const std::vector<MarkPoint>& points)
 {
-    const auto less = [](const ExactPoint& p, const ExactPoint& q) { return CGAL::compare_xyz(p, q) == CGAL::SMALLER; };
+    const auto less = [](const MarkPoint& p, const MarkPoint& q) {
+        return !CGAL::identical(p.point, q.point) && CGAL::compare_xyz(p.point, q.point) == CGAL::SMALLER;
+    };
     return {*std::min_element(points.begin(), points.end(), less),
             *std::max_element(points.begin(), points.end(), less)};
+}
+
+// `point` as a mark of the triangle whose meeting with the other's plane it came from
+// (`own`: its edge is known), or of the other triangle (anywhere in it).
+MarkPoint markOf(const MarkPoint& point, bool own)
+{
+    return own ? point : MarkPoint{point.point};
 }
 
 // Records what triangles i and j leave on each other; those that overlap in their
@@ -237,7 +285,8 @@ std::array<ExactPoint, 2> ends(const std::vector<ExactPoint>& points)
 // planes meet where the parts of each in the other's plane overlap on the planes' common
 // line: a point or a segment.
 void markIntersection(std::size_t i, std::size_t j, const std::vector<Corners>& triangles,
-                      const std::vector<InputCorners>& input, std::vector<Marks>& marks, UnionFind& groups)
+                      const std::vector<InputCorners>& input, EdgeCrossings& crossings, std::vector<Marks>& marks,
+                      UnionFind& groups)
 {
     std::array<CGAL::Orientation, 3> iInJ{}, jInI{};
     for (std::size_t k = 0; k < 3; ++k) {
@@ -259,29 +308,33 @@ void markIntersection(std::size_t i, std::size_t j, const std::vector<Corners>& 
         if (!meeting)
             return;
         if (const ExactPoint* point = boost::get<ExactPoint>(&*meeting)) {
-            marks[i].points.push_back(*point);
-            marks[j].points.push_back(*point);
+            marks[i].points.push_back({*point});
+            marks[j].points.push_back({*point});
         } else if (const Segment3* segment = boost::get<Segment3>(&*meeting)) {
-            marks[i].segments.push_back({segment->source(), segment->target()});
-            marks[j].segments.push_back({segment->source(), segment->target()});
+            const std::array<MarkPoint, 2> ends{MarkPoint{segment->source()}, MarkPoint{segment->target()}};
+            marks[i].segments.push_back(ends);
+            marks[j].segments.push_back(ends);
         } else {
             groups.unite(i, j); // a triangle or polygon: they overlap in one plane
         }
         return;
     }
-    const std::array<ExactPoint, 2> a = ends(meetingWithPlane(triangles[i], iInJ, triangles[j]));
-    const std::array<ExactPoint, 2> b = ends(meetingWithPlane(triangles[j], jInI, triangles[i]));
-    const ExactPoint& low = CGAL::compare_xyz(a[0], b[0]) == CGAL::LARGER ? a[0] : b[0];
-    const ExactPoint& high = CGAL::compare_xyz(a[1], b[1]) == CGAL::SMALLER ? a[1] : b[1];
-    const CGAL::Comparison_result order = CGAL::compare_xyz(low, high);
+    const std::array<MarkPoint, 2> a = ends(meetingWithPlane(i, iInJ, j, triangles, input, crossings));
+    const std::array<MarkPoint, 2> b = ends(meetingWithPlane(j, jInI, i, triangles, input, crossings));
+    const bool lowOfI = CGAL::compare_xyz(a[0].point, b[0].point) == CGAL::LARGER;
+    const bool highOfI = CGAL::compare_xyz(a[1].point, b[1].point) == CGAL::SMALLER;
+    const MarkPoint& low = lowOfI ? a[0] : b[0];
+    const MarkPoint& high = highOfI ? a[1] : b[1];
+    const CGAL::Comparison_result order =
+        CGAL::identical(low.point, high.point) ? CGAL::EQUAL : CGAL::compare_xyz(low.point, high.point);
     if (order == CGAL::LARGER)
         return;
     if (order == CGAL::EQUAL) {
-        marks[i].points.push_back(low);
-        marks[j].points.push_back(low);
+        marks[i].points.push_back(markOf(low, lowOfI));
+        marks[j].points.push_back(markOf(low, !lowOfI));
     } else {
-        marks[i].segments.push_back({low, high});
-        marks[j].segments.push_back({low, high});
+        marks[i].segments.push_back({markOf(low, lowOfI), markOf(high, highOfI)});
+        marks[j].segments.push_back({markOf(low, !lowOfI), markOf(high, !highOfI)});
     }
 }
 
@@ -318,6 +371,99 @@ struct Projection {
     }
 };
 
+using VertexHandle = PlaneTriangulation::Vertex_handle;
+
+// The triangulation of one group in its plane, its vertices found by the handle of the
+// exact point they were made for: a point reached again through the same handle (a
+// segment's end shared with the next segment, a corner) needs no point location, which
+// would evaluate it exactly to find it equal.
+struct GroupTriangulation {
+    PlaneTriangulation triangulation;
+    Projection project;
+    std::unordered_map<CGAL::Handle::Id_type, VertexHandle> byHandle;
+
+    VertexHandle vertexAt(const ExactPoint& p)
+    {
+        const auto found = byHandle.find(p.id());
+        if (found != byHandle.end())
+            return found->second;
+        const VertexHandle v = triangulation.insert(project(p));
+        if (!v->info())
+            v->info() = p;
+        byHandle.emplace(p.id(), v);
+        return v;
+    }
+
+    void constrain(VertexHandle a, VertexHandle b)
+    {
+        if (a != b)
+            triangulation.insert_constraint(a, b);
+    }
+
+    // Inserts `points`, all inside the edge of a lone triangle from corner `fromPoint`
+    // (vertex `from`) to `toPoint` (vertex `to`), the triangulation's hull edge, in their order along it, each into the
+    // piece of the edge it splits: no predicate but that order, where point location
+    // would find each exactly on the edge (a predicate that is exactly zero, evaluated in
+    // rationals).
+    void insertAlongEdge(std::vector<const ExactPoint*> points, const ExactPoint& fromPoint, const ExactPoint& toPoint,
+                         VertexHandle from, VertexHandle to)
+    {
+        const auto distinctHandle = [](const ExactPoint* p, const ExactPoint* q) { return p->id() < q->id(); };
+        std::sort(points.begin(), points.end(), distinctHandle);
+        points.erase(std::unique(points.begin(), points.end(),
+                                 [](const ExactPoint* p, const ExactPoint* q) { return p->id() == q->id(); }),
+                     points.end());
+        // Lexicographic order is monotone along the edge: nearer `fromPoint` first.
+        const CGAL::Comparison_result nearerFirst = CGAL::compare_xyz(fromPoint, toPoint);
+        std::sort(points.begin(), points.end(),
+                  [&](const ExactPoint* p, const ExactPoint* q) { return CGAL::compare_xyz(*p, *q) == nearerFirst; });
+        VertexHandle previous = from;
+        const ExactPoint* last = nullptr;
+        for (const ExactPoint* p : points) {
+            if (last != nullptr && CGAL::compare_xyz(*last, *p) == CGAL::EQUAL) {
+                byHandle.emplace(p->id(), previous); // equal points made twice
+                continue;
+            }
+            PlaneTriangulation::Face_handle face;
+            int index = 0;
+            if (!triangulation.is_edge(previous, to, face, index))
+                throw std::logic_error("arrangement: a point on a triangle's edge lost its edge");
+            const VertexHandle v = triangulation.insert(project(*p), PlaneTriangulation::EDGE, face, index);
+            v->info() = *p;
+            byHandle.emplace(p->id(), v);
+            previous = v;
+            last = p;
+        }
+    }
+};
+
+// A lone triangle with what others leave on it: its corners, the marks known to lie in
+// each edge along that edge, the rest by point location, and the segments as constraints
+// (its edges are the triangulation's hull, so they need none).
+void triangulateLone(GroupTriangulation& group, const Corners& t, const Marks& marks)
+{
+    std::array<VertexHandle, 3> corner;
+    for (std::size_t k = 0; k < 3; ++k)
+        corner[k] = group.vertexAt(t[k]);
+    std::array<std::vector<const ExactPoint*>, 3> onEdge;
+    const auto collect = [&](const MarkPoint& m) {
+        if (m.edge != kAnywhere)
+            onEdge[m.edge].push_back(&m.point);
+    };
+    for (const MarkPoint& m : marks.points)
+        collect(m);
+    for (const auto& segment : marks.segments) {
+        collect(segment[0]);
+        collect(segment[1]);
+    }
+    for (std::size_t k = 0; k < 3; ++k)
+        group.insertAlongEdge(std::move(onEdge[k]), t[k], t[next(k, 1)], corner[k], corner[next(k, 1)]);
+    for (const MarkPoint& m : marks.points)
+        group.vertexAt(m.point);
+    for (const auto& segment : marks.segments)
+        group.constrain(group.vertexAt(segment[0].point), group.vertexAt(segment[1].point));
+}
+
 // Triangulates one group (coplanar triangles that overlap, or a lone triangle) with
 // every member's edges and marks as constraints, and gives each piece to every member
 // that covers it, in that member's orientation.
@@ -326,27 +472,21 @@ void triangulateGroup(const std::vector<std::size_t>& members, const std::vector
 {
     const Corners& first = triangles[members.front()];
     const Plane3 plane(first[0], first[1], first[2]);
-    const Projection project{plane, dominantAxis(plane.orthogonal_vector())};
-    PlaneTriangulation triangulation;
-    const auto vertexAt = [&](const ExactPoint& p) {
-        const PlaneTriangulation::Vertex_handle v = triangulation.insert(project(p));
-        if (!v->info())
-            v->info() = p;
-        return v;
-    };
-    const auto constrain = [&](const ExactPoint& p, const ExactPoint& q) {
-        const PlaneTriangulation::Vertex_handle vp = vertexAt(p), vq = vertexAt(q);
-        if (vp != vq)
-            triangulation.insert_constraint(vp, vq);
-    };
-    for (std::size_t m : members) {
-        const Corners& t = triangles[m];
-        for (std::size_t k = 0; k < 3; ++k)
-            constrain(t[k], t[(k + 1) % 3]);
-        for (const ExactPoint& p : marks[m].points)
-            vertexAt(p);
-        for (const auto& s : marks[m].segments)
-            constrain(s[0], s[1]);
+    GroupTriangulation group{{}, Projection{plane, dominantAxis(plane.orthogonal_vector())}, {}};
+    PlaneTriangulation& triangulation = group.triangulation;
+    const Projection& project = group.project;
+    if (members.size() == 1) {
+        triangulateLone(group, first, marks[members.front()]);
+    } else {
+        for (std::size_t m : members) {
+            const Corners& t = triangles[m];
+            for (std::size_t k = 0; k < 3; ++k)
+                group.constrain(group.vertexAt(t[k]), group.vertexAt(t[(k + 1) % 3]));
+            for (const MarkPoint& p : marks[m].points)
+                group.vertexAt(p.point);
+            for (const auto& segment : marks[m].segments)
+                group.constrain(group.vertexAt(segment[0].point), group.vertexAt(segment[1].point));
+        }
     }
     for (auto v = triangulation.finite_vertices_begin(); v != triangulation.finite_vertices_end(); ++v)
         if (!v->info())
@@ -408,30 +548,239 @@ void runInChunks(std::size_t count, const TaskControl& control, const std::funct
 }
 
 struct CandidatePair {
-    std::size_t index = 0; ///< into the candidate pairs
+    std::size_t first = 0, second = 0; ///< first < second
     PairContact contact;
 };
 
-std::vector<CandidatePair> undecidedPairs(const std::vector<std::pair<std::size_t, std::size_t>>& pairs,
-                                          const std::vector<InputCorners>& input, const TaskControl& control)
+/// The pairs one slab of space found, and how many pairs of triangles' boxes it saw.
+struct SlabPairs {
+    std::vector<CandidatePair> undecided;
+    std::size_t overlapping = 0;
+};
+
+// A triangle lying obliquely to the axes and much longer than the scene's typical one
+// also gets boxes of its parts, cut across the longest axis of its box: such a sliver's
+// one box holds mostly empty space and meets thousands of others' (most candidate pairs
+// of CAD parts), its parts' boxes far fewer. A pair of triangles whose boxes overlap but
+// whose parts' boxes do not is apart, with no predicate. One along an axis fills its box
+// already.
+constexpr std::size_t kMaxParts = 4;
+
+/// The boxes of every triangle's parts (one part: its own box).
+struct PartBoxes {
+    std::vector<CGAL::Bbox_3> whole; ///< per triangle
+    std::vector<CGAL::Bbox_3> boxes;
+    std::vector<std::size_t> first; ///< boxes[first[i]] .. boxes[first[i + 1]]: triangle i's parts
+
+    [[nodiscard]] const CGAL::Bbox_3& part(std::size_t triangle, std::size_t k) const
+    {
+        return boxes[first[triangle] + k];
+    }
+    [[nodiscard]] std::size_t parts(std::size_t triangle) const { return first[triangle + 1] - first[triangle]; }
+};
+
+// The box of the part of triangle t between a = low and a = high along axis a, grown
+// across the other axes by a margin far above the rounding of the crossings of its edges
+// with those two planes: a filter must never lose a pair.
+CGAL::Bbox_3 partBox(const InputCorners& t, int a, double low, double high)
 {
-    constexpr std::size_t kChunks = 256;
-    const std::size_t chunk = std::max<std::size_t>(1, (pairs.size() + kChunks - 1) / kChunks);
-    std::vector<std::vector<CandidatePair>> found((pairs.size() + chunk - 1) / chunk);
-    const TaskControl quiet{{}, control.stop};
+    std::array<double, 3> min{}, max{};
+    min.fill(std::numeric_limits<double>::infinity());
+    max.fill(-std::numeric_limits<double>::infinity());
+    double magnitude = 0.0;
+    const auto include = [&](const std::array<double, 3>& p) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            min[k] = std::min(min[k], p[k]);
+            max[k] = std::max(max[k], p[k]);
+        }
+    };
+    for (std::size_t k = 0; k < 3; ++k) {
+        const InputPoint& p = t[k];
+        const InputPoint& q = t[next(k, 1)];
+        for (int d = 0; d < 3; ++d)
+            magnitude = std::max(magnitude, std::abs(p[d]));
+        if (p[a] >= low && p[a] <= high)
+            include({p.x(), p.y(), p.z()});
+        for (double plane : {low, high}) {
+            if (p[a] == q[a] || plane < std::min(p[a], q[a]) || plane > std::max(p[a], q[a]))
+                continue;
+            const double along = (plane - p[a]) / (q[a] - p[a]);
+            include(
+                {p.x() + along * (q.x() - p.x()), p.y() + along * (q.y() - p.y()), p.z() + along * (q.z() - p.z())});
+        }
+    }
+    const double margin = 64.0 * std::numeric_limits<double>::epsilon() * magnitude;
+    for (int d = 0; d < 3; ++d) {
+        if (d == a) {
+            min[std::size_t(d)] = low;
+            max[std::size_t(d)] = high;
+        } else {
+            min[std::size_t(d)] -= margin;
+            max[std::size_t(d)] += margin;
+        }
+    }
+    return {min[0], min[1], min[2], max[0], max[1], max[2]};
+}
+
+int longestAxis(const CGAL::Bbox_3& b)
+{
+    int a = 0;
+    for (int d = 1; d < 3; ++d)
+        if (b.max(d) - b.min(d) > b.max(a) - b.min(a))
+            a = d;
+    return a;
+}
+
+// How many parts triangle t is boxed in: as many as its box's face across its two
+// longest axes is larger than the triangle's shadow on it (about 2 when it lies along an
+// axis), and no more than it is longer than the typical triangle (`length`), up to
+// kMaxParts. A heuristic for speed only: any count covers the triangle.
+std::size_t partCount(const InputCorners& t, const CGAL::Bbox_3& b, double length)
+{
+    if (length < 2.0)
+        return 1;
+    std::array<double, 3> extent{b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()};
+    const std::size_t thinnest = std::size_t(std::min_element(extent.begin(), extent.end()) - extent.begin());
+    const std::size_t u = (thinnest + 1) % 3, v = (thinnest + 2) % 3;
+    const std::array<double, 3> e1{t[1].x() - t[0].x(), t[1].y() - t[0].y(), t[1].z() - t[0].z()};
+    const std::array<double, 3> e2{t[2].x() - t[0].x(), t[2].y() - t[0].y(), t[2].z() - t[0].z()};
+    const double shadow = 0.5 * std::abs(e1[u] * e2[v] - e1[v] * e2[u]);
+    const double emptiness = shadow > 0.0 ? extent[u] * extent[v] / shadow : double(kMaxParts) * 4.0;
+    return std::size_t(std::clamp(std::floor(std::min(emptiness / 64.0, length)), 1.0, double(kMaxParts)));
+}
+
+PartBoxes partBoxes(const std::vector<InputCorners>& input)
+{
+    PartBoxes result;
+    std::vector<CGAL::Bbox_3>& whole = result.whole;
+    whole.reserve(input.size());
+    std::vector<double> longest;
+    longest.reserve(input.size());
+    for (const InputCorners& t : input) { // exact boxes: the corners are doubles
+        whole.push_back(t[0].bbox() + t[1].bbox() + t[2].bbox());
+        const CGAL::Bbox_3& b = whole.back();
+        longest.push_back(std::max({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()}));
+    }
+    std::vector<double> sorted = longest;
+    const auto middle = sorted.begin() + std::ptrdiff_t(sorted.size() / 2);
+    std::nth_element(sorted.begin(), middle, sorted.end());
+    const double typical = sorted.empty() ? 0.0 : *middle;
+
+    result.first.reserve(input.size() + 1);
+    for (std::size_t i = 0; i < input.size(); ++i) {
+        result.first.push_back(result.boxes.size());
+        const CGAL::Bbox_3& b = whole[i];
+        const std::size_t parts = typical > 0.0 ? partCount(input[i], b, longest[i] / typical) : 1;
+        if (parts == 1) {
+            result.boxes.push_back(b);
+            continue;
+        }
+        const int a = longestAxis(b);
+        // Shared cut positions, and the box's own ends at either end: the parts' extents
+        // along the axis tile the box's exactly.
+        for (std::size_t k = 0; k < parts; ++k) {
+            const double low = k == 0 ? b.min(a) : b.min(a) + (b.max(a) - b.min(a)) * double(k) / double(parts);
+            const double high =
+                k + 1 == parts ? b.max(a) : b.min(a) + (b.max(a) - b.min(a)) * double(k + 1) / double(parts);
+            result.boxes.push_back(partBox(input[i], a, low, high));
+        }
+    }
+    result.first.push_back(result.boxes.size());
+    return result;
+}
+
+// Whether any part of triangle i has a box that overlaps one of triangle j's.
+bool partsMeet(const PartBoxes& boxes, std::size_t i, std::size_t j)
+{
+    for (std::size_t s = 0; s < boxes.parts(i); ++s)
+        for (std::size_t t = 0; t < boxes.parts(j); ++t)
+            if (CGAL::do_overlap(boxes.part(i, s), boxes.part(j, t)))
+                return true;
+    return false;
+}
+
+// Slabs of space across the longest axis of the scene, a fixed number whatever the core
+// count (the pairs' order, and so the arrangement, does not depend on it), their
+// boundaries at quantiles of the boxes' lower ends so that each starts as many boxes.
+constexpr std::size_t kSlabs = 16;
+
+struct Slabs {
+    int axis = 0;
+    std::array<double, kSlabs - 1> boundaries{};
+
+    /// The slab holding coordinate x along the axis.
+    [[nodiscard]] std::size_t of(double x) const
+    {
+        return std::size_t(std::upper_bound(boundaries.begin(), boundaries.end(), x) - boundaries.begin());
+    }
+};
+
+Slabs slabsOf(const std::vector<Box>& boxes)
+{
+    std::array<double, 3> low{}, high{};
+    low.fill(std::numeric_limits<double>::infinity());
+    high.fill(-std::numeric_limits<double>::infinity());
+    for (const Box& box : boxes)
+        for (int k = 0; k < 3; ++k) {
+            low[std::size_t(k)] = std::min(low[std::size_t(k)], box.min_coord(k));
+            high[std::size_t(k)] = std::max(high[std::size_t(k)], box.max_coord(k));
+        }
+    Slabs slabs;
+    for (int k = 1; k < 3; ++k)
+        if (high[std::size_t(k)] - low[std::size_t(k)] > high[std::size_t(slabs.axis)] - low[std::size_t(slabs.axis)])
+            slabs.axis = k;
+    std::vector<double> lower;
+    lower.reserve(boxes.size());
+    for (const Box& box : boxes)
+        lower.push_back(box.min_coord(slabs.axis));
+    std::sort(lower.begin(), lower.end());
+    for (std::size_t s = 1; s < kSlabs; ++s)
+        slabs.boundaries[s - 1] = lower.empty() ? 0.0 : lower[lower.size() * s / kSlabs];
+    return slabs;
+}
+
+// The pairs of triangles whose boxes (and their parts' boxes) overlap and that the
+// input's predicates cannot clear, each decided as the box intersection finds it (pairs
+// of boxes run to millions; none is stored unless undecided). Every slab runs on its own
+// core with the boxes that reach into it, and keeps the pairs of boxes whose overlap
+// begins in it along the axis (the larger of the two lower ends): each pair once.
+std::vector<CandidatePair> undecidedPairs(const std::vector<InputCorners>& input, const TaskControl& control,
+                                          std::size_t& overlapping)
+{
+    const PartBoxes parts = partBoxes(input);
+    std::vector<Box> boxes;
+    boxes.reserve(input.size());
+    for (std::size_t i = 0; i < input.size(); ++i)
+        boxes.emplace_back(parts.whole[i], i);
+    const Slabs slabs = slabsOf(boxes);
+    std::vector<SlabPairs> found(kSlabs);
+    const TaskControl quiet{{}, control.stop}; // the caller reports the stage
     parallelFor(
-        found.size(), 0,
-        [&](std::size_t c) {
-            for (std::size_t p = c * chunk; p < std::min(pairs.size(), (c + 1) * chunk); ++p) {
-                const PairContact contact = contactOf(input[pairs[p].first], input[pairs[p].second]);
+        kSlabs, 0,
+        [&](std::size_t slab) {
+            std::vector<Box> reaching;
+            for (const Box& box : boxes)
+                if (slabs.of(box.min_coord(slabs.axis)) <= slab && slab <= slabs.of(box.max_coord(slabs.axis)))
+                    reaching.push_back(box);
+            SlabPairs& pairs = found[slab];
+            CGAL::box_self_intersection_d(reaching.begin(), reaching.end(), [&](const Box& a, const Box& b) {
+                if (slabs.of(std::max(a.min_coord(slabs.axis), b.min_coord(slabs.axis))) != slab)
+                    return;
+                const std::size_t i = std::min(a.info(), b.info()), j = std::max(a.info(), b.info());
+                if ((parts.parts(i) > 1 || parts.parts(j) > 1) && !partsMeet(parts, i, j))
+                    return;
+                ++pairs.overlapping;
+                const PairContact contact = contactOf(input[i], input[j]);
                 if (contact.kind != PairContact::apart)
-                    found[c].push_back({p, contact});
-            }
+                    pairs.undecided.push_back({i, j, contact});
+            });
         },
         quiet);
     std::vector<CandidatePair> all;
-    for (const std::vector<CandidatePair>& part : found)
-        all.insert(all.end(), part.begin(), part.end());
+    for (const SlabPairs& pairs : found) {
+        overlapping += pairs.overlapping;
+        all.insert(all.end(), pairs.undecided.begin(), pairs.undecided.end());
+    }
     return all;
 }
 
@@ -449,27 +798,22 @@ std::vector<ArrangedTriangle> arrangeTriangles(const std::vector<std::array<Exac
         start = now;
     };
     const std::vector<InputCorners> input = inputCorners(triangles);
-    const auto pairs = overlappingBoxes(triangles);
-    measured.candidatePairs += pairs.size();
-    lap(measured.boxesMs);
-
-    // The pairs the input's predicates cannot clear, in the order of `pairs` whatever
-    // the thread count (the arrangement does not depend on it).
-    const std::vector<CandidatePair> crossing = undecidedPairs(pairs, input, control);
+    const std::vector<CandidatePair> crossing = undecidedPairs(input, control, measured.candidatePairs);
     lap(measured.pairsMs);
     std::vector<Marks> marks(triangles.size());
     UnionFind groups(triangles.size());
+    EdgeCrossings crossings;
     constexpr std::size_t kCheckEvery = 4096;
     for (std::size_t p = 0; p < crossing.size(); ++p) {
         if (p % kCheckEvery == 0)
             control.throwIfCancelled();
         const CandidatePair& pair = crossing[p];
-        const std::size_t i = pairs[pair.index].first, j = pairs[pair.index].second;
+        const std::size_t i = pair.first, j = pair.second;
         if (pair.contact.kind == PairContact::cornerCuts &&
             cutsMeetOnlyAtCorner(triangles[i], triangles[j], pair.contact.i, pair.contact.j))
             continue;
         ++measured.constructedPairs;
-        markIntersection(i, j, triangles, input, marks, groups);
+        markIntersection(i, j, triangles, input, crossings, marks, groups);
     }
     lap(measured.constructMs);
 

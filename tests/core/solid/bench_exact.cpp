@@ -208,11 +208,10 @@ void profileCase(const BenchCase& c)
         settings.csg.expression = *parseCsgExpression("0 - 1", nullptr);
     const TrimmedSolid solid = trimmedSolid(scene, settings);
     const ExactProfile& p = solid.stats.profile;
-    std::printf(
-        "| %s | %zu | %zu | %zu | %zu | %zu | %.0f | %.0f | %.0f | %.0f | %.0f | %zu | %.0f | %.0f | %.0f | %.0f |\n",
-        qPrintable(c.name), solid.stats.inputTriangles, p.candidatePairs, p.constructedPairs, p.splitTriangles,
-        p.largestCoplanarGroup, p.boxesMs, p.pairsMs, p.constructMs, p.triangulateMs, p.mergeMs, p.sortedEdges,
-        p.wedgesMs, p.walkMs, p.raysMs, solid.stats.refineMs + solid.stats.windingMs);
+    std::printf("| %s | %zu | %zu | %zu | %zu | %zu | %.0f | %.0f | %.0f | %.0f | %zu | %.0f | %.0f | %.0f | %.0f |\n",
+                qPrintable(c.name), solid.stats.inputTriangles, p.candidatePairs, p.constructedPairs, p.splitTriangles,
+                p.largestCoplanarGroup, p.pairsMs, p.constructMs, p.triangulateMs, p.mergeMs, p.sortedEdges, p.wedgesMs,
+                p.walkMs, p.raysMs, solid.stats.refineMs + solid.stats.windingMs);
     std::fflush(stdout);
 }
 
@@ -240,8 +239,8 @@ int main(int argc, char** argv)
         std::vector<BenchCase> cases = collectCases(parser.value(QStringLiteral("data")), parser.positionalArguments());
         if (parser.isSet(QStringLiteral("profile"))) {
             std::printf("| case | triangles | candidate pairs | constructed | split triangles | largest coplanar group "
-                        "| boxes ms | pairs ms | construct ms | triangulate ms | merge ms | sorted edges | wedges ms | "
-                        "walk ms | rays ms | export ms |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+                        "| pairs ms | construct ms | triangulate ms | merge ms | sorted edges | wedges ms | "
+                        "walk ms | rays ms | export ms |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
                         "---:|---:|---:|---:|\n");
             for (const BenchCase& c : cases)
                 if (c.sources.size() == 2 || validateMesh(loadMesh(c.sources.front().toStdString())).closed())
