@@ -1,3 +1,4 @@
+#include "python/animation_arguments.h"
 #include "python/array_convert.h"
 #include "python/bindings.h"
 #include "python/keyword_parameters.h"
@@ -25,28 +26,6 @@ namespace {
 namespace ap = animation_load_parameters;
 namespace sp = segmentation_parameters;
 namespace kp = skinning_parameters;
-
-MeshAnimation animationFromArrays(const py::object& poses, const py::object& triangles, const py::object& restPose)
-{
-    MeshAnimation animation;
-    animation.poses = posesFromArray(poses, "poses");
-    if (animation.poses.empty())
-        throw InputError("poses must hold at least one pose, got shape (0, ...)");
-    animation.triangles = trianglesFromArray(triangles, animation.vertexCount(), "F");
-    for (std::size_t k = 0; k < animation.poses.size(); ++k)
-        animation.poseNames.push_back("pose " + std::to_string(k));
-    animation.restPose = std::size_t(keywordInt(ap::kRestPose, restPose));
-    if (animation.restPose >= animation.poses.size())
-        throw ParameterError("the rest pose " + std::to_string(animation.restPose) +
-                             " does not exist; the animation has " + std::to_string(animation.poses.size()) +
-                             " poses (0 to " + std::to_string(animation.poses.size() - 1) + ")");
-    try {
-        requireWellFormed(animation);
-    } catch (const std::invalid_argument& e) {
-        throw InputError(e.what());
-    }
-    return animation;
-}
 
 py::tuple loadAnimationArrays(const std::string& source, const py::object& restPose, const py::object& closeHoles,
                               const py::object& progress)

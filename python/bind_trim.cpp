@@ -1,9 +1,12 @@
+#include "python/animation_arguments.h"
 #include "python/array_convert.h"
 #include "python/bindings.h"
 #include "python/python_errors.h"
 #include "python/python_progress.h"
 #include "python/scene_arguments.h"
 
+#include "core/catalog/pose_scene.h"
+#include "core/solid/trimmed_animation.h"
 #include "core/solid/trimmed_solid.h"
 #include "core/trim/clip_set.h"
 
@@ -11,6 +14,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace trimlab::python {
 
@@ -94,6 +98,67 @@ Raises InputError for bad arrays, names or ids, NotTrimmableError when an object
 closed and consistently oriented, and what the progress callback raises (the GIL is
 released; progress(stage, done, total) is called between stages).)doc";
 
+// The poses first … last (inclusive) of an animation of `count` poses; last None: the last.
+std::pair<std::size_t, std::size_t> poseRange(long long from, const py::object& last, std::size_t count)
+{
+    const long long to = last.is_none() ? (long long)(count)-1 : py::cast<long long>(last);
+    if (from < 0 || to < from || to >= (long long)(count))
+        throw InputError("poses " + std::to_string(from) + " to " + std::to_string(to) + ": the animation has " +
+                         std::to_string(count) + " poses (0 to " + std::to_string(count - 1) + ")");
+    return {std::size_t(from), std::size_t(to)};
+}
+
+// Every pose has the first's triangles, so the first pose's refusal is every pose's.
+void requirePoseTrimmable(const MeshAnimation& animation, std::size_t pose)
+{
+    const LoadedScene scene = animationPoseScene(animation, pose, "pose", "pose " + std::to_string(pose));
+    if (!scene.trimmable())
+        throw NotTrimmableError("pose " + std::to_string(pose) +
+                                " has no inside to trim: " + scene.trimUnavailableReason() +
+                                " In Python, load_animation(..., close_holes=True) closes the holes of every pose.");
+}
+
+py::list trimPoses(const py::object& poses, const py::object& triangles, const std::string& rule,
+                   const py::object& clip, long long first, const py::object& last, bool stats,
+                   const py::object& progress)
+{
+    const MeshAnimation animation = animationFromArrays(poses, triangles, py::none());
+    const auto [from, to] = poseRange(first, last, animation.poseCount());
+    TrimSettings settings = trimSettingsFromArguments(rule, py::none(), py::none(), 1);
+    settings.setClipSet(clipSetFromArgument(clip));
+    requirePoseTrimmable(animation, from);
+    std::vector<TrimmedSolid> solids;
+    solids.reserve(to - from + 1);
+    runWithProgress(progress, [&](const TaskControl& control) {
+        trimAnimationPoses(
+            animation, from, to, settings, [&](std::size_t, const TrimmedSolid& solid) { solids.push_back(solid); },
+            control);
+        return true;
+    });
+    py::list result;
+    for (TrimmedSolid& solid : solids) {
+        py::tuple mesh = meshArrays(std::move(solid.mesh));
+        result.append(stats ? py::make_tuple(mesh[0], mesh[1], statsDict(solid.stats)) : mesh);
+    }
+    return result;
+}
+
+constexpr const char* kTrimPosesDoc =
+    R"doc(trim_poses(poses, F, *, rule="alternating-border", clip=None, first=0, last=None, stats=False, progress=None) -> list
+
+Each pose of an animation trimmed on its own, as `trimlab trim ANIM --poses FIRST:LAST`
+writes it: poses first … last (inclusive; last None: the last pose), each the exact
+trimmed solid of trim() under the static `rule`, cut by `clip` and capped. poses is
+(k, n, 3) float64 (what load_animation returns), F (m, 3) int. Returns one (V, F) per
+pose in pose order (with stats=True, (V, F, stats) as trim() gives). The poses are
+trimmed as many at a time as there are cores; the solids do not depend on how many.
+
+Dynamic rules, which remember the poses before, have no exact solid and are not offered.
+Raises InputError for bad arrays, a rule name or a range outside the animation,
+NotTrimmableError when the poses are not closed (load_animation(..., close_holes=True)
+closes them), and what the progress callback raises (progress("poses", done, total)
+after every pose; the GIL is released).)doc";
+
 } // namespace
 
 void bindTrim(py::module_& m)
@@ -101,6 +166,9 @@ void bindTrim(py::module_& m)
     m.def("trim", &trim, py::arg("meshes"), py::arg("F") = py::none(), py::kw_only(),
           py::arg("rule") = "alternating-border", py::arg("csg") = py::none(), py::arg("rules") = py::none(),
           py::arg("clip") = py::none(), py::arg("stats") = false, py::arg("progress") = py::none(), kTrimDoc);
+    m.def("trim_poses", &trimPoses, py::arg("poses"), py::arg("F"), py::kw_only(),
+          py::arg("rule") = "alternating-border", py::arg("clip") = py::none(), py::arg("first") = 0,
+          py::arg("last") = py::none(), py::arg("stats") = false, py::arg("progress") = py::none(), kTrimPosesDoc);
 }
 
 } // namespace trimlab::python

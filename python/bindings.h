@@ -11,7 +11,7 @@ namespace py = pybind11;
 
 /// load, load_scene, save, info, winding_numbers, demos (bind_mesh.cpp).
 void bindMesh(py::module_& module);
-/// trim (bind_trim.cpp).
+/// trim, trim_poses (bind_trim.cpp).
 void bindTrim(py::module_& module);
 /// load_animation, segment, skin and the Skinning result (bind_animation.cpp).
 void bindAnimation(py::module_& module);

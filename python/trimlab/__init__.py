@@ -6,7 +6,7 @@ function runs the same core code as the `trimlab` command line and the GUI panel
 
     load, load_scene, save, info, winding_numbers, demos     meshes and their report
     close_holes                                             an open mesh closed for the trim rules
-    trim                                                    the exact trimmed solid (CSG too)
+    trim, trim_poses                                        the exact trimmed solid (CSG too), pose by pose
     render                                                  CPU reference or OpenGL images
     load_animation, segment, skin                           mesh animations, skinning fits
     skeleton                                                curve skeleton, rig, weights
@@ -44,6 +44,7 @@ from ._trimlab import (
     skeleton,
     skin,
     trim,
+    trim_poses,
     winding_numbers,
 )
 
@@ -73,5 +74,6 @@ __all__ = [
     "skeleton",
     "skin",
     "trim",
+    "trim_poses",
     "winding_numbers",
 ]

@@ -50,6 +50,17 @@ def trim(
     stats: bool = False,
     progress: Progress = None,
 ) -> Union[Mesh, Tuple[Vertices, Triangles, dict[str, Any]]]: ...
+def trim_poses(
+    poses: ArrayLike,
+    F: ArrayLike,
+    *,
+    rule: str = "alternating-border",
+    clip: Optional[Sequence[Sequence[float]]] = None,
+    first: int = 0,
+    last: Optional[int] = None,
+    stats: bool = False,
+    progress: Progress = None,
+) -> list[Union[Mesh, Tuple[Vertices, Triangles, dict[str, Any]]]]: ...
 def render(
     meshes: Union[ArrayLike, Sequence[Tuple[ArrayLike, ArrayLike]]],
     F: Optional[ArrayLike] = None,

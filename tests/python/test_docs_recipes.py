@@ -30,8 +30,8 @@ def workspace(tmp_path, data):
     os.chdir(cwd)
 
 
-def test_the_docs_have_three_recipes():
-    assert len(recipes()) == 3
+def test_the_docs_have_four_recipes():
+    assert len(recipes()) == 4
 
 
 def test_the_recipes_run_as_written(workspace, capsys):
@@ -44,3 +44,4 @@ def test_the_recipes_run_as_written(workspace, capsys):
     assert (workspace / "trimmed" / "cube.obj").exists()
     assert (workspace / "walk.glb").stat().st_size > 0
     assert "cube.obj" in printed and "E_RMS" in printed
+    assert (workspace / "walk-trimmed" / "pose_0000.obj").exists() and "pose 0: " in printed

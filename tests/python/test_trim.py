@@ -91,3 +91,66 @@ def test_trim_with_clip_planes_cuts_and_caps():
         trimlab.trim(V, F, clip=[(0.0, 0.0, 0.0, 1.0)])
     with pytest.raises(trimlab.InputError):
         trimlab.trim(V, F, clip=[(1.0, 0.0, 0.0)])
+
+
+@pytest.fixture(scope="module")
+def folding(data):
+    return trimlab.load_animation(str(data / "animations" / "folding_box"))
+
+
+def test_trim_poses_is_the_command_lines_poses_vertex_for_vertex(folding, data, run_cli, tmp_path_factory):
+    out = tmp_path_factory.mktemp("poses")
+    source = str(data / "animations" / "folding_box")
+    code, stdout, stderr = run_cli("trim", source, "--poses", "1:2", "--rule", "nonzero", "-o", str(out / "p_%04d.obj"))
+    assert code == 0, stderr
+    trimmed = trimlab.trim_poses(*folding, rule="nonzero", first=1)
+    assert len(trimmed) == 2
+    for pose, (V, F) in zip((1, 2), trimmed):
+        Vc, Fc = trimlab.load(str(out / f"p_{pose:04d}.obj"))
+        assert np.array_equal(V, Vc) and np.array_equal(F, Fc)
+
+
+def test_each_pose_is_trimmed_on_its_own(folding):
+    poses, F = folding
+    trimmed = trimlab.trim_poses(poses, F, rule="parity", stats=True)
+    assert len(trimmed) == len(poses)
+    volumes = []
+    for pose, (V, Ft, stats) in zip(poses, trimmed):
+        Vs, Fs = trimlab.trim(pose, F, rule="parity")
+        assert np.array_equal(V, Vs) and np.array_equal(Ft, Fs)
+        assert stats["open_edges"] == 0
+        volumes.append(stats["signed_volume"])
+    assert len(set(volumes)) == len(volumes)  # the box folds: every pose keeps another solid
+
+
+def test_trim_poses_cuts_every_pose_with_the_clip_planes(folding):
+    poses, F = folding
+    plane = [(0.0, 0.0, 1.0, 0.0)]
+    for pose, (V, Ft, stats) in zip(poses, trimlab.trim_poses(poses, F, clip=plane, stats=True)):
+        _, _, whole = trimlab.trim(pose, F, stats=True)
+        _, _, cut = trimlab.trim(pose, F, clip=plane, stats=True)
+        assert stats["signed_volume"] == pytest.approx(cut["signed_volume"], rel=1e-12)
+        assert stats["open_edges"] == 0 and 0 < stats["signed_volume"] < whole["signed_volume"]
+
+
+def test_trim_poses_refusals_name_the_problem(folding, data):
+    poses, F = folding
+    with pytest.raises(trimlab.InputError, match=r"poses 2 to 5: the animation has 3 poses \(0 to 2\)"):
+        trimlab.trim_poses(poses, F, first=2, last=5)
+    with pytest.raises(trimlab.InputError, match="poses 2 to 1"):
+        trimlab.trim_poses(poses, F, first=2, last=1)
+    with pytest.raises(trimlab.InputError, match="unknown rule 'confluent'"):
+        trimlab.trim_poses(poses, F, rule="confluent")
+    open_poses, open_F = trimlab.load_animation(str(data / "animations" / "bar"))
+    with pytest.raises(trimlab.NotTrimmableError, match=r"pose 0 has no inside to trim: .*close_holes=True"):
+        trimlab.trim_poses(open_poses, open_F)
+    closed_poses, closed_F = trimlab.load_animation(str(data / "animations" / "bar"), close_holes=True)
+    assert len(trimlab.trim_poses(closed_poses, closed_F)) == len(closed_poses)
+
+
+def test_trim_poses_reports_every_pose_and_stops_when_asked(folding):
+    reports = []
+    trimlab.trim_poses(*folding, progress=lambda stage, done, total: reports.append((stage, done, total)))
+    assert [r for r in reports if r[0] == "poses"] == [("poses", k, 3) for k in range(4)]
+    with pytest.raises(trimlab.Cancelled):
+        trimlab.trim_poses(*folding, progress=lambda stage, done, total: False)
