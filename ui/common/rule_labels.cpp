@@ -1,5 +1,7 @@
 #include "ui/common/rule_labels.h"
 
+#include "core/trim/csg_expression.h"
+
 #include <QComboBox>
 #include <QCoreApplication>
 
@@ -57,6 +59,13 @@ QString ruleToolTip(StaticRule rule)
             .arg(rule.threshold());
     }
     return QString();
+}
+
+QString classificationLabel(const TrimSettings& settings)
+{
+    if (settings.csg.enabled())
+        return tr("the CSG %1").arg(QString::fromStdString(formatCsgExpression(settings.csg.expression)));
+    return tr("the %1 rule").arg(ruleLabel(settings.rule).toLower());
 }
 
 QString ruleKey(StaticRule rule)

@@ -6,6 +6,7 @@
 /// of every entry is the stable ruleName(), so settings and tests address entries by name.
 
 #include "core/trim/static_rule.h"
+#include "core/trim/trim_settings.h"
 
 #include <QString>
 
@@ -17,6 +18,9 @@ namespace trimlab::ui {
 
 /// "Parity", "Nonzero", "w ≥ 3", "|w| ≥ 2", ...
 [[nodiscard]] QString ruleLabel(StaticRule rule);
+/// What classifies the solid of `settings`, for a sentence: "the alternating border rule"
+/// or "the CSG 0 - 1".
+[[nodiscard]] QString classificationLabel(const TrimSettings& settings);
 /// One sentence saying which cells the rule keeps.
 [[nodiscard]] QString ruleToolTip(StaticRule rule);
 

@@ -4,6 +4,7 @@
 #include "ui/inspect/csg_expression_field.h"
 #include "ui/inspect/inspect_scene.h"
 #include "ui/inspect/object_transform_form.h"
+#include "ui/inspect/solid_measures_view.h"
 
 #include <QComboBox>
 #include <QGroupBox>
@@ -55,6 +56,14 @@ ScenePanel::ScenePanel(InspectScene& scene, QWidget* parent) : QWidget(parent), 
             refreshTransform();
     });
     rebuildTable();
+}
+
+void ScenePanel::setSolidMeasures(SolidMeasuresView* view)
+{
+    auto* box = static_cast<QVBoxLayout*>(layout());
+    view->setParent(this);
+    box->insertWidget(box->count() - 1, view); // above the stretch
+    m_solidMeasures = view;
 }
 
 QWidget* ScenePanel::createObjectsGroup()

@@ -6,7 +6,8 @@
 /// object (object_transform_form.h); the CSG expression (csg_expression_field.h) with
 /// buttons that combine the selected objects; and "Add Object…" (File ▸ Add Object…).
 /// Every edit goes to the InspectScene (undoable) and renders at once; the panel only
-/// shows what the InspectScene holds.
+/// shows what the InspectScene holds. Below them, the window may place the trimmed
+/// solid's measures (solid_measures_view.h).
 ///
 /// Transforms cannot be edited while a deformation history is designed on the scene's
 /// only object (the brush works in that object's frame) or an animation is shown, or for
@@ -27,6 +28,7 @@ namespace trimlab::ui {
 class CsgExpressionField;
 class InspectScene;
 class ObjectTransformForm;
+class SolidMeasuresView;
 
 class ScenePanel : public QWidget {
     Q_OBJECT
@@ -45,6 +47,9 @@ public:
     [[nodiscard]] QTableWidget* objectTable() const { return m_table; }
     [[nodiscard]] ObjectTransformForm* transformForm() const { return m_transform; }
     [[nodiscard]] CsgExpressionField* csgField() const { return m_csg; }
+    /// Shows `view` (parented to the panel) below the CSG expression.
+    void setSolidMeasures(SolidMeasuresView* view);
+    [[nodiscard]] SolidMeasuresView* solidMeasures() const { return m_solidMeasures; }
 
     /// The table's columns.
     enum Column { IdColumn, NameColumn, InCsgColumn, RuleColumn, ColumnCount };
@@ -73,6 +78,7 @@ private:
     ObjectTransformForm* m_transform = nullptr;
     QLabel* m_transformNote = nullptr;
     CsgExpressionField* m_csg = nullptr;
+    SolidMeasuresView* m_solidMeasures = nullptr;
     bool m_transformsEditable = true;
     QString m_transformsReason;
 };

@@ -13,6 +13,8 @@
 #include "ui/design/project_files.h"
 #include "ui/design/session_recovery.h"
 #include "ui/inspect/inspect_workspace.h"
+#include "ui/inspect/scene_panel.h"
+#include "ui/inspect/solid_measures_view.h"
 #include "ui/render_panel/render_workspace.h"
 #include "ui/skeleton/skeleton_workspace.h"
 #include "ui/skinning/skinning_workspace.h"
@@ -173,6 +175,12 @@ void MainWindow::createWorkspaces()
     m_inspect->setSaveGuard([this] { return !m_design->session() || m_design->projectFiles()->maybeSave(); });
     m_solidExport = new SolidExport(
         *m_context, [this] { return shownSolid(); }, this);
+    auto* measures = new SolidMeasuresView([this] { return shownSolid(); }, m_context->settings());
+    m_inspect->panel()->setSolidMeasures(measures);
+    connect(m_viewport, &ViewportWidget::frameRendered, measures, &SolidMeasuresView::follow);
+    // Raised from behind another tab: measured once the tab shows it.
+    connect(m_inspect->dock(), &QDockWidget::visibilityChanged, measures, &SolidMeasuresView::follow,
+            Qt::QueuedConnection);
     m_render->dock()->raise();
 }
 

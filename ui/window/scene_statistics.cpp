@@ -3,8 +3,6 @@
 #include "ui/common/background_job.h"
 #include "ui/common/rule_labels.h"
 
-#include "core/trim/csg_expression.h"
-
 #include <QDialogButtonBox>
 #include <QFontDatabase>
 #include <QHBoxLayout>
@@ -24,15 +22,6 @@ constexpr int kRefreshDelayMs = 100;
 QString number(double value)
 {
     return QString::number(value, 'g', 6);
-}
-
-// "the alternating border rule" or "the CSG 0 - 1".
-QString classificationText(const TrimSettings& settings)
-{
-    if (settings.csg.enabled())
-        return SceneStatisticsDialog::tr("the CSG %1")
-            .arg(QString::fromStdString(formatCsgExpression(settings.csg.expression)));
-    return SceneStatisticsDialog::tr("the %1 rule").arg(ruleLabel(settings.rule).toLower());
 }
 
 QString crossingsText(const SelfIntersections& crossings)
@@ -69,7 +58,7 @@ QString sceneMeasuresText(const SceneMeasures& measures)
     if (measures.solid) {
         const SolidMeasures& solid = *measures.solid;
         lines << SceneStatisticsDialog::tr("Trimmed solid under %1 (exact): volume %2, surface area %3 (scene units)")
-                     .arg(classificationText(measures.settings), number(solid.volume), number(solid.area));
+                     .arg(classificationLabel(measures.settings), number(solid.volume), number(solid.area));
         for (const PlaneSection& section : solid.sections)
             lines << SceneStatisticsDialog::tr("  cross-section in clipping plane %1: area %2")
                          .arg(section.plane + 1)
