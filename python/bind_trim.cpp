@@ -1,11 +1,14 @@
 #include "python/animation_arguments.h"
 #include "python/array_convert.h"
+#include "python/keyword_parameters.h"
 #include "python/bindings.h"
 #include "python/python_errors.h"
 #include "python/python_progress.h"
 #include "python/scene_arguments.h"
 
 #include "core/catalog/pose_scene.h"
+#include "core/mesh/mesh_sequence_gltf.h"
+#include "core/skinning/skinning_parameters.h"
 #include "core/solid/trimmed_animation.h"
 #include "core/solid/trimmed_solid.h"
 #include "core/trim/clip_set.h"
@@ -159,6 +162,54 @@ NotTrimmableError when the poses are not closed (load_animation(..., close_holes
 closes them), and what the progress callback raises (progress("poses", done, total)
 after every pose; the GIL is released).)doc";
 
+// What trim_poses returned (each (V, F) or (V, F, stats)) as the sequence's meshes,
+// named by pose from `first` on.
+std::vector<SequenceMesh> sequenceFromArguments(const py::handle& solids, long long first)
+{
+    if (first < 0)
+        throw InputError("first must be a pose number >= 0, got " + std::to_string(first));
+    if (!py::isinstance<py::sequence>(solids) || py::isinstance<py::str>(solids))
+        throw InputError("poses must be a list of (V, F) pairs, as trim_poses returns");
+    std::vector<SequenceMesh> meshes;
+    for (py::handle item : solids) {
+        const auto solid = py::reinterpret_borrow<py::sequence>(item);
+        if (!py::isinstance<py::sequence>(item) || (py::len(solid) != 2 && py::len(solid) != 3))
+            throw InputError("poses[" + std::to_string(meshes.size()) + "] must be (V, F) or (V, F, stats)");
+        const std::size_t pose = std::size_t(first) + meshes.size();
+        meshes.push_back({trimmedPoseName(pose), meshFromArrays(py::object(solid[0]), py::object(solid[1]))});
+    }
+    if (meshes.empty())
+        throw InputError("poses is empty: a sequence holds at least one pose");
+    return meshes;
+}
+
+void savePoses(const std::string& path, const py::object& solids, const py::object& fps, long long first,
+               const std::string& comment)
+{
+    const double rate = keywordValue(skinning_parameters::kExportFps, fps);
+    const std::vector<SequenceMesh> meshes = sequenceFromArguments(solids, first);
+    try {
+        py::gil_scoped_release release;
+        saveMeshSequenceGltf(path, meshes, 1.0 / rate, comment);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(e.what());
+    } catch (const std::runtime_error& e) {
+        throw MeshSaveError(e.what());
+    }
+}
+
+std::string savePosesDoc()
+{
+    return "save_poses(path, poses, *, fps=24, first=0, comment=\"\") -> None\n\nThe trimmed poses (what "
+           "trim_poses returns) as one glTF 2.0 file that plays them, as `trimlab trim ANIM --poses A:B -o x.glb` "
+           "writes it: a node per pose named pose_0000, pose_0001, ... from `first`, shown in turn by an animation "
+           "at `fps` (Blender imports it as objects with scale keys; three.js plays it). path: .glb or .gltf, "
+           "written through a temporary file and a rename.\n\n" +
+           keywordDoc(skinning_parameters::kExportFps) +
+           "\nRaises InputError for bad arrays, an empty list or another extension, MeshSaveError when the file "
+           "cannot be written.";
+}
+
 } // namespace
 
 void bindTrim(py::module_& m)
@@ -169,6 +220,9 @@ void bindTrim(py::module_& m)
     m.def("trim_poses", &trimPoses, py::arg("poses"), py::arg("F"), py::kw_only(),
           py::arg("rule") = "alternating-border", py::arg("clip") = py::none(), py::arg("first") = 0,
           py::arg("last") = py::none(), py::arg("stats") = false, py::arg("progress") = py::none(), kTrimPosesDoc);
+    m.def("save_poses", &savePoses, py::arg("path"), py::arg("poses"), py::kw_only(),
+          keywordArgument(skinning_parameters::kExportFps), py::arg("first") = 0, py::arg("comment") = "",
+          savePosesDoc().c_str());
 }
 
 } // namespace trimlab::python

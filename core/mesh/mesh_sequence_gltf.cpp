@@ -16,8 +16,6 @@ namespace {
 void requireWritable(const SequenceMesh& item)
 {
     const TriangleMesh& mesh = item.mesh;
-    if (mesh.triangles.empty())
-        throw std::invalid_argument("mesh '" + item.name + "' has no triangles (an empty solid)");
     for (const glm::vec3& p : mesh.positions)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
             throw std::invalid_argument("mesh '" + item.name + "' has a non-finite position");
@@ -27,7 +25,7 @@ void requireWritable(const SequenceMesh& item)
                                         std::to_string(mesh.vertexCount()) + " vertices");
 }
 
-int addMeshNode(tinygltf::Model& model, const SequenceMesh& item, bool visible)
+int addMesh(tinygltf::Model& model, const SequenceMesh& item)
 {
     tinygltf::Primitive primitive;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
@@ -38,11 +36,19 @@ int addMeshNode(tinygltf::Model& model, const SequenceMesh& item, bool visible)
     mesh.name = item.name;
     mesh.primitives.push_back(primitive);
     model.meshes.push_back(mesh);
+    return int(model.meshes.size() - 1);
+}
+
+// The node of `item`; an empty mesh (a pose whose solid is empty) gets a node without a
+// mesh, keyed like the others, so that the sequence keeps its timing and shows nothing.
+int addMeshNode(tinygltf::Model& model, const SequenceMesh& item, bool visible)
+{
     tinygltf::Node node;
     node.name = item.name;
-    node.mesh = int(model.meshes.size() - 1);
     if (!visible)
         node.scale = {0.0, 0.0, 0.0};
+    if (!item.mesh.triangles.empty())
+        node.mesh = addMesh(model, item);
     model.nodes.push_back(node);
     return int(model.nodes.size() - 1);
 }
@@ -118,6 +124,8 @@ void saveMeshSequenceGltf(const std::filesystem::path& path, std::span<const Seq
         throw std::invalid_argument(path.string() + ": the time per mesh must be finite and > 0");
     for (const SequenceMesh& item : meshes)
         requireWritable(item);
+    if (std::all_of(meshes.begin(), meshes.end(), [](const SequenceMesh& m) { return m.mesh.triangles.empty(); }))
+        throw std::invalid_argument(path.string() + ": every mesh is empty, so the sequence would show nothing");
     io::writeFileAtomically(path, sequenceBytes(meshes, secondsPerMesh, comment, ext == ".glb"));
 }
 

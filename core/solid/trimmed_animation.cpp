@@ -4,6 +4,7 @@
 #include "core/util/parallel_for.h"
 
 #include <algorithm>
+#include <exception>
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
@@ -18,6 +19,19 @@ std::string trimmedPoseName(std::size_t pose)
     std::snprintf(name, sizeof name, "pose_%04zu", pose);
     return name;
 }
+
+namespace {
+
+TrimmedSolid trimmedPose(const MeshAnimation& animation, std::size_t pose, const TrimSettings& settings,
+                         const TaskControl& control)
+{
+    const LoadedScene scene = animationPoseScene(animation, pose, "pose", "pose " + std::to_string(pose));
+    if (!scene.trimmable())
+        throw std::invalid_argument("pose " + std::to_string(pose) + ": " + scene.trimUnavailableReason());
+    return cutTrimmedSolid(scene.scene, settings, control);
+}
+
+} // namespace
 
 void trimAnimationPoses(const MeshAnimation& animation, std::size_t first, std::size_t last,
                         const TrimSettings& settings, const TrimmedPoseSink& each, const TaskControl& control)
@@ -37,17 +51,22 @@ void trimAnimationPoses(const MeshAnimation& animation, std::size_t first, std::
     for (std::size_t start = first; start <= last; start += batch) {
         const std::size_t size = std::min(batch, last + 1 - start);
         std::vector<std::optional<TrimmedSolid>> solids(size);
+        // Each pose's failure is kept, so that the first pose in order that fails is the
+        // one reported (and those before it are delivered), whichever thread failed first.
+        std::vector<std::exception_ptr> failures(size);
         parallelFor(
             size, unsigned(size),
             [&](std::size_t i) {
-                const std::size_t pose = start + i;
-                const LoadedScene scene = animationPoseScene(animation, pose, "pose", "pose " + std::to_string(pose));
-                if (!scene.trimmable())
-                    throw std::invalid_argument("pose " + std::to_string(pose) + ": " + scene.trimUnavailableReason());
-                solids[i] = cutTrimmedSolid(scene.scene, settings, inner);
+                try {
+                    solids[i] = trimmedPose(animation, start + i, settings, inner);
+                } catch (...) {
+                    failures[i] = std::current_exception();
+                }
             },
             inner);
         for (std::size_t i = 0; i < size; ++i) {
+            if (failures[i])
+                std::rethrow_exception(failures[i]);
             control.throwIfCancelled();
             each(start + i, *solids[i]);
             solids[i].reset();

@@ -30,7 +30,9 @@ using TrimmedPoseSink = std::function<void(std::size_t pose, const TrimmedSolid&
 /// cancellation between poses (a running pose finishes first). Throws
 /// std::invalid_argument when the range is empty or past the last pose, or when a pose is
 /// not a closed surface (its validation's reason, naming the pose: close the holes
-/// first), and as cutTrimmedSolid throws; OperationCancelled when `control` asks.
+/// first), and as cutTrimmedSolid throws; OperationCancelled when `control` asks. When
+/// poses fail, the first of them in pose order is reported, after the poses before it
+/// were handed over, as a run of one pose at a time would.
 void trimAnimationPoses(const MeshAnimation& animation, std::size_t first, std::size_t last,
                         const TrimSettings& settings, const TrimmedPoseSink& each, const TaskControl& control = {});
 

@@ -6,7 +6,7 @@ function runs the same core code as the `trimlab` command line and the GUI panel
 
     load, load_scene, save, info, winding_numbers, demos     meshes and their report
     close_holes                                             an open mesh closed for the trim rules
-    trim, trim_poses                                        the exact trimmed solid (CSG too), pose by pose
+    trim, trim_poses, save_poses                            the exact trimmed solid (CSG too), pose by pose
     render                                                  CPU reference or OpenGL images
     load_animation, segment, skin                           mesh animations, skinning fits
     skeleton                                                curve skeleton, rig, weights
@@ -40,6 +40,7 @@ from ._trimlab import (
     parameters,
     render,
     save,
+    save_poses,
     segment,
     skeleton,
     skin,
@@ -70,6 +71,7 @@ __all__ = [
     "parameters",
     "render",
     "save",
+    "save_poses",
     "segment",
     "skeleton",
     "skin",

@@ -61,6 +61,14 @@ def trim_poses(
     stats: bool = False,
     progress: Progress = None,
 ) -> list[Union[Mesh, Tuple[Vertices, Triangles, dict[str, Any]]]]: ...
+def save_poses(
+    path: str,
+    poses: Sequence[Union[Mesh, Tuple[Vertices, Triangles, dict[str, Any]]]],
+    *,
+    fps: float = 24.0,
+    first: int = 0,
+    comment: str = "",
+) -> None: ...
 def render(
     meshes: Union[ArrayLike, Sequence[Tuple[ArrayLike, ArrayLike]]],
     F: Optional[ArrayLike] = None,

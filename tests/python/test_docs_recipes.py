@@ -45,3 +45,4 @@ def test_the_recipes_run_as_written(workspace, capsys):
     assert (workspace / "walk.glb").stat().st_size > 0
     assert "cube.obj" in printed and "E_RMS" in printed
     assert (workspace / "walk-trimmed" / "pose_0000.obj").exists() and "pose 0: " in printed
+    assert (workspace / "walk-trimmed.glb").stat().st_size > 0

@@ -154,3 +154,29 @@ def test_trim_poses_reports_every_pose_and_stops_when_asked(folding):
     assert [r for r in reports if r[0] == "poses"] == [("poses", k, 3) for k in range(4)]
     with pytest.raises(trimlab.Cancelled):
         trimlab.trim_poses(*folding, progress=lambda stage, done, total: False)
+
+
+def test_save_poses_writes_the_command_lines_sequence(folding, data, run_cli, tmp_path_factory):
+    out = tmp_path_factory.mktemp("sequence")
+    source = str(data / "animations" / "folding_box")
+    code, _, stderr = run_cli("trim", source, "--poses", "1:2", "--fps", "12", "-o", str(out / "cli.glb"))
+    assert code == 0, stderr
+    trimmed = trimlab.trim_poses(*folding, first=1, stats=True)
+    trimlab.save_poses(str(out / "module.glb"), trimmed, fps=12, first=1,
+                       comment="folding_box trimmed by alternating-border")
+    assert (out / "module.glb").read_bytes() == (out / "cli.glb").read_bytes()
+
+
+def test_save_poses_refusals_name_the_problem(folding, out):
+    trimmed = trimlab.trim_poses(*folding)
+    with pytest.raises(trimlab.InputError, match="at least one pose"):
+        trimlab.save_poses(str(out / "none.glb"), [])
+    with pytest.raises(trimlab.InputError, match=r"poses\[1\] must be \(V, F\)"):
+        trimlab.save_poses(str(out / "bad.glb"), [trimmed[0], trimmed[1][0]])
+    with pytest.raises(trimlab.InputError, match="obj"):
+        trimlab.save_poses(str(out / "poses.obj"), trimmed)
+    with pytest.raises(trimlab.ParameterError, match="fps"):
+        trimlab.save_poses(str(out / "slow.glb"), trimmed, fps=0)
+    assert not list(out.iterdir())
+    with pytest.raises(trimlab.MeshSaveError):
+        trimlab.save_poses(str(out / "missing" / "poses.glb"), trimmed)

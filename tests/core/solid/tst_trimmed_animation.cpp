@@ -56,6 +56,7 @@ private slots:
     void eachPoseIsTrimmedOnItsOwn();
     void openPoseIsNamedAndCancelStops();
     void sequenceGltfShowsOnePoseAtATime();
+    void sequenceGltfKeepsAnEmptyPose();
     void sequenceGltfRefusesBadInput();
 
 private:
@@ -157,13 +158,40 @@ void TestTrimmedAnimation::sequenceGltfShowsOnePoseAtATime()
     QVERIFY(parseGltfDocument(io::readFileBytes(single, std::size_t(1) << 26), "single.glb", {}).animations.empty());
 }
 
+// A pose whose solid is empty (a flat pose keeps nothing) stays in the sequence as a node
+// without a mesh, keyed like the others: the timing holds and nothing shows at its time.
+void TestTrimmedAnimation::sequenceGltfKeepsAnEmptyPose()
+{
+    const MeshAnimation animation = foldingBox();
+    std::vector<SequenceMesh> meshes;
+    trimAnimationPoses(animation, 0, 1, TrimSettings{}, [&](std::size_t pose, const TrimmedSolid& solid) {
+        meshes.push_back({"pose_" + std::to_string(pose), solid.mesh});
+    });
+    meshes.insert(meshes.begin() + 1, SequenceMesh{"flat", {}});
+    const std::filesystem::path path = m_dir.filePath("with-empty.glb").toStdString();
+    saveMeshSequenceGltf(path, meshes, 0.5);
+    test::requireValidGltf(path);
+    QVERIFY(!QTest::currentTestFailed());
+    const tinygltf::Model model =
+        parseGltfDocument(io::readFileBytes(path, std::size_t(1) << 26), "with-empty.glb", {});
+    const tinygltf::Node& root = model.nodes[std::size_t(model.scenes.at(0).nodes.at(0))];
+    QCOMPARE(root.children.size(), std::size_t(3));
+    QCOMPARE(model.meshes.size(), std::size_t(2));
+    const tinygltf::Node& flat = model.nodes[std::size_t(root.children[1])];
+    QCOMPARE(flat.name, std::string("flat"));
+    QCOMPARE(flat.mesh, -1);
+    for (std::size_t k = 0; k < 3; ++k)
+        for (std::size_t j = 0; j < 3; ++j)
+            QCOMPARE(scaleAt(model, model.animations.at(0), root.children[k], 0.5f * float(j)), j == k ? 1.0f : 0.0f);
+}
+
 void TestTrimmedAnimation::sequenceGltfRefusesBadInput()
 {
     const std::filesystem::path path = m_dir.filePath("bad.glb").toStdString();
     std::vector<SequenceMesh> meshes(1);
     meshes[0].name = "empty";
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, saveMeshSequenceGltf(path, {}, 0.5));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, saveMeshSequenceGltf(path, meshes, 0.5)); // no triangles
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, saveMeshSequenceGltf(path, meshes, 0.5)); // only empty
     meshes[0].mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     meshes[0].mesh.triangles = {{0, 1, 3}};
     try {
