@@ -28,8 +28,9 @@ struct SequenceMesh {
 /// Writes `meshes` (at least one) to `path` (.gltf with the buffer embedded, .glb binary),
 /// mesh k shown from `secondsPerMesh`·k on, atomically. A mesh without triangles (a pose
 /// whose solid is empty) is a node without a mesh: at its time nothing shows. Throws
-/// std::invalid_argument for no mesh or only empty ones, another extension, a mesh with a triangle index out
-/// of range or a non-finite position (naming the mesh), or `secondsPerMesh` not > 0;
+/// std::invalid_argument for no mesh or only empty ones, another extension, a mesh with
+/// a triangle index out of range or a non-finite position (naming the mesh), or
+/// `secondsPerMesh` not > 0;
 /// std::runtime_error naming the file when it cannot be written.
 void saveMeshSequenceGltf(const std::filesystem::path& path, std::span<const SequenceMesh> meshes,
                           double secondsPerMesh, std::string_view comment = {});

@@ -4,8 +4,8 @@
 #include "core/util/parallel_for.h"
 
 #include <algorithm>
-#include <exception>
 #include <cstdio>
+#include <exception>
 #include <optional>
 #include <stdexcept>
 #include <string>

@@ -19,12 +19,18 @@ const QString kEnabledKey = QStringLiteral("scene/measureSolid");
 /// or between typed characters, not a frame of playback.
 constexpr int kRestMs = 400;
 
-QString number(double value)
+} // namespace
+
+QString measureNumber(double value)
 {
     return QString::number(value, 'g', 6);
 }
 
-} // namespace
+QString solidMeasuresLine(const SolidMeasures& measures, const TrimSettings& settings)
+{
+    return SolidMeasuresView::tr("Trimmed solid under %1 (exact): volume %2, surface area %3 (scene units)")
+        .arg(classificationLabel(settings), measureNumber(measures.volume), measureNumber(measures.area));
+}
 
 SolidMeasuresView::SolidMeasuresView(SolidExport::ShownSource shown, QSettings& settings, QWidget* parent)
     : QGroupBox(tr("Trimmed solid"), parent),
@@ -79,7 +85,7 @@ void SolidMeasuresView::setMeasuresAsShown(bool on)
     }
     m_settings.setValue(kEnabledKey, on);
     stopJob();
-    m_known = false;
+    m_subject.reset();
     if (!on) {
         m_text->setText(tr("Check to see the volume and surface area of the solid shown."));
         return;
@@ -106,11 +112,10 @@ void SolidMeasuresView::follow()
         return;
     const SolidExport::Shown shown = m_shown();
     const Subject subject = subjectOf(shown);
-    if (m_known && subject == m_subject)
+    if (m_subject == subject)
         return;
     stopJob();
     m_subject = subject;
-    m_known = true;
     if (!shown.scene || !shown.refusal.isEmpty()) {
         m_text->setText(tr("No solid: %1").arg(shown.refusal));
         emit measured();
@@ -156,8 +161,7 @@ void SolidMeasuresView::stopJob()
 
 void SolidMeasuresView::showResult(const SolidMeasures& measures)
 {
-    m_text->setText(tr("Under %1: volume %2, surface area %3 (exact, scene units)")
-                        .arg(classificationLabel(m_measuredSettings), number(measures.volume), number(measures.area)));
+    m_text->setText(solidMeasuresLine(measures, m_measuredSettings));
 }
 
 bool SolidMeasuresView::isMeasuring() const

@@ -21,6 +21,7 @@
 #include <QString>
 
 #include <memory>
+#include <optional>
 
 class QCheckBox;
 class QLabel;
@@ -31,6 +32,12 @@ namespace trimlab::ui {
 
 template <class T>
 class BackgroundJob;
+
+/// How the solid's measures read wherever they are shown (this group, Mesh Statistics):
+/// "Trimmed solid under the nonzero rule (exact): volume …, surface area … (scene units)".
+[[nodiscard]] QString solidMeasuresLine(const SolidMeasures& measures, const TrimSettings& settings);
+/// A measure as the lines show it: six significant digits.
+[[nodiscard]] QString measureNumber(double value);
 
 class SolidMeasuresView : public QGroupBox {
     Q_OBJECT
@@ -82,9 +89,8 @@ private:
     QLabel* m_text = nullptr;
     QTimer* m_rest = nullptr;
     BackgroundJob<SolidMeasures>* m_job = nullptr;
-    TrimSettings m_measuredSettings; ///< of the job under way or its result
-    Subject m_subject;               ///< measured, being measured, or refused
-    bool m_known = false;            ///< m_subject's numbers (or refusal) are shown or on their way
+    TrimSettings m_measuredSettings;  ///< of the job under way or its result
+    std::optional<Subject> m_subject; ///< measured, being measured or refused; none: to be asked
 };
 
 } // namespace trimlab::ui

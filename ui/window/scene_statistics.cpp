@@ -1,7 +1,7 @@
 #include "ui/window/scene_statistics.h"
 
 #include "ui/common/background_job.h"
-#include "ui/common/rule_labels.h"
+#include "ui/inspect/solid_measures_view.h"
 
 #include <QDialogButtonBox>
 #include <QFontDatabase>
@@ -18,11 +18,6 @@ namespace {
 
 /// Milliseconds a burst of content changes is gathered into one report.
 constexpr int kRefreshDelayMs = 100;
-
-QString number(double value)
-{
-    return QString::number(value, 'g', 6);
-}
 
 QString crossingsText(const SelfIntersections& crossings)
 {
@@ -57,12 +52,11 @@ QString sceneMeasuresText(const SceneMeasures& measures)
     QStringList lines;
     if (measures.solid) {
         const SolidMeasures& solid = *measures.solid;
-        lines << SceneStatisticsDialog::tr("Trimmed solid under %1 (exact): volume %2, surface area %3 (scene units)")
-                     .arg(classificationLabel(measures.settings), number(solid.volume), number(solid.area));
+        lines << solidMeasuresLine(solid, measures.settings);
         for (const PlaneSection& section : solid.sections)
             lines << SceneStatisticsDialog::tr("  cross-section in clipping plane %1: area %2")
                          .arg(section.plane + 1)
-                         .arg(number(section.area));
+                         .arg(measureNumber(section.area));
     } else {
         lines << SceneStatisticsDialog::tr("No trimmed solid to measure: %1").arg(measures.noSolid);
     }
