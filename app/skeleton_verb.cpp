@@ -68,6 +68,8 @@ void printQuality(const SkeletonRun& r)
          {std::pair{"curve", &r.result.curveQuality}, std::pair{"rig", &r.result.rigQuality}})
         for (const std::string& line : describeEvaluation(*quality))
             printLine(QStringLiteral("  %1 %2").arg(QString::fromLatin1(name), -5).arg(QString::fromStdString(line)));
+    printLine(
+        QStringLiteral("  rig   posing: %1").arg(QString::fromStdString(describeRigMeasures(r.result.rigMeasures))));
 }
 
 void printSummary(const SkeletonVerbOptions& o, const SkeletonRun& r)

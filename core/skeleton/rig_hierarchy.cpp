@@ -1,5 +1,7 @@
 #include "core/skeleton/rig_hierarchy.h"
 
+#include "core/skeleton/body_root.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -15,26 +17,13 @@ namespace {
 
 using Adjacency = std::vector<std::vector<int>>;
 
-int automaticRoot(const std::vector<glm::dvec3>& joints, const Adjacency& adjacent,
-                  std::span<const glm::dvec3> originalPositions)
+int automaticRoot(const Adjacency& adjacent, const std::vector<int>& vertexJoint)
 {
-    glm::dvec3 centroid(0.0);
-    for (const glm::dvec3& p : originalPositions)
-        centroid += p;
-    if (!originalPositions.empty())
-        centroid /= static_cast<double>(originalPositions.size());
-    std::size_t maxDegree = 0;
-    for (const std::vector<int>& around : adjacent)
-        maxDegree = std::max(maxDegree, around.size());
-    int root = 0;
-    double nearest = std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < joints.size(); ++j)
-        if (adjacent[j].size() == maxDegree)
-            if (const double d = glm::length(joints[j] - centroid); d < nearest) {
-                nearest = d;
-                root = static_cast<int>(j);
-            }
-    return root;
+    std::vector<std::size_t> mass(adjacent.size(), 0);
+    for (int j : vertexJoint)
+        if (j >= 0)
+            ++mass[static_cast<std::size_t>(j)];
+    return bodyRoot(adjacent, mass);
 }
 
 // The unvisited joint nearest to a visited one, and that visited joint.
@@ -106,7 +95,12 @@ SkeletonRig buildSkeletonRig(const CurveSkeleton& curve, const NodeSelection& se
     }
     for (std::vector<int>& around : adjacent)
         std::sort(around.begin(), around.end());
-    rig.root = rootJoint >= 0 ? rootJoint : automaticRoot(rig.joints, adjacent, originalPositions);
+    for (std::size_t v = 0; v < originalPositions.size() && v < curve.vertexNode.size(); ++v)
+        if (const int k = curve.vertexNode[v]; k >= 0 && static_cast<std::size_t>(k) < selection.jointOfNode.size())
+            rig.vertexJoint[v] = selection.jointOfNode[static_cast<std::size_t>(k)];
+    rig.root = rootJoint >= 0        ? rootJoint
+               : selection.root >= 0 ? selection.root
+                                     : automaticRoot(adjacent, rig.vertexJoint);
     rig.parent.assign(jointCount, -1);
     const std::vector<int> order = spanningTree(rig.joints, adjacent, rig.root, rig.parent);
     std::vector<int> boneOfTail(jointCount, -1);
@@ -117,9 +111,6 @@ SkeletonRig buildSkeletonRig(const CurveSkeleton& curve, const NodeSelection& se
         boneOfTail[static_cast<std::size_t>(j)] = static_cast<int>(rig.bones.size());
         rig.bones.push_back(Bone{head, j, boneOfTail[static_cast<std::size_t>(head)]});
     }
-    for (std::size_t v = 0; v < originalPositions.size() && v < curve.vertexNode.size(); ++v)
-        if (const int k = curve.vertexNode[v]; k >= 0 && static_cast<std::size_t>(k) < selection.jointOfNode.size())
-            rig.vertexJoint[v] = selection.jointOfNode[static_cast<std::size_t>(k)];
     return rig;
 }
 

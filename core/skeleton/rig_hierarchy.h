@@ -16,9 +16,9 @@ namespace trimlab {
 /// Builds the rig of `selection` over `curve` (joint j sits at curve.nodes[survivors[j]];
 /// joints keep the selection's order, so a joint index names the same joint whatever
 /// the root). `originalPositions` (#V) are the mesh's positions.
-/// - Root: `rootJoint` when ≥ 0 (throws std::invalid_argument unless < #J); otherwise,
-///   among the joints of largest degree, the one nearest the centroid of the original
-///   vertices (ties: lower index).
+/// - Root: `rootJoint` when ≥ 0 (throws std::invalid_argument unless < #J); otherwise
+///   the selection's root when it has one, else body_root.h on the joints (weighed by
+///   the vertices of their regions).
 /// - Tree: breadth-first from the root, neighbours in increasing index order. Edges that
 ///   would close a cycle (one per handle of a genus-g mesh: the skeleton of a torus is a
 ///   loop) are dropped, so the loop opens opposite the root; a bone cannot have two

@@ -30,6 +30,7 @@ void evaluate(const TriangleMesh& mesh, SkeletonResult& result, bool curve, cons
     if (curve)
         result.curveQuality = evaluator.evaluate(skeletonGraph(result.extraction->curve));
     result.rigQuality = evaluator.evaluate(skeletonGraph(result.rig));
+    result.rigMeasures = measureRig(result.rig, result.weights->weights());
     result.evaluationMs = millisecondsSince(start);
     control.report("evaluation", 1, 1);
 }

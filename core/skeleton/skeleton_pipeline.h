@@ -13,6 +13,7 @@
 
 #include "core/mesh/triangle_mesh.h"
 #include "core/skeleton/bone_heat_weights.h"
+#include "core/skeleton/rig_measures.h"
 #include "core/skeleton/skeleton_evaluation.h"
 #include "core/skeleton/skeleton_extraction.h"
 #include "core/util/task_control.h"
@@ -49,6 +50,8 @@ struct SkeletonResult {
     /// keeps the curve's.
     SkeletonEvaluation curveQuality;
     SkeletonEvaluation rigQuality;
+    /// The rig's joints, root, turn-backs and weight leakage (rig_measures.h).
+    RigMeasures rigMeasures;
 
     /// Stages A–E (the evaluation is not part of the paper's Table III).
     [[nodiscard]] double totalMs() const

@@ -148,6 +148,11 @@ QWidget* SkeletonPanel::createViewGroup()
     m_times->setToolTip(tr("Seconds per stage of the last run (the paper's Table III); a re-selection shows only "
                            "selection and weights"));
     m_quality = createQualityTable();
+    m_rigMeasures = new QLabel;
+    m_rigMeasures->setObjectName(QStringLiteral("skeletonRigMeasuresLabel"));
+    m_rigMeasures->setWordWrap(true);
+    m_rigMeasures->setToolTip(tr("What posing needs of the rig: bones leaving the root, bones that turn back on "
+                                 "their parent, and the weight vertices give to bones away from their own joint"));
     m_viewBox = new QComboBox;
     m_viewBox->setObjectName(QStringLiteral("skeletonViewComboBox"));
     m_viewBox->addItem(tr("Posed mesh"), int(SkeletonStageView::Pose));
@@ -166,6 +171,7 @@ QWidget* SkeletonPanel::createViewGroup()
     auto* layout = new QVBoxLayout(group);
     layout->addWidget(m_times);
     layout->addWidget(m_quality);
+    layout->addWidget(m_rigMeasures);
     layout->addLayout(form);
     layout->addWidget(m_legend);
     return group;
@@ -208,6 +214,8 @@ void SkeletonPanel::showQuality()
             m_quality->setItem(row, column, item);
         }
     }
+    m_rigMeasures->setText(
+        m_result ? tr("Rig: %1").arg(QString::fromStdString(describeRigMeasures(m_result->rigMeasures))) : QString());
 }
 
 QWidget* SkeletonPanel::createPoseGroup()

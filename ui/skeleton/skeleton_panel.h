@@ -179,6 +179,7 @@ private:
     QLabel* m_error = nullptr;
     QTableWidget* m_times = nullptr;
     QTableWidget* m_quality = nullptr;
+    QLabel* m_rigMeasures = nullptr; ///< joints, root bones, turn-backs, leakage (rig_measures.h)
     QComboBox* m_viewBox = nullptr;
     HeatMapLegend* m_legend = nullptr;
     QWidget* m_poseGroup = nullptr;

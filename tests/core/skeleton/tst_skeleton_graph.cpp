@@ -1,9 +1,11 @@
 // The graph steps of skeleton extraction on small hand-made inputs: the collapse complex of
 // the simplification, vertex adjacency and cheapest paths, the selection of joints, the rig
 // hierarchy built from them, and the stage views' vertex colours.
+#include "core/skeleton/body_root.h"
 #include "core/skeleton/collapse_complex.h"
 #include "core/skeleton/mesh_adjacency.h"
 #include "core/skeleton/rig_hierarchy.h"
+#include "core/skeleton/rig_measures.h"
 #include "core/skeleton/skeleton_selection.h"
 #include "core/skeleton/skeleton_stage_colors.h"
 
@@ -49,6 +51,63 @@ NodeSelection everyNode(const CurveSkeleton& curve)
     }
     selection.edges = curve.edges;
     return selection;
+}
+
+// Appends to `curve` a polyline from node `from` to `to` in steps of about `step`, each
+// new node absorbing `mass` vertices at its position (appended to `vertices`); returns
+// the last node.
+int appendLimb(CurveSkeleton& curve, std::vector<glm::dvec3>& vertices, int from, const glm::dvec3& to, double step,
+               int mass)
+{
+    const glm::dvec3 start = curve.nodes[std::size_t(from)];
+    const int steps = std::max(1, int(std::lround(glm::length(to - start) / step)));
+    int previous = from;
+    for (int i = 1; i <= steps; ++i) {
+        const int node = int(curve.nodes.size());
+        curve.nodes.push_back(start + (to - start) * (double(i) / steps));
+        curve.edges.push_back({previous, node});
+        for (int m = 0; m < mass; ++m) {
+            vertices.push_back(curve.nodes.back());
+            curve.vertexNode.push_back(node);
+        }
+        previous = node;
+    }
+    return previous;
+}
+
+// A stick figure's curve skeleton: a spine from the pelvis (node 0, at the origin) to
+// the chest, legs from the pelvis, arms and a bulky head from the chest, and three short
+// fingers at each hand.
+struct StickFigure {
+    CurveSkeleton curve;
+    std::vector<glm::dvec3> vertices;
+    std::vector<int> feet, hands;
+
+    StickFigure()
+    {
+        curve.nodes = {{0, 0, 0}};
+        vertices = {{0, 0, 0}};
+        curve.vertexNode = {0};
+        const int chest = appendLimb(curve, vertices, 0, {0, 3, 0}, 0.25, 4);
+        for (const double side : {-1.0, 1.0}) {
+            feet.push_back(appendLimb(curve, vertices, 0, {side * 0.6, -2.0, 0.2}, 0.25, 2));
+            feet.back() = appendLimb(curve, vertices, feet.back(), {side * 1.0, -4.0, 0.0}, 0.25, 2);
+            const int hand = appendLimb(curve, vertices, chest, {side * 3.0, 2.0, 0}, 0.25, 2);
+            hands.push_back(hand);
+            for (const double spread : {-0.1, 0.0, 0.1})
+                appendLimb(curve, vertices, hand, {side * 3.3, 2.0 + spread, 0}, 0.1, 1);
+        }
+        appendLimb(curve, vertices, chest, {0, 4.5, 0}, 0.25, 6);
+    }
+};
+
+// The joints from `joint` up to the root, `joint` first.
+std::vector<int> pathToRoot(const SkeletonRig& rig, int joint)
+{
+    std::vector<int> path{joint};
+    while (rig.parent[std::size_t(path.back())] >= 0)
+        path.push_back(rig.parent[std::size_t(path.back())]);
+    return path;
 }
 
 } // namespace
@@ -133,9 +192,10 @@ private slots:
         QVERIFY(cheapestPath(graph, {{0, 0.0}}, {{4, 0.0}}).empty()); // 4 is joined to nothing
     }
 
-    // A chain collapses its shortest inner edge first; the lower index survives a tie of
-    // degree and region. A leaf collapsed with its neighbour survives and keeps its place.
-    void selectionCollapsesTheShortestEdgesFirst()
+    // The ends of a chain stay; the longest segment gains the next joint, in its middle
+    // half (all nodes are equally wide here: the first of them). A node between joints
+    // joins the nearer one.
+    void selectionSplitsTheLongestSegmentsFirst()
     {
         std::vector<glm::dvec3> vertices;
         const CurveSkeleton curve = chainCurve({{0, 0, 0}, {1, 0, 0}, {1.1, 0, 0}, {2, 0, 0}, {3, 0, 0}}, vertices);
@@ -157,6 +217,103 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)selectSkeletonNodes(curve, vertices, 0));
         vertices.pop_back();
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)selectSkeletonNodes(curve, vertices, 3));
+    }
+
+    // The joints go where the body is: fingers shorter than the joint spacing merge into
+    // their hand, the root is the pelvis (the heavier pair of limbs), every leg is a chain
+    // of at least three joints below it, and the count is within 20 % of the target.
+    void selectionFollowsTheBody()
+    {
+        const StickFigure figure;
+        for (const int target : {16, 20, 30}) {
+            const NodeSelection selection = selectSkeletonNodes(figure.curve, figure.vertices, target);
+            const SkeletonRig rig = buildSkeletonRig(figure.curve, selection, figure.vertices, -1);
+            const auto count = double(rig.joints.size());
+            QVERIFY2(count >= 0.8 * target && count <= 1.2 * target, qPrintable(QString::number(count)));
+            QCOMPARE(rig.joints[std::size_t(rig.root)], glm::dvec3(0.0));
+            const RigMeasures measures = measureRig(
+                rig,
+                BoneWeights{std::vector<std::array<int, kBoneInfluences>>(rig.vertexJoint.size(), {-1, -1, -1, -1}),
+                            std::vector<std::array<float, kBoneInfluences>>(rig.vertexJoint.size(), {0, 0, 0, 0})});
+            QCOMPARE(measures.rootBones, 3);
+            QCOMPARE(measures.turnBacks, 0);
+            for (const glm::dvec3& joint : rig.joints)
+                QVERIFY2(std::abs(joint.x) <= 3.0 + 1e-9, "a finger kept a joint");
+            for (const int foot : figure.feet) {
+                const int joint = selection.jointOfNode[std::size_t(foot)];
+                QCOMPARE(rig.joints[std::size_t(joint)], figure.curve.nodes[std::size_t(foot)]);
+                QVERIFY(pathToRoot(rig, joint).size() >= 4); // three joints and the pelvis
+            }
+        }
+    }
+
+    // The pelvis is where a pair of limbs leaves at the end of the body; without a pair,
+    // the hub nearest the centre of mass; without a junction (a snake), the centre.
+    void bodyRootIsThePelvisOrTheCentre()
+    {
+        // 0 — 1 — 2: legs (3, 4) at 0; arms (5, 6) and a head (7) at 2. The hips have the
+        // heavier side: the trunk, the arms and the head.
+        const std::vector<std::vector<int>> body = {{1, 3, 4}, {0, 2}, {1, 5, 6, 7}, {0}, {0}, {2}, {2}, {2}};
+        QCOMPARE(bodyRoot(body, std::vector<std::size_t>{10, 10, 10, 30, 30, 20, 20, 30}), 0);
+        // Legs far lighter than each other are no pair: the shoulders.
+        QCOMPARE(bodyRoot(body, std::vector<std::size_t>{10, 10, 10, 8, 30, 20, 20, 30}), 2);
+        // No pair anywhere: the junction whose largest part is lighter (0: 52 against 61).
+        QCOMPARE(bodyRoot(body, std::vector<std::size_t>{10, 10, 10, 1, 40, 1, 30, 1}), 0);
+        const std::vector<std::vector<int>> snake = {{1}, {0, 2}, {1, 3}, {2, 4}, {3}};
+        QCOMPARE(bodyRoot(snake, std::vector<std::size_t>{1, 1, 1, 1, 1}), 2);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)bodyRoot(snake, std::vector<std::size_t>{1}));
+    }
+
+    // A chain whose curve doubles back: the joint at the fold goes, so no bone turns
+    // back on its parent.
+    void zigZagsAreStraightened()
+    {
+        std::vector<glm::dvec3> vertices;
+        const CurveSkeleton curve = chainCurve({{0, 0, 0},
+                                                {1, 0, 0},
+                                                {2, 0, 0},
+                                                {3, 0, 0},
+                                                {2.2, 0.2, 0},
+                                                {3.2, 0.4, 0},
+                                                {4.2, 0.4, 0},
+                                                {5.2, 0.4, 0},
+                                                {6.2, 0.4, 0}},
+                                               vertices);
+        const NodeSelection selection = selectSkeletonNodes(curve, vertices, 9);
+        const SkeletonRig rig = buildSkeletonRig(curve, selection, vertices, -1);
+        const BoneWeights none{std::vector<std::array<int, kBoneInfluences>>(vertices.size(), {-1, -1, -1, -1}),
+                               std::vector<std::array<float, kBoneInfluences>>(vertices.size(), {0, 0, 0, 0})};
+        QCOMPARE(measureRig(rig, none).turnBacks, 0);
+        QVERIFY(rig.joints.size() < curve.nodes.size());
+        // Every joint everywhere: the fold turns back twice.
+        QCOMPARE(measureRig(buildSkeletonRig(curve, everyNode(curve), vertices, 0), none).turnBacks, 2);
+    }
+
+    // The rig's measures on a hand-made chain: bones at the root, a bone that turns back,
+    // and weight given to a bone two joints away from the vertex's own joint.
+    void rigMeasuresCountTurnBacksAndLeakage()
+    {
+        SkeletonRig rig;
+        rig.joints = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}, {2.5, 0.1, 0}};
+        rig.parent = {-1, 0, 1, 2, 3, 4};
+        rig.root = 0;
+        rig.bones = {{0, 1, -1}, {1, 2, 0}, {2, 3, 1}, {3, 4, 2}, {4, 5, 3}};
+        rig.vertexJoint = {0, 0};
+        BoneWeights weights;
+        weights.bones = {{0, -1, -1, -1}, {0, 3, -1, -1}};
+        weights.weights = {{1.0f, 0, 0, 0}, {0.5f, 0.5f, 0, 0}};
+        const RigMeasures m = measureRig(rig, weights);
+        QCOMPARE(m.joints, 6);
+        QCOMPARE(m.rootBones, 1);
+        QCOMPARE(m.turnBacks, 1);
+        QVERIFY(m.sharpestTurnDegrees > 170.0 && m.sharpestTurnDegrees < 180.0);
+        QCOMPARE(m.leakedWeight, 0.25);
+        QCOMPARE(m.leakingVertices, 0.5);
+        QVERIFY(describeRigMeasures(m).find("1 turn-backs beyond 120") != std::string::npos);
+        weights.bones[1][1] = 7;
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)measureRig(rig, weights));
+        rig.vertexJoint.push_back(0);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)measureRig(rig, weights));
     }
 
     // A T: the junction (degree 3) becomes the root, bones leave it breadth-first with

@@ -17,6 +17,7 @@
 #include "ui/window/main_window.h"
 #include "ui/skeleton/skeleton_workspace.h"
 #include "ui/design/design_workspace.h"
+#include "core/skeleton/rig_measures.h"
 #include "core/skeleton/skeleton_json.h"
 #include "ui/skeleton/skeleton_overlay.h"
 #include "ui/skeleton/skeleton_panel.h"
@@ -278,6 +279,12 @@ void TestSkeletonPanel::runStagesPoseAndReset()
     QCOMPARE(quality->item(1, 2)->text(), QStringLiteral("0"));
     QCOMPARE(quality->item(0, 5)->text(), QStringLiteral("0 / 0"));
     QVERIFY(result->curveQuality.samples > 0);
+    // The rig's posing measures: the result's own, on one line; the star's hub roots it.
+    QCOMPARE(child<QLabel>(panel, "skeletonRigMeasuresLabel")->text(),
+             QStringLiteral("Rig: ") + QString::fromStdString(describeRigMeasures(result->rigMeasures)));
+    QCOMPARE(result->rigMeasures.joints, int(rig.joints.size()));
+    QCOMPARE(result->rigMeasures.rootBones, 3);
+    QCOMPARE(result->rigMeasures.turnBacks, 0);
     QVERIFY(panel->overlay()->isVisible());
     const std::vector<glm::vec3> rest = window->scene()->scene.objects.front().mesh.positions;
     QVERIFY(panel->shownPositions() == rest); // rest pose shown
