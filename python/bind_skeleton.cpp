@@ -4,6 +4,7 @@
 #include "python/python_errors.h"
 #include "python/python_progress.h"
 
+#include "core/skeleton/bone_names.h"
 #include "core/skeleton/skeleton_parameters.h"
 #include "core/skeleton/skeleton_pipeline.h"
 
@@ -63,6 +64,7 @@ py::dict resultDict(const SkeletonResult& r)
     d["root"] = rig.root;
     d["bones"] = pairsArray(bones);
     d["bone_parents"] = intArray(boneParents);
+    d["bone_names"] = boneNames(rig);
     d["vertex_joint"] = intArray(rig.vertexJoint);
     d["weights"] = denseBoneWeights(r.weights->weights(), rig.bones.size());
     d["solver"] = r.extraction->solver;
@@ -105,7 +107,8 @@ std::string skeletonDoc()
            "skeleton` (Berenguer & Moreno): the mesh contracted to a curve skeleton, a rig of `nodes` joints with "
            "one root, and bone-heat weights. V: (n, 3), F: (m, 3) of a closed mesh. Returns nodes (N, 3) and edges "
            "(E, 2) of the curve skeleton; joints (J, 3), parents (J,) (-1 at the root), root, bones (J-1, 2) as "
-           "(head, tail) joints, bone_parents, vertex_joint (n,), weights (n, J-1) (rows sum to 1), solver, "
+           "(head, tail) joints, bone_parents, bone_names (spine_1, leg_L_2, ...), vertex_joint (n,), weights (n, J-1) "
+           "(rows sum to 1), solver, "
            "warnings, total_ms.\n\n" +
            keywordDoc(kp::kTargetNodes) + keywordDoc(kp::kRootJoint) + keywordDoc(kp::kHeatConstant) +
            keywordDoc(kp::kRefine) + keywordDoc(kp::kMaxIterations) + keywordDoc(kp::kInitialContractionWeight) +

@@ -1,5 +1,7 @@
 #include "core/skeleton/rigged_gltf.h"
 
+#include "core/skeleton/bone_names.h"
+
 #include "core/skinning/skinning_gltf_parts.h"
 #include "core/io/gltf_builder.h"
 #include "core/skeleton/rig_validation.h"
@@ -202,13 +204,14 @@ std::vector<float> addJointNodes(tinygltf::Model& model, const SkeletonRig& rig,
     root.translation = {rootPosition.x, rootPosition.y, rootPosition.z};
     world[0] = trsMatrix(rootPosition, glm::dquat(1.0, 0.0, 0.0, 0.0));
     std::vector<tinygltf::Node> joints(rig.bones.size());
+    const std::vector<std::string> names = boneNames(rig);
     std::vector<float> inverseBind;
     for (std::size_t b = 0; b < rig.bones.size(); ++b) {
         const Frame& parent = frames[parentFrame(rig, b)];
         const glm::dquat toParent = glm::conjugate(parent.rotation);
         const glm::dvec3 t = asFloat(toParent * (frames[1 + b].position - parent.position));
         const glm::dquat r = asFloat(toParent * frames[1 + b].rotation);
-        joints[b].name = "bone_" + std::to_string(b);
+        joints[b].name = names[b];
         joints[b].translation = {t.x, t.y, t.z};
         joints[b].rotation = {r.x, r.y, r.z, r.w};
         world[1 + b] = world[parentFrame(rig, b)] * trsMatrix(t, r);

@@ -7,7 +7,8 @@
 /// Layout:
 /// - Node 0 "mesh": the mesh (no transform; glTF ignores a skinned mesh node's transform),
 ///   skin 0. Node 1 "root": the root joint, translated to the rig's root joint. Nodes
-///   2 … B+1 "bone_b": one joint node per bone b, placed at the bone's head, child of its
+///   2 … B+1: one joint node per bone b, named by bone_names.h (`spine_1`, `leg_L_2`, …),
+///   placed at the bone's head, child of its
 ///   parent bone's node (or of "root" for a bone that starts at the root joint). The scene
 ///   holds nodes 0 and 1. The skin's joints are nodes 2 … B+1 in bone order, then node 1,
 ///   so JOINTS_0 value b means bone b and the root joint (index B) binds no vertex;

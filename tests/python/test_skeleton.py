@@ -23,6 +23,8 @@ def test_skeleton_gives_a_rooted_rig_and_weights(torus):
     assert result["weights"].shape == (len(V), len(bones))
     assert np.allclose(result["weights"].sum(axis=1), 1.0, atol=1e-5)
     assert result["nodes"].shape[1] == 3 and result["edges"].shape[1] == 2
+    names = result["bone_names"]
+    assert len(names) == len(bones) and len(set(names)) == len(names) and "spine_1" in names
 
 
 def test_skeleton_refuses_values_outside_the_table(torus):

@@ -13,6 +13,7 @@
 #include "core/skeleton/skeleton_stage_colors.h"
 #include "ui/viewport/viewport_widget.h"
 
+#include "core/skeleton/bone_names.h"
 #include "core/skeleton/rigged_gltf.h"
 #include "core/skeleton/skeleton_json.h"
 
@@ -434,8 +435,13 @@ void SkeletonPanel::showResult()
         m_boneList->clear();
         if (m_result) {
             const SkeletonRig& rig = m_result->rig;
+            const std::vector<std::string> names = boneNames(rig);
             for (std::size_t b = 0; b < rig.bones.size(); ++b)
-                m_boneList->addItem(tr("bone %1: joint %2 → %3").arg(b).arg(rig.bones[b].head).arg(rig.bones[b].tail));
+                m_boneList->addItem(tr("%1 (bone %2: joint %3 → %4)")
+                                        .arg(QString::fromStdString(names[b]))
+                                        .arg(b)
+                                        .arg(rig.bones[b].head)
+                                        .arg(rig.bones[b].tail));
         }
     }
     if (!m_result) {

@@ -1,6 +1,7 @@
 """Extract Skeleton: trimlab.skeleton of the active mesh as an armature with one root
 bone (at the rig's root joint; every bone of the rig hangs below it), one bone per rig
-bone from its head joint to its tail joint, and the bone-heat weights as vertex groups
+bone from its head joint to its tail joint, named by body part as trimlab names them
+(spine_1, leg_L_2, ...), and the bone-heat weights as vertex groups
 with an armature modifier. The bones' rest pose is the mesh as it is: with the pose
 cleared the mesh does not move."""
 
@@ -13,10 +14,6 @@ from .table_properties import int_property
 from .vertex_groups import add_armature_weights
 
 ROOT_BONE = "Root"
-
-
-def _bone_name(b):
-    return f"Bone.{b:03d}"
 
 
 def build_rig(context, obj, result):
@@ -34,8 +31,8 @@ def build_rig(context, obj, result):
     root.head = joints[result["root"]]
     root.tail = joints[result["root"]] + np.array([0.0, 0.0, size])
     edit = []
-    for b, (head, tail) in enumerate(bones):
-        bone = data.edit_bones.new(_bone_name(b))
+    for (head, tail), name in zip(bones, result["bone_names"]):
+        bone = data.edit_bones.new(name)
         bone.head, bone.tail = joints[head], joints[tail]
         edit.append(bone)
     for b, parent in enumerate(parents):
@@ -67,7 +64,7 @@ class TRIMLAB_OT_extract_skeleton(bpy.types.Operator):
             return {"CANCELLED"}
         armature = build_rig(context, obj, result)
         weights = result["weights"]
-        add_armature_weights(obj, armature, weights, [_bone_name(b) for b in range(weights.shape[1])],
+        add_armature_weights(obj, armature, weights, list(result["bone_names"]),
                              "TrimLab Skeleton")
         self.report({"INFO"}, f"TrimLab: {len(result['bones'])} bones below one root")
         return {"FINISHED"}

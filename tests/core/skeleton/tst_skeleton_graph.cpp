@@ -2,6 +2,7 @@
 // the simplification, vertex adjacency and cheapest paths, the selection of joints, the rig
 // hierarchy built from them, and the stage views' vertex colours.
 #include "core/skeleton/body_root.h"
+#include "core/skeleton/bone_names.h"
 #include "core/skeleton/collapse_complex.h"
 #include "core/skeleton/mesh_adjacency.h"
 #include "core/skeleton/rig_hierarchy.h"
@@ -16,6 +17,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <set>
 #include <limits>
 #include <stdexcept>
 
@@ -245,6 +247,33 @@ private slots:
                 QVERIFY(pathToRoot(rig, joint).size() >= 4); // three joints and the pelvis
             }
         }
+    }
+
+    // The stick figure's bones are named by body part: the spine, the legs from the
+    // pelvis, the arms from the chest, L on the +x side; every name once.
+    void bonesAreNamedByBodyPart()
+    {
+        const StickFigure figure;
+        const NodeSelection selection = selectSkeletonNodes(figure.curve, figure.vertices, 20);
+        const SkeletonRig rig = buildSkeletonRig(figure.curve, selection, figure.vertices, -1);
+        const std::vector<std::string> names = boneNames(rig);
+        QCOMPARE(names.size(), rig.bones.size());
+        QCOMPARE(std::set<std::string>(names.begin(), names.end()).size(), names.size());
+        const auto boneNamed = [&](const std::string& name) {
+            const auto it = std::find(names.begin(), names.end(), name);
+            return it == names.end() ? -1 : int(it - names.begin());
+        };
+        for (const char* name :
+             {"spine_1", "spine_2", "leg_L_1", "leg_L_3", "leg_R_1", "leg_R_3", "arm_L_1", "arm_R_1"})
+            QVERIFY2(boneNamed(name) >= 0, name);
+        const auto tailOf = [&](const char* name) {
+            return rig.joints[std::size_t(rig.bones[std::size_t(boneNamed(name))].tail)];
+        };
+        QVERIFY(tailOf("leg_L_1").x > 0.0 && tailOf("leg_R_1").x < 0.0);
+        QVERIFY(tailOf("arm_L_1").x > 0.0 && tailOf("arm_R_1").x < 0.0);
+        QCOMPARE(rig.bones[std::size_t(boneNamed("leg_L_1"))].head, rig.root);
+        QCOMPARE(rig.bones[std::size_t(boneNamed("leg_L_2"))].parentBone, boneNamed("leg_L_1"));
+        QVERIFY(boneNames(SkeletonRig{}).empty());
     }
 
     // The pelvis is where a pair of limbs leaves at the end of the body; without a pair,
