@@ -13,9 +13,6 @@ namespace {
 // not make a pelvis (ears, fingers).
 constexpr double kLimbPairShare = 0.04;
 
-// The lighter of a pair of limbs holds at least this fraction of the heavier.
-constexpr double kLikeLimbs = 0.5;
-
 // The mass of each part the graph falls into without `removed`, heaviest first.
 std::vector<std::size_t> partsWithout(int removed, const std::vector<std::vector<int>>& adjacent,
                                       std::span<const std::size_t> mass)

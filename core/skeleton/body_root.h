@@ -21,6 +21,10 @@
 
 namespace trimlab {
 
+/// Two limbs are alike (a pair) when the lighter holds at least this fraction of the
+/// heavier; bone_names.h names such pairs L and R.
+inline constexpr double kLikeLimbs = 0.5;
+
 /// The root node of a graph (`adjacent[k]`: the neighbours of node k, each edge listed
 /// at both ends) whose node k holds `mass[k]` vertices, as described above; ties go to
 /// the lower index. 0 for an empty graph. Throws std::invalid_argument if the sizes

@@ -1,5 +1,7 @@
 #include "core/skeleton/bone_names.h"
 
+#include "core/skeleton/body_root.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -10,9 +12,6 @@
 namespace trimlab {
 
 namespace {
-
-// The lighter of a pair of limbs holds at least this fraction of the heavier.
-constexpr double kLikeLimbs = 0.5;
 
 class BoneNamer {
 public:

@@ -1,6 +1,7 @@
 #include "core/skeleton/skeleton_selection.h"
 
 #include "core/skeleton/body_root.h"
+#include "core/skeleton/rig_measures.h"
 
 #include <glm/geometric.hpp>
 
@@ -9,6 +10,7 @@
 #include <deque>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -35,9 +37,8 @@ constexpr double kMinimumLimbSpacings = 1.0;
 // bend, split at the node farthest from it (an elbow held bent).
 constexpr double kBendFraction = 0.1;
 
-// A bone turns back on its parent when the angle between their directions exceeds
-// 120°: an animator cannot tell which way such a joint bends.
-constexpr double kTurnBackCosine = -0.5;
+// A bone turns back on its parent beyond rig_measures.h's kTurnBackDegrees: the cosine.
+const double kTurnBackCosine = std::cos(kTurnBackDegrees * std::numbers::pi / 180.0);
 
 // A path of the alive graph between two branch nodes (degree other than 2) through
 // degree-2 nodes; a loop starts and ends at the same node.
