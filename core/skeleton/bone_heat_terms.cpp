@@ -45,8 +45,8 @@ void requireUsableRig(const SkeletonRig& rig)
             throw std::invalid_argument("bone heat: joint " + std::to_string(j) + " is not finite");
 }
 
-// The nearest bones of one vertex and their closest points; `distances` and `candidates`
-// are scratch space reused between the vertices of one block.
+// The nearest bones of one vertex and their closest points; `distances`, `candidates`
+// and `order` are scratch space reused between the vertices of one block.
 struct NearestBones {
     std::vector<int> bones;
     std::vector<glm::dvec3> points;
@@ -56,35 +56,42 @@ struct NearestBones {
 struct NearestScratch {
     std::vector<double> distances;
     std::vector<glm::dvec3> candidates;
+    std::vector<int> order; ///< bones by distance, nearest first
 };
 
-void findNearest(const glm::dvec3& p, const SkeletonRig& rig, double tolerance, NearestScratch& scratch,
-                 NearestBones& out)
+// Every bone's closest point to p and its distance, and the bones in order of distance.
+void orderBones(const glm::dvec3& p, const SkeletonRig& rig, NearestScratch& scratch)
 {
-    out.bones.clear();
-    out.points.clear();
-    if (!isFinite(p)) { // no distance: bone 0 stands in, never visible, no heat
-        out.bones.push_back(0);
-        out.points.push_back(rig.joints[std::size_t(rig.bones[0].head)]);
-        out.distance = std::numeric_limits<double>::infinity();
-        return;
-    }
     scratch.distances.resize(rig.bones.size());
     scratch.candidates.resize(rig.bones.size());
-    double best = std::numeric_limits<double>::infinity();
+    scratch.order.resize(rig.bones.size());
     for (std::size_t b = 0; b < rig.bones.size(); ++b) {
         const Bone& bone = rig.bones[b];
         scratch.candidates[b] =
             closestPointOnSegment(p, rig.joints[std::size_t(bone.head)], rig.joints[std::size_t(bone.tail)]);
         scratch.distances[b] = glm::length(p - scratch.candidates[b]);
-        best = std::min(best, scratch.distances[b]);
+        scratch.order[b] = int(b);
     }
+    std::stable_sort(scratch.order.begin(), scratch.order.end(), [&](int a, int b) {
+        return scratch.distances[std::size_t(a)] < scratch.distances[std::size_t(b)];
+    });
+}
+
+// The group of equidistant bones that starts at order[first] (ascending bone index);
+// returns the index in `order` after it.
+std::size_t tiedGroup(const NearestScratch& scratch, std::size_t first, double tolerance, NearestBones& out)
+{
+    out.bones.clear();
+    out.points.clear();
+    const double best = scratch.distances[std::size_t(scratch.order[first])];
+    std::size_t end = first;
+    while (end < scratch.order.size() && scratch.distances[std::size_t(scratch.order[end])] <= best * (1.0 + tolerance))
+        out.bones.push_back(scratch.order[end++]);
+    std::sort(out.bones.begin(), out.bones.end());
+    for (const int b : out.bones)
+        out.points.push_back(scratch.candidates[std::size_t(b)]);
     out.distance = best;
-    for (std::size_t b = 0; b < rig.bones.size(); ++b)
-        if (scratch.distances[b] <= best * (1.0 + tolerance)) {
-            out.bones.push_back(int(b));
-            out.points.push_back(scratch.candidates[b]);
-        }
+    return end;
 }
 
 // Per vertex: which nearest bones, which of them visible.
@@ -92,6 +99,43 @@ struct VertexResult {
     NearestBones nearest;
     std::vector<std::uint8_t> visible;
 };
+
+// The nearest bones of p that it sees: the nearest group of equidistant bones of which at
+// least one is visible, as Pinocchio heats a vertex from its nearest visible bone. A bone
+// that is nearer but hidden (an arm hanging beside the body, seen across the gap) heats
+// nothing. When no bone is visible, the nearest group with nothing visible.
+VertexResult nearestVisibleBones(const glm::dvec3& p, const SkeletonRig& rig, double tolerance,
+                                 const SegmentVisibility* visibility, NearestScratch& scratch,
+                                 std::vector<RayHit>& hits)
+{
+    VertexResult r;
+    if (!isFinite(p)) { // no distance: bone 0 stands in, never visible, no heat
+        r.nearest.bones.push_back(0);
+        r.nearest.points.push_back(rig.joints[std::size_t(rig.bones[0].head)]);
+        r.nearest.distance = std::numeric_limits<double>::infinity();
+        r.visible.push_back(0);
+        return r;
+    }
+    orderBones(p, rig, scratch);
+    NearestBones group;
+    for (std::size_t first = 0; first < scratch.order.size();) {
+        const std::size_t next = tiedGroup(scratch, first, tolerance, group);
+        std::vector<std::uint8_t> seen(group.bones.size(), 0);
+        for (std::size_t i = 0; i < group.bones.size(); ++i)
+            seen[i] = !visibility || visibility->inside(p, group.points[i], hits) ? 1 : 0;
+        if (first == 0) { // kept when no group is visible
+            r.nearest = group;
+            r.visible = seen;
+        }
+        if (std::find(seen.begin(), seen.end(), std::uint8_t(1)) != seen.end()) {
+            r.nearest = std::move(group);
+            r.visible = std::move(seen);
+            break;
+        }
+        first = next;
+    }
+    return r;
+}
 
 double sceneSize(const TriangleMesh& mesh, const SkeletonRig& rig)
 {
@@ -216,15 +260,9 @@ BoneHeatTerms boneHeatTerms(const TriangleMesh& mesh, const SkeletonRig& rig, co
         [&](std::size_t block) {
             std::vector<RayHit> hits;
             NearestScratch scratch;
-            for (std::size_t j = block * kBlock; j < std::min(results.size(), (block + 1) * kBlock); ++j) {
-                VertexResult& r = results[j];
-                const glm::dvec3 p(mesh.positions[j]);
-                findNearest(p, rig, options.tieTolerance, scratch, r.nearest);
-                r.visible.assign(r.nearest.bones.size(), 0);
-                for (std::size_t i = 0; i < r.nearest.bones.size(); ++i)
-                    r.visible[i] =
-                        isFinite(p) && (!visibility || visibility->inside(p, r.nearest.points[i], hits)) ? 1 : 0;
-            }
+            for (std::size_t j = block * kBlock; j < std::min(results.size(), (block + 1) * kBlock); ++j)
+                results[j] = nearestVisibleBones(glm::dvec3(mesh.positions[j]), rig, options.tieTolerance,
+                                                 visibility ? &*visibility : nullptr, scratch, hits);
         },
         control, "visibility");
     return assembleTerms(results, options.heatConstant, 1e-9 * sceneSize(mesh, rig));

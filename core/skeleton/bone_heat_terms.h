@@ -6,13 +6,17 @@
 /// the mesh, the diagonal H_jj and the source values p_jⁱ.
 ///
 /// Rules (eq. 14 and the text after it):
-/// - the nearest bones of j are every bone whose distance is within a relative tolerance
-///   of the smallest one (at a joint several bones share the closest point, the joint);
-/// - of those, the visible ones are the bones whose shortest segment from j lies inside
-///   the mesh (SegmentVisibility); with k visible nearest bones, p_jⁱ = 1/k for each of
-///   them, 0 for every other bone, and H_jj = k·c / d(j)²;
-/// - with none visible, H_jj = 0 and p_j = 0: the vertex gets its weights from diffusion
-///   alone (bone_heat_weights.h).
+/// - the bones are grouped by distance from j, equidistant ones (within a relative
+///   tolerance: at a joint several bones share the closest point, the joint) together;
+/// - a bone of a group is visible when its shortest segment from j lies inside the mesh
+///   (SegmentVisibility). The nearest bones of j are the nearest group with a visible
+///   bone, as Pinocchio heats a vertex from its nearest *visible* bone: the side of a
+///   body that an arm hangs beside is nearer to the arm's bone, across the gap, but does
+///   not see it, and is heated by the spine it sees. With k visible bones in that group,
+///   p_jⁱ = 1/k for each of them, 0 for every other bone, and H_jj = k·c / d(j)², d(j)
+///   the group's distance;
+/// - with no bone visible at all, H_jj = 0 and p_j = 0: the vertex gets its weights from
+///   diffusion alone (bone_heat_weights.h); its nearest bones are then the nearest group.
 
 #include "core/mesh/triangle_mesh.h"
 #include "core/skeleton/skeleton.h"
@@ -80,7 +84,7 @@ struct BoneHeatTermOptions {
 /// nearestBones[nearestOffsets[j] .. nearestOffsets[j+1]) (at least one, ascending bone
 /// index) with visible[] telling which of them are visible.
 struct BoneHeatTerms {
-    std::vector<double> heat;                  ///< #V: H_jj in 1/length², 0 when no nearest bone is visible
+    std::vector<double> heat;                  ///< #V: H_jj in 1/length², 0 when no bone is visible
     std::vector<double> distance;              ///< #V: d(j), floored at 1e-9 of the rig+mesh size
     std::vector<std::uint32_t> nearestOffsets; ///< #V + 1
     std::vector<int> nearestBones;
@@ -95,7 +99,7 @@ struct BoneHeatTerms {
 };
 
 /// Computes the terms for every vertex of `mesh` (O(#V·#bones) distances plus one ray
-/// query per nearest bone). Throws std::invalid_argument when the rig has no bones, a
+/// query per nearest bone, and more for a vertex whose nearest bones it does not see). Throws std::invalid_argument when the rig has no bones, a
 /// bone names a joint outside rig.joints, a joint is not finite, c is not finite and
 /// > 0, or the tie tolerance is negative or not finite; a vertex with a non-finite
 /// position gets no visible bone. OperationCancelled when `control` asks to stop (stage

@@ -84,6 +84,42 @@ TriangleMesh octahedron()
     return m;
 }
 
+// An arm hanging beside a body with a gap between them, joined at the shoulder: the
+// body x, z ∈ [−1, 1], y ∈ [−3, 3]; the arm x ∈ [1.25, 1.75], z ∈ [−0.25, 0.25],
+// y ∈ [−2.5, 2.5]; the shoulder x ∈ [1, 1.25], y ∈ [2, 2.5], z ∈ [−0.25, 0.25]. The
+// body's side facing the arm is nearer to the arm's bone (0.5) than to the spine (1), so
+// only visibility keeps the arm's weight off it.
+bool insideArmBeside(const glm::dvec3& p)
+{
+    const bool body = std::abs(p.x) < 1 && std::abs(p.z) < 1 && std::abs(p.y) < 3;
+    const bool arm = p.x > 1.25 && p.x < 1.75 && std::abs(p.z) < 0.25 && std::abs(p.y) < 2.5;
+    const bool shoulder = p.x >= 1 && p.x <= 1.25 && p.y > 2 && p.y < 2.5 && std::abs(p.z) < 0.25;
+    return body || arm || shoulder;
+}
+
+TriangleMesh armBesideBody()
+{
+    constexpr double cell = 0.25;
+    std::vector<std::array<int, 3>> cells;
+    for (int x = -4; x < 7; ++x)
+        for (int y = -12; y < 12; ++y)
+            for (int z = -4; z < 4; ++z)
+                if (insideArmBeside(glm::dvec3(x + 0.5, y + 0.5, z + 0.5) * cell))
+                    cells.push_back({x, y, z});
+    return test::voxelSurface(cells, cell);
+}
+
+// Spine from the pelvis to the neck, a collar bone out to the shoulder, the arm down.
+SkeletonRig armBesideBodyRig()
+{
+    SkeletonRig rig;
+    rig.joints = {{0.0, -2.5, 0.0}, {0.0, 2.25, 0.0}, {1.5, 2.25, 0.0}, {1.5, -2.25, 0.0}};
+    rig.parent = {-1, 0, 1, 2};
+    rig.root = 0;
+    rig.bones = {{0, 1, -1}, {1, 2, 0}, {2, 3, 1}};
+    return rig;
+}
+
 } // namespace
 
 class TestSkeletonWeights : public QObject {
@@ -98,6 +134,7 @@ private slots:
     void tiedNearestPointAtAJoint();
     void capsuleWeightsAreConvexAndFollowTheChain();
     void tLimbsAreDominatedByTheirBones();
+    void armWeightsDoNotCrossTheGapToTheBody();
     void componentWithoutHeatFallsBackToNearestBone();
     void orderingsAndBackendsAgree();
     void badRigsAreRefused();
@@ -334,6 +371,42 @@ void TestSkeletonWeights::tLimbsAreDominatedByTheirBones()
         }
     }
     QVERIFY(checkedEnds > 100);
+}
+
+// Weights stay in their limb: the body's side facing the arm, below the shoulder, takes
+// next to nothing from the arm's bone, though that bone is its nearest; the arm is the
+// arm's own. Bones chosen by distance alone would give that side to the arm.
+void TestSkeletonWeights::armWeightsDoNotCrossTheGapToTheBody()
+{
+    const TriangleMesh mesh = armBesideBody();
+    QVERIFY(validateMesh(mesh).trimmable());
+    const SkeletonRig rig = armBesideBodyRig();
+    QVERIFY(mesh.vertexCount() > 500);
+    // The largest arm weight on the body's side facing the arm, away from the shoulder,
+    // and the smallest on the arm's lower half.
+    const auto armWeights = [&](const BoneWeights& w) {
+        float facing = 0.0f, arm = 1.0f;
+        for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+            const glm::dvec3 p(mesh.positions[v]);
+            if (p.x == 1.0 && p.y < 0.0 && std::abs(p.z) <= 0.5)
+                facing = std::max(facing, weightOf(w, v, 2));
+            if (p.x >= 1.25 && p.y < 1.0)
+                arm = std::min(arm, weightOf(w, v, 2));
+        }
+        return std::pair{facing, arm};
+    };
+    const BoneWeights w = boneHeatWeights(mesh, rig);
+    const QString problem = convexityProblem(w, rig.bones.size());
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    const auto [worstFacing, weakestArm] = armWeights(w);
+    qInfo("largest arm weight on the body's facing side %.4f; smallest on the arm %.4f", double(worstFacing),
+          double(weakestArm));
+    QVERIFY2(worstFacing < 0.02f, qPrintable(QString::number(worstFacing)));
+    QVERIFY2(weakestArm > 0.9f, qPrintable(QString::number(weakestArm)));
+    // The same without visibility: the facing side goes to the arm.
+    BoneHeatOptions blind;
+    blind.terms.visibility = false;
+    QVERIFY(armWeights(boneHeatWeights(mesh, rig, blind)).first > 0.5f);
 }
 
 void TestSkeletonWeights::componentWithoutHeatFallsBackToNearestBone()
