@@ -4,6 +4,8 @@
 #include "app/output_paths.h"
 #include "app/parameter_options.h"
 
+#include "core/animation/animation_load_parameters.h"
+#include "core/animation/sequence_files.h"
 #include "core/trim/hole_closing.h"
 
 #include <QCommandLineParser>
@@ -20,11 +22,14 @@ void addSkeletonOptions(QCommandLineParser& parser)
         "Extracts an animation skeleton from a closed mesh by mesh contraction (Berenguer & Moreno): contraction, "
         "simplification, refinement and selection of about N joints; then bone-heat skinning weights, and exports "
         "the rigged mesh as glTF 2.0 and the skeleton as JSON. Prints the time of every stage as in the paper's "
-        "Table III. See docs/skeleton.md.");
+        "Table III. Given an animation, makes the rig from its rest pose and reports how well the rig reproduces "
+        "every pose (E_RMS, as trimlab skin reports it). See docs/skeleton.md.");
     parser.addPositionalArgument("mesh", "A closed, manifold, connected mesh (.obj .ply .stl .off .gltf .glb, "
-                                         "optionally .gz) or demo:NAME.");
+                                         "optionally .gz) or demo:NAME; or an animation: a folder of poses or a "
+                                         "pattern such as dir/mesh_%04d.obj.gz.");
     addParameterOptions(parser, skeleton_parameters::kTable);
     parser.addOption(commandLineOption(hole_closing_parameters::kCloseHoles));
+    parser.addOption(commandLineOption(animation_load_parameters::kRestPose));
     parser.addOptions({
         {{"o", "output"}, "Write the rigged mesh: .glb (binary) or .gltf (embedded buffer).", "file"},
         {"json", "Write the skeleton (joints, tree, bones, vertex-joint map, curve skeleton) as JSON.", "file"},
@@ -53,7 +58,8 @@ std::optional<QString> parseParameters(const QCommandLineParser& parser, Skeleto
           parseParameter(parser, kRootJoint, o.extraction.rootJoint),
           parseParameter(parser, kHeatConstant, o.heatConstant),
           parseParameter(parser, kLoopSubdivisions, o.loopLevels),
-          parseParameter(parser, hole_closing_parameters::kCloseHoles, o.closeHoles)}) {
+          parseParameter(parser, hole_closing_parameters::kCloseHoles, o.closeHoles),
+          parseParameter(parser, animation_load_parameters::kRestPose, o.restPose)}) {
         if (error)
             return error;
     }
@@ -90,6 +96,11 @@ std::variant<SkeletonVerbOptions, QString> parseSkeletonOptions(const QStringLis
     if (parser.positionalArguments().size() != 1)
         return QStringLiteral("skeleton needs exactly one mesh (a file or demo:NAME); see trimlab skeleton --help");
     options.source = parser.positionalArguments().first().toStdString();
+    options.animation = isMeshSequenceSource(options.source);
+    if (!options.animation && parser.isSet(QString::fromLatin1(animation_load_parameters::kRestPose.flag.data())))
+        return QStringLiteral("--rest-pose needs an animation (a folder or pattern of poses), not one mesh");
+    if (options.animation && options.loopLevels > 0)
+        return QStringLiteral("--loop-subdivide needs one mesh: the poses of an animation are not subdivided");
     const int nodes = options.extraction.targetNodes;
     if (options.extraction.rootJoint >= nodes)
         return QStringLiteral("--root %1 is not one of the %2 joints (0 to %3)")

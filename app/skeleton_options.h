@@ -2,8 +2,8 @@
 /// \file
 /// The options of `trimlab skeleton`: every flagged row of skeleton_parameters::kTable
 /// (core/skeleton/skeleton_parameters.h: contraction, simplification, refinement,
-/// selection, bone-heat constant, Loop subdivision), --close-holes, then the mesh and the
-/// outputs, parsed before the mesh is loaded so that bad arguments fail fast with one line.
+/// selection, bone-heat constant, Loop subdivision), --close-holes and --rest-pose, then
+/// the mesh or animation and the outputs, parsed before the mesh is loaded so that bad arguments fail fast with one line.
 
 #include "core/skeleton/skeleton_extraction.h"
 #include "core/skeleton/skeleton_parameters.h"
@@ -11,6 +11,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <cstddef>
 #include <string>
 #include <variant>
 
@@ -22,8 +23,12 @@ struct SkeletonVerbOptions {
     double heatConstant = skeleton_parameters::kHeatConstant.defaultValue; ///< c of the bone-heat weights
     int loopLevels = 0;
     bool closeHoles = false; ///< --close-holes: close the mesh's holes before extraction
-    QString output;          // .glb / .gltf, or empty
-    QString json;            // or empty
+    /// An animation (a folder or pattern of poses: isMeshSequenceSource): the rig is made
+    /// from this pose and then fitted to every pose (rig_motion_fit.h).
+    bool animation = false;
+    std::size_t restPose = 0; ///< --rest-pose, animations only
+    QString output;           // .glb / .gltf, or empty
+    QString json;             // or empty
 };
 
 /// Parses the arguments after "skeleton": the options, or a one-line error; `help`

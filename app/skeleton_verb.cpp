@@ -5,9 +5,11 @@
 #include "app/skeleton_options.h"
 #include "app/terminal_progress.h"
 
+#include "core/animation/animation_loader.h"
 #include "core/mesh/loop_subdivision.h"
 #include "core/catalog/scene_source.h"
 #include "core/scene/world_geometry.h"
+#include "core/skeleton/rig_motion_fit.h"
 #include "core/skeleton/rigged_gltf.h"
 #include "core/skeleton/skeleton_input.h"
 #include "core/skeleton/skeleton_json.h"
@@ -45,11 +47,31 @@ TriangleMesh loadSingleMesh(const std::string& source, bool closeHoles)
     return mesh;
 }
 
+// The rest pose of an animation as the mesh to rig, and every pose for the motion fit.
+struct AnimationInput {
+    TriangleMesh mesh;
+    std::vector<PosePositions> poses;
+    std::size_t restPose = 0;
+};
+
+AnimationInput loadAnimationInput(const SkeletonVerbOptions& o)
+{
+    AnimationLoadOptions load;
+    load.restPose = o.restPose;
+    load.closeHoles = o.closeHoles;
+    HoleClosing closing;
+    const MeshAnimation animation = loadAnimation(o.source, load, terminalProgress(), &closing);
+    if (o.closeHoles)
+        noteHolesClosed(o.source, closing);
+    return {animation.poseMesh(animation.restPose), animationPositions(animation), animation.restPose};
+}
+
 // Everything the summary prints.
 struct SkeletonRun {
-    std::size_t inputVertices = 0, vertices = 0, faces = 0;
+    std::size_t inputVertices = 0, vertices = 0, faces = 0, poses = 0, restPose = 0;
     double loadMs = 0.0, subdivisionMs = 0.0, exportMs = 0.0;
     SkeletonResult result;
+    std::optional<RigMotionFit> motion; ///< animations only
 };
 
 QString seconds(double ms)
@@ -70,12 +92,16 @@ void printQuality(const SkeletonRun& r)
             printLine(QStringLiteral("  %1 %2").arg(QString::fromLatin1(name), -5).arg(QString::fromStdString(line)));
     printLine(
         QStringLiteral("  rig   posing: %1").arg(QString::fromStdString(describeRigMeasures(r.result.rigMeasures))));
+    if (r.motion)
+        printLine(QStringLiteral("  rig   motion: %1").arg(QString::fromStdString(describeRigMotionFit(*r.motion))));
 }
 
 void printSummary(const SkeletonVerbOptions& o, const SkeletonRun& r)
 {
     QString mesh =
         QStringLiteral("%1: %2 vertices, %3 faces").arg(QString::fromStdString(o.source)).arg(r.vertices).arg(r.faces);
+    if (o.animation)
+        mesh += QStringLiteral(" (the rest pose %1 of %2 poses)").arg(r.restPose).arg(r.poses);
     if (o.loopLevels > 0)
         mesh += QStringLiteral(" (Loop-subdivided %1x from %2 vertices in %3 s)")
                     .arg(o.loopLevels)
@@ -155,7 +181,10 @@ int skeletonOfMesh(const SkeletonVerbOptions& o)
     SkeletonRun run;
     QElapsedTimer timer;
     timer.start();
-    TriangleMesh mesh = loadSingleMesh(o.source, o.closeHoles);
+    std::optional<AnimationInput> animation;
+    if (o.animation)
+        animation = loadAnimationInput(o);
+    TriangleMesh mesh = animation ? std::move(animation->mesh) : loadSingleMesh(o.source, o.closeHoles);
     run.loadMs = lapMilliseconds(timer);
     run.inputVertices = mesh.vertexCount();
     if (o.loopLevels > 0) {
@@ -165,6 +194,12 @@ int skeletonOfMesh(const SkeletonVerbOptions& o)
     run.vertices = mesh.vertexCount();
     run.faces = mesh.triangleCount();
     run.result = runPipeline(mesh, o);
+    if (animation) {
+        run.poses = animation->poses.size();
+        run.restPose = animation->restPose;
+        run.motion = fitRigToMotion(run.result.rig, run.result.weights->weights(), animation->poses,
+                                    animation->restPose, {}, terminalProgress());
+    }
     timer.restart();
     exportResults(mesh, o, run.result);
     run.exportMs = lapMilliseconds(timer);

@@ -5,10 +5,15 @@
 #include "python/python_progress.h"
 
 #include "core/skeleton/bone_names.h"
+#include "core/skeleton/rig_motion_fit.h"
+#include "core/animation/animation_load_parameters.h"
 #include "core/skeleton/skeleton_parameters.h"
 #include "core/skeleton/skeleton_pipeline.h"
 
 #include <pybind11/stl.h>
+
+#include <algorithm>
+#include <numeric>
 
 namespace trimlab::python {
 
@@ -100,6 +105,107 @@ py::dict skeleton(const py::object& vertices, const py::object& triangles, const
     return resultDict(result);
 }
 
+// The rig of a skeleton() result (its joints, parents, root, bones, bone_parents and
+// vertex_joint); requireValidRig in fitRigToMotion checks that they agree.
+SkeletonRig rigFromResult(const py::dict& result)
+{
+    for (const char* key : {"joints", "parents", "root", "bones", "bone_parents", "weights"})
+        if (!result.contains(key))
+            throw InputError(std::string("fit_rig: the skeleton has no '") + key + "'; pass what skeleton() returns");
+    SkeletonRig rig;
+    rig.joints = pointsFromArray(result["joints"], "joints");
+    rig.parent = result["parents"].cast<std::vector<int>>();
+    rig.root = result["root"].cast<int>();
+    const auto bones = result["bones"].cast<std::vector<std::array<int, 2>>>();
+    const auto boneParents = result["bone_parents"].cast<std::vector<int>>();
+    if (bones.size() != boneParents.size())
+        throw InputError("fit_rig: " + std::to_string(bones.size()) + " bones but " +
+                         std::to_string(boneParents.size()) + " bone_parents");
+    for (std::size_t b = 0; b < bones.size(); ++b)
+        rig.bones.push_back({bones[b][0], bones[b][1], boneParents[b]});
+    if (result.contains("vertex_joint"))
+        rig.vertexJoint = result["vertex_joint"].cast<std::vector<int>>();
+    return rig;
+}
+
+// The largest kBoneInfluences weights of each row of the dense (n, B) weights.
+BoneWeights sparseBoneWeights(py::handle dense, std::size_t boneCount)
+{
+    const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(dense);
+    if (!array || array.ndim() != 2 || std::size_t(array.shape(1)) != boneCount)
+        throw InputError("fit_rig: weights must be an (n, " + std::to_string(boneCount) + ") array");
+    const auto w = array.unchecked<2>();
+    BoneWeights weights;
+    std::vector<int> order(boneCount);
+    for (py::ssize_t v = 0; v < w.shape(0); ++v) {
+        std::iota(order.begin(), order.end(), 0);
+        const std::size_t kept = std::min(kBoneInfluences, boneCount);
+        std::partial_sort(order.begin(), order.begin() + std::ptrdiff_t(kept), order.end(),
+                          [&](int a, int b) { return w(v, a) > w(v, b); });
+        std::array<int, kBoneInfluences> bones;
+        std::array<float, kBoneInfluences> values{};
+        bones.fill(-1);
+        for (std::size_t k = 0; k < kept; ++k)
+            if (w(v, order[k]) > 0.0) {
+                bones[k] = order[k];
+                values[k] = float(w(v, order[k]));
+            }
+        weights.bones.push_back(bones);
+        weights.weights.push_back(values);
+    }
+    return weights;
+}
+
+py::dict fitRig(const py::dict& result, const py::object& posesObject, const py::object& restPose,
+                const py::object& progress)
+{
+    const SkeletonRig rig = rigFromResult(result);
+    const BoneWeights weights = sparseBoneWeights(result["weights"], rig.bones.size());
+    const std::vector<std::vector<glm::vec3>> loaded = posesFromArray(posesObject, "poses");
+    const std::size_t rest = std::size_t(keywordInt(animation_load_parameters::kRestPose, restPose));
+    std::vector<PosePositions> poses;
+    for (const std::vector<glm::vec3>& pose : loaded)
+        poses.emplace_back(pose.begin(), pose.end());
+    if (rest >= poses.size())
+        throw ParameterError("rest_pose " + std::to_string(rest) + " is not one of the " +
+                             std::to_string(poses.size()) + " poses");
+    const RigMotionFit fit = runWithProgress(
+        progress, [&](const TaskControl& control) { return fitRigToMotion(rig, weights, poses, rest, {}, control); });
+    py::array_t<double> rotations({py::ssize_t(fit.poses.size()), py::ssize_t(rig.bones.size()), py::ssize_t(4)});
+    auto q = rotations.mutable_unchecked<3>();
+    std::vector<glm::dvec3> translations;
+    for (std::size_t p = 0; p < fit.poses.size(); ++p) {
+        for (std::size_t b = 0; b < rig.bones.size(); ++b) {
+            const glm::dquat r = glm::normalize(fit.poses[p].rotations[b]);
+            const double wxyz[4] = {r.w, r.x, r.y, r.z};
+            for (int c = 0; c < 4; ++c)
+                q(py::ssize_t(p), py::ssize_t(b), c) = wxyz[c];
+        }
+        translations.push_back(fit.poses[p].rootTranslation);
+    }
+    py::dict d;
+    d["e_rms"] = fit.error.eRms;
+    d["e_rms_diagonal"] = fit.error.eRmsDiagonal;
+    d["rmse"] = fit.error.rmse;
+    d["per_pose"] = vectorArray(std::vector<double>(fit.error.perPose));
+    d["per_vertex"] = vectorArray(std::vector<double>(fit.error.perVertex));
+    d["rotations"] = rotations;
+    d["root_translations"] = pointsArray(std::move(translations));
+    d["iterations"] = fit.iterations;
+    d["total_ms"] = fit.milliseconds;
+    return d;
+}
+
+const char* const kFitRigDoc =
+    "fit_rig(skeleton, poses, *, rest_pose=0, progress=None) -> dict\n\nHow well a rig reproduces real "
+    "motion: the rig of `skeleton` (what skeleton() returned for the rest pose poses[rest_pose]) is posed to "
+    "match every pose of `poses` (k, n, 3) by least squares, with its own weights (the largest 4 of each row) "
+    "and linear blend skinning; only each bone's rotation about its head and the root's translation are fitted. "
+    "Returns e_rms and e_rms_diagonal (as skin() reports its own fit), rmse, per_pose (k,), per_vertex (n,), "
+    "rotations (k, bones, 4) as w, x, y, z in each bone's rest-pose axes, root_translations (k, 3), iterations, "
+    "total_ms.\n\nRaises InputError for a skeleton or poses that do not agree, ParameterError for a rest pose "
+    "out of range; the GIL is released and progress(stage, done, total) called per pose.";
+
 std::string skeletonDoc()
 {
     return "skeleton(V, F, *, nodes, root, heat_constant, refine, max_iterations, contraction_weight, "
@@ -126,6 +232,8 @@ void bindSkeleton(py::module_& m)
           keywordArgument(kp::kMaxIterations), keywordArgument(kp::kInitialContractionWeight),
           keywordArgument(kp::kContractionGrowth), keywordArgument(kp::kMaxAttractionWeight),
           py::arg("progress") = py::none(), skeletonDoc().c_str());
+    m.def("fit_rig", &fitRig, py::arg("skeleton"), py::arg("poses"), py::kw_only(),
+          keywordArgument(animation_load_parameters::kRestPose), py::arg("progress") = py::none(), kFitRigDoc);
 }
 
 } // namespace trimlab::python

@@ -187,6 +187,13 @@ std::vector<fs::path> sequenceFiles(const std::string& spec)
     throw MeshLoadError(spec, "no such folder or file");
 }
 
+bool isMeshSequenceSource(const std::string& source)
+{
+    std::error_code error;
+    return fs::is_directory(fs::path(source), error) ||
+           fs::path(source).filename().string().find_first_of("*?%") != std::string::npos;
+}
+
 bool isGltfSource(const std::string& source)
 {
     const std::string extension = meshExtension(fs::path(source).filename().string());

@@ -24,6 +24,10 @@ namespace trimlab {
 /// have different formats ("… holds .obj and .ply files; name a pattern to choose").
 [[nodiscard]] std::vector<std::filesystem::path> sequenceFiles(const std::string& spec);
 
+/// True when `source` names a mesh sequence as sequenceFiles reads it: a folder, or a
+/// pattern with '*', '?' or '%' in its file name (whether or not anything matches).
+[[nodiscard]] bool isMeshSequenceSource(const std::string& source);
+
 /// True when `source` names a glTF file (.gltf or .glb, optionally .gz; case-insensitive)
 /// rather than a mesh sequence.
 [[nodiscard]] bool isGltfSource(const std::string& source);

@@ -9,7 +9,7 @@ function runs the same core code as the `trimlab` command line and the GUI panel
     trim, trim_poses, save_poses                            the exact trimmed solid (CSG too), pose by pose
     render                                                  CPU reference or OpenGL images
     load_animation, segment, skin                           mesh animations, skinning fits
-    skeleton                                                curve skeleton, rig, weights
+    skeleton, fit_rig                                       curve skeleton, rig, weights; the rig fitted to motion
     parameters                                              the tables keywords take their ranges from
 
 Long functions release the GIL and take progress=callable(stage, done, total); an
@@ -33,6 +33,7 @@ from ._trimlab import (
     SkinningFit,
     close_holes,
     demos,
+    fit_rig,
     info,
     load,
     load_animation,
@@ -64,6 +65,7 @@ __all__ = [
     "SkinningFit",
     "close_holes",
     "demos",
+    "fit_rig",
     "info",
     "load",
     "load_animation",

@@ -151,3 +151,10 @@ def skeleton(
     max_attraction_weight: float = ...,
     progress: Progress = None,
 ) -> dict[str, Any]: ...
+def fit_rig(
+    skeleton: Mapping[str, Any],
+    poses: ArrayLike,
+    *,
+    rest_pose: int = 0,
+    progress: Progress = None,
+) -> dict[str, Any]: ...

@@ -8,6 +8,7 @@
 #include "core/scene/shape_generators.h"
 #include "core/skeleton/skeleton_json.h"
 
+#include <QDir>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -67,6 +68,7 @@ private slots:
     void writesValidGlbAndJson();
     void loopSubdivisionRaisesTheVertexCount();
     void helpExitsWithZero();
+    void fitsTheRigToAnAnimation();
 
 private:
     QTemporaryDir m_dir;
@@ -93,6 +95,10 @@ void TestSkeletonVerb::badArgumentsExitWithTwo_data()
     QTest::newRow("levels") << QStringList{"skeleton", "x.obj", "--loop-subdivide", "9"} << "from 0 to 6";
     QTest::newRow("output") << QStringList{"skeleton", "x.obj", "-o", "rig.fbx"} << ".glb or .gltf";
     QTest::newRow("unknown") << QStringList{"skeleton", "x.obj", "--bones", "3"} << "Unknown option";
+    QTest::newRow("rest pose of a mesh") << QStringList{"skeleton", "x.obj", "--rest-pose", "1"}
+                                         << "--rest-pose needs an animation";
+    QTest::newRow("subdivided animation")
+        << QStringList{"skeleton", "pose_%d.obj", "--loop-subdivide", "1"} << "--loop-subdivide needs one mesh";
 }
 
 void TestSkeletonVerb::badArgumentsExitWithTwo()
@@ -170,6 +176,32 @@ void TestSkeletonVerb::helpExitsWithZero()
     QVERIFY(run.out.contains("--loop-subdivide"));
     const Run usage = runTrimlab({"--help"});
     QVERIFY(usage.out.contains("trimlab skeleton MESH"));
+}
+
+// An animation folder: the rig is made from the rest pose (here the middle one) and
+// fitted to every pose. The poses are the capsule turned and moved as a whole, which the
+// rig reproduces exactly; a fit that did nothing would leave an error of the size of the
+// motion.
+void TestSkeletonVerb::fitsTheRigToAnAnimation()
+{
+    QDir(m_dir.path()).mkdir("capsule-motion");
+    const TriangleMesh rest = capsule();
+    for (int pose = 0; pose < 3; ++pose) {
+        TriangleMesh moved = rest;
+        const double angle = 0.3 * (pose - 1);
+        for (glm::vec3& p : moved.positions)
+            p = glm::vec3(std::cos(angle) * p.x - std::sin(angle) * p.y, std::sin(angle) * p.x + std::cos(angle) * p.y,
+                          p.z + 0.5f * float(pose - 1));
+        writeObj(moved, m_dir.filePath(QStringLiteral("capsule-motion/pose_%1.obj").arg(pose)));
+    }
+    const Run run = runTrimlab({"skeleton", m_dir.filePath("capsule-motion"), "--rest-pose", "1", "--nodes", "6"});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.out.contains("(the rest pose 1 of 3 poses)"), qPrintable(run.out));
+    const QRegularExpression line(
+        QStringLiteral(R"(rig   motion: E_RMS \S+ \(E_RMS/diagonal ([0-9.e+-]+)\) over 3 poses)"));
+    const QRegularExpressionMatch match = line.match(run.out);
+    QVERIFY2(match.hasMatch(), qPrintable(run.out));
+    QVERIFY2(match.captured(1).toDouble() < 1e-3, qPrintable(run.out));
 }
 
 QTEST_GUILESS_MAIN(TestSkeletonVerb)

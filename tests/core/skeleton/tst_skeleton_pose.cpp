@@ -2,6 +2,7 @@
 // mesh with LBS and DQS (core/skeleton/skeleton_pose.h; thesis 2.3.2–2.3.3). Expected
 // positions come from closed formulas, not from the code under test.
 #include "core/skeleton/bone_heat_weights.h"
+#include "core/skeleton/rig_motion_fit.h"
 #include "core/skeleton/skeleton_pose.h"
 #include "core/skeleton/skeleton_pose_edit.h"
 
@@ -46,6 +47,43 @@ double medianMs(const std::function<void()>& body, int repeats)
     return ms[ms.size() / 2];
 }
 
+// Poses 0..count−1 of a made-up motion: bone b turns by up to 50° about an axis of its
+// own, the rig moves by `shift`·t; pose 0 is the rest pose.
+std::vector<SkeletonPose> madeUpMotion(const SkeletonRig& rig, int count, const glm::dvec3& shift)
+{
+    std::vector<SkeletonPose> motion;
+    for (int t = 0; t < count; ++t) {
+        const double s = double(t) / double(count - 1);
+        SkeletonPose pose = restPose(rig);
+        for (std::size_t b = 0; b < rig.bones.size(); ++b) {
+            const glm::dvec3 axis = glm::normalize(glm::dvec3(1.0 + double(b), 2.0 - double(b), 0.5 * double(b) + 1.0));
+            pose.rotations[b] = glm::angleAxis(glm::radians(50.0) * s * (b % 2 ? -1.0 : 1.0), axis);
+        }
+        pose.rootTranslation = shift * s;
+        motion.push_back(pose);
+    }
+    return motion;
+}
+
+std::vector<PosePositions> skinnedMotion(const TriangleMesh& mesh, const SkeletonRig& rig, const BoneWeights& weights,
+                                         const std::vector<SkeletonPose>& motion)
+{
+    std::vector<PosePositions> poses;
+    for (const SkeletonPose& pose : motion) {
+        const std::vector<glm::vec3> p = posePositions(mesh.positions, rig, weights, pose, SkinningMethod::Lbs);
+        poses.emplace_back(p.begin(), p.end());
+    }
+    return poses;
+}
+
+// Poses 3, 2, 1, 0, 4, 5, 6 of seven: the rest pose 0 moves to the middle.
+std::vector<PosePositions> reordered(std::vector<PosePositions> poses)
+{
+    std::swap(poses[0], poses[3]);
+    std::swap(poses[1], poses[2]);
+    return poses;
+}
+
 } // namespace
 
 class TestSkeletonPose : public QObject {
@@ -61,6 +99,8 @@ private slots:
     void skinningIsFastEnoughToDrag();
     void localAnglesAreInTheBonesFrame();
     void draggingTurnsTheBoneAboutItsPosedHead();
+    void motionFitRecoversTheRigsOwnMotion();
+    void motionFitMeasuresWhatNoPoseReaches();
 
 private:
     TriangleMesh m_t;
@@ -277,6 +317,56 @@ void TestSkeletonPose::draggingTurnsTheBoneAboutItsPosedHead()
     rotateBoneAboutAxis(rig, pose, 1, glm::dvec3(0.0), 1.0);
     QCOMPARE(pose.rotations, before.rotations);
     QVERIFY_THROWS_EXCEPTION(std::out_of_range, rotateBoneAboutAxis(rig, pose, 2, z, 1.0));
+}
+
+// A motion the rig itself made (a chain whose bones carry each other, and the T whose
+// three bones share the root) is fitted back to within float rounding, from the middle
+// pose as the rest pose too, so that the fit runs both ways from it.
+void TestSkeletonPose::motionFitRecoversTheRigsOwnMotion()
+{
+    const TriangleMesh capsule = test::axisCapsule(1.0, 4.0, 6, 16, 24);
+    const SkeletonRig chain = test::chainRig({-4.5, -1.5, 1.5, 4.5});
+    const BoneWeights chainWeights = boneHeatWeights(capsule, chain);
+    for (const auto& [mesh, rig, weights] : {std::tuple{&capsule, &chain, &chainWeights}, {&m_t, &m_rig, &m_weights}}) {
+        const std::vector<SkeletonPose> motion = madeUpMotion(*rig, 7, glm::dvec3(0.8, -0.3, 0.5));
+        const std::vector<PosePositions> poses = skinnedMotion(*mesh, *rig, *weights, motion);
+        // The same motion with the rest pose in the middle: poses 3, 2, 1, rest, 4, 5, 6.
+        const std::vector<PosePositions> middle = reordered(poses);
+        for (const auto& [sequence, rest] : {std::pair{&poses, std::size_t(0)}, std::pair{&middle, std::size_t(3)}}) {
+            const RigMotionFit fit = fitRigToMotion(*rig, *weights, *sequence, rest);
+            QCOMPARE(fit.poses.size(), poses.size());
+            QVERIFY2(fit.error.eRmsDiagonal < 1e-3, describeRigMotionFit(fit).c_str());
+            QVERIFY(fit.error.maxDistance < 1e-4);
+            const std::size_t last = motion.size() - 1;
+            QVERIFY(glm::length(fit.poses[last].rootTranslation - motion[last].rootTranslation) < 1e-4);
+        }
+    }
+}
+
+// A pose no rotation of the rig reaches (the T turned by 30°, moved, and grown by 5 %)
+// leaves an error, but no more than the rig turned and moved as a whole, the best pose
+// one can write down.
+void TestSkeletonPose::motionFitMeasuresWhatNoPoseReaches()
+{
+    const glm::dquat turn = glm::angleAxis(glm::radians(30.0), glm::dvec3(0.0, 0.0, 1.0));
+    const glm::dvec3 shift(0.5, -0.2, 0.1);
+    std::vector<PosePositions> poses(2, PosePositions(m_t.positions.begin(), m_t.positions.end()));
+    for (glm::dvec3& p : poses[1])
+        p = 1.05 * (turn * p) + shift;
+    SkeletonPose whole = restPose(m_rig);
+    std::fill(whole.rotations.begin(), whole.rotations.end(), turn);
+    const glm::dvec3 head = m_rig.joints[std::size_t(m_rig.root)];
+    whole.rootTranslation = shift - head + turn * head; // x ↦ turn·x + shift
+    const std::vector<PosePositions> wholeMotion = skinnedMotion(m_t, m_rig, m_weights, {restPose(m_rig), whole});
+    const double wholeError = measureSkinningError(poses, wholeMotion).eRms;
+
+    const RigMotionFit fit = fitRigToMotion(m_rig, m_weights, poses, 0);
+    const QByteArray text =
+        QByteArray::fromStdString(describeRigMotionFit(fit) + ", the whole rig turned " + std::to_string(wholeError));
+    qInfo("%s", text.constData());
+    QVERIFY2(fit.error.eRms > 0.2 * wholeError, text);
+    QVERIFY2(fit.error.eRms <= wholeError, text);
+    QCOMPARE(fit.error.perPose[0], 0.0);
 }
 
 QTEST_GUILESS_MAIN(TestSkeletonPose)
