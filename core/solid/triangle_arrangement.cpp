@@ -464,6 +464,32 @@ void triangulateLone(GroupTriangulation& group, const Corners& t, const Marks& m
         group.constrain(group.vertexAt(segment[0].point), group.vertexAt(segment[1].point));
 }
 
+// The pieces of one group by source, then by their corners in lexicographic order, each
+// starting at its smallest corner (its orientation kept). A triangulation lists its faces
+// and their corners in an order that depends on its history, and with the groups
+// triangulated on two cores over shared, lazily evaluated points that order was seen to
+// change from run to run on a loaded machine (the same pieces, listed differently); in
+// this order the refined mesh, and the file written from it, is the same on every run.
+void inCanonicalOrder(std::vector<ArrangedTriangle>& pieces)
+{
+    const auto less = [](const ExactPoint& a, const ExactPoint& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; };
+    for (ArrangedTriangle& piece : pieces) {
+        auto& c = piece.corners;
+        const std::size_t smallest = less(c[1], c[0]) ? (less(c[2], c[1]) ? 2 : 1) : (less(c[2], c[0]) ? 2 : 0);
+        std::rotate(c.begin(), c.begin() + std::ptrdiff_t(smallest), c.end());
+    }
+    std::sort(pieces.begin(), pieces.end(), [&](const ArrangedTriangle& a, const ArrangedTriangle& b) {
+        if (a.source != b.source)
+            return a.source < b.source;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const CGAL::Comparison_result order = CGAL::compare_xyz(a.corners[k], b.corners[k]);
+            if (order != CGAL::EQUAL)
+                return order == CGAL::SMALLER;
+        }
+        return false;
+    });
+}
+
 // Triangulates one group (coplanar triangles that overlap, or a lone triangle) with
 // every member's edges and marks as constraints, and gives each piece to every member
 // that covers it, in that member's orientation.
@@ -833,8 +859,10 @@ std::vector<ArrangedTriangle> arrangeTriangles(const std::vector<std::array<Exac
         }
     }
     std::vector<std::vector<ArrangedTriangle>> splitPieces(split.size());
-    runInChunks(split.size(), control,
-                [&](std::size_t k) { triangulateGroup(members[split[k]], triangles, marks, splitPieces[k]); });
+    runInChunks(split.size(), control, [&](std::size_t k) {
+        triangulateGroup(members[split[k]], triangles, marks, splitPieces[k]);
+        inCanonicalOrder(splitPieces[k]);
+    });
     std::vector<ArrangedTriangle> pieces;
     pieces.reserve(triangles.size() + split.size());
     std::size_t nextSplit = 0;

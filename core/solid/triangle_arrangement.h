@@ -36,8 +36,9 @@ struct ArrangedTriangle {
 /// Splits non-degenerate `triangles` along their intersections. Every output piece lies
 /// in its source triangle and runs the same way round; the pieces of one source tile it.
 /// Every corner must be a double (an exact point made from doubles, as refineScene makes
-/// them; std::invalid_argument otherwise). The result does not depend on the number of
-/// cores. Checks `control` for cancellation (throws OperationCancelled); adds its sizes
+/// them; std::invalid_argument otherwise). The result, its order included (pieces by
+/// source, each source's by its corners in lexicographic order), does not depend on the
+/// number of cores or on their timing. Checks `control` for cancellation (throws OperationCancelled); adds its sizes
 /// and times to `profile` when given.
 [[nodiscard]] std::vector<ArrangedTriangle> arrangeTriangles(const std::vector<std::array<ExactPoint, 3>>& triangles,
                                                              const TaskControl& control,

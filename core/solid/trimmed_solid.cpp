@@ -1,6 +1,7 @@
 #include "core/solid/trimmed_solid.h"
 
 #include "core/solid/cell_windings.h"
+#include "core/solid/exact_kernel.h"
 #include "core/solid/refined_soup.h"
 #include "core/trim/clip_polytope.h"
 #include "core/trim/csg_expression.h"
@@ -51,6 +52,21 @@ void countEdges(const TriangleMesh& mesh, TrimmedSolidStats& stats)
     }
 }
 
+// The float nearest an exact coordinate, the same whichever thread evaluated it first. A
+// lazy number's interval narrows when some thread asks for its exact value, so rounding
+// the interval's midpoint would give one float or its neighbour from run to run. When
+// both ends of the interval round to one float the value does too (rounding is
+// monotonic); otherwise the exact value decides.
+float roundedCoordinate(const solid::ExactKernel::FT& x)
+{
+    const auto [low, high] = CGAL::to_interval(x);
+    if (float(low) == float(high))
+        return float(low);
+    const auto [exactLow, exactHigh] = CGAL::to_interval(CGAL::exact(x));
+    (void)exactHigh; // the exact value lies between two neighbouring doubles: the lower decides
+    return float(exactLow);
+}
+
 // The kept faces with float positions, as every file format stores them. Exact points
 // closer than a float step round to one position: they become one vertex (a reader that
 // welds by position would make them one anyway), and the faces that collapse with them
@@ -70,8 +86,7 @@ TriangleMesh roundedMesh(const solid::RefinedSoup& soup, const std::vector<std::
             if (index < 0) {
                 ++exactVertices;
                 const solid::ExactPoint& p = soup.points[v[std::size_t(k)]];
-                const glm::vec3 rounded(float(CGAL::to_double(p.x())), float(CGAL::to_double(p.y())),
-                                        float(CGAL::to_double(p.z())));
+                const glm::vec3 rounded(roundedCoordinate(p.x()), roundedCoordinate(p.y()), roundedCoordinate(p.z()));
                 const auto [it, inserted] = byPosition.emplace(std::array<float, 3>{rounded.x, rounded.y, rounded.z},
                                                                std::uint32_t(mesh.positions.size()));
                 if (inserted)
