@@ -61,6 +61,7 @@ ObjectTransformForm::ObjectTransformForm(QWidget* parent) : QWidget(parent)
     });
     auto* form = new QFormLayout(this);
     form->setContentsMargins(0, 0, 0, 0);
+    form->setRowWrapPolicy(QFormLayout::WrapAllRows); // labels above their fields: the rows fit a side dock
     form->addRow(tr("Translate"), row(this, m_translation));
     form->addRow(tr("Rotate"), row(this, m_rotation));
     auto* scaleRow = new QWidget(this);
@@ -82,6 +83,12 @@ QDoubleSpinBox* ObjectTransformForm::addSpin(int component, const QString& objec
     spin->setToolTip(toolTip);
     // Typing "0.5" must not move the object to 0 first: commit on Return or focus out.
     spin->setKeyboardTracking(false);
+    // Wide enough for a value of the size a scene has, not for the range's limit (a
+    // million, 4 decimals): three of these and their label then fit a side dock without
+    // scrolling it sideways; a longer value scrolls inside its box.
+    constexpr int kArrowsAndFrame = 24;
+    spin->setMinimumWidth(spin->fontMetrics().horizontalAdvance(prefix + QStringLiteral("-00.0000°")) +
+                          kArrowsAndFrame);
     connect(spin, &QDoubleSpinBox::valueChanged, this,
             [this, component](double value) { onFieldEdited(component, value); });
     return spin;

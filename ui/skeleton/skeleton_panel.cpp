@@ -22,6 +22,7 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -261,16 +262,17 @@ QWidget* SkeletonPanel::createPoseGroup()
         if (m_result && m_selectedBone >= 0)
             m_form->pickRootJoint(m_result->rig.bones[std::size_t(m_selectedBone)].head);
     });
-    auto* row = new QHBoxLayout;
-    row->addWidget(m_poseTool);
-    row->addWidget(m_resetPose);
-    row->addWidget(m_poseUndoButtons->undoButton());
-    row->addWidget(m_poseUndoButtons->redoButton());
-    row->addWidget(m_rootHere);
+    // Two buttons a row, so that the panel fits a side dock without scrolling sideways.
+    auto* buttons = new QGridLayout;
+    buttons->addWidget(m_resetPose, 0, 0);
+    buttons->addWidget(m_rootHere, 0, 1);
+    buttons->addWidget(m_poseUndoButtons->undoButton(), 1, 0);
+    buttons->addWidget(m_poseUndoButtons->redoButton(), 1, 1);
     auto* layout = new QVBoxLayout(group);
     layout->addWidget(m_boneList);
     layout->addLayout(angles);
-    layout->addLayout(row);
+    layout->addWidget(m_poseTool);
+    layout->addLayout(buttons);
     return group;
 }
 

@@ -99,6 +99,28 @@ void TestWindowLayout::firstStartFitsTheWindow()
     QVERIFY(render);
     for (const QScrollArea* area : render->findChildren<QScrollArea*>())
         QVERIFY2(!area->horizontalScrollBar()->isVisible(), "the Render panel scrolls sideways");
+    // No side panel scrolls sideways: a field focused at the edge would move under the
+    // cursor. Each is raised in turn, as a click on its tab does.
+    for (QDockWidget* dock : window->findChildren<QDockWidget*>()) {
+        auto* area = qobject_cast<QScrollArea*>(dock->widget());
+        if (!area || window->dockWidgetArea(dock) != Qt::RightDockWidgetArea)
+            continue;
+        dock->raise();
+        QTest::qWait(100);
+        if (!dock->isVisible()) // the animation panels, while a mesh is shown
+            continue;
+        qInfo("%s: content %d px wide at least, %d px shown", qPrintable(dock->objectName()),
+              area->widget()->minimumSizeHint().width(), area->viewport()->width());
+        QStringList wide; // what does not fit, to say where to look
+        for (const QWidget* w : area->widget()->findChildren<QWidget*>())
+            if (w->isVisible() && w->minimumSizeHint().width() > area->viewport()->width() - 40)
+                wide << QStringLiteral("%1 '%2' %3 px")
+                            .arg(QString::fromLatin1(w->metaObject()->className()), w->objectName())
+                            .arg(w->minimumSizeHint().width());
+        QVERIFY2(!area->horizontalScrollBar()->isVisible(),
+                 qPrintable(dock->objectName() + QStringLiteral(" scrolls sideways: ") + wide.join(", ")));
+    }
+    render->raise();
     // The clip offset slider gets most of its row (it had 80 pixels to sweep the model).
     auto* slider = render->findChild<QSlider*>(QStringLiteral("clipOffsetSlider"));
     QVERIFY(slider);
