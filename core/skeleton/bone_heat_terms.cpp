@@ -45,8 +45,8 @@ void requireUsableRig(const SkeletonRig& rig)
             throw std::invalid_argument("bone heat: joint " + std::to_string(j) + " is not finite");
 }
 
-// The nearest bones of one vertex and their closest points; `distances`, `candidates`
-// and `order` are scratch space reused between the vertices of one block.
+// The nearest bones of one vertex and their closest points; `distances` and `candidates`
+// are scratch space reused between the vertices of one block.
 struct NearestBones {
     std::vector<int> bones;
     std::vector<glm::dvec3> points;
@@ -56,42 +56,41 @@ struct NearestBones {
 struct NearestScratch {
     std::vector<double> distances;
     std::vector<glm::dvec3> candidates;
-    std::vector<int> order; ///< bones by distance, nearest first
 };
 
-// Every bone's closest point to p and its distance, and the bones in order of distance.
-void orderBones(const glm::dvec3& p, const SkeletonRig& rig, NearestScratch& scratch)
+// Every bone's closest point to p and its distance.
+void boneDistances(const glm::dvec3& p, const SkeletonRig& rig, NearestScratch& scratch)
 {
     scratch.distances.resize(rig.bones.size());
     scratch.candidates.resize(rig.bones.size());
-    scratch.order.resize(rig.bones.size());
     for (std::size_t b = 0; b < rig.bones.size(); ++b) {
         const Bone& bone = rig.bones[b];
         scratch.candidates[b] =
             closestPointOnSegment(p, rig.joints[std::size_t(bone.head)], rig.joints[std::size_t(bone.tail)]);
         scratch.distances[b] = glm::length(p - scratch.candidates[b]);
-        scratch.order[b] = int(b);
     }
-    std::stable_sort(scratch.order.begin(), scratch.order.end(), [&](int a, int b) {
-        return scratch.distances[std::size_t(a)] < scratch.distances[std::size_t(b)];
-    });
 }
 
-// The group of equidistant bones that starts at order[first] (ascending bone index);
-// returns the index in `order` after it.
-std::size_t tiedGroup(const NearestScratch& scratch, std::size_t first, double tolerance, NearestBones& out)
+// The nearest group of equidistant bones (within the tolerance of the nearest, ascending
+// bone index) among those farther than `beyond`; false when none is. One pass over the
+// bones: most vertices see their nearest group, so the others are rarely asked for.
+bool tiedGroup(const NearestScratch& scratch, double beyond, double tolerance, NearestBones& out)
 {
     out.bones.clear();
     out.points.clear();
-    const double best = scratch.distances[std::size_t(scratch.order[first])];
-    std::size_t end = first;
-    while (end < scratch.order.size() && scratch.distances[std::size_t(scratch.order[end])] <= best * (1.0 + tolerance))
-        out.bones.push_back(scratch.order[end++]);
-    std::sort(out.bones.begin(), out.bones.end());
-    for (const int b : out.bones)
-        out.points.push_back(scratch.candidates[std::size_t(b)]);
+    double best = std::numeric_limits<double>::infinity();
+    for (const double d : scratch.distances)
+        if (d > beyond)
+            best = std::min(best, d);
+    if (!std::isfinite(best))
+        return false;
+    for (std::size_t b = 0; b < scratch.distances.size(); ++b)
+        if (scratch.distances[b] > beyond && scratch.distances[b] <= best * (1.0 + tolerance)) {
+            out.bones.push_back(int(b));
+            out.points.push_back(scratch.candidates[b]);
+        }
     out.distance = best;
-    return end;
+    return true;
 }
 
 // Per vertex: which nearest bones, which of them visible.
@@ -116,14 +115,15 @@ VertexResult nearestVisibleBones(const glm::dvec3& p, const SkeletonRig& rig, do
         r.visible.push_back(0);
         return r;
     }
-    orderBones(p, rig, scratch);
+    boneDistances(p, rig, scratch);
     NearestBones group;
-    for (std::size_t first = 0; first < scratch.order.size();) {
-        const std::size_t next = tiedGroup(scratch, first, tolerance, group);
+    for (double beyond = -1.0; tiedGroup(scratch, beyond, tolerance, group);
+         beyond = group.distance * (1.0 + tolerance)) {
         std::vector<std::uint8_t> seen(group.bones.size(), 0);
         for (std::size_t i = 0; i < group.bones.size(); ++i)
             seen[i] = !visibility || visibility->inside(p, group.points[i], hits) ? 1 : 0;
-        if (first == 0) { // kept when no group is visible
+        const bool nearest = beyond < 0.0;
+        if (nearest) { // kept when no group is visible
             r.nearest = group;
             r.visible = seen;
         }
@@ -132,7 +132,6 @@ VertexResult nearestVisibleBones(const glm::dvec3& p, const SkeletonRig& rig, do
             r.visible = std::move(seen);
             break;
         }
-        first = next;
     }
     return r;
 }
