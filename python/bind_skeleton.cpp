@@ -12,9 +12,6 @@
 
 #include <pybind11/stl.h>
 
-#include <algorithm>
-#include <numeric>
-
 namespace trimlab::python {
 
 namespace {
@@ -128,7 +125,8 @@ SkeletonRig rigFromResult(const py::dict& result)
     return rig;
 }
 
-// The largest kBoneInfluences weights of each row of the dense (n, B) weights.
+// Each row of the dense (n, B) weights as the rig's sparse weights, as the bone-heat
+// solver keeps them (its largest kBoneInfluences, renormalised).
 BoneWeights sparseBoneWeights(py::handle dense, std::size_t boneCount)
 {
     const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(dense);
@@ -136,22 +134,13 @@ BoneWeights sparseBoneWeights(py::handle dense, std::size_t boneCount)
         throw InputError("fit_rig: weights must be an (n, " + std::to_string(boneCount) + ") array");
     const auto w = array.unchecked<2>();
     BoneWeights weights;
-    std::vector<int> order(boneCount);
+    weights.bones.resize(std::size_t(w.shape(0)));
+    weights.weights.resize(std::size_t(w.shape(0)));
+    std::vector<std::pair<double, int>> candidates(boneCount);
     for (py::ssize_t v = 0; v < w.shape(0); ++v) {
-        std::iota(order.begin(), order.end(), 0);
-        const std::size_t kept = std::min(kBoneInfluences, boneCount);
-        std::partial_sort(order.begin(), order.begin() + std::ptrdiff_t(kept), order.end(),
-                          [&](int a, int b) { return w(v, a) > w(v, b); });
-        std::array<int, kBoneInfluences> bones;
-        std::array<float, kBoneInfluences> values{};
-        bones.fill(-1);
-        for (std::size_t k = 0; k < kept; ++k)
-            if (w(v, order[k]) > 0.0) {
-                bones[k] = order[k];
-                values[k] = float(w(v, order[k]));
-            }
-        weights.bones.push_back(bones);
-        weights.weights.push_back(values);
+        for (std::size_t b = 0; b < boneCount; ++b)
+            candidates[b] = {w(v, py::ssize_t(b)), int(b)};
+        strongestInfluences(candidates, weights.bones[std::size_t(v)], weights.weights[std::size_t(v)]);
     }
     return weights;
 }

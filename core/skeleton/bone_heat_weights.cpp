@@ -147,11 +147,26 @@ bool sparseVertexWeights(const std::vector<double>& columns, std::size_t n, std:
                          std::array<int, kBoneInfluences>& bones, std::array<float, kBoneInfluences>& weights)
 {
     candidates.resize(boneCount);
-    for (std::size_t b = 0; b < boneCount; ++b) {
-        const double w = columns[b * n + j];
-        candidates[b] = {std::isfinite(w) ? std::max(w, 0.0) : 0.0, int(b)};
+    for (std::size_t b = 0; b < boneCount; ++b)
+        candidates[b] = {columns[b * n + j], int(b)};
+    if (strongestInfluences(candidates, bones, weights))
+        return false;
+    const std::size_t count = std::min(kBoneInfluences, nearest.size());
+    for (std::size_t k = 0; k < count; ++k) {
+        bones[k] = nearest[k];
+        weights[k] = float(1.0 / double(count));
     }
-    const std::size_t kept = std::min(kBoneInfluences, boneCount);
+    return true;
+}
+
+} // namespace
+
+bool strongestInfluences(std::vector<std::pair<double, int>>& candidates, std::array<int, kBoneInfluences>& bones,
+                         std::array<float, kBoneInfluences>& weights)
+{
+    for (auto& [w, bone] : candidates)
+        w = std::isfinite(w) ? std::max(w, 0.0) : 0.0;
+    const std::size_t kept = std::min(kBoneInfluences, candidates.size());
     std::partial_sort(
         candidates.begin(), candidates.begin() + std::ptrdiff_t(kept), candidates.end(),
         [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
@@ -160,24 +175,15 @@ bool sparseVertexWeights(const std::vector<double>& columns, std::size_t n, std:
         sum += candidates[k].first;
     bones.fill(-1);
     weights.fill(0.0f);
-    const bool fallback = !(sum > 1e-12);
-    if (fallback) {
-        const std::size_t count = std::min(kBoneInfluences, nearest.size());
-        for (std::size_t k = 0; k < count; ++k) {
-            bones[k] = nearest[k];
-            weights[k] = float(1.0 / double(count));
-        }
-        return true;
-    }
+    if (!(sum > 1e-12))
+        return false;
     for (std::size_t k = 0, slot = 0; k < kept; ++k)
         if (candidates[k].first > 0.0) {
             bones[slot] = candidates[k].second;
             weights[slot++] = float(candidates[k].first / sum);
         }
-    return false;
+    return true;
 }
-
-} // namespace
 
 BoneHeatSolver::BoneHeatSolver(const TriangleMesh& mesh, const SkeletonRig& rig, const BoneHeatOptions& options,
                                const TaskControl& control)

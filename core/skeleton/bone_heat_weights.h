@@ -35,6 +35,7 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace trimlab {
@@ -52,6 +53,14 @@ struct BoneWeights {
 
     [[nodiscard]] std::size_t vertexCount() const { return bones.size(); }
 };
+
+/// One vertex's BoneWeights entry from its weight per bone: `candidates` holds (weight,
+/// bone) pairs, a negative or non-finite weight counting as 0. The kBoneInfluences
+/// largest (ties to the lower bone) are renormalised to sum 1 into `bones` / `weights`,
+/// unused slots −1 and 0. Returns false, every slot unused, when nothing positive is left.
+/// Reorders `candidates`.
+bool strongestInfluences(std::vector<std::pair<double, int>>& candidates, std::array<int, kBoneInfluences>& bones,
+                         std::array<float, kBoneInfluences>& weights);
 
 struct BoneHeatOptions {
     BoneHeatTermOptions terms;
