@@ -62,9 +62,8 @@ float roundedCoordinate(const solid::ExactKernel::FT& x)
     const auto [low, high] = CGAL::to_interval(x);
     if (float(low) == float(high))
         return float(low);
-    const auto [exactLow, exactHigh] = CGAL::to_interval(CGAL::exact(x));
-    (void)exactHigh; // the exact value lies between two neighbouring doubles: the lower decides
-    return float(exactLow);
+    // The exact value lies between two neighbouring doubles: the lower one decides.
+    return float(CGAL::to_interval(CGAL::exact(x)).first);
 }
 
 // The kept faces with float positions, as every file format stores them. Exact points
