@@ -3,7 +3,8 @@
 /// The options of `trimlab skeleton`: every flagged row of skeleton_parameters::kTable
 /// (core/skeleton/skeleton_parameters.h: contraction, simplification, refinement,
 /// selection, bone-heat constant, Loop subdivision), --close-holes and --rest-pose, then
-/// the mesh or animation and the outputs, parsed before the mesh is loaded so that bad arguments fail fast with one line.
+/// the mesh or animation and the outputs, parsed before the mesh is loaded so that bad
+/// arguments fail fast with one line.
 
 #include "core/skeleton/skeleton_extraction.h"
 #include "core/skeleton/skeleton_parameters.h"
